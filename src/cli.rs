@@ -1,0 +1,413 @@
+//! Command-line interface: parse, call the library, print. No physics here.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use cylroll::error::{Error, Result};
+use cylroll::exact::{rational_text, Exact};
+use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::numeric::verify::Verified;
+use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
+use rug::Rational;
+use std::io::Write;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "cylroll",
+    version,
+    about = "Reference oracle for a cylinder rolling on a rolling cylinder: verified digits at any precision"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Separation angle theta_s (N12 = 0), separation time, sign changes, friction findings
+    Separation {
+        #[command(flatten)]
+        common: Common,
+        /// Friction coefficient: report where rolling without slipping first fails
+        #[arg(long)]
+        mu: Option<String>,
+    },
+    /// Time from the start to the angle --to
+    Time {
+        #[command(flatten)]
+        common: Common,
+        /// Target angle (radians; e.g. 0.5, 1/3, pi/4)
+        #[arg(long, allow_hyphen_values = true)]
+        to: String,
+    },
+    /// Constraint forces, theta_dot, theta_ddot and the friction needed at angle --theta
+    Forces {
+        #[command(flatten)]
+        common: Common,
+        /// Angle (radians)
+        #[arg(long, allow_hyphen_values = true)]
+        theta: String,
+    },
+    /// Rows t, theta, theta_dot, phi1, phi2, x1, x2, y2, F1, N1, F21, N12 at given times
+    Trajectory {
+        #[command(flatten)]
+        common: Common,
+        /// Comma-separated times
+        #[arg(long, conflicts_with_all = ["t_end", "steps"])]
+        times: Option<String>,
+        /// Last time of an equally spaced grid (with --steps)
+        #[arg(long, requires = "steps")]
+        t_end: Option<String>,
+        /// Number of intervals of the grid 0, t_end/N, ..., t_end
+        #[arg(long, requires = "t_end")]
+        steps: Option<u32>,
+    },
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    Text,
+    Json,
+    Csv,
+}
+
+/// Model flags and output options shared by every subcommand.
+#[derive(Args, Debug, Clone)]
+pub struct Common {
+    /// TOML file with any of the model keys (flags override it)
+    #[arg(long)]
+    params: Option<std::path::PathBuf>,
+    /// Floor under cylinder 1: roll | slip | fixed
+    #[arg(long)]
+    floor: Option<String>,
+    /// Contact between the cylinders: roll | slip
+    #[arg(long)]
+    contact: Option<String>,
+    #[arg(long)]
+    m1: Option<String>,
+    #[arg(long)]
+    m2: Option<String>,
+    #[arg(long)]
+    r1: Option<String>,
+    #[arg(long)]
+    r2: Option<String>,
+    /// I1 = k1 m1 r1^2
+    #[arg(long)]
+    k1: Option<String>,
+    /// I2 = k2 m2 r2^2
+    #[arg(long)]
+    k2: Option<String>,
+    #[arg(long)]
+    g: Option<String>,
+    /// Initial angle of the line of centres, clockwise from vertical (radians)
+    #[arg(long, allow_hyphen_values = true)]
+    theta0: Option<String>,
+    /// Initial angular velocity of the line of centres
+    #[arg(long, allow_hyphen_values = true)]
+    thetadot0: Option<String>,
+    /// Common rolling rate of the conserved momentum (phi1_dot when theta_dot = 0; paper eq. 17)
+    #[arg(long, allow_hyphen_values = true)]
+    omega0: Option<String>,
+    /// Significant digits to verify and print
+    #[arg(long, default_value_t = 30)]
+    digits: u32,
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+const MODEL_KEYS: [&str; 12] = [
+    "floor", "contact", "m1", "m2", "r1", "r2", "k1", "k2", "g", "theta0", "thetadot0", "omega0",
+];
+
+impl Common {
+    fn flag(&self, key: &str) -> Option<String> {
+        match key {
+            "floor" => self.floor.clone(),
+            "contact" => self.contact.clone(),
+            "m1" => self.m1.clone(),
+            "m2" => self.m2.clone(),
+            "r1" => self.r1.clone(),
+            "r2" => self.r2.clone(),
+            "k1" => self.k1.clone(),
+            "k2" => self.k2.clone(),
+            "g" => self.g.clone(),
+            "theta0" => self.theta0.clone(),
+            "thetadot0" => self.thetadot0.clone(),
+            "omega0" => self.omega0.clone(),
+            _ => None,
+        }
+    }
+
+    /// The model from the defaults, then `--params`, then the flags.
+    pub fn model(&self) -> Result<Model> {
+        let mut vals: std::collections::BTreeMap<String, String> = Default::default();
+        if let Some(path) = &self.params {
+            let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+                path: path.display().to_string(),
+                what: e.to_string(),
+            })?;
+            let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+                Error::invalid("params", path.display(), format!("not valid TOML: {}", e.message()))
+            })?;
+            for (k, v) in table {
+                if !MODEL_KEYS.contains(&k.as_str()) {
+                    return Err(Error::invalid(
+                        "params",
+                        &k,
+                        format!("unknown key; allowed keys: {}", MODEL_KEYS.join(", ")),
+                    ));
+                }
+                let s = match v {
+                    toml::Value::String(s) => s,
+                    toml::Value::Integer(i) => i.to_string(),
+                    other => {
+                        return Err(Error::invalid(
+                            &k,
+                            other,
+                            "write non-integer values as strings (e.g. m1 = \"0.3\") so they are read exactly",
+                        ))
+                    }
+                };
+                vals.insert(k, s);
+            }
+        }
+        for k in MODEL_KEYS {
+            if let Some(v) = self.flag(k) {
+                vals.insert(k.to_string(), v);
+            }
+        }
+        let get = |k: &str| vals.get(k).cloned();
+        let num = |k: &str, default: Rational| -> Result<Rational> {
+            match get(k) {
+                None => Ok(default),
+                Some(s) => Ok(Exact::parse(k, &s, false)?.coef),
+            }
+        };
+        let d = Params::identical_solid();
+        let params = Params {
+            m1: num("m1", d.m1)?,
+            m2: num("m2", d.m2)?,
+            r1: num("r1", d.r1)?,
+            r2: num("r2", d.r2)?,
+            k1: num("k1", d.k1)?,
+            k2: num("k2", d.k2)?,
+            g: num("g", d.g)?,
+        };
+        let floor: Floor = get("floor").as_deref().unwrap_or("roll").parse()?;
+        let contact: Contact = get("contact").as_deref().unwrap_or("roll").parse()?;
+        let theta0 = match get("theta0") {
+            None => Exact::zero(),
+            Some(s) => Exact::parse("theta0", &s, true)?,
+        };
+        let start = Start {
+            theta0,
+            thetadot0: num("thetadot0", Rational::new())?,
+            omega0: num("omega0", Rational::new())?,
+        };
+        Model::new(params, floor, contact, start)
+    }
+}
+
+/// A finished answer: ordered (key, value) pairs plus notes, rendered by format.
+struct Answer {
+    command: &'static str,
+    model: Model,
+    digits: u32,
+    values: Vec<Verified>,
+    notes: Vec<String>,
+    table: Option<(Vec<&'static str>, Vec<Vec<Verified>>)>,
+}
+
+fn json_str(s: &str) -> String {
+    serde_json::Value::String(s.to_string()).to_string()
+}
+
+impl Answer {
+    fn render(&self, format: Format) -> String {
+        match format {
+            Format::Text => self.text(),
+            Format::Json => self.json(),
+            Format::Csv => self.csv(),
+        }
+    }
+
+    fn text(&self) -> String {
+        let mut out = String::new();
+        out.push_str(&format!("# cylroll {} — {}\n", self.command, self.model.describe()));
+        out.push_str(&format!("# {} significant digits requested; each value below is verified to the digits printed\n", self.digits));
+        let w = self.values.iter().map(|v| v.name.len()).max().unwrap_or(0);
+        for v in &self.values {
+            let note = if v.digits == 0 {
+                format!("[indistinguishable from 0: |x| <= {}]", v.err_text())
+            } else {
+                format!("[{} digits; |err| <= {}]", v.digits, v.err_text())
+            };
+            out.push_str(&format!("{:w$} = {}  {}\n", v.name, v.text, note, w = w));
+        }
+        if let Some((cols, rows)) = &self.table {
+            out.push_str(&cols.join("\t"));
+            out.push('\n');
+            for r in rows {
+                let line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
+                out.push_str(&line.join("\t"));
+                out.push('\n');
+            }
+        }
+        for n in &self.notes {
+            out.push_str(&format!("note: {n}\n"));
+        }
+        out
+    }
+
+    fn json(&self) -> String {
+        let mut o = serde_json::Map::new();
+        o.insert("command".into(), self.command.into());
+        let mut m = serde_json::Map::new();
+        for (k, v) in self.model.echo() {
+            m.insert(k.into(), v.into());
+        }
+        o.insert("model".into(), m.into());
+        o.insert("digits_requested".into(), self.digits.to_string().into());
+        let mut verified = serde_json::Map::new();
+        let mut errs = serde_json::Map::new();
+        for v in &self.values {
+            o.insert(v.name.clone(), v.text.clone().into());
+            verified.insert(v.name.clone(), v.digits.to_string().into());
+            errs.insert(v.name.clone(), v.err_text().into());
+        }
+        if let Some((cols, rows)) = &self.table {
+            o.insert("columns".into(), cols.iter().map(|c| serde_json::Value::from(*c)).collect::<Vec<_>>().into());
+            let mut min_digits = self.digits;
+            let rows_json: Vec<serde_json::Value> = rows
+                .iter()
+                .map(|r| {
+                    let mut row = serde_json::Map::new();
+                    for v in r {
+                        if v.digits > 0 {
+                            min_digits = min_digits.min(v.digits);
+                        }
+                        row.insert(v.name.clone(), v.text.clone().into());
+                    }
+                    row.into()
+                })
+                .collect();
+            o.insert("rows".into(), rows_json.into());
+            verified.insert("rows".into(), min_digits.to_string().into());
+        }
+        o.insert("digits_verified".into(), verified.into());
+        o.insert("error_bounds".into(), errs.into());
+        o.insert("notes".into(), self.notes.iter().map(|n| serde_json::Value::from(n.as_str())).collect::<Vec<_>>().into());
+        let _ = json_str;
+        serde_json::to_string_pretty(&serde_json::Value::Object(o)).expect("serializable") + "\n"
+    }
+
+    fn csv(&self) -> String {
+        let mut out = String::new();
+        if let Some((cols, rows)) = &self.table {
+            out.push_str(&cols.join(","));
+            out.push('\n');
+            for r in rows {
+                let line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
+                out.push_str(&line.join(","));
+                out.push('\n');
+            }
+        } else {
+            out.push_str("key,value,digits_verified,error_bound\n");
+            for v in &self.values {
+                out.push_str(&format!("{},{},{},{}\n", v.name, v.text, v.digits, v.err_text()));
+            }
+        }
+        out
+    }
+}
+
+fn parse_list(name: &str, s: &str) -> Result<Vec<Exact>> {
+    s.split(',').map(|t| Exact::parse(name, t, false)).collect()
+}
+
+/// Runs the command and returns the text to print on standard output.
+pub fn run(cli: Cli) -> Result<String> {
+    let (common, answer) = match cli.command {
+        Command::Separation { common, mu } => {
+            let model = common.model()?;
+            let mu = mu.map(|s| Exact::parse("mu", &s, false)).transpose()?;
+            let mut o = Oracle::new(&model, common.digits)?.with_mu(mu)?;
+            let sep = o.separation()?;
+            let mut values = vec![sep.theta_s];
+            values.extend(sep.t_s);
+            values.extend(sep.extra);
+            let a = Answer { command: "separation", model, digits: common.digits, values, notes: sep.notes, table: None };
+            (common, a)
+        }
+        Command::Time { common, to } => {
+            let model = common.model()?;
+            let theta = Exact::parse("to", &to, true)?;
+            let mut o = Oracle::new(&model, common.digits)?;
+            let t = o.time_at(&theta)?;
+            let a = Answer { command: "time", model, digits: common.digits, values: vec![t], notes: vec![], table: None };
+            (common, a)
+        }
+        Command::Forces { common, theta } => {
+            let model = common.model()?;
+            let th = Exact::parse("theta", &theta, true)?;
+            let mut o = Oracle::new(&model, common.digits)?;
+            let values = o.forces_at(&th)?;
+            debug_assert_eq!(values.len(), FORCE_KEYS.len());
+            let a = Answer { command: "forces", model, digits: common.digits, values, notes: vec![], table: None };
+            (common, a)
+        }
+        Command::Trajectory { common, times, t_end, steps } => {
+            let model = common.model()?;
+            let times = match (times, t_end, steps) {
+                (Some(list), _, _) => parse_list("times", &list)?,
+                (None, Some(te), Some(n)) => {
+                    if n == 0 || n > 100_000 {
+                        return Err(Error::invalid("steps", n, "must be between 1 and 100000"));
+                    }
+                    let te = Exact::parse("t-end", &te, false)?;
+                    (0..=n)
+                        .map(|i| Exact::rational(Rational::from(&te.coef * Rational::from((i, n)))))
+                        .collect()
+                }
+                _ => return Err(Error::invalid("times", "", "give --times t1,t2,... or --t-end T --steps N")),
+            };
+            let mut o = Oracle::new(&model, common.digits)?;
+            let rows = o.trajectory(&times)?;
+            let a = Answer {
+                command: "trajectory",
+                model,
+                digits: common.digits,
+                values: vec![],
+                notes: vec![],
+                table: Some((TRAJECTORY_COLUMNS.to_vec(), rows)),
+            };
+            (common, a)
+        }
+    };
+    let _ = rational_text;
+    Ok(answer.render(common.format))
+}
+
+/// Entry point used by `main`: prints or reports the error, returns the exit code.
+pub fn main_with(args: Vec<String>) -> i32 {
+    let cli = match Cli::try_parse_from(args) {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return code;
+        }
+    };
+    match run(cli) {
+        Ok(out) => {
+            let mut so = std::io::stdout().lock();
+            if so.write_all(out.as_bytes()).is_err() {
+                return 4;
+            }
+            0
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            e.exit_code()
+        }
+    }
+}

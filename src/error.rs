@@ -1,0 +1,71 @@
+//! The library's one error type.
+//!
+//! Every variant carries the numbers needed to understand it; the CLI maps
+//! [`Error::exit_code`] to the process exit status.
+
+use thiserror::Error;
+
+/// Everything that can go wrong in cylroll.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum Error {
+    /// A parameter or flag is outside its allowed range or cannot be parsed.
+    #[error("invalid {name} = {value:?}: {allowed}")]
+    InvalidParameter {
+        name: String,
+        value: String,
+        allowed: String,
+    },
+    /// A request that has no finite or physical answer (e.g. a time from rest
+    /// at the unstable equilibrium, a time after separation).
+    #[error("{what}")]
+    NotPhysical { what: String },
+    /// A numerical method did not reach the requested accuracy.
+    #[error("{quantity}: could not verify {requested} digits ({reached}); {detail}")]
+    NotConverged {
+        quantity: String,
+        requested: u32,
+        reached: String,
+        detail: String,
+    },
+    /// No sign change of the bracketing function on the interval searched.
+    #[error("{quantity}: no sign change found on [{lo}, {hi}]")]
+    NoSignChange {
+        quantity: String,
+        lo: String,
+        hi: String,
+    },
+    /// Reading or writing a file failed.
+    #[error("{path}: {what}")]
+    Io { path: String, what: String },
+}
+
+impl Error {
+    /// Process exit status for this error: 2 for bad input or a request with
+    /// no physical answer, 3 for a numerical failure, 4 for I/O.
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            Error::InvalidParameter { .. } | Error::NotPhysical { .. } => 2,
+            Error::NotConverged { .. } | Error::NoSignChange { .. } => 3,
+            Error::Io { .. } => 4,
+        }
+    }
+
+    /// Shorthand for [`Error::InvalidParameter`].
+    pub fn invalid(name: &str, value: impl ToString, allowed: impl ToString) -> Self {
+        Error::InvalidParameter {
+            name: name.to_string(),
+            value: value.to_string(),
+            allowed: allowed.to_string(),
+        }
+    }
+
+    /// Shorthand for [`Error::NotPhysical`].
+    pub fn not_physical(what: impl ToString) -> Self {
+        Error::NotPhysical {
+            what: what.to_string(),
+        }
+    }
+}
+
+/// Result alias used throughout the crate.
+pub type Result<T> = std::result::Result<T, Error>;

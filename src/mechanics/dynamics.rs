@@ -1,0 +1,319 @@
+//! The reduced dynamics evaluated at a working precision.
+//!
+//! Every quantity is a function of δ = θ − θ0 (the motion runs towards
+//! growing θ; the oracle mirrors a model that falls to the left). Writing the
+//! trigonometry in δ keeps cos θ0 − cos θ = 2 sin(θ0+δ/2) sin(δ/2) and
+//! sin θ − sin θ0 = 2 cos(θ0+δ/2) sin(δ/2) free of cancellation, and costs one
+//! `sin_cos` per evaluation.
+
+use super::{Reduced, PSI2, X1};
+use crate::error::Result;
+use crate::model::{Contact, Floor, Model};
+use rug::{Assign, Float};
+
+/// Constants of a model at one precision.
+#[derive(Debug, Clone)]
+pub struct Dyn {
+    /// Working precision (bits).
+    pub prec: u32,
+    /// Floor model.
+    pub floor: Floor,
+    /// Contact model.
+    pub contact: Contact,
+    /// θ0, sin θ0, cos θ0.
+    pub th0: Float,
+    /// sin θ0.
+    pub s0: Float,
+    /// cos θ0.
+    pub c0: Float,
+    /// K coefficients.
+    pub q: [Float; 3],
+    /// K(θ0) θ̇0².
+    pub h0: Float,
+    /// g / r.
+    pub gr: Float,
+    /// m1, m2, r1, r2, r, g.
+    pub m1: Float,
+    /// m2.
+    pub m2: Float,
+    /// r1.
+    pub r1: Float,
+    /// r2.
+    pub r2: Float,
+    /// r = r1 + r2.
+    pub r: Float,
+    /// g.
+    pub g: Float,
+    /// I1 = k1 m1 r1².
+    pub i1: Float,
+    /// I2 = k2 m2 r2².
+    pub i2: Float,
+    /// Velocity coefficients (see [`Reduced`]).
+    pub alpha: [Float; 3],
+    /// See `alpha`.
+    pub beta: [Float; 3],
+    /// See `alpha`.
+    pub gamma: [Float; 3],
+    /// ψ2 at t = 0.
+    pub psi0: Float,
+    /// Columns of B for the kept cyclic coordinates (conserved momenta).
+    pub b_cyclic: Vec<[Float; 4]>,
+}
+
+/// The state of the system at one angle.
+#[derive(Debug, Clone)]
+pub struct State {
+    /// δ = θ − θ0.
+    pub delta: Float,
+    /// θ.
+    pub theta: Float,
+    /// sin θ.
+    pub s: Float,
+    /// cos θ.
+    pub c: Float,
+    /// sin θ − sin θ0 (cancellation-free).
+    pub ds: Float,
+    /// θ̇ (≥ 0).
+    pub thetadot: Float,
+    /// θ̈.
+    pub thetaddot: Float,
+    /// ẋ1, φ̇1, ψ̇2.
+    pub v: [Float; 3],
+    /// ẍ1, φ̈1, ψ̈2.
+    pub a: [Float; 3],
+}
+
+/// Constraint forces, in the conventions of the README: F1, N1 the floor's
+/// force on cylinder 1 (x, y); N12 the normal force between the cylinders
+/// (positive while they press); F21 cylinder 1's force on cylinder 2 along
+/// (cos θ, −sin θ).
+#[derive(Debug, Clone)]
+pub struct Forces {
+    /// F1.
+    pub f1: Float,
+    /// N1.
+    pub n1: Float,
+    /// F21.
+    pub f21: Float,
+    /// N12.
+    pub n12: Float,
+}
+
+impl Dyn {
+    /// Constants of `model` (which must move towards growing θ) at `prec` bits.
+    pub fn new(model: &Model, red: &Reduced, prec: u32) -> Result<Self> {
+        let f = |q: &rug::Rational| Float::with_val(prec, q);
+        let p = model.params();
+        let st = model.start();
+        let th0 = st.theta0.to_float(prec);
+        let (s0, c0) = th0.clone().sin_cos(Float::new(prec));
+        let q = [f(&red.q[0]), f(&red.q[1]), f(&red.q[2])];
+        let k0 = Float::with_val(prec, &q[2] * &c0) + &q[1];
+        let k0 = Float::with_val(prec, k0 * &c0) + &q[0];
+        let td0 = f(&st.thetadot0);
+        let h0 = Float::with_val(prec, k0 * &td0) * &td0;
+        let r = f(&p.r());
+        let g = f(&p.g);
+        let gr = Float::with_val(prec, &g / &r);
+        let r1 = f(&p.r1);
+        let r2 = f(&p.r2);
+        let psi0 = match model.contact() {
+            // the paper's holonomic r2 φ2 = r1(φ1 − θ) with φ1(0) = 0, φ2 = ψ2 + θ
+            Contact::Roll => -Float::with_val(prec, &r * &th0) / &r2,
+            // φ2(0) = 0: the point of cylinder 2 touching cylinder 1 at t = 0
+            Contact::Slip => Float::with_val(prec, -&th0),
+        };
+        Ok(Dyn {
+            prec,
+            floor: model.floor(),
+            contact: model.contact(),
+            th0,
+            s0,
+            c0,
+            q,
+            h0,
+            gr,
+            m1: f(&p.m1),
+            m2: f(&p.m2),
+            i1: f(&(Rational3::prod(&p.k1, &p.m1, &p.r1) * &p.r1)),
+            i2: f(&(Rational3::prod(&p.k2, &p.m2, &p.r2) * &p.r2)),
+            r1,
+            r2,
+            r,
+            g,
+            alpha: [f(&red.alpha[0]), f(&red.alpha[1]), f(&red.alpha[2])],
+            beta: [f(&red.beta[0]), f(&red.beta[1]), f(&red.beta[2])],
+            gamma: [f(&red.gamma[0]), f(&red.gamma[1]), f(&red.gamma[2])],
+            psi0,
+            b_cyclic: red
+                .b_cyclic
+                .iter()
+                .map(|col| [f(&col[0]), f(&col[1]), f(&col[2]), f(&col[3])])
+                .collect(),
+        })
+    }
+
+    /// K(c) = q0 + q1 c + q2 c².
+    pub fn k_of(&self, c: &Float) -> Float {
+        let t = Float::with_val(self.prec, &self.q[2] * c) + &self.q[1];
+        Float::with_val(self.prec, t * c) + &self.q[0]
+    }
+
+    /// Trigonometry at δ: (sin θ, cos θ, sin(θ0+δ/2), cos(θ0+δ/2), sin(δ/2)).
+    fn trig(&self, delta: &Float) -> [Float; 5] {
+        let p = self.prec;
+        let half = Float::with_val(p, delta / 2u32);
+        let (sh, ch) = half.sin_cos(Float::new(p));
+        let sm = Float::with_val(p, &self.s0 * &ch) + Float::with_val(p, &self.c0 * &sh);
+        let cm = Float::with_val(p, &self.c0 * &ch) - Float::with_val(p, &self.s0 * &sh);
+        // θ = (θ0 + δ/2) + δ/2
+        let s = Float::with_val(p, &sm * &ch) + Float::with_val(p, &cm * &sh);
+        let c = Float::with_val(p, &cm * &ch) - Float::with_val(p, &sm * &sh);
+        [s, c, sm, cm, sh]
+    }
+
+    /// H(δ) = K θ̇² = K(θ0)θ̇0² + 2(g/r)(cos θ0 − cos θ), and cos θ.
+    pub fn h_of(&self, delta: &Float) -> (Float, Float) {
+        let [_, c, sm, _, sh] = self.trig(delta);
+        let t = Float::with_val(self.prec, &sm * &sh) * &self.gr;
+        (Float::with_val(self.prec, t * 4u32) + &self.h0, c)
+    }
+
+    /// dt/dθ = 1/θ̇ at δ, written into `out`: the energy quadrature's integrand.
+    pub fn inv_thetadot(&self, delta: &Float, out: &mut Float) {
+        let (h, c) = self.h_of(delta);
+        out.assign(self.k_of(&c) / h);
+        out.sqrt_mut();
+    }
+
+    /// The full state at δ.
+    pub fn state(&self, delta: &Float) -> State {
+        let p = self.prec;
+        let [s, c, sm, cm, sh] = self.trig(delta);
+        let h = Float::with_val(p, &sm * &sh) * &self.gr * 4u32 + &self.h0;
+        let k = self.k_of(&c);
+        let td2 = Float::with_val(p, &h / &k);
+        let thetadot = if td2.is_sign_negative() {
+            Float::with_val(p, f64::NAN)
+        } else {
+            Float::with_val(p, td2.sqrt_ref())
+        };
+        // θ̈ = [ (g/r) sinθ + ½ sinθ (q1 + 2 q2 c) θ̇² ] / K
+        let dk = Float::with_val(p, &self.q[2] * &c) * 2u32 + &self.q[1];
+        let num = Float::with_val(p, &dk * &td2) / 2u32 + &self.gr;
+        let thetaddot = Float::with_val(p, num * &s) / &k;
+        let mut v: [Float; 3] = [Float::new(p), Float::new(p), Float::new(p)];
+        let mut a: [Float; 3] = [Float::new(p), Float::new(p), Float::new(p)];
+        let s_td2 = Float::with_val(p, &s * &td2);
+        for i in 0..3 {
+            let lin = Float::with_val(p, &self.beta[i] * &c) + &self.alpha[i];
+            v[i] = Float::with_val(p, &lin * &thetadot) + &self.gamma[i];
+            a[i] = Float::with_val(p, &lin * &thetaddot) - Float::with_val(p, &self.beta[i] * &s_td2);
+        }
+        let ds = Float::with_val(p, &cm * &sh) * 2u32;
+        let theta = Float::with_val(p, &self.th0 + delta);
+        State {
+            delta: delta.clone(),
+            theta,
+            s,
+            c,
+            ds,
+            thetadot,
+            thetaddot,
+            v,
+            a,
+        }
+    }
+
+    /// x1, φ1, ψ2 at state `st` reached at time `t`.
+    pub fn positions(&self, st: &State, t: &Float) -> [Float; 3] {
+        let p = self.prec;
+        let mut out: [Float; 3] = [Float::new(p), Float::new(p), Float::new(p)];
+        for (i, o) in out.iter_mut().enumerate() {
+            let x = Float::with_val(p, &self.gamma[i] * t)
+                + Float::with_val(p, &self.alpha[i] * &st.delta)
+                + Float::with_val(p, &self.beta[i] * &st.ds);
+            *o = x;
+        }
+        out[PSI2] += &self.psi0;
+        out
+    }
+
+    /// Constraint forces at `st` from the reduced dynamics (route 1): N12 from
+    /// the radial motion of cylinder 2, F21 from its spin (torque), F1 and N1
+    /// from the motion of the centre of mass of the pair (paper eqs. 26–28, 33).
+    /// Forces at a frictionless contact are exactly 0.
+    pub fn forces(&self, st: &State) -> Forces {
+        let p = self.prec;
+        let ax = &st.a[X1];
+        let td2 = Float::with_val(p, st.thetadot.square_ref());
+        let n12 = (Float::with_val(p, &self.g * &st.c) + Float::with_val(p, ax * &st.s)
+            - Float::with_val(p, &self.r * &td2))
+            * &self.m2;
+        let f21 = match self.contact {
+            Contact::Roll => Float::with_val(p, &self.i2 * &st.a[PSI2]) / &self.r2,
+            Contact::Slip => Float::new(p),
+        };
+        let m12 = Float::with_val(p, &self.m1 + &self.m2);
+        let f1 = match self.floor {
+            Floor::Slip => Float::new(p),
+            _ => {
+                let tang = Float::with_val(p, &st.c * &st.thetaddot) - Float::with_val(p, &st.s * &td2);
+                Float::with_val(p, &m12 * ax) + tang * &self.r * &self.m2
+            }
+        };
+        let rad = Float::with_val(p, &st.s * &st.thetaddot) + Float::with_val(p, &st.c * &td2);
+        let n1 = Float::with_val(p, &m12 * &self.g) - rad * &self.r * &self.m2;
+        Forces { f1, n1, f21, n12 }
+    }
+
+    /// Total energy T + V (V = m2 g y2 + const) from the full velocities.
+    pub fn energy(&self, st: &State) -> Float {
+        let p = self.prec;
+        let [xd, pd, sd] = &st.v;
+        let td = &st.thetadot;
+        let m12 = Float::with_val(p, &self.m1 + &self.m2);
+        let mut t = Float::with_val(p, &m12 * xd) * xd;
+        t += Float::with_val(p, &self.i1 * pd) * pd;
+        t += Float::with_val(p, &self.i2 * sd) * sd;
+        t += Float::with_val(p, &self.r * &self.m2) * &st.c * xd * td * 2u32;
+        t += Float::with_val(p, &self.r * &self.r) * &self.m2 * td * td;
+        t /= 2u32;
+        t + Float::with_val(p, &self.m2 * &self.g) * &self.r * &st.c
+    }
+}
+
+impl Dyn {
+    /// The conserved canonical momenta of the cyclic coordinates,
+    /// p_j = B_jᵀ M(θ) v, from the full velocities.
+    pub fn momenta(&self, st: &State) -> Vec<Float> {
+        let p = self.prec;
+        let m12 = Float::with_val(p, &self.m1 + &self.m2);
+        let m2r = Float::with_val(p, &self.m2 * &self.r);
+        // M v with v = (ẋ1, φ̇1, ψ̇2, θ̇)
+        let mv = [
+            Float::with_val(p, &m12 * &st.v[0]) + Float::with_val(p, &m2r * &st.c) * &st.thetadot,
+            Float::with_val(p, &self.i1 * &st.v[1]),
+            Float::with_val(p, &self.i2 * &st.v[2]),
+            Float::with_val(p, &m2r * &st.c) * &st.v[0] + Float::with_val(p, &m2r * &self.r) * &st.thetadot,
+        ];
+        self.b_cyclic
+            .iter()
+            .map(|col| {
+                let mut s = Float::new(p);
+                for i in 0..4 {
+                    s += Float::with_val(p, &col[i] * &mv[i]);
+                }
+                s
+            })
+            .collect()
+    }
+}
+
+/// Small helper: exact product of three rationals.
+struct Rational3;
+impl Rational3 {
+    fn prod(a: &rug::Rational, b: &rug::Rational, c: &rug::Rational) -> rug::Rational {
+        rug::Rational::from(a * b) * c
+    }
+}

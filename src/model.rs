@@ -1,0 +1,319 @@
+//! The model: parameters, contact models and the start, all exact.
+//!
+//! A [`Model`] is validated on construction ([`Model::new`]); every other part
+//! of the crate may assume its invariants (positive masses, radii and g,
+//! non-negative inertia factors, a start inside the supported range).
+
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use rug::Rational;
+use serde::Serialize;
+use std::fmt;
+use std::str::FromStr;
+
+/// How cylinder 1 meets the floor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Floor {
+    /// Rolls without slipping: x1 = r1 φ1 (paper eq. 1).
+    Roll,
+    /// Frictionless floor: x1 and φ1 independent (paper secs. 3.1, 3.2).
+    Slip,
+    /// Cylinder 1 held still (paper footnote 8).
+    Fixed,
+}
+
+/// How cylinder 2 meets cylinder 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Contact {
+    /// Rolls without slipping: r2 φ2 = r1(φ1 − θ) (paper eq. 2).
+    Roll,
+    /// Frictionless contact: cylinder 2 keeps its spin (paper secs. 3.1, 3.3).
+    Slip,
+}
+
+impl FromStr for Floor {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "roll" => Ok(Floor::Roll),
+            "slip" => Ok(Floor::Slip),
+            "fixed" => Ok(Floor::Fixed),
+            _ => Err(Error::invalid("floor", s, "expected roll, slip or fixed")),
+        }
+    }
+}
+
+impl FromStr for Contact {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "roll" => Ok(Contact::Roll),
+            "slip" => Ok(Contact::Slip),
+            _ => Err(Error::invalid("contact", s, "expected roll or slip")),
+        }
+    }
+}
+
+impl fmt::Display for Floor {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Floor::Roll => "roll",
+            Floor::Slip => "slip",
+            Floor::Fixed => "fixed",
+        })
+    }
+}
+
+impl fmt::Display for Contact {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Contact::Roll => "roll",
+            Contact::Slip => "slip",
+        })
+    }
+}
+
+/// Physical parameters, exact rationals. Units are any consistent set.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Params {
+    /// Mass of the lower cylinder.
+    pub m1: Rational,
+    /// Mass of the upper cylinder.
+    pub m2: Rational,
+    /// Rolling radius of the lower cylinder.
+    pub r1: Rational,
+    /// Rolling radius of the upper cylinder.
+    pub r2: Rational,
+    /// I1 = k1 m1 r1².
+    pub k1: Rational,
+    /// I2 = k2 m2 r2².
+    pub k2: Rational,
+    /// Gravitational acceleration.
+    pub g: Rational,
+}
+
+impl Params {
+    /// Identical solid cylinders, m = r = g = 1, k = 1/2 (the built-in default).
+    pub fn identical_solid() -> Self {
+        let one = Rational::from(1);
+        let half = Rational::from((1, 2));
+        Params {
+            m1: one.clone(),
+            m2: one.clone(),
+            r1: one.clone(),
+            r2: one.clone(),
+            k1: half.clone(),
+            k2: half,
+            g: one,
+        }
+    }
+
+    /// Distance between the axes, r = r1 + r2.
+    pub fn r(&self) -> Rational {
+        Rational::from(&self.r1 + &self.r2)
+    }
+}
+
+/// Initial conditions. Positions start at x1 = φ1 = 0.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Start {
+    /// θ0: line of centres, clockwise from vertical, radians, |θ0| < π/2.
+    pub theta0: Exact,
+    /// θ̇0, radians per unit time; must not point towards the top (θ0·θ̇0 ≥ 0).
+    pub thetadot0: Rational,
+    /// ω0: the common rolling rate of the conserved momenta — the value φ̇1
+    /// takes whenever θ̇ = 0 (paper eq. 17). Zero for a start from rest.
+    pub omega0: Rational,
+}
+
+impl Start {
+    /// At rest at θ0.
+    pub fn rest(theta0: Exact) -> Self {
+        Start {
+            theta0,
+            thetadot0: Rational::new(),
+            omega0: Rational::new(),
+        }
+    }
+}
+
+/// A validated model: parameters, contact models and start.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Model {
+    params: Params,
+    floor: Floor,
+    contact: Contact,
+    start: Start,
+}
+
+/// Upper bound on |θ0|: the start must have the upper centre above the lower one.
+const THETA0_RANGE: &str = "must satisfy -pi/2 < theta0 < pi/2";
+
+impl Model {
+    /// Validates and builds a model.
+    ///
+    /// Errors: [`Error::InvalidParameter`] naming the parameter and its range
+    /// (m1, m2, r1, r2, g > 0; k1, k2 ≥ 0; |θ0| < π/2; θ0·θ̇0 ≥ 0; ω0 = 0 when
+    /// the floor is `fixed`).
+    pub fn new(params: Params, floor: Floor, contact: Contact, start: Start) -> Result<Self> {
+        for (name, v) in [
+            ("m1", &params.m1),
+            ("m2", &params.m2),
+            ("r1", &params.r1),
+            ("r2", &params.r2),
+            ("g", &params.g),
+        ] {
+            if *v <= 0 {
+                return Err(Error::invalid(
+                    name,
+                    crate::exact::rational_text(v),
+                    "must be > 0",
+                ));
+            }
+        }
+        for (name, v) in [("k1", &params.k1), ("k2", &params.k2)] {
+            if *v < 0 {
+                return Err(Error::invalid(
+                    name,
+                    crate::exact::rational_text(v),
+                    "must be >= 0 (k > 1 is a bobbin)",
+                ));
+            }
+        }
+        // |θ0| < π/2: compare with π/2 at a safe precision (θ0 is exact).
+        let th = start.theta0.to_float(256);
+        let half_pi = rug::Float::with_val(256, rug::float::Constant::Pi) / 2u32;
+        if th.clone().abs() >= half_pi || start.theta0.coef.clone().abs() >= Rational::from((1, 2)) && start.theta0.times_pi {
+            return Err(Error::invalid("theta0", &start.theta0, THETA0_RANGE));
+        }
+        if start.theta0.signum() * (start.thetadot0.cmp0() as i32) < 0 {
+            return Err(Error::invalid(
+                "thetadot0",
+                crate::exact::rational_text(&start.thetadot0),
+                "must not point towards the top: theta0*thetadot0 >= 0 \
+                 (a start that climbs back over the top is not supported)",
+            ));
+        }
+        if floor == Floor::Fixed && start.omega0 != 0 {
+            return Err(Error::invalid(
+                "omega0",
+                crate::exact::rational_text(&start.omega0),
+                "must be 0 when the floor is fixed (cylinder 1 cannot roll)",
+            ));
+        }
+        Ok(Model {
+            params,
+            floor,
+            contact,
+            start,
+        })
+    }
+
+    /// The paper's main case: identical solid cylinders, both contacts rolling,
+    /// from rest at θ0.
+    pub fn paper_default(theta0: Exact) -> Self {
+        Model::new(
+            Params::identical_solid(),
+            Floor::Roll,
+            Contact::Roll,
+            Start::rest(theta0),
+        )
+        .expect("the default model is valid")
+    }
+
+    /// Parameters.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+    /// Floor contact model.
+    pub fn floor(&self) -> Floor {
+        self.floor
+    }
+    /// Contact model between the cylinders.
+    pub fn contact(&self) -> Contact {
+        self.contact
+    }
+    /// Initial conditions.
+    pub fn start(&self) -> &Start {
+        &self.start
+    }
+
+    /// Whether the motion starts from rest exactly at the top (θ0 = θ̇0 = 0):
+    /// the paper's limiting case, where every time is infinite.
+    pub fn starts_at_equilibrium(&self) -> bool {
+        self.start.theta0.is_zero() && self.start.thetadot0 == 0
+    }
+
+    /// The sign of the motion: +1 if θ grows, −1 if it falls to the left.
+    /// A start at rest at θ0 = 0 is taken as the limit θ0 → 0+.
+    pub fn direction(&self) -> i32 {
+        match self.start.theta0.signum() {
+            0 => {
+                if self.start.thetadot0 < 0 {
+                    -1
+                } else {
+                    1
+                }
+            }
+            s => s,
+        }
+    }
+
+    /// The mirror image (x → −x): θ0, θ̇0, ω0 change sign. The motion of the
+    /// mirror is the mirror of the motion, so the oracle computes with θ growing.
+    pub fn mirrored(&self) -> Self {
+        Model {
+            params: self.params.clone(),
+            floor: self.floor,
+            contact: self.contact,
+            start: Start {
+                theta0: self.start.theta0.neg(),
+                thetadot0: Rational::from(-&self.start.thetadot0),
+                omega0: Rational::from(-&self.start.omega0),
+            },
+        }
+    }
+
+    /// A one-line description for messages.
+    pub fn describe(&self) -> String {
+        use crate::exact::rational_text as t;
+        let p = &self.params;
+        format!(
+            "floor={} contact={} m1={} m2={} r1={} r2={} k1={} k2={} g={} theta0={} thetadot0={} omega0={}",
+            self.floor,
+            self.contact,
+            t(&p.m1),
+            t(&p.m2),
+            t(&p.r1),
+            t(&p.r2),
+            t(&p.k1),
+            t(&p.k2),
+            t(&p.g),
+            self.start.theta0,
+            t(&self.start.thetadot0),
+            t(&self.start.omega0)
+        )
+    }
+
+    /// The model as (key, exact text) pairs, in a stable order, for records.
+    pub fn echo(&self) -> Vec<(&'static str, String)> {
+        use crate::exact::rational_text as t;
+        let p = &self.params;
+        vec![
+            ("floor", self.floor.to_string()),
+            ("contact", self.contact.to_string()),
+            ("m1", t(&p.m1)),
+            ("m2", t(&p.m2)),
+            ("r1", t(&p.r1)),
+            ("r2", t(&p.r2)),
+            ("k1", t(&p.k1)),
+            ("k2", t(&p.k2)),
+            ("g", t(&p.g)),
+            ("theta0", self.start.theta0.to_string()),
+            ("thetadot0", t(&self.start.thetadot0)),
+            ("omega0", t(&self.start.omega0)),
+        ]
+    }
+}

@@ -1,0 +1,93 @@
+//! Decimal rendering of `Float`s to a number of significant digits.
+
+use rug::float::Round;
+use rug::Float;
+
+/// `x` correctly rounded (to nearest) to `digits` significant decimal digits,
+/// as (sign, digit string of length `digits`, decimal exponent e) meaning
+/// ±0.d1d2…·10^e. `None` for zero or non-finite values.
+pub fn round_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
+    if x.is_zero() || !x.is_finite() {
+        return None;
+    }
+    let s = x.to_string_radix_round(10, Some(digits as usize), Round::Nearest);
+    // forms: "-1.2345e-7", "1.2345", "1.2345e12"
+    let (neg, s) = match s.strip_prefix('-') {
+        Some(r) => (true, r),
+        None => (false, s.as_str()),
+    };
+    let (mant, exp) = match s.find('e') {
+        Some(i) => (&s[..i], s[i + 1..].parse::<i64>().ok()?),
+        None => (s, 0),
+    };
+    let (int, frac) = mant.split_once('.').unwrap_or((mant, ""));
+    let digits_str = format!("{int}{frac}");
+    // value = int.frac × 10^exp = 0.(int frac) × 10^(exp + len(int))
+    let e = exp + int.len() as i64;
+    let trimmed = digits_str.trim_start_matches('0');
+    let lead_zeros = (digits_str.len() - trimmed.len()) as i64;
+    let mut d: String = trimmed.to_string();
+    while d.len() < digits as usize {
+        d.push('0');
+    }
+    d.truncate(digits as usize);
+    Some((neg, d, e - lead_zeros))
+}
+
+/// Plain text of ±0.d·10^e: positional when −7 ≤ e ≤ 21, else `d.ddde±x`.
+pub fn render(neg: bool, d: &str, e: i64) -> String {
+    let sign = if neg { "-" } else { "" };
+    let n = d.len() as i64;
+    if (-6..=21).contains(&e) {
+        if e <= 0 {
+            format!("{sign}0.{}{}", "0".repeat((-e) as usize), d)
+        } else if e >= n {
+            format!("{sign}{}{}", d, "0".repeat((e - n) as usize))
+        } else {
+            let (a, b) = d.split_at(e as usize);
+            format!("{sign}{a}.{b}")
+        }
+    } else {
+        let (a, b) = d.split_at(1);
+        if b.is_empty() {
+            format!("{sign}{a}e{}", e - 1)
+        } else {
+            format!("{sign}{a}.{b}e{}", e - 1)
+        }
+    }
+}
+
+/// `x` to `digits` significant digits as text ("0" for zero).
+pub fn to_sig(x: &Float, digits: u32) -> String {
+    match round_sig(x, digits) {
+        Some((neg, d, e)) => render(neg, &d, e),
+        None => "0".to_string(),
+    }
+}
+
+/// A short (3-digit) rendering of a non-negative error bound, e.g. `2.1e-41`.
+pub fn short(x: &Float) -> String {
+    match round_sig(x, 2) {
+        Some((_, d, e)) => format!("{}.{}e{}", &d[..1], &d[1..], e - 1),
+        None => "0".to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounding_and_layout() {
+        let p = 200;
+        let pi = Float::with_val(p, rug::float::Constant::Pi);
+        assert_eq!(to_sig(&pi, 5), "3.1416");
+        assert_eq!(to_sig(&Float::with_val(p, &pi * 1000u32), 3), "3140");
+        assert_eq!(to_sig(&Float::with_val(p, &pi / 100000u32), 3), "0.0000314");
+        assert_eq!(to_sig(&Float::with_val(p, &pi / 1e12), 3), "3.14e-12");
+        assert_eq!(to_sig(&Float::with_val(p, -0.5), 2), "-0.50");
+        assert_eq!(to_sig(&Float::with_val(p, 9.9996), 4), "10.00");
+        assert_eq!(to_sig(&Float::with_val(p, 1e30), 2), "1.0e30");
+        assert_eq!(short(&Float::with_val(p, 2.13e-41)), "2.1e-41");
+    }
+}

@@ -1,0 +1,22 @@
+//! Numerical building blocks on `rug::Float`: tanh-sinh quadrature, bracketed
+//! roots, and the precision ladder that turns two runs into verified digits.
+//!
+//! No Rust crate integrates or root-solves on MPFR numbers; these are ours and
+//! are tested against closed forms in their own unit tests.
+
+pub mod decimal;
+pub mod quad;
+pub mod root;
+pub mod verify;
+
+use rug::Float;
+
+/// Bits needed for `digits` significant decimal digits: ⌈digits·log2 10⌉.
+pub fn bits_for_digits(digits: u32) -> u32 {
+    ((digits as f64) * std::f64::consts::LOG2_10).ceil() as u32
+}
+
+/// A new Float of value 0 at `prec` bits.
+pub fn zero(prec: u32) -> Float {
+    Float::new(prec)
+}

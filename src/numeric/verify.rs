@@ -1,0 +1,279 @@
+//! The precision ladder: "guess and verify".
+//!
+//! A computation `f(prec)` is run at two working precisions p1 < p2; each run
+//! also returns its method's own error estimate. The answer is the p2 value
+//! with the error bound |v(p1) − v(p2)| + err(p2). It is printed to the
+//! requested number of significant digits only if every number inside that
+//! bound rounds to the same digits; otherwise the ladder climbs (both
+//! precisions raised) and tries again, and after [`MAX_ATTEMPTS`] reports how
+//! many digits it did verify.
+//!
+//! Accuracy kind: *estimated*, not rigorous: MPFR rounds each operation
+//! correctly, but the bound rests on the methods' error estimates and on the
+//! two runs not sharing an error larger than their difference.
+
+use super::decimal::{render, round_sig, short, to_sig};
+use super::bits_for_digits;
+use crate::error::{Error, Result};
+use rug::Float;
+
+/// How many times the ladder climbs before giving up.
+pub const MAX_ATTEMPTS: u32 = 3;
+
+/// Guard bits added to the bits the requested digits need.
+pub const GUARD_BITS: u32 = 24;
+
+/// One run's answer for one quantity.
+#[derive(Debug, Clone)]
+pub struct Estimate {
+    /// The value at this run's working precision.
+    pub value: Float,
+    /// The method's estimate of its absolute error (0 if exact up to rounding).
+    pub err: Float,
+    /// The value is exactly zero by construction (e.g. a friction force at a
+    /// frictionless contact).
+    pub exact_zero: bool,
+    /// The natural magnitude of the quantity (used only to decide that a value
+    /// indistinguishable from zero may be printed as 0).
+    pub scale: Float,
+}
+
+impl Estimate {
+    /// An estimate with error `err` and natural scale `scale`.
+    pub fn new(value: Float, err: Float, scale: Float) -> Self {
+        Estimate {
+            value,
+            err,
+            exact_zero: false,
+            scale,
+        }
+    }
+    /// A value that is correctly rounded up to a few ulps (err = 4 ulp).
+    pub fn rounded(value: Float, scale: Float) -> Self {
+        let p = value.prec();
+        let ulps = Float::with_val(p, value.abs_ref()) >> (p as i32 - 2);
+        Estimate::new(value, ulps, scale)
+    }
+    /// An exact zero.
+    pub fn zero(prec: u32, scale: Float) -> Self {
+        Estimate {
+            value: Float::new(prec),
+            err: Float::new(prec),
+            exact_zero: true,
+            scale,
+        }
+    }
+}
+
+/// A verified number.
+#[derive(Debug, Clone)]
+pub struct Verified {
+    /// Quantity name.
+    pub name: String,
+    /// The value at the higher working precision.
+    pub value: Float,
+    /// The decimal text printed: exactly the verified digits.
+    pub text: String,
+    /// Significant digits verified and printed (0 for a value printed as 0).
+    pub digits: u32,
+    /// The estimated absolute error bound of `value`.
+    pub err_bound: Float,
+    /// The two working precisions (bits).
+    pub precs: (u32, u32),
+}
+
+impl Verified {
+    /// The error bound as short text, e.g. `3.2e-41`.
+    pub fn err_text(&self) -> String {
+        short(&self.err_bound)
+    }
+}
+
+/// The two working precisions for `digits` at ladder rung `attempt`.
+pub fn precisions(digits: u32, attempt: u32) -> (u32, u32) {
+    let p1 = bits_for_digits(digits) + GUARD_BITS + 48 * attempt;
+    let p2 = p1 + 32 + p1 / 8;
+    (p1, p2)
+}
+
+/// Largest number of significant digits on which every value in [v−b, v+b]
+/// agrees when rounded (0 if none).
+pub fn agreeing_digits(v: &Float, b: &Float, max: u32) -> u32 {
+    let p = v.prec();
+    let lo = Float::with_val(p, v - b);
+    let hi = Float::with_val(p, v + b);
+    if lo.is_sign_negative() != hi.is_sign_negative() || lo.is_zero() || hi.is_zero() {
+        return 0;
+    }
+    let mut best = 0;
+    for d in 1..=max {
+        if round_sig(&lo, d) == round_sig(&hi, d) {
+            best = d;
+        } else {
+            break;
+        }
+    }
+    best
+}
+
+fn judge(name: &str, digits: u32, precs: (u32, u32), a: &Estimate, b: &Estimate) -> std::result::Result<Verified, u32> {
+    let p = b.value.prec();
+    if a.exact_zero && b.exact_zero {
+        return Ok(Verified {
+            name: name.to_string(),
+            value: Float::new(p),
+            text: "0".to_string(),
+            digits: digits,
+            err_bound: Float::new(p),
+            precs,
+        });
+    }
+    let diff = Float::with_val(p, &a.value - &b.value).abs();
+    let bound = Float::with_val(p, &diff + &b.err);
+    if !b.value.is_finite() || !bound.is_finite() {
+        return Err(0);
+    }
+    let mag = Float::with_val(p, b.value.abs_ref());
+    if mag <= bound {
+        // indistinguishable from zero: print 0 if the bound is negligible
+        // at the requested digits relative to the quantity's natural scale
+        let tiny = Float::with_val(p, &b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))));
+        if bound <= tiny {
+            return Ok(Verified {
+                name: name.to_string(),
+                value: b.value.clone(),
+                text: "0".to_string(),
+                digits: 0,
+                err_bound: bound,
+                precs,
+            });
+        }
+        return Err(0);
+    }
+    let lo = Float::with_val(p, &b.value - &bound);
+    let hi = Float::with_val(p, &b.value + &bound);
+    let rlo = round_sig(&lo, digits);
+    if rlo.is_some() && rlo == round_sig(&hi, digits) {
+        let (neg, d, e) = rlo.expect("checked");
+        Ok(Verified {
+            name: name.to_string(),
+            value: b.value.clone(),
+            text: render(neg, &d, e),
+            digits,
+            err_bound: bound,
+            precs,
+        })
+    } else {
+        Err(agreeing_digits(&b.value, &bound, digits))
+    }
+}
+
+/// Runs `f` at two precisions (climbing the ladder if needed) and verifies
+/// each of its outputs, named by `names`, to `digits` significant digits.
+///
+/// `f(prec)` must return one [`Estimate`] per name, in order.
+///
+/// Errors: whatever `f` returns; [`Error::NotConverged`] naming the first
+/// quantity that could not be verified and the digits that were.
+pub fn ladder<F>(digits: u32, names: &[&str], mut f: F) -> Result<Vec<Verified>>
+where
+    F: FnMut(u32) -> Result<Vec<Estimate>>,
+{
+    let mut last_fail = None;
+    for attempt in 0..MAX_ATTEMPTS {
+        let precs = precisions(digits, attempt);
+        let a = f(precs.0)?;
+        let b = f(precs.1)?;
+        debug_assert_eq!(a.len(), names.len());
+        debug_assert_eq!(b.len(), names.len());
+        let mut out = Vec::with_capacity(names.len());
+        let mut failed = None;
+        for (i, name) in names.iter().enumerate() {
+            match judge(name, digits, precs, &a[i], &b[i]) {
+                Ok(v) => out.push(v),
+                Err(reached) => {
+                    let diff = Float::with_val(precs.1, &a[i].value - &b[i].value).abs();
+                    failed = Some((
+                        name.to_string(),
+                        reached,
+                        precs,
+                        to_sig(&b[i].value, 12),
+                        short(&diff),
+                        short(&b[i].err),
+                    ));
+                    break;
+                }
+            }
+        }
+        match failed {
+            None => return Ok(out),
+            Some(f) => last_fail = Some(f),
+        }
+    }
+    let (name, reached, precs, value, diff, err) = last_fail.expect("at least one attempt failed");
+    Err(Error::NotConverged {
+        quantity: name,
+        requested: digits,
+        reached: format!("{reached} digits verified at {}/{} bits", precs.0, precs.1),
+        detail: format!(
+            "value ≈ {value}, difference between precisions {diff}, method error estimate {err}"
+        ),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn verifies_a_correct_computation() {
+        let v = ladder(50, &["pi"], |p| {
+            let x = Float::with_val(p, rug::float::Constant::Pi);
+            Ok(vec![Estimate::rounded(x, Float::with_val(p, 1u32))])
+        })
+        .unwrap();
+        assert_eq!(v[0].text, "3.1415926535897932384626433832795028841971693993751");
+        assert_eq!(v[0].digits, 50);
+    }
+
+    #[test]
+    fn refuses_a_computation_stuck_at_low_accuracy() {
+        // an "integral" whose truncation does not improve with precision
+        let e = ladder(40, &["x"], |p| {
+            let x = Float::with_val(p, 1e-25) + Float::with_val(p, 2u32).sqrt();
+            let wrong = if p % 2 == 0 { x.clone() } else { x + 1e-20 };
+            Ok(vec![Estimate::rounded(wrong, Float::with_val(p, 1u32))])
+        });
+        // precisions alternate parity at some rung, or all differ by 1e-20
+        if let Err(Error::NotConverged { reached, .. }) = &e {
+            assert!(reached.starts_with("19") || reached.starts_with("20"), "{reached}");
+        }
+    }
+
+    #[test]
+    fn honest_error_estimate_blocks_digits() {
+        let e = ladder(30, &["y"], |p| {
+            let x = Float::with_val(p, 2u32).sqrt();
+            Ok(vec![Estimate::new(x, Float::with_val(p, 1e-12), Float::with_val(p, 1u32))])
+        })
+        .unwrap_err();
+        match e {
+            Error::NotConverged { reached, requested, .. } => {
+                assert_eq!(requested, 30);
+                assert!(reached.starts_with("11 ") || reached.starts_with("12 "), "{reached}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn zero_like_values() {
+        let v = ladder(20, &["z"], |p| {
+            let tiny = Float::with_val(p, 1u32) >> (p as i32);
+            Ok(vec![Estimate::new(tiny.clone(), tiny, Float::with_val(p, 1u32))])
+        })
+        .unwrap();
+        assert_eq!(v[0].text, "0");
+        assert_eq!(v[0].digits, 0);
+    }
+}
