@@ -1,0 +1,157 @@
+//! Closed forms the oracle must reproduce to every requested digit. Each
+//! expected value is computed here independently of the oracle (MPFR
+//! elementary functions of an exact argument, or the Arb references of
+//! `../shared/bench/results/reference.json` copied below).
+
+use cylroll::exact::Exact;
+use cylroll::mechanics::Reduced;
+use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::numeric::decimal::to_sig;
+use cylroll::oracle::Oracle;
+use rug::{Float, Rational};
+
+fn q(s: &str) -> Rational {
+    Exact::parse("q", s, false).unwrap().coef
+}
+
+fn model(floor: Floor, contact: Contact, k2: &str, m2: &str, theta0: &str) -> Model {
+    let mut p = Params::identical_solid();
+    p.k2 = q(k2);
+    p.m2 = q(m2);
+    Model::new(p, floor, contact, Start::rest(Exact::parse("theta0", theta0, true).unwrap())).unwrap()
+}
+
+/// acos(x) for an exact rational x, to `digits` significant digits.
+fn acos_text(x: &Rational, digits: u32) -> String {
+    let p = digits * 4 + 64;
+    to_sig(&Float::with_val(p, x).acos(), digits)
+}
+
+#[test]
+fn fixed_lower_cylinder_eq_36() {
+    // footnote 8: cos θs = 2/(3 + k2): 2/3 (point / frictionless), 4/7 (solid), 10/17 (sphere-like k2 = 2/5)
+    for (contact, k2, digits) in [
+        (Contact::Slip, "1/2", 60),
+        (Contact::Roll, "1/2", 60),
+        (Contact::Roll, "2/5", 60),
+        (Contact::Roll, "0", 40),
+        (Contact::Roll, "1", 40),
+        (Contact::Roll, "7/3", 200),
+    ] {
+        let m = model(Floor::Fixed, contact, k2, "1", "0");
+        let mut o = Oracle::new(&m, digits).unwrap();
+        let s = o.separation().unwrap();
+        let k = if contact == Contact::Slip { Rational::new() } else { q(k2) };
+        let c = Rational::from(2) / (Rational::from(3) + k);
+        assert_eq!(s.theta_s.text, acos_text(&c, digits), "{contact:?} k2={k2}");
+        assert!(s.t_s.is_none(), "rest at the top: infinite separation time");
+    }
+}
+
+#[test]
+fn identical_solid_cylinders_separate_at_pi_over_3() {
+    // bench T2: for m1 = m2, k1 = k2 = 1/2 both rolling, θs = π/3 exactly
+    for digits in [30, 300, 1000] {
+        let m = Model::paper_default(Exact::zero());
+        let mut o = Oracle::new(&m, digits).unwrap();
+        let s = o.separation().unwrap();
+        let pi3 = Float::with_val(digits * 4 + 64, rug::float::Constant::Pi) / 3u32;
+        assert_eq!(s.theta_s.text, to_sig(&pi3, digits), "digits {digits}");
+    }
+}
+
+#[test]
+fn bench_t2b_non_degenerate_root() {
+    // m2 = 2: θs = 1.094098559385214477287125461950827533993215543… (Arb, bench T2b)
+    let m = model(Floor::Roll, Contact::Roll, "1/2", "2", "0");
+    let mut o = Oracle::new(&m, 45).unwrap();
+    let s = o.separation().unwrap();
+    assert_eq!(s.theta_s.text, "1.09409855938521447728712546195082753399321554");
+}
+
+#[test]
+fn bench_t1_time_integral() {
+    // T1 = 4.924315468243287509589438907674409756197297165837… (Arb, 1100 digits)
+    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+    let mut o = Oracle::new(&m, 48).unwrap();
+    let t = o.time_at(&Exact::parse("to", "9/10", false).unwrap()).unwrap();
+    assert_eq!(t.text, "4.92431546824328750958943890767440975619729716584");
+}
+
+#[test]
+fn bench_t3_theta_at_t_end() {
+    // θ(t_end) = 1.017720047898565541324320788879807079184492603… at
+    // t_end = 5.146758983122540901696317082705216339477… (Arb reference)
+    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+    let mut o = Oracle::new(&m, 38).unwrap();
+    let t_end = Exact::parse("t", "5.146758983122540901696317082705216339477", false).unwrap();
+    let rows = o.trajectory(&[t_end]).unwrap();
+    // t_end is given to 40 digits; θ̇ ≈ 0.56 so θ is determined to ~40 digits too
+    assert_eq!(rows[0][1].text, "1.0177200478985655413243207888798070792");
+}
+
+#[test]
+fn slip_slip_corrected_eq_43() {
+    // Derived here: with P_x = 0 and (40), N12 = 0 gives
+    //   m2 cos³θs = (m1 + m2)(3 cos θs − 2)
+    // (the paper prints cos²). For m1 = m2 the root is cos θs = √3 − 1.
+    let m = model(Floor::Slip, Contact::Slip, "1/2", "1", "0");
+    let mut o = Oracle::new(&m, 50).unwrap();
+    let s = o.separation().unwrap();
+    let p = 300;
+    let c = Float::with_val(p, 3u32).sqrt() - 1u32;
+    assert_eq!(s.theta_s.text, to_sig(&c.acos(), 50));
+    // and for m2 = 3 m1 (from the cubic 3c³ − 12c + 8 = 0, solved by bisection here)
+    let m = model(Floor::Slip, Contact::Slip, "1/2", "3", "0");
+    let mut o = Oracle::new(&m, 40).unwrap();
+    let s = o.separation().unwrap();
+    let (mut lo, mut hi) = (Float::with_val(p, 0.5), Float::with_val(p, 1u32));
+    for _ in 0..p {
+        let mid = Float::with_val(p, &lo + &hi) / 2u32;
+        let cube = Float::with_val(p, mid.square_ref()) * &mid;
+        let f = Float::with_val(p, cube * 3u32) - Float::with_val(p, &mid * 12u32) + 8u32;
+        if f.is_sign_positive() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    assert_eq!(s.theta_s.text, to_sig(&lo.acos(), 40));
+}
+
+#[test]
+fn energy_forms_of_footnotes_6_and_11() {
+    // footnote 6 (roll/roll, identical, k = 1/2): θ̇² = 12 g(1 − cos θ)/(a(17 + 4 cos θ − 4 cos²θ)), a = r/2
+    //   ⇔ K(c) = (17 + 4c − 4c²)/12
+    let red = Reduced::new(&Model::paper_default(Exact::zero())).unwrap();
+    assert_eq!(red.q, [q("17/12"), q("1/3"), q("-1/3")]);
+    // footnote 11 (slip/roll, k1 = k2 = 1/2): (3 m1 + 2 m2 sin²θ) θ̇² = 4 (m1+m2) g (1 − cos θ)/r
+    //   ⇔ K(c) = (3 m1 + 2 m2 (1 − c²)) / (2 (m1 + m2)), for several mass ratios
+    for (m1, m2) in [("1", "1"), ("2", "3"), ("7/10", "5")] {
+        let mut p = Params::identical_solid();
+        p.m1 = q(m1);
+        p.m2 = q(m2);
+        let m = Model::new(p.clone(), Floor::Slip, Contact::Roll, Start::rest(Exact::zero())).unwrap();
+        let red = Reduced::new(&m).unwrap();
+        let den = Rational::from(&p.m1 + &p.m2) * 2u32;
+        let k0 = (Rational::from(&p.m1 * 3u32) + Rational::from(&p.m2 * 2u32)) / &den;
+        let k2 = Rational::from(&p.m2 * -2i32) / &den;
+        assert_eq!(red.q, [k0, Rational::new(), k2], "m1={m1} m2={m2}");
+    }
+}
+
+#[test]
+fn routh_roll_together_footnote_12() {
+    // identical cylinders, frictionless floor, rolling contact: φ̇1 = θ̇ and φ2 = 0
+    let mut p = Params::identical_solid();
+    p.k1 = q("3/10");
+    p.k2 = q("3/10");
+    let m = Model::new(p, Floor::Slip, Contact::Roll, Start::rest(Exact::zero())).unwrap();
+    let red = Reduced::new(&m).unwrap();
+    // φ̇1 = (α + β c) θ̇ with α = 1, β = 0
+    assert_eq!(red.alpha[1], Rational::from(1));
+    assert_eq!(red.beta[1], Rational::new());
+    // ψ̇2 = (r1 φ̇1 − r θ̇)/r2 = −θ̇ : φ2 = ψ2 + θ stays 0
+    assert_eq!(red.alpha[2], Rational::from(-1));
+    assert_eq!(red.beta[2], Rational::new());
+}
