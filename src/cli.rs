@@ -27,7 +27,7 @@ pub enum Command {
         #[command(flatten)]
         common: Common,
         /// Friction coefficient: report where rolling without slipping first fails
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         mu: Option<String>,
     },
     /// Time from the start to the angle --to
@@ -51,10 +51,10 @@ pub enum Command {
         #[command(flatten)]
         common: Common,
         /// Comma-separated times
-        #[arg(long, conflicts_with_all = ["t_end", "steps"])]
+        #[arg(long, allow_hyphen_values = true, conflicts_with_all = ["t_end", "steps"])]
         times: Option<String>,
         /// Last time of an equally spaced grid (with --steps)
-        #[arg(long, requires = "steps")]
+        #[arg(long, allow_hyphen_values = true, requires = "steps")]
         t_end: Option<String>,
         /// Number of intervals of the grid 0, t_end/N, ..., t_end
         #[arg(long, requires = "t_end")]
@@ -81,21 +81,21 @@ pub struct Common {
     /// Contact between the cylinders: roll | slip
     #[arg(long)]
     contact: Option<String>,
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     m1: Option<String>,
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     m2: Option<String>,
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     r1: Option<String>,
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     r2: Option<String>,
     /// I1 = k1 m1 r1^2
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     k1: Option<String>,
     /// I2 = k2 m2 r2^2
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     k2: Option<String>,
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     g: Option<String>,
     /// Initial angle of the line of centres, clockwise from vertical (radians)
     #[arg(long, allow_hyphen_values = true)]
@@ -115,7 +115,18 @@ pub struct Common {
 }
 
 const MODEL_KEYS: [&str; 12] = [
-    "floor", "contact", "m1", "m2", "r1", "r2", "k1", "k2", "g", "theta0", "thetadot0", "omega0",
+    "floor",
+    "contact",
+    "m1",
+    "m2",
+    "r1",
+    "r2",
+    "k1",
+    "k2",
+    "g",
+    "theta0",
+    "thetadot0",
+    "omega0",
 ];
 
 impl Common {
@@ -146,7 +157,11 @@ impl Common {
                 what: e.to_string(),
             })?;
             let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-                Error::invalid("params", path.display(), format!("not valid TOML: {}", e.message()))
+                Error::invalid(
+                    "params",
+                    path.display(),
+                    format!("not valid TOML: {}", e.message()),
+                )
             })?;
             for (k, v) in table {
                 if !MODEL_KEYS.contains(&k.as_str()) {
@@ -232,7 +247,11 @@ impl Answer {
 
     fn text(&self) -> String {
         let mut out = String::new();
-        out.push_str(&format!("# cylroll {} — {}\n", self.command, self.model.describe()));
+        out.push_str(&format!(
+            "# cylroll {} — {}\n",
+            self.command,
+            self.model.describe()
+        ));
         out.push_str(&format!("# {} significant digits requested; each value below is verified to the digits printed\n", self.digits));
         let w = self.values.iter().map(|v| v.name.len()).max().unwrap_or(0);
         for v in &self.values {
@@ -275,7 +294,13 @@ impl Answer {
             errs.insert(v.name.clone(), v.err_text().into());
         }
         if let Some((cols, rows)) = &self.table {
-            o.insert("columns".into(), cols.iter().map(|c| serde_json::Value::from(*c)).collect::<Vec<_>>().into());
+            o.insert(
+                "columns".into(),
+                cols.iter()
+                    .map(|c| serde_json::Value::from(*c))
+                    .collect::<Vec<_>>()
+                    .into(),
+            );
             let mut min_digits = self.digits;
             let rows_json: Vec<serde_json::Value> = rows
                 .iter()
@@ -295,7 +320,14 @@ impl Answer {
         }
         o.insert("digits_verified".into(), verified.into());
         o.insert("error_bounds".into(), errs.into());
-        o.insert("notes".into(), self.notes.iter().map(|n| serde_json::Value::from(n.as_str())).collect::<Vec<_>>().into());
+        o.insert(
+            "notes".into(),
+            self.notes
+                .iter()
+                .map(|n| serde_json::Value::from(n.as_str()))
+                .collect::<Vec<_>>()
+                .into(),
+        );
         let _ = json_str;
         serde_json::to_string_pretty(&serde_json::Value::Object(o)).expect("serializable") + "\n"
     }
@@ -313,7 +345,13 @@ impl Answer {
         } else {
             out.push_str("key,value,digits_verified,error_bound\n");
             for v in &self.values {
-                out.push_str(&format!("{},{},{},{}\n", v.name, v.text, v.digits, v.err_text()));
+                out.push_str(&format!(
+                    "{},{},{},{}\n",
+                    v.name,
+                    v.text,
+                    v.digits,
+                    v.err_text()
+                ));
             }
         }
         out
@@ -335,7 +373,14 @@ pub fn run(cli: Cli) -> Result<String> {
             let mut values = vec![sep.theta_s];
             values.extend(sep.t_s);
             values.extend(sep.extra);
-            let a = Answer { command: "separation", model, digits: common.digits, values, notes: sep.notes, table: None };
+            let a = Answer {
+                command: "separation",
+                model,
+                digits: common.digits,
+                values,
+                notes: sep.notes,
+                table: None,
+            };
             (common, a)
         }
         Command::Time { common, to } => {
@@ -343,7 +388,14 @@ pub fn run(cli: Cli) -> Result<String> {
             let theta = Exact::parse("to", &to, true)?;
             let mut o = Oracle::new(&model, common.digits)?;
             let t = o.time_at(&theta)?;
-            let a = Answer { command: "time", model, digits: common.digits, values: vec![t], notes: vec![], table: None };
+            let a = Answer {
+                command: "time",
+                model,
+                digits: common.digits,
+                values: vec![t],
+                notes: vec![],
+                table: None,
+            };
             (common, a)
         }
         Command::Forces { common, theta } => {
@@ -352,10 +404,22 @@ pub fn run(cli: Cli) -> Result<String> {
             let mut o = Oracle::new(&model, common.digits)?;
             let values = o.forces_at(&th)?;
             debug_assert_eq!(values.len(), FORCE_KEYS.len());
-            let a = Answer { command: "forces", model, digits: common.digits, values, notes: vec![], table: None };
+            let a = Answer {
+                command: "forces",
+                model,
+                digits: common.digits,
+                values,
+                notes: vec![],
+                table: None,
+            };
             (common, a)
         }
-        Command::Trajectory { common, times, t_end, steps } => {
+        Command::Trajectory {
+            common,
+            times,
+            t_end,
+            steps,
+        } => {
             let model = common.model()?;
             let times = match (times, t_end, steps) {
                 (Some(list), _, _) => parse_list("times", &list)?,
@@ -365,10 +429,16 @@ pub fn run(cli: Cli) -> Result<String> {
                     }
                     let te = Exact::parse("t-end", &te, false)?;
                     (0..=n)
-                        .map(|i| Exact::rational(Rational::from(&te.coef * Rational::from((i, n)))))
+                        .map(|i| Exact::rational(&te.coef * Rational::from((i, n))))
                         .collect()
                 }
-                _ => return Err(Error::invalid("times", "", "give --times t1,t2,... or --t-end T --steps N")),
+                _ => {
+                    return Err(Error::invalid(
+                        "times",
+                        "",
+                        "give --times t1,t2,... or --t-end T --steps N",
+                    ))
+                }
             };
             let mut o = Oracle::new(&model, common.digits)?;
             let rows = o.trajectory(&times)?;

@@ -159,7 +159,7 @@ pub fn rational_text(q: &Rational) -> String {
     if k == 0 {
         return q.numer().to_string();
     }
-    let scaled = Integer::from(q.numer() * Integer::from(Integer::u_pow_u(10, k)) / q.denom());
+    let scaled = q.numer() * Integer::from(Integer::u_pow_u(10, k)) / q.denom();
     let neg = scaled < 0;
     let digits = Integer::from(scaled.abs_ref()).to_string();
     let k = k as usize;
@@ -256,7 +256,9 @@ mod tests {
 
     #[test]
     fn rejects_garbage() {
-        for s in ["", "abc", "1/0", "nan", "inf", "1..2", "1e", "--1", "pi/0", "0x10"] {
+        for s in [
+            "", "abc", "1/0", "nan", "inf", "1..2", "1e", "--1", "pi/0", "0x10",
+        ] {
             assert!(Exact::parse("x", s, true).is_err(), "{s}");
         }
         assert!(Exact::parse("m1", "pi", false).is_err());

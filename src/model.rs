@@ -185,7 +185,9 @@ impl Model {
         // |θ0| < π/2: compare with π/2 at a safe precision (θ0 is exact).
         let th = start.theta0.to_float(256);
         let half_pi = rug::Float::with_val(256, rug::float::Constant::Pi) / 2u32;
-        if th.clone().abs() >= half_pi || start.theta0.coef.clone().abs() >= Rational::from((1, 2)) && start.theta0.times_pi {
+        if th.clone().abs() >= half_pi
+            || start.theta0.coef.clone().abs() >= Rational::from((1, 2)) && start.theta0.times_pi
+        {
             return Err(Error::invalid("theta0", &start.theta0, THETA0_RANGE));
         }
         if start.theta0.signum() * (start.thetadot0.cmp0() as i32) < 0 {

@@ -18,7 +18,13 @@ fn model(floor: Floor, contact: Contact, k2: &str, m2: &str, theta0: &str) -> Mo
     let mut p = Params::identical_solid();
     p.k2 = q(k2);
     p.m2 = q(m2);
-    Model::new(p, floor, contact, Start::rest(Exact::parse("theta0", theta0, true).unwrap())).unwrap()
+    Model::new(
+        p,
+        floor,
+        contact,
+        Start::rest(Exact::parse("theta0", theta0, true).unwrap()),
+    )
+    .unwrap()
 }
 
 /// acos(x) for an exact rational x, to `digits` significant digits.
@@ -41,7 +47,11 @@ fn fixed_lower_cylinder_eq_36() {
         let m = model(Floor::Fixed, contact, k2, "1", "0");
         let mut o = Oracle::new(&m, digits).unwrap();
         let s = o.separation().unwrap();
-        let k = if contact == Contact::Slip { Rational::new() } else { q(k2) };
+        let k = if contact == Contact::Slip {
+            Rational::new()
+        } else {
+            q(k2)
+        };
         let c = Rational::from(2) / (Rational::from(3) + k);
         assert_eq!(s.theta_s.text, acos_text(&c, digits), "{contact:?} k2={k2}");
         assert!(s.t_s.is_none(), "rest at the top: infinite separation time");
@@ -66,7 +76,10 @@ fn bench_t2b_non_degenerate_root() {
     let m = model(Floor::Roll, Contact::Roll, "1/2", "2", "0");
     let mut o = Oracle::new(&m, 45).unwrap();
     let s = o.separation().unwrap();
-    assert_eq!(s.theta_s.text, "1.09409855938521447728712546195082753399321554");
+    assert_eq!(
+        s.theta_s.text,
+        "1.09409855938521447728712546195082753399321554"
+    );
 }
 
 #[test]
@@ -74,7 +87,9 @@ fn bench_t1_time_integral() {
     // T1 = 4.924315468243287509589438907674409756197297165837… (Arb, 1100 digits)
     let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
     let mut o = Oracle::new(&m, 48).unwrap();
-    let t = o.time_at(&Exact::parse("to", "9/10", false).unwrap()).unwrap();
+    let t = o
+        .time_at(&Exact::parse("to", "9/10", false).unwrap())
+        .unwrap();
     assert_eq!(t.text, "4.92431546824328750958943890767440975619729716584");
 }
 
@@ -131,7 +146,13 @@ fn energy_forms_of_footnotes_6_and_11() {
         let mut p = Params::identical_solid();
         p.m1 = q(m1);
         p.m2 = q(m2);
-        let m = Model::new(p.clone(), Floor::Slip, Contact::Roll, Start::rest(Exact::zero())).unwrap();
+        let m = Model::new(
+            p.clone(),
+            Floor::Slip,
+            Contact::Roll,
+            Start::rest(Exact::zero()),
+        )
+        .unwrap();
         let red = Reduced::new(&m).unwrap();
         let den = Rational::from(&p.m1 + &p.m2) * 2u32;
         let k0 = (Rational::from(&p.m1 * 3u32) + Rational::from(&p.m2 * 2u32)) / &den;

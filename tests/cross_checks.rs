@@ -71,7 +71,8 @@ fn reduced_forces_match_lagrange_multipliers_and_newton_euler() {
                 };
                 let scale = Float::with_val(prec, &d.m1 + &d.m2) * &d.g;
                 for delta in ["0.01", "0.3", "0.6"] {
-                    let what = format!("{floor:?}/{contact:?} th0={th0} td0={td0} w0={w0} delta={delta}");
+                    let what =
+                        format!("{floor:?}/{contact:?} th0={th0} td0={td0} w0={w0} delta={delta}");
                     let st = d.state(&Float::with_val(prec, &q(delta)));
                     let f = d.forces(&st);
                     let k = kkt::solve(&bodies, floor, contact, &st.theta, &st.thetadot).unwrap();
@@ -79,10 +80,28 @@ fn reduced_forces_match_lagrange_multipliers_and_newton_euler() {
                     close(&f.n1, &k.n1, &scale, bits, &format!("N1 {what}"));
                     close(&f.f21, &k.f21, &scale, bits, &format!("F21 {what}"));
                     close(&f.n12, &k.n12, &scale, bits, &format!("N12 {what}"));
-                    close(&st.thetaddot, &k.qdd[4], &Float::with_val(prec, 1u32), bits, &format!("theta_ddot {what}"));
-                    close(&st.a[0], &k.qdd[0], &Float::with_val(prec, 1u32), bits, &format!("x1_ddot {what}"));
+                    close(
+                        &st.thetaddot,
+                        &k.qdd[4],
+                        &Float::with_val(prec, 1u32),
+                        bits,
+                        &format!("theta_ddot {what}"),
+                    );
+                    close(
+                        &st.a[0],
+                        &k.qdd[0],
+                        &Float::with_val(prec, 1u32),
+                        bits,
+                        &format!("x1_ddot {what}"),
+                    );
                     if floor != Floor::Slip || params.k1 != 0 {
-                        close(&st.a[1], &k.qdd[2], &Float::with_val(prec, 1u32), bits, &format!("phi1_ddot {what}"));
+                        close(
+                            &st.a[1],
+                            &k.qdd[2],
+                            &Float::with_val(prec, 1u32),
+                            bits,
+                            &format!("phi1_ddot {what}"),
+                        );
                     }
                     // Newton–Euler, body by body (n = (sinθ, cosθ), t = (cosθ, −sinθ))
                     let (s, c) = (&st.s, &st.c);
@@ -90,25 +109,57 @@ fn reduced_forces_match_lagrange_multipliers_and_newton_euler() {
                     let (m1, m2, r, g) = (&d.m1, &d.m2, &d.r, &d.g);
                     let ax = &st.a[0];
                     // cylinder 2 centre acceleration
-                    let a2x = Float::with_val(prec, ax + Float::with_val(prec, r * &st.thetaddot) * c)
-                        - Float::with_val(prec, r * &td2) * s;
-                    let a2y = -(Float::with_val(prec, r * &st.thetaddot) * s) - Float::with_val(prec, r * &td2) * c;
+                    let a2x =
+                        Float::with_val(prec, ax + Float::with_val(prec, r * &st.thetaddot) * c)
+                            - Float::with_val(prec, r * &td2) * s;
+                    let a2y = -(Float::with_val(prec, r * &st.thetaddot) * s)
+                        - Float::with_val(prec, r * &td2) * c;
                     // force of 1 on 2: N12 n + F21 t
                     let fx = Float::with_val(prec, &f.n12 * s) + Float::with_val(prec, &f.f21 * c);
                     let fy = Float::with_val(prec, &f.n12 * c) - Float::with_val(prec, &f.f21 * s);
-                    close(&Float::with_val(prec, m2 * &a2x), &fx, &scale, bits, &format!("cyl2 x {what}"));
-                    close(&Float::with_val(prec, m2 * &a2y), &Float::with_val(prec, &fy - Float::with_val(prec, m2 * g)), &scale, bits, &format!("cyl2 y {what}"));
+                    close(
+                        &Float::with_val(prec, m2 * &a2x),
+                        &fx,
+                        &scale,
+                        bits,
+                        &format!("cyl2 x {what}"),
+                    );
+                    close(
+                        &Float::with_val(prec, m2 * &a2y),
+                        &Float::with_val(prec, &fy - Float::with_val(prec, m2 * g)),
+                        &scale,
+                        bits,
+                        &format!("cyl2 y {what}"),
+                    );
                     // cylinder 2 spin: I2 ψ̈2 = r2 F21
-                    close(&Float::with_val(prec, &d.i2 * &st.a[2]), &Float::with_val(prec, &d.r2 * &f.f21), &scale, bits, &format!("cyl2 spin {what}"));
+                    close(
+                        &Float::with_val(prec, &d.i2 * &st.a[2]),
+                        &Float::with_val(prec, &d.r2 * &f.f21),
+                        &scale,
+                        bits,
+                        &format!("cyl2 spin {what}"),
+                    );
                     // cylinder 1: floor force (F1, N1), minus the force on 2, gravity
                     if floor != Floor::Fixed {
-                        close(&Float::with_val(prec, m1 * ax), &Float::with_val(prec, &f.f1 - &fx), &scale, bits, &format!("cyl1 x {what}"));
+                        close(
+                            &Float::with_val(prec, m1 * ax),
+                            &Float::with_val(prec, &f.f1 - &fx),
+                            &scale,
+                            bits,
+                            &format!("cyl1 x {what}"),
+                        );
                         // spin (clockwise φ1): −I1 φ̈1 = r1 (F1 + F21)
                         let lhs = -Float::with_val(prec, &d.i1 * &st.a[1]);
                         let rhs = Float::with_val(prec, &f.f1 + &f.f21) * &d.r1;
                         close(&lhs, &rhs, &scale, bits, &format!("cyl1 spin {what}"));
                     }
-                    close(&Float::with_val(prec, &f.n1 - &fy), &Float::with_val(prec, m1 * g), &scale, bits, &format!("cyl1 y {what}"));
+                    close(
+                        &Float::with_val(prec, &f.n1 - &fy),
+                        &Float::with_val(prec, m1 * g),
+                        &scale,
+                        bits,
+                        &format!("cyl1 y {what}"),
+                    );
                     if floor == Floor::Slip {
                         assert!(f.f1.is_zero() && k.f1.is_zero());
                     }
@@ -159,7 +210,11 @@ fn trajectory_is_consistent_with_its_own_time_integral_and_derivative() {
         Params::identical_solid(),
         Floor::Roll,
         Contact::Roll,
-        Start { theta0: Exact::parse("t", "0.2", false).unwrap(), thetadot0: q("0.1"), omega0: q("0.5") },
+        Start {
+            theta0: Exact::parse("t", "0.2", false).unwrap(),
+            thetadot0: q("0.1"),
+            omega0: q("0.5"),
+        },
     )
     .unwrap();
     let mut o = Oracle::new(&m, 30).unwrap();
@@ -169,7 +224,10 @@ fn trajectory_is_consistent_with_its_own_time_integral_and_derivative() {
         .map(|s| Exact::parse("t", s, false).unwrap())
         .collect();
     let rows = o.trajectory(&times).unwrap();
-    let th: Vec<f64> = rows.iter().map(|r| r[1].text.parse::<f64>().unwrap()).collect();
+    let th: Vec<f64> = rows
+        .iter()
+        .map(|r| r[1].text.parse::<f64>().unwrap())
+        .collect();
     let thd: f64 = rows[1][2].text.parse().unwrap();
     let fd = (th[2] - th[0]) / (2.0 * h.parse::<f64>().unwrap());
     assert!((fd - thd).abs() < 1e-9, "{fd} vs {thd}");
@@ -177,12 +235,21 @@ fn trajectory_is_consistent_with_its_own_time_integral_and_derivative() {
     let t = o.time_at(&theta).unwrap();
     let tf: f64 = t.text.parse().unwrap();
     assert!((tf - 3.0).abs() < 1e-25);
-    assert!(t.text.starts_with("3.0000000000000000000000000") || t.text.starts_with("2.9999999999999999999999999"), "{}", t.text);
+    assert!(
+        t.text.starts_with("3.0000000000000000000000000")
+            || t.text.starts_with("2.9999999999999999999999999"),
+        "{}",
+        t.text
+    );
 }
 
 #[test]
 fn same_digits_at_two_requested_precisions() {
-    for (floor, contact) in [(Floor::Roll, Contact::Roll), (Floor::Slip, Contact::Roll), (Floor::Roll, Contact::Slip)] {
+    for (floor, contact) in [
+        (Floor::Roll, Contact::Roll),
+        (Floor::Slip, Contact::Roll),
+        (Floor::Roll, Contact::Slip),
+    ] {
         let m = Model::new(
             Params::identical_solid(),
             floor,
@@ -208,7 +275,11 @@ fn mirror_image_motion() {
             Params::identical_solid(),
             Floor::Roll,
             Contact::Roll,
-            Start { theta0: Exact::parse("t", th0, false).unwrap(), thetadot0: q("0"), omega0: q(w0) },
+            Start {
+                theta0: Exact::parse("t", th0, false).unwrap(),
+                thetadot0: q("0"),
+                omega0: q(w0),
+            },
         )
         .unwrap()
     };
@@ -217,8 +288,12 @@ fn mirror_image_motion() {
     let a = right.separation().unwrap();
     let b = left.separation().unwrap();
     assert_eq!(format!("-{}", a.theta_s.text), b.theta_s.text);
-    let fa = right.forces_at(&Exact::parse("t", "0.5", false).unwrap()).unwrap();
-    let fb = left.forces_at(&Exact::parse("t", "-0.5", false).unwrap()).unwrap();
+    let fa = right
+        .forces_at(&Exact::parse("t", "0.5", false).unwrap())
+        .unwrap();
+    let fb = left
+        .forces_at(&Exact::parse("t", "-0.5", false).unwrap())
+        .unwrap();
     for (x, y) in fa.iter().zip(&fb) {
         let odd = matches!(x.name.as_str(), "F1" | "F21" | "theta_dot" | "theta_ddot");
         if odd {

@@ -208,7 +208,8 @@ impl Dyn {
         for i in 0..3 {
             let lin = Float::with_val(p, &self.beta[i] * &c) + &self.alpha[i];
             v[i] = Float::with_val(p, &lin * &thetadot) + &self.gamma[i];
-            a[i] = Float::with_val(p, &lin * &thetaddot) - Float::with_val(p, &self.beta[i] * &s_td2);
+            a[i] =
+                Float::with_val(p, &lin * &thetaddot) - Float::with_val(p, &self.beta[i] * &s_td2);
         }
         let ds = Float::with_val(p, &cm * &sh) * 2u32;
         let theta = Float::with_val(p, &self.th0 + delta);
@@ -258,7 +259,8 @@ impl Dyn {
         let f1 = match self.floor {
             Floor::Slip => Float::new(p),
             _ => {
-                let tang = Float::with_val(p, &st.c * &st.thetaddot) - Float::with_val(p, &st.s * &td2);
+                let tang =
+                    Float::with_val(p, &st.c * &st.thetaddot) - Float::with_val(p, &st.s * &td2);
                 Float::with_val(p, &m12 * ax) + tang * &self.r * &self.m2
             }
         };
@@ -295,7 +297,8 @@ impl Dyn {
             Float::with_val(p, &m12 * &st.v[0]) + Float::with_val(p, &m2r * &st.c) * &st.thetadot,
             Float::with_val(p, &self.i1 * &st.v[1]),
             Float::with_val(p, &self.i2 * &st.v[2]),
-            Float::with_val(p, &m2r * &st.c) * &st.v[0] + Float::with_val(p, &m2r * &self.r) * &st.thetadot,
+            Float::with_val(p, &m2r * &st.c) * &st.v[0]
+                + Float::with_val(p, &m2r * &self.r) * &st.thetadot,
         ];
         self.b_cyclic
             .iter()

@@ -68,7 +68,13 @@ pub struct KktSolution {
 /// Solves the KKT system at θ with θ̇ and the velocities ẋ1, φ̇1, ψ̇2 (which
 /// do not enter: the constraint Jacobian is constant on the manifold, and T
 /// depends on q only through θ and r).
-pub fn solve(b: &Bodies, floor: Floor, contact: Contact, theta: &Float, thetadot: &Float) -> Result<KktSolution> {
+pub fn solve(
+    b: &Bodies,
+    floor: Floor,
+    contact: Contact,
+    theta: &Float,
+    thetadot: &Float,
+) -> Result<KktSolution> {
     let p = theta.prec();
     let z = || Float::new(p);
     let (s, c) = theta.clone().sin_cos(Float::new(p));
@@ -110,7 +116,10 @@ pub fn solve(b: &Bodies, floor: Floor, contact: Contact, theta: &Float, thetadot
     let one = Float::with_val(p, 1u32);
     let mut rows: Vec<(&str, Vec<Float>)> = Vec::new();
     match floor {
-        Floor::Roll => rows.push(("F1", row(&[(QX, one.clone()), (QPHI, Float::with_val(p, -&b.r1))]))),
+        Floor::Roll => rows.push((
+            "F1",
+            row(&[(QX, one.clone()), (QPHI, Float::with_val(p, -&b.r1))]),
+        )),
         Floor::Slip => {}
         Floor::Fixed => {
             rows.push(("F1", row(&[(QX, one.clone())])));
@@ -120,7 +129,11 @@ pub fn solve(b: &Bodies, floor: Floor, contact: Contact, theta: &Float, thetadot
     if contact == Contact::Roll {
         rows.push((
             "F21",
-            row(&[(QPHI, Float::with_val(p, -&b.r1)), (QPSI, b.r2.clone()), (QTH, r.clone())]),
+            row(&[
+                (QPHI, Float::with_val(p, -&b.r1)),
+                (QPSI, b.r2.clone()),
+                (QTH, r.clone()),
+            ]),
         ));
     }
     rows.push(("N12", row(&[(QR, one.clone())])));
@@ -143,7 +156,8 @@ pub fn solve(b: &Bodies, floor: Floor, contact: Contact, theta: &Float, thetadot
         }
         rhs[ii] = h[i].clone();
     }
-    let x = gauss(a, rhs).ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
+    let x = gauss(a, rhs)
+        .ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
     let mut qdd = vec![z(); NQ];
     for (ii, &i) in active.iter().enumerate() {
         qdd[i] = x[ii].clone();

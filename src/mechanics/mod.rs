@@ -151,11 +151,7 @@ impl Reduced {
                 cols.push(("phi1", [p.r1.clone(), r(1), phi_psi, r(0)], w0.clone()));
             }
             Floor::Slip => {
-                cols.push((
-                    "x1",
-                    [r(1), r(0), r(0), r(0)],
-                    Rational::from(&p.r1 * w0),
-                ));
+                cols.push(("x1", [r(1), r(0), r(0), r(0)], Rational::from(&p.r1 * w0)));
                 cols.push(("phi1", [r(0), r(1), phi_psi, r(0)], w0.clone()));
             }
             Floor::Fixed => {}
@@ -203,11 +199,15 @@ impl Reduced {
             (0..n).fold(r(0), |s, j| s + Rational::from(&u[j] * &v[j]))
         };
         let mu = Rational::from(&p.m2 * &rr) * &rr;
-        let q0 = Rational::from(&a0 - dot(&b0, &db0)) / &mu;
-        let q1 = Rational::from(&a1 - Rational::from(dot(&b0, &db1) * 2u32)) / &mu;
-        let q2 = Rational::from(-dot(&b1, &db1)) / &mu;
+        let q0 = (&a0 - dot(&b0, &db0)) / &mu;
+        let q1 = (&a1 - (dot(&b0, &db1) * 2u32)) / &mu;
+        let q2 = (-dot(&b1, &db1)) / &mu;
 
-        let mut alpha = [theta_col[0].clone(), theta_col[1].clone(), theta_col[2].clone()];
+        let mut alpha = [
+            theta_col[0].clone(),
+            theta_col[1].clone(),
+            theta_col[2].clone(),
+        ];
         let mut beta = [r(0), r(0), r(0)];
         for (j, (_, col, drift)) in kept.iter().enumerate() {
             for i in 0..3 {

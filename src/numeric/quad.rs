@@ -177,7 +177,11 @@ impl TanhSinh {
                 let est = match &prev_diff {
                     Some(pd) if !pd.is_zero() => {
                         let ratio = Float::with_val(p, &diff / pd);
-                        let ratio = if ratio > 1u32 { Float::with_val(p, 1u32) } else { ratio };
+                        let ratio = if ratio > 1u32 {
+                            Float::with_val(p, 1u32)
+                        } else {
+                            ratio
+                        };
                         Float::with_val(p, &diff * ratio) * 4u32
                     }
                     _ => diff.clone(),
@@ -209,18 +213,32 @@ impl TanhSinh {
 mod tests {
     use super::*;
 
-    fn check(prec: u32, digits_needed: f64, delta: Float, exact: Float, f: impl FnMut(&Float, &mut Float)) {
+    fn check(
+        prec: u32,
+        digits_needed: f64,
+        delta: Float,
+        exact: Float,
+        f: impl FnMut(&Float, &mut Float),
+    ) {
         let mut ts = TanhSinh::new(prec);
         let r = ts.integrate(&delta, prec - 8, f);
         assert!(r.converged, "not converged: {r:?}");
         let err = Float::with_val(prec, &r.value - &exact).abs();
         let rel = (err / exact.clone().abs()).to_f64();
-        assert!(rel < 10f64.powf(-digits_needed), "prec {prec}: rel err {rel:e}, {r:?}");
+        assert!(
+            rel < 10f64.powf(-digits_needed),
+            "prec {prec}: rel err {rel:e}, {r:?}"
+        );
         // the estimate must not be smaller than the true error by more than a rounding unit
         let ulp = Float::with_val(prec, 1u32) >> (prec as i32 - 12);
         let bound = Float::with_val(prec, &r.err * 4u32) + ulp * exact.clone().abs();
         let e2 = Float::with_val(prec, &r.value - &exact).abs();
-        assert!(e2 <= bound, "estimate {} below true error {}", r.err.to_f64(), e2.to_f64());
+        assert!(
+            e2 <= bound,
+            "estimate {} below true error {}",
+            r.err.to_f64(),
+            e2.to_f64()
+        );
     }
 
     #[test]
@@ -228,10 +246,16 @@ mod tests {
         // ∫_0^1 δ^(-1/2) dδ = 2
         for prec in [100u32, 340, 1000] {
             let d = Float::with_val(prec, 1u32);
-            check(prec, (prec as f64 - 20.0) * 0.30103, d, Float::with_val(prec, 2u32), |x, out| {
-                out.assign(x.sqrt_ref());
-                out.recip_mut();
-            });
+            check(
+                prec,
+                (prec as f64 - 20.0) * std::f64::consts::LOG10_2,
+                d,
+                Float::with_val(prec, 2u32),
+                |x, out| {
+                    out.assign(x.sqrt_ref());
+                    out.recip_mut();
+                },
+            );
         }
     }
 
@@ -241,9 +265,15 @@ mod tests {
         for prec in [64u32, 200, 700] {
             let d = Float::with_val(prec, 2u32);
             let exact = Float::with_val(prec, 2u32).sin();
-            check(prec, (prec as f64 - 20.0) * 0.30103, d, exact, |x, out| {
-                out.assign(x.cos_ref());
-            });
+            check(
+                prec,
+                (prec as f64 - 20.0) * std::f64::consts::LOG10_2,
+                d,
+                exact,
+                |x, out| {
+                    out.assign(x.cos_ref());
+                },
+            );
         }
     }
 

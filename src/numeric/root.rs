@@ -45,10 +45,18 @@ where
     let mut fhi = f(&hi);
     let mut evals = 2;
     if flo.is_zero() {
-        return Ok(Root { hi: lo.clone(), lo, evals });
+        return Ok(Root {
+            hi: lo.clone(),
+            lo,
+            evals,
+        });
     }
     if fhi.is_zero() {
-        return Ok(Root { lo: hi.clone(), hi, evals });
+        return Ok(Root {
+            lo: hi.clone(),
+            hi,
+            evals,
+        });
     }
     if flo.is_sign_negative() == fhi.is_sign_negative() {
         return Err(Error::NoSignChange {
@@ -86,7 +94,11 @@ where
         let fx = f(&x);
         evals += 1;
         if fx.is_zero() {
-            return Ok(Root { lo: x.clone(), hi: x, evals });
+            return Ok(Root {
+                lo: x.clone(),
+                hi: x,
+                evals,
+            });
         }
         if fx.is_sign_negative() == fhi.is_sign_negative() {
             // root in [lo, x]; hi replaced; lo kept
@@ -153,7 +165,10 @@ mod tests {
             let b = Float::with_val(prec, 2u32);
             let tol = Float::with_val(prec, 1u32) >> (prec as i32 - 6);
             // cos x − 1/2 has its root at π/3
-            let r = bracket("test", &a, &b, &tol, |x| Float::with_val(prec, x.cos_ref()) - 0.5f64).unwrap();
+            let r = bracket("test", &a, &b, &tol, |x| {
+                Float::with_val(prec, x.cos_ref()) - 0.5f64
+            })
+            .unwrap();
             let pi3 = Float::with_val(prec, Constant::Pi) / 3u32;
             assert!(r.lo <= pi3 && pi3 <= r.hi || (r.width() <= tol), "{prec}");
             let err = Float::with_val(prec, r.mid() - &pi3).abs();
@@ -175,7 +190,8 @@ mod tests {
     fn scan_finds_first_of_several_roots() {
         let a = Float::with_val(64, 0.1);
         let b = Float::with_val(64, 10u32);
-        let (lo, hi) = first_sign_change(&a, &b, 100, |x| Float::with_val(64, x.sin_ref())).unwrap();
+        let (lo, hi) =
+            first_sign_change(&a, &b, 100, |x| Float::with_val(64, x.sin_ref())).unwrap();
         let pi = std::f64::consts::PI;
         assert!(lo.to_f64() <= pi && pi <= hi.to_f64());
     }

@@ -12,8 +12,8 @@
 //! correctly, but the bound rests on the methods' error estimates and on the
 //! two runs not sharing an error larger than their difference.
 
-use super::decimal::{render, round_sig, short, to_sig};
 use super::bits_for_digits;
+use super::decimal::{render, round_sig, short, to_sig};
 use crate::error::{Error, Result};
 use rug::Float;
 
@@ -116,14 +116,20 @@ pub fn agreeing_digits(v: &Float, b: &Float, max: u32) -> u32 {
     best
 }
 
-fn judge(name: &str, digits: u32, precs: (u32, u32), a: &Estimate, b: &Estimate) -> std::result::Result<Verified, u32> {
+fn judge(
+    name: &str,
+    digits: u32,
+    precs: (u32, u32),
+    a: &Estimate,
+    b: &Estimate,
+) -> std::result::Result<Verified, u32> {
     let p = b.value.prec();
     if a.exact_zero && b.exact_zero {
         return Ok(Verified {
             name: name.to_string(),
             value: Float::new(p),
             text: "0".to_string(),
-            digits: digits,
+            digits,
             err_bound: Float::new(p),
             precs,
         });
@@ -137,7 +143,10 @@ fn judge(name: &str, digits: u32, precs: (u32, u32), a: &Estimate, b: &Estimate)
     if mag <= bound {
         // indistinguishable from zero: print 0 if the bound is negligible
         // at the requested digits relative to the quantity's natural scale
-        let tiny = Float::with_val(p, &b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))));
+        let tiny = Float::with_val(
+            p,
+            &b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
+        );
         if bound <= tiny {
             return Ok(Verified {
                 name: name.to_string(),
@@ -152,19 +161,19 @@ fn judge(name: &str, digits: u32, precs: (u32, u32), a: &Estimate, b: &Estimate)
     }
     let lo = Float::with_val(p, &b.value - &bound);
     let hi = Float::with_val(p, &b.value + &bound);
-    let rlo = round_sig(&lo, digits);
-    if rlo.is_some() && rlo == round_sig(&hi, digits) {
-        let (neg, d, e) = rlo.expect("checked");
-        Ok(Verified {
-            name: name.to_string(),
-            value: b.value.clone(),
-            text: render(neg, &d, e),
-            digits,
-            err_bound: bound,
-            precs,
-        })
-    } else {
-        Err(agreeing_digits(&b.value, &bound, digits))
+    match (round_sig(&lo, digits), round_sig(&hi, digits)) {
+        (Some(a), Some(b2)) if a == b2 => {
+            let (neg, d, e) = a;
+            Ok(Verified {
+                name: name.to_string(),
+                value: b.value.clone(),
+                text: render(neg, &d, e),
+                digits,
+                err_bound: bound,
+                precs,
+            })
+        }
+        _ => Err(agreeing_digits(&b.value, &bound, digits)),
     }
 }
 
@@ -232,7 +241,10 @@ mod tests {
             Ok(vec![Estimate::rounded(x, Float::with_val(p, 1u32))])
         })
         .unwrap();
-        assert_eq!(v[0].text, "3.1415926535897932384626433832795028841971693993751");
+        assert_eq!(
+            v[0].text,
+            "3.1415926535897932384626433832795028841971693993751"
+        );
         assert_eq!(v[0].digits, 50);
     }
 
@@ -246,7 +258,10 @@ mod tests {
         });
         // precisions alternate parity at some rung, or all differ by 1e-20
         if let Err(Error::NotConverged { reached, .. }) = &e {
-            assert!(reached.starts_with("19") || reached.starts_with("20"), "{reached}");
+            assert!(
+                reached.starts_with("19") || reached.starts_with("20"),
+                "{reached}"
+            );
         }
     }
 
@@ -254,13 +269,22 @@ mod tests {
     fn honest_error_estimate_blocks_digits() {
         let e = ladder(30, &["y"], |p| {
             let x = Float::with_val(p, 2u32).sqrt();
-            Ok(vec![Estimate::new(x, Float::with_val(p, 1e-12), Float::with_val(p, 1u32))])
+            Ok(vec![Estimate::new(
+                x,
+                Float::with_val(p, 1e-12),
+                Float::with_val(p, 1u32),
+            )])
         })
         .unwrap_err();
         match e {
-            Error::NotConverged { reached, requested, .. } => {
+            Error::NotConverged {
+                reached, requested, ..
+            } => {
                 assert_eq!(requested, 30);
-                assert!(reached.starts_with("11 ") || reached.starts_with("12 "), "{reached}");
+                assert!(
+                    reached.starts_with("11 ") || reached.starts_with("12 "),
+                    "{reached}"
+                );
             }
             other => panic!("{other:?}"),
         }
@@ -270,7 +294,11 @@ mod tests {
     fn zero_like_values() {
         let v = ladder(20, &["z"], |p| {
             let tiny = Float::with_val(p, 1u32) >> (p as i32);
-            Ok(vec![Estimate::new(tiny.clone(), tiny, Float::with_val(p, 1u32))])
+            Ok(vec![Estimate::new(
+                tiny.clone(),
+                tiny,
+                Float::with_val(p, 1u32),
+            )])
         })
         .unwrap();
         assert_eq!(v[0].text, "0");

@@ -34,7 +34,9 @@ impl Engine {
         }
         let d = Float::with_val(p, delta);
         let dynm = &self.dynm;
-        let r = self.ts.integrate(&d, p.saturating_sub(10), |x, out| dynm.inv_thetadot(x, out));
+        let r = self
+            .ts
+            .integrate(&d, p.saturating_sub(10), |x, out| dynm.inv_thetadot(x, out));
         let err = if r.converged {
             r.err
         } else {
@@ -72,7 +74,13 @@ impl Engine {
 
     /// Refines a root of `f` bracketed by [lo, hi] (found at low precision)
     /// to this engine's precision; returns (midpoint, half-width).
-    pub fn refine_root<F>(&mut self, name: &str, lo: &Float, hi: &Float, mut f: F) -> Result<(Float, Float)>
+    pub fn refine_root<F>(
+        &mut self,
+        name: &str,
+        lo: &Float,
+        hi: &Float,
+        mut f: F,
+    ) -> Result<(Float, Float)>
     where
         F: FnMut(&mut Engine, &Float) -> Float,
     {

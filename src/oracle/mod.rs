@@ -24,12 +24,30 @@ pub const MAX_DIGITS: u32 = 2000;
 
 /// Names of the columns of a trajectory row, in order.
 pub const TRAJECTORY_COLUMNS: [&str; 12] = [
-    "t", "theta", "theta_dot", "phi1", "phi2", "x1", "x2", "y2", "F1", "N1", "F21", "N12",
+    "t",
+    "theta",
+    "theta_dot",
+    "phi1",
+    "phi2",
+    "x1",
+    "x2",
+    "y2",
+    "F1",
+    "N1",
+    "F21",
+    "N12",
 ];
 
 /// Names of the quantities of [`Oracle::forces_at`], in order.
 pub const FORCE_KEYS: [&str; 8] = [
-    "F1", "N1", "F21", "N12", "theta_dot", "theta_ddot", "mu_floor", "mu_contact",
+    "F1",
+    "N1",
+    "F21",
+    "N12",
+    "theta_dot",
+    "theta_ddot",
+    "mu_floor",
+    "mu_contact",
 ];
 
 /// What `separation` reports.
@@ -77,7 +95,11 @@ impl Oracle {
             ));
         }
         let sign = model.direction();
-        let work = if sign < 0 { model.mirrored() } else { model.clone() };
+        let work = if sign < 0 {
+            model.mirrored()
+        } else {
+            model.clone()
+        };
         let red = Reduced::new(&work)?;
         let mut o = Oracle {
             model: model.clone(),
@@ -151,7 +173,8 @@ impl Oracle {
         let hi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi) - th0;
         let scan = self.engine(SCAN_PREC)?;
         let zero = Float::new(SCAN_PREC);
-        let bracket = crate::numeric::root::first_sign_change(&zero, &hi, SCAN_STEPS, |d| scan.n12(d));
+        let bracket =
+            crate::numeric::root::first_sign_change(&zero, &hi, SCAN_STEPS, |d| scan.n12(d));
         let (lo, hi) = bracket.ok_or_else(|| {
             Error::not_physical("N12 stays positive up to theta = pi: the cylinders never separate")
         })?;
@@ -232,7 +255,12 @@ impl Oracle {
     }
 
     /// Sign-change angles, N1 > 0, friction needed, slip angles for μ.
-    fn separation_findings(&mut self, theta_s: &Verified, extra: &mut Vec<Verified>, notes: &mut Vec<String>) -> Result<()> {
+    fn separation_findings(
+        &mut self,
+        theta_s: &Verified,
+        extra: &mut Vec<Verified>,
+        notes: &mut Vec<String>,
+    ) -> Result<()> {
         let digits = self.digits;
         let th0 = self.work.start().theta0.to_float(SCAN_PREC);
         let ds_scan = Float::with_val(SCAN_PREC, self.odd(theta_s.value.clone())) - &th0;
@@ -271,10 +299,15 @@ impl Oracle {
             && (self.red.alpha[1] != 0 || self.red.beta[1] != 0 || self.red.gamma[1] != 0);
         if phi_moves {
             let gamma0 = self.red.gamma[1] == 0;
-            for (name, label) in [("theta_phi1dot_zero", "phi1_dot"), ("theta_phi1_zero", "phi1")] {
+            for (name, label) in [
+                ("theta_phi1dot_zero", "phi1_dot"),
+                ("theta_phi1_zero", "phi1"),
+            ] {
                 let needs_time = name == "theta_phi1_zero" && !gamma0;
                 if needs_time && !finite {
-                    notes.push(format!("{label} sign change not computed: it depends on the (infinite) time"));
+                    notes.push(format!(
+                        "{label} sign change not computed: it depends on the (infinite) time"
+                    ));
                     continue;
                 }
                 let f = |e: &mut Engine, d: &Float| -> Float {
@@ -290,23 +323,38 @@ impl Oracle {
                     let lo0 = Float::with_val(SCAN_PREC, &step / 4u32);
                     // include a sliver past θs so a root at separation is seen
                     let hi0 = Float::with_val(SCAN_PREC, &ds_scan + &step);
-                    crate::numeric::root::first_sign_change(&lo0, &hi0, SCAN_STEPS + 1, |d| f(scan, d))
+                    crate::numeric::root::first_sign_change(&lo0, &hi0, SCAN_STEPS + 1, |d| {
+                        f(scan, d)
+                    })
                 };
                 match found {
-                    None => notes.push(format!("{label} keeps its sign from the start to separation")),
+                    None => notes.push(format!(
+                        "{label} keeps its sign from the start to separation"
+                    )),
                     Some((lo, hi)) => {
                         let v = ladder(digits, &[name], |p| {
-                            let (d, err) = self.engine(p)?.refine_root(name, &lo, &hi, |e, d| f(e, d))?;
+                            let (d, err) =
+                                self.engine(p)?
+                                    .refine_root(name, &lo, &hi, |e, d| f(e, d))?;
                             let th = Float::with_val(p, self.work.start().theta0.to_float(p) + d);
-                            Ok(vec![Estimate::new(self.odd(th), err, Float::with_val(p, 1u32))])
+                            Ok(vec![Estimate::new(
+                                self.odd(th),
+                                err,
+                                Float::with_val(p, 1u32),
+                            )])
                         })?;
                         let v = v.into_iter().next().expect("one");
-                        let bound = Float::with_val(v.value.prec(), &v.err_bound + &theta_s.err_bound);
+                        let bound =
+                            Float::with_val(v.value.prec(), &v.err_bound + &theta_s.err_bound);
                         let gap = Float::with_val(v.value.prec(), &v.value - &theta_s.value).abs();
                         if gap <= bound {
-                            notes.push(format!("{label} changes sign at separation (equal to all digits verified)"));
+                            notes.push(format!(
+                                "{label} changes sign at separation (equal to all digits verified)"
+                            ));
                         } else if (v.value.clone() * sign) > (theta_s.value.clone() * sign) {
-                            notes.push(format!("{label} keeps its sign from the start to separation"));
+                            notes.push(format!(
+                                "{label} keeps its sign from the start to separation"
+                            ));
                             continue;
                         }
                         extra.push(v);
@@ -349,23 +397,37 @@ impl Oracle {
                 let g = move |e: &mut Engine, d: &Float, mu: &Float| -> Float {
                     let st = e.dynm.state(d);
                     let f = e.dynm.forces(&st);
-                    let (fr, n) = if floor_side { (f.f1, f.n1) } else { (f.f21, f.n12) };
+                    let (fr, n) = if floor_side {
+                        (f.f1, f.n1)
+                    } else {
+                        (f.f21, f.n12)
+                    };
                     Float::with_val(d.prec(), mu * n) - fr.abs()
                 };
                 let found = {
                     let mu_s = mu.to_float(SCAN_PREC);
                     let scan = self.engine(SCAN_PREC)?;
                     let z = Float::new(SCAN_PREC);
-                    crate::numeric::root::first_sign_change(&z, &ds_scan, SCAN_STEPS, |d| g(scan, d, &mu_s))
+                    crate::numeric::root::first_sign_change(&z, &ds_scan, SCAN_STEPS, |d| {
+                        g(scan, d, &mu_s)
+                    })
                 };
                 match found {
-                    None => notes.push(format!("{name}: rolling holds up to separation with mu = {mu}")),
+                    None => notes.push(format!(
+                        "{name}: rolling holds up to separation with mu = {mu}"
+                    )),
                     Some((lo, hi)) => {
                         let v = ladder(digits, &[name], |p| {
                             let mu_p = mu.to_float(p);
-                            let (d, err) = self.engine(p)?.refine_root(name, &lo, &hi, |e, d| g(e, d, &mu_p))?;
+                            let (d, err) =
+                                self.engine(p)?
+                                    .refine_root(name, &lo, &hi, |e, d| g(e, d, &mu_p))?;
                             let th = Float::with_val(p, self.work.start().theta0.to_float(p) + d);
-                            Ok(vec![Estimate::new(self.odd(th), err, Float::with_val(p, 1u32))])
+                            Ok(vec![Estimate::new(
+                                self.odd(th),
+                                err,
+                                Float::with_val(p, 1u32),
+                            )])
                         })?;
                         extra.extend(v);
                     }
@@ -388,10 +450,18 @@ impl Oracle {
             crate::numeric::decimal::to_sig(&self.odd(th_s), 12)
         );
         if d.is_sign_negative() && !d.is_zero() {
-            return Err(Error::invalid(param, theta, format!("{range} (it is before the start)")));
+            return Err(Error::invalid(
+                param,
+                theta,
+                format!("{range} (it is before the start)"),
+            ));
         }
         if d > ds {
-            return Err(Error::invalid(param, theta, format!("{range} (it is after separation)")));
+            return Err(Error::invalid(
+                param,
+                theta,
+                format!("{range} (it is after separation)"),
+            ));
         }
         Ok(d)
     }
@@ -431,8 +501,14 @@ impl Oracle {
                 Estimate::rounded(f.n1.clone(), sf.clone()),
                 self.force_est(f.f21.clone(), &sf, contact == Contact::Slip, true),
                 Estimate::rounded(f.n12.clone(), sf.clone()),
-                Estimate::rounded(self.odd(st.thetadot.clone()), Float::with_val(p, one.clone() / &ts)),
-                Estimate::rounded(self.odd(st.thetaddot.clone()), Float::with_val(p, one.clone() / &ts) / &ts),
+                Estimate::rounded(
+                    self.odd(st.thetadot.clone()),
+                    Float::with_val(p, one.clone() / &ts),
+                ),
+                Estimate::rounded(
+                    self.odd(st.thetaddot.clone()),
+                    Float::with_val(p, one.clone() / &ts) / &ts,
+                ),
             ];
             let ratio = |fr: &Float, n: &Float| Float::with_val(p, fr.abs_ref()) / n;
             out.push(if floor == Floor::Roll {
@@ -469,7 +545,11 @@ impl Oracle {
         }
         for t in times {
             if t.signum() < 0 {
-                return Err(Error::invalid("times", t, "must be >= 0 (the start is at t = 0)"));
+                return Err(Error::invalid(
+                    "times",
+                    t,
+                    "must be >= 0 (the start is at t = 0)",
+                ));
             }
         }
         let mut rows = Vec::with_capacity(times.len());
@@ -480,6 +560,16 @@ impl Oracle {
     }
 
     fn row_at(&mut self, t: &Exact) -> Result<Vec<Verified>> {
+        let mut row = self.row_values(t)?;
+        // the time is an input: print it exactly when it is a terminating decimal
+        let exact = crate::exact::rational_text(&t.coef);
+        if !t.times_pi && !exact.contains('/') {
+            row[0].text = exact;
+        }
+        Ok(row)
+    }
+
+    fn row_values(&mut self, t: &Exact) -> Result<Vec<Verified>> {
         let floor = self.work.floor();
         let contact = self.work.contact();
         ladder(self.digits, &TRAJECTORY_COLUMNS, |p| {
@@ -543,7 +633,9 @@ impl Oracle {
                 sf.clone(),
             ];
             // odd columns change sign in the mirror
-            let odd = [true, true, true, true, true, true, false, true, false, true, false];
+            let odd = [
+                true, true, true, true, true, true, false, true, false, true, false,
+            ];
             let mut out = vec![Estimate {
                 value: tf.clone(),
                 err: Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2),
@@ -554,11 +646,15 @@ impl Oracle {
                 let prop = Float::with_val(p, &b[i] - &a[i]).abs();
                 let ulps = Float::with_val(p, a[i].abs_ref()) >> (p as i32 - 4);
                 let zero = (i == 7 && floor == Floor::Slip) || (i == 9 && contact == Contact::Slip);
-                let v = if odd[i] { self.odd(a[i].clone()) } else { a[i].clone() };
+                let v = if odd[i] {
+                    self.odd(a[i].clone())
+                } else {
+                    a[i].clone()
+                };
                 out.push(Estimate {
                     value: v,
                     err: prop + ulps,
-                    exact_zero: zero || (t.is_zero() && matches!(i, 2 | 4) && self.work.start().theta0.is_zero() && false),
+                    exact_zero: zero,
                     scale: scales[i].clone(),
                 });
             }
@@ -569,14 +665,32 @@ impl Oracle {
     /// Solves t(δ) = t for δ at `prec`: a safeguarded Newton iteration at low
     /// precision, then Newton steps at doubling precision, then a check that
     /// t(δ∓ε) brackets t. Returns (δ, error estimate).
-    fn delta_at_time(&mut self, t: &Float, ds: &Float, t_s: &Float, prec: u32) -> Result<(Float, Float)> {
+    fn delta_at_time(
+        &mut self,
+        t: &Float,
+        ds: &Float,
+        t_s: &Float,
+        prec: u32,
+    ) -> Result<(Float, Float)> {
         if t.is_zero() {
             return Ok((Float::new(prec), Float::new(prec)));
         }
         let rest = self.work.start().thetadot0 == 0;
         // σ = sqrt(δ) for a start from rest (t is smooth in σ there), else σ = δ
-        let to_sigma = |d: &Float| if rest { Float::with_val(d.prec(), d.sqrt_ref()) } else { d.clone() };
-        let to_delta = |s: &Float| if rest { Float::with_val(s.prec(), s.square_ref()) } else { s.clone() };
+        let to_sigma = |d: &Float| {
+            if rest {
+                Float::with_val(d.prec(), d.sqrt_ref())
+            } else {
+                d.clone()
+            }
+        };
+        let to_delta = |s: &Float| {
+            if rest {
+                Float::with_val(s.prec(), s.square_ref())
+            } else {
+                s.clone()
+            }
+        };
         // stage 1: 64-bit safeguarded Newton on [0, σs]
         let lp = 64;
         let e = self.engine(lp)?;
@@ -600,7 +714,7 @@ impl Oracle {
                 dt *= Float::with_val(lp, &s * 2u32);
             }
             let mut next = Float::with_val(lp, &s - Float::with_val(lp, &resid / &dt));
-            if !(next > lo && next < hi) || !next.is_finite() {
+            if next <= lo || next >= hi || !next.is_finite() {
                 next = Float::with_val(lp, &lo + &hi) / 2u32;
             }
             let change = Float::with_val(lp, &next - &s).abs();
