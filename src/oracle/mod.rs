@@ -605,6 +605,7 @@ impl Oracle {
                 vec![
                     st.theta.clone(),
                     st.thetadot.clone(),
+                    st.thetaddot.clone(),
                     pos[1].clone(),
                     phi2,
                     pos[0].clone(),
@@ -622,6 +623,7 @@ impl Oracle {
             let scales = [
                 one.clone(),
                 Float::with_val(p, &one / &ts),
+                Float::with_val(p, &one / &ts) / &ts,
                 one.clone(),
                 one.clone(),
                 rr.clone(),
@@ -634,7 +636,7 @@ impl Oracle {
             ];
             // odd columns change sign in the mirror
             let odd = [
-                true, true, true, true, true, true, false, true, false, true, false,
+                true, true, true, true, true, true, true, false, true, false, true, false,
             ];
             let mut out = vec![Estimate {
                 value: tf.clone(),
@@ -642,10 +644,11 @@ impl Oracle {
                 exact_zero: t.is_zero(),
                 scale: ts.clone(),
             }];
-            for i in 0..11 {
+            for i in 0..12 {
                 let prop = Float::with_val(p, &b[i] - &a[i]).abs();
                 let ulps = Float::with_val(p, a[i].abs_ref()) >> (p as i32 - 4);
-                let zero = (i == 7 && floor == Floor::Slip) || (i == 9 && contact == Contact::Slip);
+                let zero =
+                    (i == 8 && floor == Floor::Slip) || (i == 10 && contact == Contact::Slip);
                 let v = if odd[i] {
                     self.odd(a[i].clone())
                 } else {
