@@ -23,10 +23,11 @@ use std::collections::HashMap;
 pub const MAX_DIGITS: u32 = 2000;
 
 /// Names of the columns of a trajectory row, in order.
-pub const TRAJECTORY_COLUMNS: [&str; 12] = [
+pub const TRAJECTORY_COLUMNS: [&str; 13] = [
     "t",
     "theta",
     "theta_dot",
+    "theta_ddot",
     "phi1",
     "phi2",
     "x1",
