@@ -60,6 +60,36 @@ pub enum Command {
         #[arg(long, requires = "t_end")]
         steps: Option<u32>,
     },
+    /// Audit every formula of the paper against the first-principles mechanics (writes reports/audit.md)
+    Audit {
+        /// Audit only this equation (e.g. 23, 43, fn8)
+        #[arg(long)]
+        equation: Option<String>,
+        /// Directory of the reports
+        #[arg(long, default_value = "reports")]
+        out: std::path::PathBuf,
+    },
+    /// The main job: figures and tables for the built-in cases, written to reports/
+    Report {
+        /// Directory of the reports
+        #[arg(long, default_value = "reports")]
+        out: std::path::PathBuf,
+        /// No progress bars
+        #[arg(long)]
+        quiet: bool,
+    },
+    /// Run the second, independent route (time integration with Lagrange multipliers) against the first
+    Verify {
+        /// Significant digits to compare
+        #[arg(long, default_value_t = 30)]
+        digits: u32,
+        /// A stack of n cylinders instead (see README, "Stacks")
+        #[arg(long)]
+        stack: Option<String>,
+        /// Output format
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+    },
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -365,6 +395,18 @@ fn parse_list(name: &str, s: &str) -> Result<Vec<Exact>> {
 /// Runs the command and returns the text to print on standard output.
 pub fn run(cli: Cli) -> Result<String> {
     let (common, answer) = match cli.command {
+        Command::Audit { equation, out } => return cylroll::audit::run(equation.as_deref(), &out),
+        Command::Report { out, quiet } => return cylroll::report::run(&out, !quiet),
+        Command::Verify {
+            digits,
+            stack,
+            format,
+        } => {
+            return match stack {
+                Some(spec) => cylroll::dae::stack_report(&spec, digits, format == Format::Json),
+                None => cylroll::dae::verify_report(digits),
+            }
+        }
         Command::Separation { common, mu } => {
             let model = common.model()?;
             let mu = mu.map(|s| Exact::parse("mu", &s, false)).transpose()?;

@@ -26,11 +26,15 @@
 //! assert_eq!(sep.theta_s.text, "1.04719755119659774615421446109");
 //! ```
 
+pub mod audit;
+pub mod dae;
 pub mod error;
 pub mod exact;
 pub mod mechanics;
 pub mod model;
 pub mod numeric;
 pub mod oracle;
+pub mod paper;
+pub mod report;
 
 pub use error::{Error, Result};

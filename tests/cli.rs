@@ -113,7 +113,11 @@ fn trajectory_csv_has_header_and_rows() {
         "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12"
     );
     assert_eq!(lines.len(), 6);
-    assert!(lines[1].starts_with("0,0.1000000000,0,0.03519415980,0,-0.1000000000,0,"), "{}", lines[1]);
+    assert!(
+        lines[1].starts_with("0,0.1000000000,0,0.03519415980,0,-0.1000000000,0,"),
+        "{}",
+        lines[1]
+    );
     assert!(lines[5].starts_with("2,"), "{}", lines[5]);
 }
 
