@@ -3,7 +3,8 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use cylroll::error::{Error, Result};
 use cylroll::exact::{rational_text, Exact};
-use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::input::{self, MODEL_KEYS};
+use cylroll::model::Model;
 use cylroll::numeric::verify::Verified;
 use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
 use rug::Rational;
@@ -144,21 +145,6 @@ pub struct Common {
     format: Format,
 }
 
-const MODEL_KEYS: [&str; 12] = [
-    "floor",
-    "contact",
-    "m1",
-    "m2",
-    "r1",
-    "r2",
-    "k1",
-    "k2",
-    "g",
-    "theta0",
-    "thetadot0",
-    "omega0",
-];
-
 impl Common {
     fn flag(&self, key: &str) -> Option<String> {
         match key {
@@ -180,75 +166,17 @@ impl Common {
 
     /// The model from the defaults, then `--params`, then the flags.
     pub fn model(&self) -> Result<Model> {
-        let mut vals: std::collections::BTreeMap<String, String> = Default::default();
+        let mut vals = input::Pairs::new();
         if let Some(path) = &self.params {
-            let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
-                path: path.display().to_string(),
-                what: e.to_string(),
-            })?;
-            let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-                Error::invalid(
-                    "params",
-                    path.display(),
-                    format!("not valid TOML: {}", e.message()),
-                )
-            })?;
-            for (k, v) in table {
-                if !MODEL_KEYS.contains(&k.as_str()) {
-                    return Err(Error::invalid(
-                        "params",
-                        &k,
-                        format!("unknown key; allowed keys: {}", MODEL_KEYS.join(", ")),
-                    ));
-                }
-                let s = match v {
-                    toml::Value::String(s) => s,
-                    toml::Value::Integer(i) => i.to_string(),
-                    other => {
-                        return Err(Error::invalid(
-                            &k,
-                            other,
-                            "write non-integer values as strings (e.g. m1 = \"0.3\") so they are read exactly",
-                        ))
-                    }
-                };
-                vals.insert(k, s);
-            }
+            let table = input::read_toml(path, "params")?;
+            vals = input::pairs_from_toml(&table, "params", &[])?;
         }
         for k in MODEL_KEYS {
             if let Some(v) = self.flag(k) {
                 vals.insert(k.to_string(), v);
             }
         }
-        let get = |k: &str| vals.get(k).cloned();
-        let num = |k: &str, default: Rational| -> Result<Rational> {
-            match get(k) {
-                None => Ok(default),
-                Some(s) => Ok(Exact::parse(k, &s, false)?.coef),
-            }
-        };
-        let d = Params::identical_solid();
-        let params = Params {
-            m1: num("m1", d.m1)?,
-            m2: num("m2", d.m2)?,
-            r1: num("r1", d.r1)?,
-            r2: num("r2", d.r2)?,
-            k1: num("k1", d.k1)?,
-            k2: num("k2", d.k2)?,
-            g: num("g", d.g)?,
-        };
-        let floor: Floor = get("floor").as_deref().unwrap_or("roll").parse()?;
-        let contact: Contact = get("contact").as_deref().unwrap_or("roll").parse()?;
-        let theta0 = match get("theta0") {
-            None => Exact::zero(),
-            Some(s) => Exact::parse("theta0", &s, true)?,
-        };
-        let start = Start {
-            theta0,
-            thetadot0: num("thetadot0", Rational::new())?,
-            omega0: num("omega0", Rational::new())?,
-        };
-        Model::new(params, floor, contact, start)
+        input::model_from_pairs(&vals)
     }
 }
 

@@ -1,0 +1,107 @@
+//! Reading models from key/value text: `--params` files, golden cases and flags
+//! all go through here, so every input gets the same validation.
+
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use crate::model::{Contact, Floor, Model, Params, Start};
+use rug::Rational;
+use std::collections::BTreeMap;
+
+/// The keys a model accepts, in a stable order.
+pub const MODEL_KEYS: [&str; 12] = [
+    "floor",
+    "contact",
+    "m1",
+    "m2",
+    "r1",
+    "r2",
+    "k1",
+    "k2",
+    "g",
+    "theta0",
+    "thetadot0",
+    "omega0",
+];
+
+/// Key → exact text.
+pub type Pairs = BTreeMap<String, String>;
+
+/// The model keys of a TOML table (other keys are an error unless listed in
+/// `extra_keys`, which are skipped). Values must be strings or integers:
+/// TOML floats are binary and would not be read exactly.
+pub fn pairs_from_toml(table: &toml::Table, source: &str, extra_keys: &[&str]) -> Result<Pairs> {
+    let mut vals = Pairs::new();
+    for (k, v) in table {
+        if extra_keys.contains(&k.as_str()) {
+            continue;
+        }
+        if !MODEL_KEYS.contains(&k.as_str()) {
+            return Err(Error::invalid(
+                source,
+                k,
+                format!("unknown key; allowed keys: {}", MODEL_KEYS.join(", ")),
+            ));
+        }
+        let s = match v {
+            toml::Value::String(s) => s.clone(),
+            toml::Value::Integer(i) => i.to_string(),
+            other => return Err(Error::invalid(
+                k,
+                other,
+                "write non-integer values as strings (e.g. m1 = \"0.3\") so they are read exactly",
+            )),
+        };
+        vals.insert(k.clone(), s);
+    }
+    Ok(vals)
+}
+
+/// Parses TOML text read from `path` into a table.
+pub fn read_toml(path: &std::path::Path, what: &str) -> Result<toml::Table> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+        path: path.display().to_string(),
+        what: e.to_string(),
+    })?;
+    text.parse().map_err(|e: toml::de::Error| {
+        Error::invalid(
+            what,
+            path.display(),
+            format!("not valid TOML: {}", e.message().trim()),
+        )
+    })
+}
+
+/// Builds and validates a model from key/value pairs; missing keys take the
+/// defaults (identical solid cylinders m = r = g = 1, k = 1/2, both contacts
+/// rolling, from rest at θ0 = 0).
+pub fn model_from_pairs(vals: &Pairs) -> Result<Model> {
+    let get = |k: &str| vals.get(k).cloned();
+    let num = |k: &str, default: Rational| -> Result<Rational> {
+        match get(k) {
+            None => Ok(default),
+            Some(s) => Ok(Exact::parse(k, &s, false)?.coef),
+        }
+    };
+    let d = Params::identical_solid();
+    let params = Params {
+        m1: num("m1", d.m1)?,
+        m2: num("m2", d.m2)?,
+        r1: num("r1", d.r1)?,
+        r2: num("r2", d.r2)?,
+        k1: num("k1", d.k1)?,
+        k2: num("k2", d.k2)?,
+        g: num("g", d.g)?,
+    };
+    let floor: Floor = get("floor").as_deref().unwrap_or("roll").parse()?;
+    let contact: Contact = get("contact").as_deref().unwrap_or("roll").parse()?;
+    let theta0 = match get("theta0") {
+        None => Exact::zero(),
+        Some(s) => Exact::parse("theta0", &s, true)?,
+    };
+    let start = Start {
+        theta0,
+        thetadot0: num("thetadot0", Rational::new())?,
+        omega0: num("omega0", Rational::new())?,
+    };
+    Model::new(params, floor, contact, start)
+}
