@@ -61,6 +61,35 @@ pub enum Command {
         #[arg(long, requires = "t_end")]
         steps: Option<u32>,
     },
+    /// Render every golden case (golden/cases/*.toml) into golden/data/<case>.json and .csv
+    Golden {
+        /// The golden directory
+        #[arg(long, default_value = "golden")]
+        dir: std::path::PathBuf,
+    },
+    /// Judge another program's CSV against the oracle (exit 1 if a tolerance is exceeded)
+    Check {
+        /// The candidate CSV (header row with golden column names; t required)
+        candidate: std::path::PathBuf,
+        /// The golden case it simulates (a file stem of golden/cases)
+        #[arg(long)]
+        case: String,
+        /// Relative tolerance
+        #[arg(long, default_value_t = 1e-8)]
+        rtol: f64,
+        /// Absolute tolerance
+        #[arg(long, default_value_t = 1e-10)]
+        atol: f64,
+        /// Significant digits of the oracle values compared against
+        #[arg(long, default_value_t = 20)]
+        digits: u32,
+        /// The golden directory
+        #[arg(long, default_value = "golden")]
+        golden: std::path::PathBuf,
+        /// Output format (text or json)
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+    },
     /// Audit every formula of the paper against the first-principles mechanics (writes reports/audit.md)
     Audit {
         /// Audit only this equation (e.g. 23, 43, fn8)
@@ -321,10 +350,44 @@ fn parse_list(name: &str, s: &str) -> Result<Vec<Exact>> {
 }
 
 /// Runs the command and returns the text to print on standard output.
-pub fn run(cli: Cli) -> Result<String> {
+pub fn run(cli: Cli) -> Result<(String, i32)> {
     let (common, answer) = match cli.command {
-        Command::Audit { equation, out } => return cylroll::audit::run(equation.as_deref(), &out),
-        Command::Report { out, quiet } => return cylroll::report::run(&out, !quiet),
+        Command::Golden { dir } => return cylroll::record::write_all(&dir).map(|s| (s, 0)),
+        Command::Check {
+            candidate,
+            case,
+            rtol,
+            atol,
+            digits,
+            golden,
+            format,
+        } => {
+            let text = std::fs::read_to_string(&candidate).map_err(|e| Error::Io {
+                path: candidate.display().to_string(),
+                what: e.to_string(),
+            })?;
+            let case = cylroll::record::find_case(&golden, &case)?;
+            let rep = cylroll::record::check::check(
+                &text,
+                &candidate.display().to_string(),
+                &case,
+                rtol,
+                atol,
+                digits,
+            )?;
+            let out = if format == Format::Json {
+                rep.json()
+            } else {
+                rep.text()
+            };
+            return Ok((out, if rep.passed() { 0 } else { 1 }));
+        }
+        Command::Audit { equation, out } => {
+            return cylroll::audit::run(equation.as_deref(), &out).map(|s| (s, 0))
+        }
+        Command::Report { out, quiet } => {
+            return cylroll::report::run(&out, !quiet).map(|s| (s, 0))
+        }
         Command::Verify {
             digits,
             stack,
@@ -334,6 +397,7 @@ pub fn run(cli: Cli) -> Result<String> {
                 Some(spec) => cylroll::dae::stack_report(&spec, digits, format == Format::Json),
                 None => cylroll::dae::verify_report(digits),
             }
+            .map(|s| (s, 0))
         }
         Command::Separation { common, mu } => {
             let model = common.model()?;
@@ -424,7 +488,7 @@ pub fn run(cli: Cli) -> Result<String> {
         }
     };
     let _ = rational_text;
-    Ok(answer.render(common.format))
+    Ok((answer.render(common.format), 0))
 }
 
 /// Entry point used by `main`: prints or reports the error, returns the exit code.
@@ -438,12 +502,12 @@ pub fn main_with(args: Vec<String>) -> i32 {
         }
     };
     match run(cli) {
-        Ok(out) => {
+        Ok((out, code)) => {
             let mut so = std::io::stdout().lock();
             if so.write_all(out.as_bytes()).is_err() {
                 return 4;
             }
-            0
+            code
         }
         Err(e) => {
             eprintln!("error: {e}");

@@ -36,6 +36,7 @@ pub mod model;
 pub mod numeric;
 pub mod oracle;
 pub mod paper;
+pub mod record;
 pub mod report;
 
 pub use error::{Error, Result};

@@ -1,0 +1,244 @@
+//! Golden data: curated cases (`golden/cases/*.toml`) rendered to JSON and CSV
+//! with verified digits only, and the judge that holds another program's CSV
+//! against the oracle (`check`).
+//!
+//! Everything rendered is deterministic text: decimal strings, a stable key
+//! order, no timestamps or paths. Files are written atomically.
+
+pub mod check;
+
+use crate::error::{Error, Result};
+use crate::exact::{rational_text, Exact};
+use crate::input::{model_from_pairs, pairs_from_toml, read_toml};
+use crate::model::Model;
+use crate::numeric::verify::Verified;
+use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
+use rug::Rational;
+use serde_json::{json, Map, Value};
+use std::path::{Path, PathBuf};
+
+/// Significant digits of the stored golden data.
+pub const GOLDEN_DIGITS: u32 = 30;
+
+/// The format tag of the JSON files.
+pub const SCHEMA: &str = "cylroll-golden/1";
+
+/// A curated case.
+#[derive(Debug, Clone)]
+pub struct Case {
+    /// File stem, e.g. `main_roll_roll`.
+    pub name: String,
+    /// One line of prose.
+    pub description: String,
+    /// The validated model.
+    pub model: Model,
+    /// Intervals of the time grid.
+    pub steps: u32,
+}
+
+/// Reads one case file: `description`, `steps` (optional, default 40) and the
+/// model keys of `--params`.
+pub fn load_case(path: &Path) -> Result<Case> {
+    let table = read_toml(path, "case")?;
+    let pairs = pairs_from_toml(&table, "case", &["description", "steps"])?;
+    let model = model_from_pairs(&pairs)?;
+    let description = match table.get("description") {
+        Some(toml::Value::String(s)) => s.clone(),
+        _ => String::new(),
+    };
+    let steps = match table.get("steps") {
+        None => 40,
+        Some(toml::Value::Integer(n)) if (1..=10_000).contains(n) => *n as u32,
+        Some(v) => {
+            return Err(Error::invalid(
+                "steps",
+                v,
+                "must be an integer between 1 and 10000",
+            ))
+        }
+    };
+    let name = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .ok_or_else(|| Error::invalid("case", path.display(), "needs a UTF-8 file name"))?
+        .to_string();
+    Ok(Case {
+        name,
+        description,
+        model,
+        steps,
+    })
+}
+
+/// All cases of `dir/cases`, sorted by name.
+pub fn load_cases(golden_dir: &Path) -> Result<Vec<Case>> {
+    let dir = golden_dir.join("cases");
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .map_err(|e| Error::Io {
+            path: dir.display().to_string(),
+            what: e.to_string(),
+        })?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    paths.sort();
+    paths.iter().map(|p| load_case(p)).collect()
+}
+
+/// A case by name from `golden_dir/cases/NAME.toml`.
+pub fn find_case(golden_dir: &Path, name: &str) -> Result<Case> {
+    let path = golden_dir.join("cases").join(format!("{name}.toml"));
+    if !path.exists() {
+        let known: Vec<String> = load_cases(golden_dir)
+            .map(|cs| cs.into_iter().map(|c| c.name).collect())
+            .unwrap_or_default();
+        return Err(Error::invalid(
+            "case",
+            name,
+            format!("unknown case; known: {}", known.join(", ")),
+        ));
+    }
+    load_case(&path)
+}
+
+/// The rendered golden data of one case.
+#[derive(Debug, Clone)]
+pub struct Rendered {
+    /// `golden/data/<case>.json`.
+    pub json: String,
+    /// `golden/data/<case>.csv`.
+    pub csv: String,
+}
+
+/// The end of the time grid: t_s rounded *down* to 3 significant digits, so
+/// every grid time is an exact decimal before separation.
+fn grid_end(t_s: &Verified) -> Result<Rational> {
+    let e = Exact::parse("t_s", &t_s.text, false)?;
+    if e.signum() <= 0 {
+        return Err(Error::not_physical("the separation time is not positive"));
+    }
+    // scale = 10^(exponent − 2) so that floor(t/scale)·scale keeps 3 digits
+    let mag = e.to_f64().log10().floor() as i32;
+    let scale = if mag - 2 >= 0 {
+        Rational::from(rug::Integer::from(rug::Integer::u_pow_u(
+            10,
+            (mag - 2) as u32,
+        )))
+    } else {
+        Rational::from((
+            1,
+            rug::Integer::from(rug::Integer::u_pow_u(10, (2 - mag) as u32)),
+        ))
+    };
+    let n = Rational::from(&e.coef / &scale).floor();
+    Ok(n * scale)
+}
+
+/// Renders a case (deterministic).
+pub fn render(case: &Case) -> Result<Rendered> {
+    let mut o = Oracle::new(&case.model, GOLDEN_DIGITS)?;
+    let sep = o.separation()?;
+    let t_s = sep.t_s.clone().ok_or_else(|| {
+        Error::not_physical(format!(
+            "case {}: infinite times (rest at the top)",
+            case.name
+        ))
+    })?;
+    let end = grid_end(&t_s)?;
+    let times: Vec<Exact> = (0..=case.steps)
+        .map(|i| Exact::rational(Rational::from(&end * Rational::from((i, case.steps)))))
+        .collect();
+    let rows = o.trajectory(&times)?;
+
+    let mut model = Map::new();
+    for (k, v) in case.model.echo() {
+        model.insert(k.into(), v.into());
+    }
+    let mut scalars = Map::new();
+    let mut bounds = Map::new();
+    for v in std::iter::once(&sep.theta_s)
+        .chain(sep.t_s.iter())
+        .chain(sep.extra.iter())
+    {
+        scalars.insert(v.name.clone(), v.text.clone().into());
+        bounds.insert(v.name.clone(), v.err_text().into());
+    }
+    let rows_json: Vec<Value> = rows
+        .iter()
+        .map(|r| Value::Array(r.iter().map(|v| Value::from(v.text.clone())).collect()))
+        .collect();
+    let doc = json!({
+        "schema": SCHEMA,
+        "case": case.name,
+        "description": case.description,
+        "model": model,
+        "digits": GOLDEN_DIGITS.to_string(),
+        "provenance": {
+            "program": format!("cylroll {}", env!("CARGO_PKG_VERSION")),
+            "method": "energy quadrature (tanh-sinh in theta - theta0) for t(theta); Newton inversion for theta(t); \
+                       bracketed roots for angles; every value verified at two working precisions",
+        },
+        "grid": {
+            "t_end": rational_text(&end),
+            "steps": case.steps.to_string(),
+            "note": "t_i = i t_end / steps; t_end is t_s rounded down to 3 significant digits",
+        },
+        "scalars": scalars,
+        "scalar_error_bounds": bounds,
+        "notes": sep.notes,
+        "columns": TRAJECTORY_COLUMNS,
+        "rows": rows_json,
+    });
+    let json =
+        serde_json::to_string_pretty(&doc).map_err(|e| Error::not_physical(e.to_string()))? + "\n";
+    let mut csv = TRAJECTORY_COLUMNS.join(",");
+    csv.push('\n');
+    for r in &rows {
+        let line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
+        csv.push_str(&line.join(","));
+        csv.push('\n');
+    }
+    Ok(Rendered { json, csv })
+}
+
+/// Writes `bytes` to `path` atomically: a temporary file in the same
+/// directory, then a rename, so readers see the old or the new file, never a
+/// partial one.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    use std::io::Write;
+    let io = |e: std::io::Error| Error::Io {
+        path: path.display().to_string(),
+        what: e.to_string(),
+    };
+    let dir = path.parent().unwrap_or_else(|| Path::new("."));
+    std::fs::create_dir_all(dir).map_err(io)?;
+    let file_name = path.file_name().and_then(|n| n.to_str()).unwrap_or("out");
+    let tmp = dir.join(format!(".{file_name}.tmp{}", std::process::id()));
+    {
+        let mut f = std::fs::File::create(&tmp).map_err(io)?;
+        f.write_all(bytes).map_err(io)?;
+        f.sync_all().map_err(io)?;
+    }
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        io(e)
+    })
+}
+
+/// Renders every case of `golden_dir/cases` into `golden_dir/data`. All cases
+/// are computed before anything is written, so a failure writes nothing.
+pub fn write_all(golden_dir: &Path) -> Result<String> {
+    let cases = load_cases(golden_dir)?;
+    let mut out = Vec::new();
+    for c in &cases {
+        out.push((c.name.clone(), render(c)?));
+    }
+    let data = golden_dir.join("data");
+    let mut summary = String::new();
+    for (name, r) in &out {
+        write_atomic(&data.join(format!("{name}.json")), r.json.as_bytes())?;
+        write_atomic(&data.join(format!("{name}.csv")), r.csv.as_bytes())?;
+        summary.push_str(&format!("{name}: data/{name}.json, data/{name}.csv\n"));
+    }
+    Ok(summary)
+}
