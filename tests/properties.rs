@@ -1,0 +1,137 @@
+//! Property tests: invariants over random valid models, and no panic over a
+//! hostile argument space of the command line.
+
+use cylroll::exact::Exact;
+use cylroll::mechanics::dynamics::Dyn;
+use cylroll::mechanics::Reduced;
+use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::oracle::Oracle;
+use cylroll::Error;
+use proptest::prelude::*;
+use rug::{Float, Rational};
+
+fn rat(n: i64, d: i64) -> Rational {
+    Rational::from((n, d))
+}
+
+prop_compose! {
+    fn any_model()(
+        m1 in 1i64..60, m2 in 1i64..60, r1 in 1i64..30, r2 in 1i64..30,
+        k1 in 0i64..30, k2 in 0i64..30, si in any::<bool>(),
+        floor in 0usize..3, contact in 0usize..2,
+        th0 in 1i64..40, td0 in 0i64..4, w0 in -5i64..5,
+    ) -> Model {
+        let params = Params {
+            m1: rat(m1, 10), m2: rat(m2, 10), r1: rat(r1, 10), r2: rat(r2, 10),
+            k1: rat(k1, 10), k2: rat(k2, 10),
+            g: if si { rat(981, 100) } else { rat(1, 1) },
+        };
+        let floor = [Floor::Roll, Floor::Slip, Floor::Fixed][floor];
+        let contact = [Contact::Roll, Contact::Slip][contact];
+        let start = Start {
+            theta0: Exact::rational(rat(th0, 100)),
+            thetadot0: rat(td0, 20),
+            omega0: if floor == Floor::Fixed { rat(0, 1) } else { rat(w0, 4) },
+        };
+        Model::new(params, floor, contact, start).expect("valid by construction")
+    }
+}
+
+fn num(v: &cylroll::numeric::verify::Verified) -> f64 {
+    v.text.parse().unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, .. ProptestConfig::default() })]
+
+    #[test]
+    fn invariants_of_the_motion(model in any_model()) {
+        let mut o = match Oracle::new(&model, 20) {
+            Ok(o) => o,
+            // a start where the cylinders already part is refused, not computed
+            Err(Error::NotPhysical { .. }) => return Ok(()),
+            Err(e) => panic!("{e}: {}", model.describe()),
+        };
+        let sep = match o.separation() {
+            Ok(s) => s,
+            Err(Error::NotPhysical { .. }) => return Ok(()), // e.g. never separates before pi
+            Err(e) => panic!("{e}: {}", model.describe()),
+        };
+        let th0 = model.start().theta0.to_f64();
+        let ths = num(&sep.theta_s);
+        prop_assert!(ths > th0, "{}", model.describe());
+        let lifts = sep.extra.iter().any(|v| v.name == "theta_N1_zero");
+        let mut last_t = 0.0;
+        for frac in [0.25, 0.5, 0.9] {
+            let th = th0 + frac * (ths - th0);
+            let e = Exact::parse("theta", &format!("{th:.12}"), false).unwrap();
+            let f = o.forces_at(&e).unwrap();
+            let n12 = num(&f[3]);
+            prop_assert!(n12 > 0.0, "N12 = {n12} at {th}: {}", model.describe());
+            if !lifts {
+                prop_assert!(num(&f[1]) > 0.0, "N1 at {th}: {}", model.describe());
+            }
+            let t = num(&o.time_at(&e).unwrap());
+            prop_assert!(t > last_t, "t(theta) increasing: {}", model.describe());
+            last_t = t;
+        }
+        // same answer at two requested precisions
+        let mut o2 = Oracle::new(&model, 32).unwrap();
+        let s2 = o2.separation().unwrap();
+        prop_assert_eq!(
+            cylroll::numeric::decimal::to_sig(&s2.theta_s.value, 20),
+            sep.theta_s.text.clone()
+        );
+        // energy and the canonical momenta are constant along the motion
+        let red = Reduced::new(&model).unwrap();
+        let d = Dyn::new(&model, &red, 200).unwrap();
+        let s0 = d.state(&Float::new(200));
+        let e0 = d.energy(&s0);
+        let p0 = d.momenta(&s0);
+        let st = d.state(&Float::with_val(200, (ths - th0) * 0.7));
+        let de = Float::with_val(200, d.energy(&st) - &e0).abs().to_f64();
+        prop_assert!(de <= 1e-50 * (1.0 + e0.to_f64().abs()), "energy drift {de}");
+        for (a, b) in d.momenta(&st).iter().zip(&p0) {
+            let dp = Float::with_val(200, a - b).abs().to_f64();
+            prop_assert!(dp <= 1e-50 * (1.0 + b.to_f64().abs()), "momentum drift {dp}");
+        }
+    }
+}
+
+fn token() -> impl Strategy<Value = String> {
+    prop_oneof![
+        Just("--m1".to_string()), Just("--k2".to_string()), Just("--theta0".to_string()),
+        Just("--thetadot0".to_string()), Just("--omega0".to_string()), Just("--floor".to_string()),
+        Just("--contact".to_string()), Just("--digits".to_string()), Just("--format".to_string()),
+        Just("--to".to_string()), Just("--theta".to_string()), Just("--times".to_string()),
+        Just("--mu".to_string()), Just("--params".to_string()),
+        Just("0".to_string()), Just("-1".to_string()), Just("1/0".to_string()), Just("nan".to_string()),
+        Just("inf".to_string()), Just("1e999999".to_string()), Just("pi/2".to_string()), Just("0.1".to_string()),
+        Just("slip".to_string()), Just("fixed".to_string()), Just("json".to_string()), Just("".to_string()),
+        Just("99999".to_string()), Just("3".to_string()), Just("0,1,2".to_string()), Just("1e-30".to_string()),
+        "[ -~]{0,12}",
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+
+    #[test]
+    fn the_command_line_never_panics(
+        sub in prop_oneof![Just("separation"), Just("time"), Just("forces"), Just("trajectory")],
+        args in proptest::collection::vec(token(), 0..7),
+    ) {
+        let out = assert_cmd::Command::cargo_bin("cylroll").unwrap()
+            .arg(sub).args(&args)
+            .timeout(std::time::Duration::from_secs(60))
+            .output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        prop_assert!(!err.contains("panicked"), "{sub} {args:?}: {err}");
+        let code = out.status.code();
+        prop_assert!(matches!(code, Some(0) | Some(2) | Some(3)), "{sub} {args:?}: {code:?} {err}");
+        if code != Some(0) {
+            prop_assert!(out.stdout.is_empty(), "partial output on error: {sub} {args:?}");
+            prop_assert!(!err.trim().is_empty());
+        }
+    }
+}
