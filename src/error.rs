@@ -34,19 +34,23 @@ pub enum Error {
         lo: String,
         hi: String,
     },
-    /// Reading or writing a file failed.
+    /// An input file could not be read.
     #[error("{path}: {what}")]
     Io { path: String, what: String },
+    /// An output file could not be written.
+    #[error("cannot write {path}: {what}")]
+    Write { path: String, what: String },
 }
 
 impl Error {
-    /// Process exit status for this error: 2 for bad input or a request with
-    /// no physical answer, 3 for a numerical failure, 4 for I/O.
+    /// Process exit status for this error: 2 for bad input (including an
+    /// unreadable input file) or a request with no physical answer, 3 for a
+    /// numerical failure, 4 for an output file that cannot be written.
     pub fn exit_code(&self) -> i32 {
         match self {
-            Error::InvalidParameter { .. } | Error::NotPhysical { .. } => 2,
+            Error::InvalidParameter { .. } | Error::NotPhysical { .. } | Error::Io { .. } => 2,
             Error::NotConverged { .. } | Error::NoSignChange { .. } => 3,
-            Error::Io { .. } => 4,
+            Error::Write { .. } => 4,
         }
     }
 

@@ -227,3 +227,40 @@ fn params_file_is_read_exactly_and_validated() {
     std::fs::write(&bad, "this is = = not toml").unwrap();
     fails(&["separation", "--params", bad.to_str().unwrap()], "TOML");
 }
+
+#[test]
+fn unreadable_input_files_exit_2() {
+    fails(
+        &["separation", "--params", "/nonexistent/p.toml"],
+        "/nonexistent/p.toml",
+    );
+    let out = cyl()
+        .args(["check", "/nonexistent/c.csv", "--case", "main_roll_roll"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn golden_run_writes_nothing_on_failure() {
+    // a case directory with one bad case: no data file appears
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(dir.path().join("cases")).unwrap();
+    std::fs::write(
+        dir.path().join("cases/a.toml"),
+        "theta0 = \"1/10\"\nsteps = 2\n",
+    )
+    .unwrap();
+    std::fs::write(dir.path().join("cases/b.toml"), "theta0 = \"0\"\n").unwrap(); // infinite times
+    let out = cyl()
+        .args(["golden", "--dir", dir.path().to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(!dir.path().join("data").exists());
+}

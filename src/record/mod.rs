@@ -206,7 +206,7 @@ pub fn render(case: &Case) -> Result<Rendered> {
 /// partial one.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     use std::io::Write;
-    let io = |e: std::io::Error| Error::Io {
+    let io = |e: std::io::Error| Error::Write {
         path: path.display().to_string(),
         what: e.to_string(),
     };
