@@ -51,7 +51,12 @@ fn run(csv: &str, extra: &[&str]) -> std::process::Output {
 fn a_correct_f64_rk4_passes() {
     let out = run(&rk4_csv(0.0), &["--rtol", "1e-9", "--atol", "1e-11"]);
     let text = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(out.status.code(), Some(0), "{text}{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{text}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(text.contains("PASS"), "{text}");
     assert!(text.contains("theta_dot"));
 }
@@ -64,7 +69,12 @@ fn a_perturbed_candidate_fails_at_its_first_row() {
     assert_eq!(v["passed"], false);
     assert_eq!(v["first_failure"]["column"], "theta");
     assert_eq!(v["first_failure"]["row"], "1");
-    let theta = v["columns"].as_array().unwrap().iter().find(|c| c["column"] == "theta").unwrap();
+    let theta = v["columns"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["column"] == "theta")
+        .unwrap();
     let rel: f64 = theta["max_rel"].as_str().unwrap().parse().unwrap();
     assert!((rel - 1e-6).abs() < 1e-8, "{rel}");
 }

@@ -13,12 +13,18 @@ fn golden() -> &'static Path {
 #[test]
 fn every_case_renders_to_its_committed_files_and_snapshot() {
     let cases = load_cases(golden()).unwrap();
-    assert!(cases.len() >= 11, "the curated set has {} cases", cases.len());
+    assert!(
+        cases.len() >= 11,
+        "the curated set has {} cases",
+        cases.len()
+    );
     for case in &cases {
         let r = render(case).unwrap();
         let data = golden().join("data");
-        let json = std::fs::read_to_string(data.join(format!("{}.json", case.name))).unwrap_or_default();
-        let csv = std::fs::read_to_string(data.join(format!("{}.csv", case.name))).unwrap_or_default();
+        let json =
+            std::fs::read_to_string(data.join(format!("{}.json", case.name))).unwrap_or_default();
+        let csv =
+            std::fs::read_to_string(data.join(format!("{}.csv", case.name))).unwrap_or_default();
         insta::with_settings!({
             snapshot_path => "../golden/snapshots",
             prepend_module_to_snapshot => false,
@@ -26,8 +32,16 @@ fn every_case_renders_to_its_committed_files_and_snapshot() {
         }, {
             insta::assert_snapshot!(case.name.clone(), r.json);
         });
-        assert!(json == r.json, "golden/data/{}.json is stale: run `cylroll golden` and review the diff", case.name);
-        assert!(csv == r.csv, "golden/data/{}.csv is stale: run `cylroll golden` and review the diff", case.name);
+        assert!(
+            json == r.json,
+            "golden/data/{}.json is stale: run `cylroll golden` and review the diff",
+            case.name
+        );
+        assert!(
+            csv == r.csv,
+            "golden/data/{}.csv is stale: run `cylroll golden` and review the diff",
+            case.name
+        );
     }
 }
 

@@ -20,7 +20,11 @@ fn round(reference: &str, digits: u32) -> String {
 
 #[test]
 fn agrees_with_the_independent_sympy_mpmath_derivation() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/independent.toml")).unwrap();
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/fixtures/independent.toml"
+    ))
+    .unwrap();
     let doc: toml::Table = text.parse().unwrap();
     let cases = doc["case"].as_array().unwrap();
     assert_eq!(cases.len(), 30);
@@ -36,15 +40,29 @@ fn agrees_with_the_independent_sympy_mpmath_derivation() {
         // the limit θ0 → 0+
         let m = model_from_pairs(&pairs).unwrap();
         let s = Oracle::new(&m, 45).unwrap().separation().unwrap();
-        assert_eq!(s.theta_s.text, round(c["theta_s_limit"].as_str().unwrap(), 45), "{name} theta_s limit");
+        assert_eq!(
+            s.theta_s.text,
+            round(c["theta_s_limit"].as_str().unwrap(), 45),
+            "{name} theta_s limit"
+        );
         // from rest at θ0 = 1/10
         pairs.insert("theta0".into(), "1/10".into());
         let m = model_from_pairs(&pairs).unwrap();
         let mut o = Oracle::new(&m, 36).unwrap();
         let s = o.separation().unwrap();
-        assert_eq!(s.theta_s.text, round(c["theta_s_0p1"].as_str().unwrap(), 36), "{name} theta_s");
-        assert_eq!(s.t_s.unwrap().text, round(c["t_s_0p1"].as_str().unwrap(), 36), "{name} t_s");
-        let f = o.forces_at(&Exact::parse("theta", "1/2", false).unwrap()).unwrap();
+        assert_eq!(
+            s.theta_s.text,
+            round(c["theta_s_0p1"].as_str().unwrap(), 36),
+            "{name} theta_s"
+        );
+        assert_eq!(
+            s.t_s.unwrap().text,
+            round(c["t_s_0p1"].as_str().unwrap(), 36),
+            "{name} t_s"
+        );
+        let f = o
+            .forces_at(&Exact::parse("theta", "1/2", false).unwrap())
+            .unwrap();
         let half = c["at_half"].as_table().unwrap();
         for (i, key) in FORCE_KEYS.iter().enumerate().take(6) {
             let r = half[*key].as_str().unwrap();
