@@ -1,19 +1,309 @@
-//! The second route: time integration of the constrained equations (issue 3).
-//! Not yet implemented.
+//! The second route: time integration of the constrained equations of motion
+//! (paper appendix A.5, eq. 57), independent of the energy quadrature.
+//!
+//! * [`system`]: the n-cylinder stack in relaxed coordinates
+//!   q = (x1, y1, φ1, ψ2, θ1, r1, ψ3, θ2, r2, …) — for two cylinders exactly
+//!   (x1, y1, φ1, ψ2, θ, r) — its mass matrix, generalised forces,
+//!   constraint rows of every contact model, and the KKT solve for q̈ and the
+//!   multipliers λ, which are the constraint forces (for n = 2: F1, F21, N12,
+//!   N1 of the paper's eqs. 110–114).
+//! * [`gbs`]: Gragg–Bulirsch–Stoer extrapolation on `rug::Float` with error
+//!   estimation, step-size and order control (ODEX-style), so the local
+//!   error can be driven to hundreds of digits.
+//! * [`solve`]: the driver: integrates y = (q, q̇), samples at given times,
+//!   locates events (N12 = 0, N1 = 0, θ̇ = 0, …) to full precision by
+//!   re-integration and a bracketed secant iteration, measures constraint
+//!   drift (and projects if it ever exceeds 2^−(prec−16)).
+//! * [`spec`]: the `--stack` SPEC syntax (`stack_report("help", ..)` prints it).
+//!
+//! The route shares with the first only the model and the precision ladder
+//! ([`crate::numeric::verify::ladder`]: every value is computed at two
+//! precisions, each with its own tolerance 2^−(prec−8), and only agreeing
+//! digits are kept). Accuracy kind: *estimated*, like the first route.
+//!
+//! Entry points: [`verify_report`] (both routes on a set of cases, a table
+//! of agreeing digits), [`stack_report`] (footnote 3: n ≥ 2 cylinders),
+//! [`two_cylinder`] (route 2 for a [`Model`] at one precision).
+
+pub mod gbs;
+pub mod solve;
+pub mod spec;
+mod stack;
+pub mod system;
+mod verify;
+
+pub use stack::{row_name, solve_stack, StackOpening, StackSolution};
+pub use verify::{agreement, cases, compare_case, CaseReport, Comparison, VerifyCase};
 
 use crate::error::{Error, Result};
+use crate::model::{Contact, Floor, Model};
+use rug::Float;
+use solve::{Event, Opts, Run, Sample, Watch};
+use system::{Row, StackModel, System};
 
 /// Runs both routes on the built-in case set and returns the agreement table.
+///
+/// Errors: a route that cannot verify `digits` digits of some quantity.
 pub fn verify_report(digits: u32) -> Result<String> {
-    let _ = digits;
-    Err(Error::not_physical(
-        "the second route is not implemented yet",
-    ))
+    verify::report(digits)
 }
 
-/// Solves a stack of cylinders described by `spec` and returns the report
-/// (`json`: as a JSON object with decimal strings).
+/// Solves a stack of cylinders described by `spec` (see [`spec::HELP`];
+/// `"help"` returns that text) and returns the report (`json`: as a JSON
+/// object with decimal strings).
+///
+/// Errors: a bad SPEC ([`Error::InvalidParameter`]), a start where a contact
+/// is already open, digits that cannot be verified.
 pub fn stack_report(spec: &str, digits: u32, json: bool) -> Result<String> {
-    let _ = (spec, digits, json);
-    Err(Error::not_physical("stacks are not implemented yet"))
+    if spec.trim() == "help" {
+        return Ok(spec::HELP.to_string());
+    }
+    let sp = spec::parse(spec)?;
+    stack::report(&sp, digits, json)
+}
+
+/// Guard bits between the working precision and the integrator's tolerance.
+pub const TOL_GUARD: u32 = 8;
+
+/// The natural time scale sqrt(r/g) of a stack (r = r1 + r2).
+pub fn time_scale(sm: &StackModel, prec: u32) -> Float {
+    let r = Float::with_val(prec, &sm.r[0]) + Float::with_val(prec, &sm.r[1]);
+    let g = Float::with_val(prec, &sm.g);
+    Float::with_val(prec, r / g).sqrt()
+}
+
+/// Two cylinders: route 2's values at one sample, in the conventions of the
+/// README (and of [`crate::oracle::TRAJECTORY_COLUMNS`]).
+#[derive(Debug, Clone)]
+pub struct TwoState {
+    /// t.
+    pub t: Float,
+    /// θ.
+    pub theta: Float,
+    /// θ̇.
+    pub theta_dot: Float,
+    /// θ̈.
+    pub theta_ddot: Float,
+    /// φ1 (clockwise).
+    pub phi1: Float,
+    /// φ2 = ψ2 + θ (the paper's angle).
+    pub phi2: Float,
+    /// x1.
+    pub x1: Float,
+    /// x2.
+    pub x2: Float,
+    /// y2.
+    pub y2: Float,
+    /// F1 (floor's or holder's x force on cylinder 1; 0 on a frictionless floor).
+    pub f1: Float,
+    /// N1.
+    pub n1: Float,
+    /// F21 (0 at a frictionless contact).
+    pub f21: Float,
+    /// N12.
+    pub n12: Float,
+}
+
+impl TwoState {
+    /// The values in [`crate::oracle::TRAJECTORY_COLUMNS`] order, t first.
+    pub fn columns(&self) -> [Float; 13] {
+        [
+            self.t.clone(),
+            self.theta.clone(),
+            self.theta_dot.clone(),
+            self.theta_ddot.clone(),
+            self.phi1.clone(),
+            self.phi2.clone(),
+            self.x1.clone(),
+            self.x2.clone(),
+            self.y2.clone(),
+            self.f1.clone(),
+            self.n1.clone(),
+            self.f21.clone(),
+            self.n12.clone(),
+        ]
+    }
+}
+
+/// Route 2 for a two-cylinder model at one precision.
+#[derive(Debug, Clone)]
+pub struct TwoRun {
+    /// The samples at the requested times.
+    pub rows: Vec<TwoState>,
+    /// The state at separation (N12 = 0), if reached before `t_end`.
+    pub separation: Option<(TwoState, Float)>,
+    /// Where N1 first vanished (the run goes on through it, as the first
+    /// route does), with the time's bracket half-width.
+    pub n1_zero: Option<(TwoState, Float)>,
+    /// Where φ̇1 and φ1 first changed sign (when asked for).
+    pub phi1dot_zero: Option<(TwoState, Float)>,
+    /// See `phi1dot_zero`.
+    pub phi1_zero: Option<(TwoState, Float)>,
+    /// Turning points θ̇ = 0 before separation.
+    pub turning: Vec<(TwoState, Float)>,
+    /// Largest relative change of the energy over the samples and events.
+    pub energy_drift: Float,
+    /// Largest change of the conserved momenta over the samples and events.
+    pub momentum_drift: Float,
+    /// The integration record (drift, work).
+    pub run: Run,
+}
+
+/// Options of [`two_cylinder`].
+#[derive(Debug, Clone, Default)]
+pub struct TwoOpts {
+    /// Also locate where φ̇1 and φ1 change sign.
+    pub phi1_events: bool,
+}
+
+fn row_value(sys: &System, s: &Sample, row: Row) -> Float {
+    sys.rows
+        .iter()
+        .position(|r| *r == row)
+        .map(|i| s.lambda[i].clone())
+        .unwrap_or_else(|| Float::new(sys.prec))
+}
+
+fn two_state(sys: &System, s: &Sample) -> TwoState {
+    let p = sys.prec;
+    let q = &s.q;
+    let th = &q[system::th(0)];
+    let r = &q[system::rr(0)];
+    let (sn, cs) = th.clone().sin_cos(Float::new(p));
+    TwoState {
+        t: s.t.clone(),
+        theta: th.clone(),
+        theta_dot: s.v[system::th(0)].clone(),
+        theta_ddot: s.qdd[system::th(0)].clone(),
+        phi1: q[system::PHI1].clone(),
+        phi2: Float::with_val(p, &q[system::psi(0)] + th),
+        x1: q[system::X1].clone(),
+        x2: Float::with_val(p, r * &sn) + &q[system::X1],
+        y2: Float::with_val(p, r * &cs) + &q[system::Y1],
+        f1: row_value(sys, s, Row::FloorFriction),
+        n1: row_value(sys, s, Row::FloorNormal),
+        f21: row_value(sys, s, Row::Friction(0)),
+        n12: row_value(sys, s, Row::Normal(0)),
+    }
+}
+
+/// Integrates a two-cylinder model at `prec` bits from t = 0, sampling at
+/// `times` and stopping at separation (N12 = 0) or at `t_end`.
+///
+/// Errors: a start exactly at rest at the top (nothing ever moves); a start
+/// where the cylinders already part; numerical failures of the integrator.
+pub fn two_cylinder(
+    model: &Model,
+    prec: u32,
+    times: &[Float],
+    t_end: &Float,
+    opts: &TwoOpts,
+) -> Result<TwoRun> {
+    let sm = StackModel::from_model(model);
+    if sm.starts_at_equilibrium() {
+        return Err(Error::not_physical(
+            "the motion starts from rest exactly at the unstable top: every time is infinite",
+        ));
+    }
+    let ts = time_scale(&sm, prec);
+    let o = Opts::for_prec(prec, TOL_GUARD, &ts);
+    let mut sys = System::new(&sm, o.prec)?;
+    let (q0, v0) = sys.initial_state(&sm)?;
+    let idx = |row: Row| sys.rows.iter().position(|r| *r == row);
+    let n12 = idx(Row::Normal(0)).ok_or_else(|| Error::not_physical("no N12 row"))?;
+    let n1 = idx(Row::FloorNormal).ok_or_else(|| Error::not_physical("no N1 row"))?;
+    let mut events = vec![
+        Event {
+            name: "N12".into(),
+            watch: Watch::Multiplier(n12),
+            terminal: true,
+        },
+        Event {
+            name: "N1".into(),
+            watch: Watch::Multiplier(n1),
+            terminal: false,
+        },
+        Event {
+            name: "theta_dot".into(),
+            watch: Watch::Rate(system::th(0)),
+            terminal: false,
+        },
+    ];
+    if opts.phi1_events && model.floor() != Floor::Fixed {
+        events.push(Event {
+            name: "phi1_dot".into(),
+            watch: Watch::Rate(system::PHI1),
+            terminal: false,
+        });
+        events.push(Event {
+            name: "phi1".into(),
+            watch: Watch::Coord(system::PHI1),
+            terminal: false,
+        });
+    }
+    // the start must have both contacts pressing
+    let a0 = sys.accel(&q0, &v0)?;
+    if !a0.lambda[n12].is_sign_positive() || a0.lambda[n12].is_zero() {
+        return Err(Error::not_physical(
+            "the cylinders part at once: N12 <= 0 at the start",
+        ));
+    }
+    let run = solve::run(&mut sys, &q0, &v0, times, t_end, &events, &o)?;
+    let mut out = TwoRun {
+        rows: run.outputs.iter().map(|s| two_state(&sys, s)).collect(),
+        separation: None,
+        n1_zero: None,
+        phi1dot_zero: None,
+        phi1_zero: None,
+        turning: Vec::new(),
+        energy_drift: Float::new(prec),
+        momentum_drift: Float::new(prec),
+        run: run.clone(),
+    };
+    for h in &run.hits {
+        let st = (two_state(&sys, &h.at), h.t_err.clone());
+        match events[h.event].name.as_str() {
+            "N12" => out.separation = Some(st),
+            "N1" => {
+                if out.n1_zero.is_none() {
+                    out.n1_zero = Some(st)
+                }
+            }
+            "theta_dot" => out.turning.push(st),
+            "phi1_dot" => {
+                if out.phi1dot_zero.is_none() {
+                    out.phi1dot_zero = Some(st)
+                }
+            }
+            _ => {
+                if out.phi1_zero.is_none() {
+                    out.phi1_zero = Some(st)
+                }
+            }
+        }
+    }
+    // conservation over every recorded state
+    let e0 = sys.energy(&q0, &v0);
+    let p0 = sys.momenta(&q0, &v0);
+    let escale = Float::with_val(prec, e0.abs_ref()) + Float::with_val(prec, &sys.g * &sys.m[1]);
+    let states = run
+        .outputs
+        .iter()
+        .chain(run.hits.iter().map(|h| &h.at))
+        .chain(std::iter::once(&run.last));
+    for s in states {
+        let e = sys.energy(&s.q, &s.v);
+        let de = Float::with_val(prec, &e - &e0).abs() / &escale;
+        if de > out.energy_drift {
+            out.energy_drift = de;
+        }
+        for (a, b) in sys.momenta(&s.q, &s.v).iter().zip(&p0) {
+            let d = Float::with_val(prec, a - b).abs();
+            if d > out.momentum_drift {
+                out.momentum_drift = d;
+            }
+        }
+    }
+    let _ = Contact::Roll;
+    Ok(out)
 }

@@ -1,0 +1,473 @@
+//! Time integration of the index-reduced constrained equations with event
+//! location: the driver around [`super::gbs`] and [`super::system`].
+//!
+//! The state is y = (q, q̇) in all 3n coordinates; f(y) = (q̇, q̈) with q̈
+//! from the KKT solve at y. The constraints are linear in q and q̇ on the
+//! manifold (r_j constant), and extrapolation methods are linear in f, so
+//! the position and velocity constraints are kept up to rounding; the drift
+//! is measured after every step and the state is projected back onto the
+//! manifold only if it exceeds a threshold far below the tolerance.
+//!
+//! Events (a multiplier, a velocity or a coordinate crossing zero) are
+//! detected by a sign change between step ends and located by re-integrating
+//! from the step's start with steps of size s at the accepted column and
+//! solving g(s) = 0 by Newton's method (started from the cubic Hermite
+//! interpolant of g, safeguarded by the bracket) to a correction below the
+//! integration tolerance.
+
+use super::gbs::{Gbs, Rhs, Stats};
+use super::system::System;
+use crate::error::{Error, Result};
+use rug::{Assign, Float};
+
+/// What an event watches.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Watch {
+    /// The multiplier of constraint row i (a constraint force).
+    Multiplier(usize),
+    /// The rate q̇_i.
+    Rate(usize),
+    /// The coordinate q_i.
+    Coord(usize),
+}
+
+/// An event: a named zero crossing, terminal or not.
+#[derive(Debug, Clone)]
+pub struct Event {
+    /// Name used in reports.
+    pub name: String,
+    /// The watched function.
+    pub watch: Watch,
+    /// Whether the integration stops there.
+    pub terminal: bool,
+}
+
+/// The full state at one time.
+#[derive(Debug, Clone)]
+pub struct Sample {
+    /// Time.
+    pub t: Float,
+    /// q.
+    pub q: Vec<Float>,
+    /// q̇.
+    pub v: Vec<Float>,
+    /// q̈.
+    pub qdd: Vec<Float>,
+    /// The multipliers (constraint forces), one per row.
+    pub lambda: Vec<Float>,
+}
+
+/// A located event.
+#[derive(Debug, Clone)]
+pub struct Hit {
+    /// Index into the event list.
+    pub event: usize,
+    /// The state there.
+    pub at: Sample,
+    /// Half-width of the final bracket in time.
+    pub t_err: Float,
+}
+
+/// The result of a run.
+#[derive(Debug, Clone)]
+pub struct Run {
+    /// The samples at the requested output times that were reached.
+    pub outputs: Vec<Sample>,
+    /// The events located, in time order; the last is terminal if the run
+    /// stopped at one.
+    pub hits: Vec<Hit>,
+    /// Whether the run stopped at a terminal event (else at `t_end`).
+    pub stopped: bool,
+    /// The last state (the terminal event's, or at `t_end`).
+    pub last: Sample,
+    /// Largest constraint drift seen (before any projection).
+    pub max_drift: Float,
+    /// Projections applied.
+    pub projections: u32,
+    /// Integrator work.
+    pub stats: Stats,
+}
+
+/// Settings of a run.
+#[derive(Debug, Clone)]
+pub struct Opts {
+    /// Internal working precision (bits): the requested precision plus the
+    /// guard bits that the extrapolation tableau needs (its Lebesgue
+    /// constant grows like 2^(1.1 k) with the column k).
+    pub prec: u32,
+    /// Local error tolerance (mixed absolute/relative).
+    pub tol: Float,
+    /// First step size.
+    pub h0: Float,
+    /// Largest extrapolation column.
+    pub kmax: usize,
+    /// Drift above which the state is projected back onto the manifold.
+    pub project_above: Float,
+}
+
+impl Opts {
+    /// Settings for a result good to about `prec` bits: tolerance
+    /// 2^−(prec−guard), columns up to kmax = digits/2 + 10 (at most 60), an
+    /// internal precision of prec + ⌈1.1 kmax⌉ + 16 bits, and a drift
+    /// threshold of 2^−(prec+8).
+    pub fn for_prec(prec: u32, guard: u32, time_scale: &Float) -> Self {
+        let digits = (prec as f64 * std::f64::consts::LOG10_2) as usize;
+        let kmax = (digits / 2 + 10).clamp(8, 60);
+        let work = prec + (1.1 * kmax as f64).ceil() as u32 + 16;
+        let tol = Float::with_val(work, 1u32) >> (prec as i32 - guard as i32);
+        Opts {
+            prec: work,
+            tol,
+            h0: Float::with_val(work, time_scale / 8u32),
+            kmax,
+            project_above: Float::with_val(work, 1u32) >> (prec as i32 + 8),
+        }
+    }
+}
+
+struct Dae<'a> {
+    sys: &'a mut System,
+    nq: usize,
+}
+
+impl Rhs for Dae<'_> {
+    fn eval(&mut self, y: &[Float], dy: &mut [Float]) -> Result<()> {
+        let nq = self.nq;
+        let (q, v) = y.split_at(nq);
+        let (dq, dv) = dy.split_at_mut(nq);
+        for (d, x) in dq.iter_mut().zip(v) {
+            d.assign(x);
+        }
+        self.sys.accel_into(q, v, dv, None)
+    }
+}
+
+fn sample(sys: &mut System, t: &Float, y: &[Float]) -> Result<Sample> {
+    let nq = sys.nq();
+    let (q, v) = y.split_at(nq);
+    let acc = sys.accel(q, v)?;
+    Ok(Sample {
+        t: t.clone(),
+        q: q.to_vec(),
+        v: v.to_vec(),
+        qdd: acc.qdd,
+        lambda: acc.lambda,
+    })
+}
+
+fn watch_value(w: Watch, s: &Sample) -> Float {
+    match w {
+        Watch::Multiplier(i) => s.lambda[i].clone(),
+        Watch::Rate(i) => s.v[i].clone(),
+        Watch::Coord(i) => s.q[i].clone(),
+    }
+}
+
+fn f_of(s: &Sample) -> Vec<Float> {
+    let mut f = s.v.clone();
+    f.extend(s.qdd.iter().cloned());
+    f
+}
+
+fn y_of(s: &Sample) -> Vec<Float> {
+    let mut y = s.q.clone();
+    y.extend(s.v.iter().cloned());
+    y
+}
+
+/// Integrates from (q0, q̇0) at t = 0 to `t_end`, sampling at `times`
+/// (ascending, within [0, t_end]) and stopping at the first terminal event.
+///
+/// Errors: from the KKT solve or the integrator; an event that cannot be
+/// bracketed after re-integration.
+pub fn run(
+    sys: &mut System,
+    q0: &[Float],
+    v0: &[Float],
+    times: &[Float],
+    t_end: &Float,
+    events: &[Event],
+    opts: &Opts,
+) -> Result<Run> {
+    let p = opts.prec;
+    let nq = sys.nq();
+    let mut gbs = Gbs::new(
+        p,
+        opts.tol.clone(),
+        opts.h0.clone(),
+        opts.kmax,
+        (opts.kmax / 2).max(4),
+    );
+    let mut t = Float::new(p);
+    let mut y: Vec<Float> = q0.iter().chain(v0).cloned().collect();
+    let mut cur = sample(sys, &t, &y)?;
+    let mut gprev: Vec<Float> = events.iter().map(|e| watch_value(e.watch, &cur)).collect();
+    let mut outputs = Vec::new();
+    let mut hits = Vec::new();
+    let mut max_drift = Float::new(p);
+    let mut projections = 0u32;
+    let mut next_out = 0usize;
+    while next_out < times.len() && times[next_out].is_zero() {
+        outputs.push(cur.clone());
+        next_out += 1;
+    }
+    loop {
+        let stop = if next_out < times.len() && times[next_out] < *t_end {
+            times[next_out].clone()
+        } else {
+            t_end.clone()
+        };
+        let hmax = Float::with_val(p, &stop - &t);
+        if hmax.is_sign_negative() || hmax.is_zero() {
+            return Ok(Run {
+                outputs,
+                hits,
+                stopped: false,
+                last: cur,
+                max_drift,
+                projections,
+                stats: gbs.stats,
+            });
+        }
+        let f0 = f_of(&cur);
+        let step = {
+            let mut dae = Dae { sys, nq };
+            gbs.step(&mut dae, &y, &f0, &hmax)?
+        };
+        let reached_stop = step.h == hmax;
+        let t1 = if reached_stop {
+            stop.clone()
+        } else {
+            Float::with_val(p, &t + &step.h)
+        };
+        let mut y1 = step.y;
+        {
+            let (q1, v1) = y1.split_at(nq);
+            let d = sys.drift(q1, v1, q0);
+            if d > max_drift {
+                max_drift = d.clone();
+            }
+            if d > opts.project_above {
+                let (q1, v1) = y1.split_at_mut(nq);
+                sys.project(q1, v1, q0);
+                projections += 1;
+            }
+        }
+        let next = sample(sys, &t1, &y1)?;
+        let g1: Vec<Float> = events.iter().map(|e| watch_value(e.watch, &next)).collect();
+        // events changing sign in this step
+        let mut found: Vec<(Float, usize, Sample, Float)> = Vec::new();
+        for (i, ev) in events.iter().enumerate() {
+            let a = &gprev[i];
+            let b = &g1[i];
+            if a.is_zero() {
+                continue;
+            }
+            if b.is_zero() || a.is_sign_negative() != b.is_sign_negative() {
+                let ends = [(&cur, a), (&next, b)];
+                let (s, at, err) = locate(
+                    sys,
+                    &mut gbs,
+                    &y,
+                    &f0,
+                    &t,
+                    &step.h,
+                    step.column,
+                    ev.watch,
+                    ends,
+                )?;
+                found.push((s, i, at, err));
+            }
+        }
+        found.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+        let mut terminal = None;
+        for (_, i, at, err) in found {
+            let term = events[i].terminal;
+            hits.push(Hit {
+                event: i,
+                at,
+                t_err: err,
+            });
+            if term {
+                terminal = Some(hits.len() - 1);
+                break;
+            }
+        }
+        if let Some(h) = terminal {
+            let last = hits[h].at.clone();
+            return Ok(Run {
+                outputs,
+                hits,
+                stopped: true,
+                last,
+                max_drift,
+                projections,
+                stats: gbs.stats,
+            });
+        }
+        // zeros of g at a step end count as crossings of the next step only
+        // if the sign really changes; keep the last nonzero value
+        for (gp, g) in gprev.iter_mut().zip(g1) {
+            if !g.is_zero() {
+                *gp = g;
+            }
+        }
+        t = t1;
+        y = y_of(&next);
+        cur = next;
+        if reached_stop {
+            if next_out < times.len() && t == times[next_out] {
+                outputs.push(cur.clone());
+                next_out += 1;
+            }
+            if t == *t_end {
+                return Ok(Run {
+                    outputs,
+                    hits,
+                    stopped: false,
+                    last: cur,
+                    max_drift,
+                    projections,
+                    stats: gbs.stats,
+                });
+            }
+        }
+    }
+}
+
+/// dg/dt of the watched function at a sample: q̈ or q̇ exactly; for a
+/// multiplier, a central difference of λ along the flow with step
+/// ε = 2^−(prec/3) (relative error about 2^−(2 prec/3)).
+fn rate_of(sys: &mut System, w: Watch, s: &Sample) -> Result<Float> {
+    let p = sys.prec;
+    match w {
+        Watch::Rate(i) => Ok(s.qdd[i].clone()),
+        Watch::Coord(i) => Ok(s.v[i].clone()),
+        Watch::Multiplier(k) => {
+            let eps = Float::with_val(p, 1u32) >> (p as i32 / 3);
+            let shifted = |sign: i32| {
+                let q: Vec<Float> =
+                    s.q.iter()
+                        .zip(&s.v)
+                        .map(|(q, v)| Float::with_val(p, q + Float::with_val(p, v * &eps) * sign))
+                        .collect();
+                let v: Vec<Float> =
+                    s.v.iter()
+                        .zip(&s.qdd)
+                        .map(|(v, a)| Float::with_val(p, v + Float::with_val(p, a * &eps) * sign))
+                        .collect();
+                (q, v)
+            };
+            let (qp, vp) = shifted(1);
+            let (qm, vm) = shifted(-1);
+            let ap = sys.accel(&qp, &vp)?;
+            let am = sys.accel(&qm, &vm)?;
+            let d = Float::with_val(p, &ap.lambda[k] - &am.lambda[k]);
+            Ok(d / Float::with_val(p, &eps * 2u32))
+        }
+    }
+}
+
+/// The root in (0, h) of the cubic Hermite interpolant of g with values
+/// and slopes at both ends (f64: only a starting point).
+fn hermite_root(h: f64, g0: f64, d0: f64, g1: f64, d1: f64) -> f64 {
+    let val = |x: f64| {
+        let u = x / h;
+        let h00 = 2.0 * u * u * u - 3.0 * u * u + 1.0;
+        let h10 = u * u * u - 2.0 * u * u + u;
+        let h01 = -2.0 * u * u * u + 3.0 * u * u;
+        let h11 = u * u * u - u * u;
+        h00 * g0 + h10 * h * d0 + h01 * g1 + h11 * h * d1
+    };
+    // bisection on the cubic keeps the sign change of the ends
+    let (mut a, mut b) = (0.0, h);
+    let fa = val(a);
+    for _ in 0..60 {
+        let m = 0.5 * (a + b);
+        let fm = val(m);
+        if fm == 0.0 {
+            return m;
+        }
+        if (fm < 0.0) == (fa < 0.0) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// Locates the zero of the watched function inside the step [t, t + h]
+/// (`ends`: the samples and values of g at t and t + h, of opposite signs)
+/// by re-integrating from y0 with step s at `column`: a start from the cubic
+/// Hermite interpolant of g, then Newton's method on s (dg/dt from
+/// [`rate_of`]) safeguarded by the bracket, until the correction is below
+/// (|t| + 1)·tol/16. Returns (s, the state there, the error estimate).
+#[allow(clippy::too_many_arguments)]
+fn locate(
+    sys: &mut System,
+    gbs: &mut Gbs,
+    y0: &[Float],
+    f0: &[Float],
+    t: &Float,
+    h: &Float,
+    column: usize,
+    watch: Watch,
+    ends: [(&Sample, &Float); 2],
+) -> Result<(Float, Sample, Float)> {
+    let p = gbs.prec;
+    let nq = sys.nq();
+    let eval = |sys: &mut System, gbs: &mut Gbs, s: &Float| -> Result<(Float, Sample)> {
+        let y = {
+            let mut dae = Dae { sys, nq };
+            gbs.fixed_step(&mut dae, y0, f0, s, column)?
+        };
+        let ts = Float::with_val(p, t + s);
+        let smp = sample(sys, &ts, &y)?;
+        Ok((watch_value(watch, &smp), smp))
+    };
+    let (s0, ga) = ends[0];
+    let (s1, gb) = ends[1];
+    let tol = Float::with_val(p, Float::with_val(p, t + h).abs() + 1u32) * &gbs.tol / 16u32;
+    // bracket [a, b] with g(a) of the sign of ga
+    let neg_a = ga.is_sign_negative();
+    let mut a = Float::new(p);
+    let mut b = h.clone();
+    let d0 = rate_of(sys, watch, s0)?;
+    let d1 = rate_of(sys, watch, s1)?;
+    let hf = h.to_f64();
+    let guess = hermite_root(hf, ga.to_f64(), d0.to_f64(), gb.to_f64(), d1.to_f64());
+    let mut x = Float::with_val(p, guess);
+    if !(x > a && x < b) {
+        x = Float::with_val(p, h / 2u32);
+    }
+    for _ in 0..200 {
+        let (gx, smp) = eval(sys, gbs, &x)?;
+        if gx.is_zero() {
+            return Ok((x, smp, tol));
+        }
+        if gx.is_sign_negative() == neg_a {
+            a = x.clone();
+        } else {
+            b = x.clone();
+        }
+        let d = rate_of(sys, watch, &smp)?;
+        let corr = Float::with_val(p, &gx / &d);
+        let width = Float::with_val(p, &b - &a);
+        if Float::with_val(p, corr.abs_ref()) <= tol || width <= tol {
+            let err = Float::with_val(p, corr.abs_ref()).min(&width) + &tol;
+            return Ok((x, smp, err));
+        }
+        let mut nx = Float::with_val(p, &x - &corr);
+        if !nx.is_finite() || nx <= a || nx >= b {
+            nx = Float::with_val(p, &a + &b) / 2u32;
+        }
+        x = nx;
+    }
+    Err(Error::NotConverged {
+        quantity: "event time".into(),
+        requested: 0,
+        reached: format!("bracket width {:.3e}", Float::with_val(p, &b - &a).to_f64()),
+        detail: format!("inside the step from t = {:.6e}", t.to_f64()),
+    })
+}

@@ -1,0 +1,392 @@
+//! `cylroll verify`: both routes on a set of cases, and the digits to which
+//! they agree, per case and quantity.
+
+use super::{two_cylinder, TwoOpts, TwoRun, TwoState};
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use crate::model::{Contact, Floor, Model, Params, Start};
+use crate::numeric::decimal::short;
+use crate::numeric::verify::{ladder, Estimate, Verified};
+use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
+use rug::{Float, Rational};
+use std::time::Instant;
+
+/// One case of the verification set.
+#[derive(Debug, Clone)]
+pub struct VerifyCase {
+    /// Short name.
+    pub name: String,
+    /// The model.
+    pub model: Model,
+}
+
+fn q(s: &str) -> Rational {
+    // the literals below are valid by construction
+    Exact::parse("case", s, false)
+        .map(|e| e.coef)
+        .unwrap_or_default()
+}
+
+fn unequal() -> Params {
+    Params {
+        m1: q("3"),
+        m2: q("1.25"),
+        r1: q("0.7"),
+        r2: q("1/3"),
+        k1: q("0.4"),
+        k2: q("0.9"),
+        g: q("9.81"),
+    }
+}
+
+fn start(theta0: &str, td0: &str, w0: &str) -> Start {
+    Start {
+        theta0: Exact::rational(q(theta0)),
+        thetadot0: q(td0),
+        omega0: q(w0),
+    }
+}
+
+/// The built-in verification set: every contact model (unequal masses,
+/// radii and inertia factors, from rest at θ0 = 1/10), a bobbin (k2 = 3/2)
+/// on a smaller cylinder, starts with θ̇0 ≠ 0 and ω0 ≠ 0 on a rolling and on
+/// a frictionless floor, and the paper's identical solid cylinders falling
+/// to the left (θ0 < 0, which the first route solves as a mirror image).
+pub fn cases() -> Vec<VerifyCase> {
+    let mut out = Vec::new();
+    let mut push = |name: String, m: Result<Model>| {
+        if let Ok(model) = m {
+            out.push(VerifyCase { name, model });
+        }
+    };
+    for floor in [Floor::Roll, Floor::Slip, Floor::Fixed] {
+        for contact in [Contact::Roll, Contact::Slip] {
+            push(
+                format!("{floor}-{contact}"),
+                Model::new(unequal(), floor, contact, start("0.1", "0", "0")),
+            );
+        }
+    }
+    let mut bob = Params::identical_solid();
+    bob.k2 = q("3/2");
+    bob.r1 = q("1/2");
+    push(
+        "bobbin".into(),
+        Model::new(bob, Floor::Roll, Contact::Roll, start("0.1", "0", "0")),
+    );
+    push(
+        "moving-roll".into(),
+        Model::new(
+            unequal(),
+            Floor::Roll,
+            Contact::Roll,
+            start("0.2", "0.3", "-0.7"),
+        ),
+    );
+    push(
+        "moving-slip".into(),
+        Model::new(
+            unequal(),
+            Floor::Slip,
+            Contact::Roll,
+            start("0.2", "0.3", "-0.7"),
+        ),
+    );
+    push(
+        "paper-left".into(),
+        Model::new(
+            Params::identical_solid(),
+            Floor::Roll,
+            Contact::Roll,
+            start("-0.05", "0", "0"),
+        ),
+    );
+    out
+}
+
+/// One quantity computed by both routes.
+#[derive(Debug, Clone)]
+pub struct Comparison {
+    /// Quantity (e.g. `theta_s`, `t=1.23 N12`).
+    pub quantity: String,
+    /// The first route's verified value.
+    pub route1: Verified,
+    /// The second route's verified value.
+    pub route2: Verified,
+    /// Leading significant digits on which the two values agree,
+    /// ⌊−log10(|v2 − v1| / |v1|)⌋ (`None`: both print as 0 — exactly, or
+    /// indistinguishable from 0 within their error bounds).
+    pub agree: Option<u32>,
+}
+
+/// The comparison of one case.
+#[derive(Debug, Clone)]
+pub struct CaseReport {
+    /// The case.
+    pub case: VerifyCase,
+    /// One row per quantity.
+    pub rows: Vec<Comparison>,
+    /// Route 2 at its higher precision: constraint drift, relative energy
+    /// change, momentum change, steps, evaluations, largest column.
+    pub run: TwoRun,
+    /// Seconds spent in route 1 and route 2.
+    pub seconds: (f64, f64),
+}
+
+/// Agreeing leading digits of `a` against `b` (capped at 999).
+pub fn agreement(a: &Verified, b: &Verified) -> Option<u32> {
+    let p = a.value.prec().max(b.value.prec());
+    // both exactly 0, or both indistinguishable from 0 within their bounds
+    if a.text == "0" && b.text == "0" {
+        return None;
+    }
+    let d = Float::with_val(p, &a.value - &b.value).abs();
+    if d.is_zero() {
+        return Some(999);
+    }
+    if b.value.is_zero() {
+        return Some(0);
+    }
+    let rel = Float::with_val(p, &d / Float::with_val(p, b.value.abs_ref()));
+    let l = -rel.log10();
+    let f = l.to_f64().floor();
+    Some(if f < 0.0 { 0 } else { (f as u32).min(999) })
+}
+
+fn to_exact_time(x: f64) -> Result<Exact> {
+    Exact::parse("time", &format!("{x:.3}"), false)
+}
+
+/// Runs both routes on `case` at `digits` digits and compares them.
+///
+/// Errors: either route failing to verify the digits.
+pub fn compare_case(case: &VerifyCase, digits: u32) -> Result<CaseReport> {
+    let model = &case.model;
+    let clock = Instant::now();
+    let mut oracle = Oracle::new(model, digits)?;
+    let sep = oracle.separation()?;
+    let t_s1 = sep
+        .t_s
+        .clone()
+        .ok_or_else(|| Error::not_physical("the verification cases need a finite t_s"))?;
+    let ts_f = t_s1.value.to_f64();
+    let times: Vec<Exact> = [0.25, 0.6, 0.9]
+        .iter()
+        .map(|f| to_exact_time(ts_f * f))
+        .collect::<Result<_>>()?;
+    let rows1 = oracle.trajectory(&times)?;
+    let sec1 = clock.elapsed().as_secs_f64();
+
+    // the quantities of route 1, by name
+    let mut r1: Vec<(String, Verified)> = vec![
+        ("theta_s".into(), sep.theta_s.clone()),
+        ("t_s".into(), t_s1.clone()),
+    ];
+    let extra_names = [
+        "theta_N1_zero",
+        "theta_phi1dot_zero",
+        "theta_phi1_zero",
+        "F21_at_s",
+    ];
+    for v in &sep.extra {
+        if extra_names.contains(&v.name.as_str()) {
+            r1.push((v.name.clone(), v.clone()));
+        }
+    }
+    for (i, row) in rows1.iter().enumerate() {
+        for (c, v) in row.iter().enumerate().skip(1) {
+            r1.push((format!("t{}:{}", i + 1, TRAJECTORY_COLUMNS[c]), v.clone()));
+        }
+    }
+    let names: Vec<&str> = r1.iter().map(|(n, _)| n.as_str()).collect();
+    let want_phi = names
+        .iter()
+        .any(|n| *n == "theta_phi1dot_zero" || *n == "theta_phi1_zero");
+    let floor = model.floor();
+    let contact = model.contact();
+
+    let clock = Instant::now();
+    let mut last: Option<TwoRun> = None;
+    let r2 = ladder(digits, &names, |p| {
+        let tf: Vec<Float> = times.iter().map(|t| t.to_float(p)).collect();
+        let t_end = Float::with_val(p, &t_s1.value) * 4u32 + 10u32;
+        let run = two_cylinder(
+            model,
+            p,
+            &tf,
+            &t_end,
+            &TwoOpts {
+                phi1_events: want_phi,
+            },
+        )?;
+        if run.rows.len() != tf.len() {
+            return Err(Error::not_physical(
+                "route 2 separated before a sample time of route 1",
+            ));
+        }
+        let (sepst, serr) = run
+            .separation
+            .clone()
+            .ok_or_else(|| Error::not_physical("route 2 found no separation"))?;
+        let one = Float::with_val(p, 1u32);
+        let ang = |s: &TwoState, e: &Float| -> Estimate {
+            let err = Float::with_val(p, s.theta_dot.abs_ref()) * e;
+            Estimate::new(s.theta.clone(), err, one.clone())
+        };
+        let pr = model.params();
+        let fscale = Float::with_val(p, &Rational::from(&pr.m1 + &pr.m2)) * &pr.g;
+        let tscale = Float::with_val(p, Float::with_val(p, &pr.r()) / &pr.g).sqrt();
+        let mut out = Vec::with_capacity(names.len());
+        for name in &names {
+            let e = match *name {
+                "theta_s" => ang(&sepst, &serr),
+                "t_s" => Estimate::new(sepst.t.clone(), serr.clone(), tscale.clone()),
+                "theta_N1_zero" | "theta_phi1dot_zero" | "theta_phi1_zero" => {
+                    let hit = match *name {
+                        "theta_N1_zero" => &run.n1_zero,
+                        "theta_phi1dot_zero" => &run.phi1dot_zero,
+                        _ => &run.phi1_zero,
+                    };
+                    match hit {
+                        Some((s, e)) => ang(s, e),
+                        None => {
+                            return Err(Error::not_physical(format!("route 2 did not find {name}")))
+                        }
+                    }
+                }
+                "F21_at_s" => {
+                    let err = Float::with_val(p, &fscale * &serr) / &tscale * 16u32;
+                    Estimate::new(sepst.f21.clone(), err, fscale.clone())
+                }
+                _ => {
+                    let (i, col) = name
+                        .strip_prefix('t')
+                        .and_then(|s| s.split_once(':'))
+                        .and_then(|(i, c)| {
+                            let i: usize = i.parse().ok()?;
+                            let c = TRAJECTORY_COLUMNS.iter().position(|x| *x == c)?;
+                            Some((i - 1, c))
+                        })
+                        .ok_or_else(|| Error::not_physical(format!("unknown quantity {name}")))?;
+                    let v = run.rows[i].columns()[col].clone();
+                    let exact_zero = (col == 9 && floor == Floor::Slip)
+                        || (col == 11 && contact == Contact::Slip);
+                    if exact_zero {
+                        Estimate::zero(p, fscale.clone())
+                    } else {
+                        let scale = match col {
+                            9..=12 => fscale.clone(),
+                            2 => Float::with_val(p, &one / &tscale),
+                            3 => Float::with_val(p, &one / &tscale) / &tscale,
+                            6..=8 => Float::with_val(p, &pr.r()),
+                            _ => one.clone(),
+                        };
+                        Estimate::rounded(v, scale)
+                    }
+                }
+            };
+            out.push(e);
+        }
+        last = Some(run);
+        Ok(out)
+    })?;
+    let sec2 = clock.elapsed().as_secs_f64();
+    let run = last.ok_or_else(|| Error::not_physical("route 2 did not run"))?;
+    let rows = r1
+        .into_iter()
+        .zip(r2)
+        .map(|((name, v1), v2)| Comparison {
+            agree: agreement(&v2, &v1),
+            quantity: name,
+            route1: v1,
+            route2: v2,
+        })
+        .collect();
+    Ok(CaseReport {
+        case: case.clone(),
+        rows,
+        run,
+        seconds: (sec1, sec2),
+    })
+}
+
+/// The text of `cylroll verify --digits N`.
+pub fn report(digits: u32) -> Result<String> {
+    if digits == 0 || digits > crate::oracle::MAX_DIGITS {
+        return Err(Error::invalid(
+            "digits",
+            digits,
+            format!("must be between 1 and {}", crate::oracle::MAX_DIGITS),
+        ));
+    }
+    let mut out = String::new();
+    out.push_str(
+        "# cylroll verify: route 1 (Routh reduction + energy quadrature) against route 2\n",
+    );
+    out.push_str("# (time integration of the Lagrange-multiplier equations, appendix A.5, by GBS extrapolation)\n");
+    out.push_str(&format!(
+        "# {digits} significant digits requested from each route (each verified at two precisions);\n\
+         # agree = leading significant digits on which the two routes' values agree, floor(-log10(|v2 - v1|/|v1|))\n\
+         # (both values carry guard digits beyond the {digits} verified, so agree may exceed {digits}; 0=0: both print as 0);\n\
+         # t1, t2, t3 are the sample times 0.25, 0.6, 0.9 t_s (rounded to 3 decimals)\n"
+    ));
+    let mut worst: Option<(u32, String)> = None;
+    let mut count = 0usize;
+    let all = cases();
+    for case in &all {
+        let rep = compare_case(case, digits)?;
+        out.push_str(&format!("\n## {}: {}\n", case.name, case.model.describe()));
+        let w = rep
+            .rows
+            .iter()
+            .map(|r| r.quantity.len())
+            .max()
+            .unwrap_or(8)
+            .max(8);
+        out.push_str(&format!(
+            "{:w$}  agree  value (route 1)\n",
+            "quantity",
+            w = w
+        ));
+        for r in &rep.rows {
+            let ag = match r.agree {
+                None => "0=0".to_string(),
+                Some(a) => a.to_string(),
+            };
+            out.push_str(&format!(
+                "{:w$}  {:>5}  {}\n",
+                r.quantity,
+                ag,
+                r.route1.text,
+                w = w
+            ));
+            count += 1;
+            if let Some(a) = r.agree {
+                if worst.as_ref().is_none_or(|(b, _)| a < *b) {
+                    worst = Some((a, format!("{} {}", case.name, r.quantity)));
+                }
+            }
+        }
+        let st = &rep.run.run.stats;
+        out.push_str(&format!(
+            "route 2: constraint drift {}, energy change {}, momentum change {}; {} steps ({} rejected), {} evaluations, column <= {}; {:.2} s (route 1 {:.2} s)\n",
+            short(&rep.run.run.max_drift),
+            short(&rep.run.energy_drift),
+            short(&rep.run.momentum_drift),
+            st.steps,
+            st.rejected,
+            st.evals,
+            st.max_column,
+            rep.seconds.1,
+            rep.seconds.0
+        ));
+    }
+    match worst {
+        Some((a, what)) => out.push_str(&format!(
+            "\n# summary: {count} quantities in {} cases; the routes agree to at least {a} digits (least: {what})\n",
+            all.len()
+        )),
+        None => out.push_str("\n# summary: nothing compared\n"),
+    }
+    Ok(out)
+}
