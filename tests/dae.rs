@@ -527,3 +527,31 @@ fn routes_agree_at_100_digits() {
         }
     }
 }
+
+/// Every number in golden/data (scalars and every grid cell of every case)
+/// is reproduced by the second route to all its printed digits.
+#[test]
+fn golden_data_is_reproduced_by_route_2() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("golden/data");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .expect("golden/data")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 10, "{} golden files", files.len());
+    let mut total = 0;
+    for f in &files {
+        let text = std::fs::read_to_string(f).unwrap();
+        let g = golden::check_golden(&text, 0).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+        assert!(
+            g.failures.is_empty(),
+            "{}: {:?}",
+            g.case,
+            &g.failures[..g.failures.len().min(5)]
+        );
+        assert!(g.checked > 400, "{}: {} values", g.case, g.checked);
+        total += g.checked;
+    }
+    assert!(total > 4000, "{total}");
+}

@@ -15,6 +15,7 @@
 //!   re-integration and a bracketed secant iteration, measures constraint
 //!   drift (and projects if it ever exceeds 2^−(prec−16)).
 //! * [`spec`]: the `--stack` SPEC syntax (`stack_report("help", ..)` prints it).
+//! * [`golden`]: every number of a golden data file recomputed by this route.
 //!
 //! The route shares with the first only the model and the precision ladder
 //! ([`crate::numeric::verify::ladder`]: every value is computed at two
@@ -26,6 +27,7 @@
 //! [`two_cylinder`] (route 2 for a [`Model`] at one precision).
 
 pub mod gbs;
+pub mod golden;
 pub mod solve;
 pub mod spec;
 mod stack;

@@ -381,6 +381,49 @@ pub fn report(digits: u32) -> Result<String> {
             rep.seconds.0
         ));
     }
+    let golden = std::path::Path::new("golden/data");
+    let mut golden_lines = Vec::new();
+    if golden.is_dir() {
+        let mut files: Vec<_> = std::fs::read_dir(golden)
+            .map_err(|e| Error::Io {
+                path: golden.display().to_string(),
+                what: e.to_string(),
+            })?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "json"))
+            .collect();
+        files.sort();
+        for f in files {
+            let text = std::fs::read_to_string(&f).map_err(|e| Error::Io {
+                path: f.display().to_string(),
+                what: e.to_string(),
+            })?;
+            let g = super::golden::check_golden(&text, 0)?;
+            golden_lines.push(if g.failures.is_empty() {
+                format!(
+                    "{}: all {} values round to the printed digits (largest |route 2 - golden| = {:.3} of a unit in the last printed digit)",
+                    g.case, g.checked, g.worst_ulps
+                )
+            } else {
+                format!(
+                    "{}: {} of {} values DIFFER, e.g. {} golden {} route 2 {}",
+                    g.case,
+                    g.failures.len(),
+                    g.checked,
+                    g.failures[0].0,
+                    g.failures[0].1,
+                    g.failures[0].2
+                )
+            });
+        }
+    }
+    if !golden_lines.is_empty() {
+        out.push_str("\n## golden/data: every number recomputed by route 2 (at the file's digits + 40 bits)\n");
+        for l in &golden_lines {
+            out.push_str(l);
+            out.push('\n');
+        }
+    }
     match worst {
         Some((a, what)) => out.push_str(&format!(
             "\n# summary: {count} quantities in {} cases; the routes agree to at least {a} digits (least: {what})\n",

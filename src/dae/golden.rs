@@ -1,0 +1,206 @@
+//! Route 2 against the golden data (`golden/data/<case>.json`, schema
+//! `cylroll-golden/1`): every decimal string of a file — the scalars and every
+//! cell of the time grid — is recomputed by time integration and must round
+//! to the printed digits.
+
+use super::{two_cylinder, TwoOpts, TwoState};
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use crate::input::{model_from_pairs, Pairs, MODEL_KEYS};
+use crate::numeric::bits_for_digits;
+use crate::oracle::TRAJECTORY_COLUMNS;
+use rug::ops::Pow;
+use rug::{Float, Rational};
+
+/// The outcome of checking one golden file.
+#[derive(Debug, Clone)]
+pub struct GoldenCheck {
+    /// The case name of the file.
+    pub case: String,
+    /// Values compared (scalars and grid cells, the input times excluded).
+    pub checked: usize,
+    /// Values that did not round to the printed digits: (where, golden,
+    /// route 2 to 40 digits).
+    pub failures: Vec<(String, String, String)>,
+    /// The smallest margin, in units of the last printed digit, by which a
+    /// value stayed inside its half-unit (0.5 = exact agreement).
+    pub worst_ulps: f64,
+}
+
+fn text(v: &serde_json::Value, what: &str) -> Result<String> {
+    v.as_str()
+        .map(|s| s.to_string())
+        .ok_or_else(|| Error::invalid("golden", what, "expected a decimal string"))
+}
+
+/// Significant digits and the decimal exponent of the last digit of a
+/// decimal string like `-0.0123400` (4 + 2 trailing zeros = 6 digits).
+fn last_digit_exponent(s: &str) -> Option<(usize, i64)> {
+    let s = s.trim_start_matches('-');
+    let (mant, exp) = match s.find(['e', 'E']) {
+        Some(i) => (&s[..i], s[i + 1..].parse::<i64>().ok()?),
+        None => (s, 0),
+    };
+    let (int, frac) = mant.split_once('.').unwrap_or((mant, ""));
+    let all = format!("{int}{frac}");
+    let lead = all.len() - all.trim_start_matches('0').len();
+    let sig = all.len().checked_sub(lead)?;
+    Some((sig, exp - frac.len() as i64))
+}
+
+/// Checks route 2 against one golden JSON text, integrating at `prec` bits
+/// (0: the file's digits plus 40 bits).
+///
+/// Errors: a malformed file; route 2 failing to run.
+pub fn check_golden(json: &str, prec: u32) -> Result<GoldenCheck> {
+    let d: serde_json::Value =
+        serde_json::from_str(json).map_err(|e| Error::invalid("golden", "json", e.to_string()))?;
+    let case = d["case"].as_str().unwrap_or("?").to_string();
+    let mut pairs = Pairs::new();
+    for k in MODEL_KEYS {
+        if let Some(v) = d["model"][k].as_str() {
+            pairs.insert(k.to_string(), v.to_string());
+        }
+    }
+    let model = model_from_pairs(&pairs)?;
+    let digits: u32 = d["digits"]
+        .as_str()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(30);
+    let prec = if prec == 0 {
+        bits_for_digits(digits) + 40
+    } else {
+        prec
+    };
+    let cols: Vec<String> = d["columns"]
+        .as_array()
+        .ok_or_else(|| Error::invalid("golden", "columns", "missing"))?
+        .iter()
+        .map(|c| text(c, "column"))
+        .collect::<Result<_>>()?;
+    let rows = d["rows"]
+        .as_array()
+        .ok_or_else(|| Error::invalid("golden", "rows", "missing"))?;
+    let mut times = Vec::with_capacity(rows.len());
+    for r in rows {
+        let t = text(&r[0], "t")?;
+        times.push(Exact::parse("t", &t, false)?.to_float(prec));
+    }
+    let scalars = d["scalars"]
+        .as_object()
+        .ok_or_else(|| Error::invalid("golden", "scalars", "missing"))?;
+    let want_phi =
+        scalars.contains_key("theta_phi1dot_zero") || scalars.contains_key("theta_phi1_zero");
+    let t_end = match scalars.get("t_s").and_then(|v| v.as_str()) {
+        Some(ts) => Exact::parse("t_s", ts, false)?.to_float(prec) * 2u32 + 10u32,
+        None => Float::with_val(prec, 1000u32),
+    };
+    let run = two_cylinder(
+        &model,
+        prec,
+        &times,
+        &t_end,
+        &TwoOpts {
+            phi1_events: want_phi,
+        },
+    )?;
+    let p = model.params();
+    let fscale = Float::with_val(prec, &Rational::from(&p.m1 + &p.m2)) * &p.g;
+    let tscale = Float::with_val(prec, Float::with_val(prec, &p.r()) / &p.g).sqrt();
+    let ten = Float::with_val(prec, 10u32);
+    let mut out = GoldenCheck {
+        case,
+        checked: 0,
+        failures: Vec::new(),
+        worst_ulps: 0.0,
+    };
+    let judge = |out: &mut GoldenCheck, what: String, gold: &str, v: &Float, scale: &Float| {
+        out.checked += 1;
+        let ok = if gold == "0" {
+            // printed as 0: exactly 0, or indistinguishable from 0 at the digits
+            let tiny = Float::with_val(prec, scale / ten.clone().pow(digits));
+            Float::with_val(prec, v.abs_ref()) <= tiny
+        } else {
+            match (Float::parse(gold), last_digit_exponent(gold)) {
+                (Ok(g), Some((_, e))) => {
+                    let g = Float::with_val(prec, g);
+                    let ulp = ten.clone().pow(e as i32);
+                    let d = Float::with_val(prec, v - &g).abs() / &ulp;
+                    let r = d.to_f64();
+                    if r > out.worst_ulps {
+                        out.worst_ulps = r;
+                    }
+                    r <= 0.5 + 1e-6
+                }
+                _ => false,
+            }
+        };
+        if !ok {
+            out.failures
+                .push((what, gold.to_string(), v.to_string_radix(10, Some(40))));
+        }
+    };
+    let (sep, _) = run
+        .separation
+        .clone()
+        .ok_or_else(|| Error::not_physical("route 2 found no separation"))?;
+    let one = Float::with_val(prec, 1u32);
+    let hit = |h: &Option<(TwoState, Float)>| h.as_ref().map(|x| x.0.theta.clone());
+    for (k, v) in scalars {
+        let gold = text(v, k)?;
+        let (val, scale) = match k.as_str() {
+            "theta_s" => (Some(sep.theta.clone()), one.clone()),
+            "t_s" => (Some(sep.t.clone()), tscale.clone()),
+            "F21_at_s" => (Some(sep.f21.clone()), fscale.clone()),
+            "theta_N1_zero" => (hit(&run.n1_zero), one.clone()),
+            "theta_phi1dot_zero" => (hit(&run.phi1dot_zero), one.clone()),
+            "theta_phi1_zero" => (hit(&run.phi1_zero), one.clone()),
+            _ => (None, one.clone()),
+        };
+        match val {
+            Some(x) => judge(&mut out, k.clone(), &gold, &x, &scale),
+            None => out
+                .failures
+                .push((k.clone(), gold, "not found by route 2".into())),
+        }
+    }
+    if run.rows.len() != rows.len() {
+        return Err(Error::not_physical(format!(
+            "route 2 reached {} of the {} grid times",
+            run.rows.len(),
+            rows.len()
+        )));
+    }
+    for (i, (r, st)) in rows.iter().zip(&run.rows).enumerate() {
+        let vals = st.columns();
+        for (c, name) in cols.iter().enumerate().skip(1) {
+            let j = TRAJECTORY_COLUMNS
+                .iter()
+                .position(|x| x == name)
+                .ok_or_else(|| Error::invalid("golden", name, "unknown column"))?;
+            let gold = text(&r[c], name)?;
+            let scale = match j {
+                9..=12 => fscale.clone(),
+                2 => Float::with_val(prec, &one / &tscale),
+                3 => Float::with_val(prec, &one / &tscale) / &tscale,
+                6..=8 => Float::with_val(prec, &p.r()),
+                _ => one.clone(),
+            };
+            judge(&mut out, format!("row {i} {name}"), &gold, &vals[j], &scale);
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::last_digit_exponent;
+
+    #[test]
+    fn digit_positions() {
+        assert_eq!(last_digit_exponent("1.05127"), Some((6, -5)));
+        assert_eq!(last_digit_exponent("-0.00123400"), Some((6, -8)));
+        assert_eq!(last_digit_exponent("6.36"), Some((3, -2)));
+        assert_eq!(last_digit_exponent("1.5e-40"), Some((2, -41)));
+    }
+}
