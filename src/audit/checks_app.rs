@@ -1,0 +1,894 @@
+//! Checks of the appendix (Lagrange multipliers), eqs. (56)–(114), and
+//! footnotes 1, 3, 15.
+
+use super::checks_main::{over, res_text, separation_rows};
+use super::corrected;
+use super::ctx::Ctx;
+use super::finding::{Finding, Tally};
+use super::truth::{self, lagrange_lhs, momentum, random_state, Case, Scales, StartKind, Sys};
+use crate::error::Result;
+use crate::model::{Contact, Floor};
+use crate::paper::appendix::{self as app, Jac, QP1, QP2, QR, QTH, QX1, QY1};
+use crate::paper::{Sym, X};
+
+/// Both rolling, general start: the appendix's motion.
+fn gen<F: FnMut(&Case, &Sym, &Jac)>(cx: &mut Ctx, mut f: F) -> Result<()> {
+    let pts = cx.general();
+    over(
+        cx,
+        &pts,
+        Floor::Roll,
+        Contact::Roll,
+        StartKind::General,
+        false,
+        |c, y| {
+            let jac = truth::constraint_jacobian(y);
+            f(c, y, &jac)
+        },
+    )
+}
+
+/// Both rolling, from rest at the top.
+fn rest<F: FnMut(&Case, &Sym)>(cx: &mut Ctx, f: F) -> Result<()> {
+    let pts = cx.general();
+    over(
+        cx,
+        &pts,
+        Floor::Roll,
+        Contact::Roll,
+        StartKind::Rest,
+        false,
+        f,
+    )
+}
+
+/// Random states of the six coordinates embedded in `sys`, four per random point.
+fn random_states(cx: &mut Ctx, sys: Sys) -> Result<Vec<(String, Sym, Scales)>> {
+    let mut out = Vec::new();
+    for (i, p) in cx.random().iter().enumerate() {
+        let case = cx.case(p, Floor::Roll, Contact::Roll, StartKind::Rest, false)?;
+        let Some(template) = case.syms.first() else {
+            continue;
+        };
+        for k in 0..4u64 {
+            let y = random_state(template, sys, 1000 * (i as u64 + 1) + k);
+            out.push((
+                format!("{} random {:?} state {}", p.name, sys, k + 1),
+                y,
+                case.scales.clone(),
+            ));
+        }
+    }
+    Ok(out)
+}
+
+fn kinetic(cx: &mut Ctx, sys: Sys, form: fn(&Sym) -> X, whole: bool) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, sys)? {
+        let t = if whole { truth::t(&y) } else { truth::t2(&y) };
+        f.printed.add(
+            if whole { "T" } else { "T2" },
+            &at,
+            &form(&y),
+            &t,
+            &sc.energy,
+        );
+    }
+    f.note("at random states of the coordinates and rates (off the motion), against ½m|v|² + ½Iω² of the bodies");
+    Ok(f)
+}
+
+/// A Lagrange equation `lhs = members…` of system `sys`, coordinate `u`, on
+/// the general motion.
+fn lagrange(
+    cx: &mut Ctx,
+    sys: Sys,
+    u: usize,
+    labels: &[&str],
+    members: fn(&Sym, &Jac) -> [X; 2],
+    torque: bool,
+) -> Result<Finding> {
+    let mut f = Finding::default();
+    gen(cx, |c, y, jac| {
+        let lhs = lagrange_lhs(sys, y, u);
+        let sc = if torque {
+            &c.scales.energy
+        } else {
+            &c.scales.force
+        };
+        for (v, l) in members(y, jac).iter().zip(labels) {
+            f.printed.add(l, &c.name, v, &lhs, sc);
+        }
+    })?;
+    f.note("left side: d/dt ∂L/∂q̇ − ∂L/∂q of the bodies in these coordinates, on the motion of the reduced dynamics; multipliers λ1…λ4 = F1, F21, N12, N1 from the six-coordinate multiplier system");
+    Ok(f)
+}
+
+fn jacobian_row(
+    cx: &mut Ctx,
+    row: usize,
+    cols: &[usize],
+    printed: fn(&Sym) -> Vec<X>,
+) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, _) in random_states(cx, Sys::A5)? {
+        let jac = truth::constraint_jacobian(&y);
+        for (k, v) in printed(&y).iter().enumerate() {
+            let i = cols[k];
+            f.printed.add(
+                &format!("∂f{}/∂{}", row + 1, app::COORDS[i]),
+                &at,
+                v,
+                &jac[row][i],
+                &y.r1.n(1),
+            );
+        }
+    }
+    f.note("derivatives of the printed constraints (58)–(61), exact (they are linear)");
+    Ok(f)
+}
+
+pub fn eq56(_: &mut Ctx) -> Result<Finding> {
+    Ok(Finding::definition(
+        "Lagrange's equations: the method, not a formula of this problem",
+    ))
+}
+
+pub fn eq57(_: &mut Ctx) -> Result<Finding> {
+    Ok(Finding::definition(
+        "the method of multipliers; its instances (66)–(68), (75)–(77), (84)–(87), (93)–(95), (103)–(108) are checked",
+    ))
+}
+
+pub fn eq58(_: &mut Ctx) -> Result<Finding> {
+    Ok(Finding::definition(
+        "defines the constraint f1 (rolling on the floor, eq. 1)",
+    ))
+}
+
+pub fn eq59(_: &mut Ctx) -> Result<Finding> {
+    Ok(Finding::definition(
+        "defines the constraint f2 (rolling contact, eq. 2)",
+    ))
+}
+
+pub fn eq60(_: &mut Ctx) -> Result<Finding> {
+    Ok(Finding::definition(
+        "defines the constraint f3 (the cylinders touch)",
+    ))
+}
+
+pub fn eq61(_: &mut Ctx) -> Result<Finding> {
+    Ok(Finding::definition(
+        "defines the constraint f4 (cylinder 1 on the floor)",
+    ))
+}
+
+pub fn eq62(cx: &mut Ctx) -> Result<Finding> {
+    kinetic(cx, Sys::A1, app::eq62, false)
+}
+
+pub fn eq63(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A1)? {
+        let p = app::eq63(&y);
+        f.printed
+            .add("= ∂T/∂ẋ1", &at, &p, &momentum(Sys::A1, &y, QX1), &sc.mom);
+        f.printed.add("= P_x", &at, &p, &truth::px(&y), &sc.mom);
+    }
+    Ok(f)
+}
+
+pub fn eq64(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    let mut corr = Tally::default();
+    for (at, y, sc) in random_states(cx, Sys::A1)? {
+        let m = momentum(Sys::A1, &y, QP1);
+        let forms = app::eq64(&y, &truth::l1(&y), &truth::l2(&y));
+        f.printed.add(
+            "(k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇",
+            &at,
+            &forms[0],
+            &m,
+            &sc.angmom,
+        );
+        f.printed.add(
+            "k1 m1 r1² φ̇1 + r1[k2 m2 (r1 φ̇1 − k2 m2 r θ̇)]",
+            &at,
+            &forms[1],
+            &m,
+            &sc.angmom,
+        );
+        f.printed
+            .add("L1 + (r1/r2) L2", &at, &forms[2], &m, &sc.angmom);
+        corr.add(
+            "k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇)",
+            &at,
+            &corrected::eq64(&y),
+            &m,
+            &sc.angmom,
+        );
+    }
+    f.corrected = Some((
+        "p_φ1 = (k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇ = k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇) = L1 + (r1/r2) L2".into(),
+        corr,
+    ));
+    f.note("a misplaced bracket: the middle form multiplies r θ̇ by k2 m2 twice (it is not even dimensionally consistent); the first and last forms are right");
+    Ok(f)
+}
+
+pub fn eq65(cx: &mut Ctx) -> Result<Finding> {
+    jacobian_row(cx, 0, &[QX1, QP1, QTH], |y| app::eq65(y).to_vec())
+}
+
+pub fn eq66(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A1, QX1, &["λ1 ∂f1/∂x1", "λ1"], app::eq66, false)
+}
+
+pub fn eq67(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A1, QP1, &["λ1 ∂f1/∂φ1", "−r1 λ1"], app::eq67, true)
+}
+
+pub fn eq68(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A1, QTH, &["λ1 ∂f1/∂θ", "0"], app::eq68, true)
+}
+
+/// A combination of momenta: printed forms vs the true value, constancy, and
+/// zero from rest.
+fn momentum_sum(
+    cx: &mut Ctx,
+    forms: fn(&Sym) -> Vec<X>,
+    labels: &[&str],
+    truth_of: fn(&Sym) -> X,
+) -> Result<Finding> {
+    let mut f = Finding::default();
+    let mut f0 = Tally::default();
+    gen(cx, |c, y, _| {
+        let t = truth_of(y);
+        for (v, l) in forms(y).iter().zip(labels) {
+            f.printed.add(l, &c.name, v, &t, &c.scales.mom);
+        }
+        if let Some(y0) = &c.sym0 {
+            f.printed.add(
+                "constant (value at t = 0)",
+                &c.name,
+                &t,
+                &truth_of(y0),
+                &c.scales.mom,
+            );
+        }
+        f0.add("= 0", &c.name, &t, &t.zero(), &c.scales.mom);
+    })?;
+    rest(cx, |c, y| {
+        f.printed.add(
+            "= 0 (start from rest)",
+            &c.name,
+            &truth_of(y),
+            &y.r1.zero(),
+            &c.scales.mom,
+        );
+    })?;
+    if let Some(m) = f0.max() {
+        f.note(format!(
+            "'= 0' needs a start from rest (θ̇0 = 0, ω0 = 0), not only x1 = φ1 = θ = 0 as the text says: with the general starts the sum is a nonzero constant (relative size {})",
+            res_text(&m)
+        ));
+    }
+    Ok(f)
+}
+
+pub fn eq69(cx: &mut Ctx) -> Result<Finding> {
+    momentum_sum(
+        cx,
+        |y| app::eq69(y, &truth::px(y), &truth::l1(y), &truth::l2(y)).to_vec(),
+        &["p_x1 + p_φ1/r1 (63, 64)", "P_x + L1/r1 + L2/r2"],
+        |y| momentum(Sys::A1, y, QX1) + momentum(Sys::A1, y, QP1) / &y.r1,
+    )
+}
+
+pub fn eq70(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    gen(cx, |c, y, _| {
+        let t = lagrange_lhs(Sys::A1, y, QP1) / &y.r1;
+        let [a, b] = app::eq70(y);
+        f.printed.add("−λ1", &c.name, &a, &t, &c.scales.force);
+        f.printed.add(
+            "(k1 m1 + k2 m2) r1 φ̈1 − k2 m2 r θ̈",
+            &c.name,
+            &b,
+            &t,
+            &c.scales.force,
+        );
+        f.printed.add(
+            "λ1 = F1 of (30)",
+            &c.name,
+            &y.lam[0],
+            &crate::paper::sec2::eq30(y),
+            &c.scales.force,
+        );
+    })?;
+    f.note("the printed expression is −λ1 = −F1; 'which is the force F1 found in eq. (30)' refers to λ1");
+    Ok(f)
+}
+
+pub fn eq71(cx: &mut Ctx) -> Result<Finding> {
+    kinetic(cx, Sys::A2, app::eq71, false)
+}
+
+pub fn eq72(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A2)? {
+        f.printed.add(
+            "= ∂T/∂φ̇1",
+            &at,
+            &app::eq72(&y),
+            &momentum(Sys::A2, &y, QP1),
+            &sc.angmom,
+        );
+    }
+    Ok(f)
+}
+
+pub fn eq73(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A2)? {
+        f.printed.add(
+            "= ∂T/∂φ̇2",
+            &at,
+            &app::eq73(&y),
+            &momentum(Sys::A2, &y, QP2),
+            &sc.angmom,
+        );
+    }
+    Ok(f)
+}
+
+pub fn eq74(cx: &mut Ctx) -> Result<Finding> {
+    jacobian_row(cx, 1, &[QP1, QP2, QTH], |y| app::eq74(y).to_vec())
+}
+
+pub fn eq75(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A2, QP1, &["λ2 ∂f2/∂φ1", "−r1 λ2"], app::eq75, true)
+}
+
+pub fn eq76(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A2, QP2, &["λ2 ∂f2/∂φ2", "r2 λ2"], app::eq76, true)
+}
+
+pub fn eq77(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A2, QTH, &["λ2 ∂f2/∂θ", "r1 λ2"], app::eq77, true)
+}
+
+pub fn eq78(cx: &mut Ctx) -> Result<Finding> {
+    momentum_sum(
+        cx,
+        |y| {
+            vec![
+                app::eq78(y),
+                truth::px(y) + truth::l1(y) / &y.r1 + truth::l2(y) / &y.r2,
+            ]
+        },
+        &[
+            "p_φ1/r1 + p_φ2/r2 (72, 73)",
+            "= P_x + L1/r1 + L2/r2 once (59) holds",
+        ],
+        |y| momentum(Sys::A2, y, QP1) / &y.r1 + momentum(Sys::A2, y, QP2) / &y.r2,
+    )
+}
+
+pub fn eq79(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    gen(cx, |c, y, _| {
+        let t = lagrange_lhs(Sys::A2, y, QP2) / &y.r2;
+        for (v, l) in app::eq79(y)
+            .iter()
+            .zip(["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"])
+        {
+            f.printed.add(l, &c.name, v, &t, &c.scales.force);
+        }
+    })?;
+    f.note("λ2 is F21 of (28) with the same convention (along (cos θ, −sin θ))");
+    Ok(f)
+}
+
+pub fn eq80(cx: &mut Ctx) -> Result<Finding> {
+    kinetic(cx, Sys::A3, app::eq80, false)
+}
+
+pub fn a3_v(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A3)? {
+        f.printed
+            .add("V", &at, &app::a3_v(&y), &truth::v(&y), &sc.energy);
+    }
+    f.note("with r a coordinate (A.3), against m2 g y2 relative to the top");
+    Ok(f)
+}
+
+pub fn eq81(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    let mut literal = Tally::default();
+    for (at, y, sc) in random_states(cx, Sys::A3)? {
+        let m = momentum(Sys::A3, &y, QP1);
+        // (13)'s expression with the coordinate r
+        let px13 = (&y.m1 + &y.m2) * &y.x1d + &y.m2 * &y.r * &y.c * &y.thd;
+        let [a, b] = app::eq81(&y, &px13, &truth::l1(&y));
+        f.printed.add("form 1", &at, &a, &m, &sc.angmom);
+        f.printed.add(
+            "r1 P_x + L1 + m2 r1 ṙ sin θ, P_x of (13)",
+            &at,
+            &b,
+            &m,
+            &sc.angmom,
+        );
+        let [_, b2] = app::eq81(&y, &truth::px(&y), &truth::l1(&y));
+        literal.add("with P_x = m1 ẋ1 + m2 ẋ2", &at, &b2, &m, &sc.angmom);
+    }
+    f.convention = Some(
+        "P_x means the expression (13), (m1 + m2) ẋ1 + m2 r cos θ θ̇, without the ṙ term".into(),
+    );
+    f.reading = true;
+    if let Some(m) = literal.max() {
+        f.note(format!(
+            "with P_x the total horizontal momentum m1 ẋ1 + m2 ẋ2 (which is what (100) calls P_x: it includes m2 ṙ sin θ) the term m2 r1 ṙ sin θ is counted twice: residual {}",
+            res_text(&m)
+        ));
+    }
+    Ok(f)
+}
+
+pub fn eq82(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A3)? {
+        let m = momentum(Sys::A3, &y, QP2);
+        let [a, b] = app::eq82(&y, &truth::l2(&y));
+        f.printed.add("k2 m2 r2² (φ̇2 − θ̇)", &at, &a, &m, &sc.angmom);
+        f.printed.add("L2", &at, &b, &m, &sc.angmom);
+    }
+    Ok(f)
+}
+
+pub fn eq83(cx: &mut Ctx) -> Result<Finding> {
+    jacobian_row(cx, 2, &[QP1, QP2, QTH, QR], |y| app::eq83(y).to_vec())
+}
+
+fn eq84_86(cx: &mut Ctx, u: usize, k: usize, members: fn(&Sym, &Jac) -> [X; 2]) -> Result<Finding> {
+    let mut f = Finding::default();
+    let mut corr = Tally::default();
+    let coord = app::COORDS[u];
+    gen(cx, |c, y, jac| {
+        let lhs = lagrange_lhs(Sys::A3, y, u);
+        let m = members(y, jac);
+        f.printed.add(
+            &format!("λ3 ∂f3/∂{coord}"),
+            &c.name,
+            &m[0],
+            &lhs,
+            &c.scales.energy,
+        );
+        f.printed.add("0", &c.name, &m[1], &lhs, &c.scales.energy);
+        corr.add(
+            "with λ2",
+            &c.name,
+            &corrected::eq84_86(y)[k],
+            &lhs,
+            &c.scales.energy,
+        );
+    })?;
+    // as printed it is right for a frictionless contact (sec. 3.3)
+    let mut slip = Tally::default();
+    let pts = cx.general();
+    over(
+        cx,
+        &pts,
+        Floor::Roll,
+        Contact::Slip,
+        StartKind::General,
+        false,
+        |c, y| {
+            let jac = truth::constraint_jacobian(y);
+            let lhs = lagrange_lhs(Sys::A3, y, u);
+            slip.add("0", &c.name, &members(y, &jac)[1], &lhs, &c.scales.energy);
+        },
+    )?;
+    let text = [
+        "dp_φ1/dt = −r1 λ2",
+        "dp_φ2/dt = r2 λ2",
+        "d/dt ∂L/∂θ̇ − ∂L/∂θ = r1 λ2",
+    ][k];
+    f.corrected = Some((text.into(), corr));
+    f.note("A.3 keeps φ2 as a coordinate, so the rolling constraint (59) is relaxed as well and its multiplier λ2 = F21 must appear, as in (75)–(77) (same momenta: (81), (82) equal (72), (73) at ṙ = 0); the printed 0 contradicts (75)–(77)");
+    if let Some(m) = slip.max() {
+        f.note(format!(
+            "as printed it holds for a frictionless contact between the cylinders (F21 = 0, sec. 3.3): residual {}",
+            res_text(&m)
+        ));
+    }
+    Ok(f)
+}
+
+pub fn eq84(cx: &mut Ctx) -> Result<Finding> {
+    eq84_86(cx, QP1, 0, app::eq84)
+}
+
+pub fn eq85(cx: &mut Ctx) -> Result<Finding> {
+    eq84_86(cx, QP2, 1, app::eq85)
+}
+
+pub fn eq86(cx: &mut Ctx) -> Result<Finding> {
+    eq84_86(cx, QTH, 2, app::eq86)
+}
+
+pub fn eq87(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A3, QR, &["λ3 ∂f3/∂r", "λ3"], app::eq87, false)
+}
+
+pub fn eq88(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    gen(cx, |c, y, _| {
+        let t = lagrange_lhs(Sys::A3, y, QR);
+        let [a, b] = app::eq88(y);
+        f.printed
+            .add("first line", &c.name, &a, &t, &c.scales.force);
+        f.printed.add(
+            "m2 [r1 sin θ φ̈1 − r θ̇² + g cos θ]",
+            &c.name,
+            &b,
+            &t,
+            &c.scales.force,
+        );
+        f.printed.add("= N12", &c.name, &b, &y.n12, &c.scales.force);
+    })?;
+    f.note("agrees with the corrected (33), not the printed one");
+    Ok(f)
+}
+
+pub fn eq89(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    gen(cx, |c, y, _| {
+        let truth = &y.n12 / &y.m2 + &y.r * y.thd.sq();
+        let m = app::eq89(y);
+        f.printed
+            .add("second member (any angle)", &c.name, &m[1], &truth, &y.g);
+        f.printed
+            .add("third member (any angle)", &c.name, &m[2], &truth, &y.g);
+    })?;
+    let pts = cx.general();
+    separation_rows(
+        cx,
+        Floor::Roll,
+        Contact::Roll,
+        &pts,
+        &mut f,
+        None,
+        |y| {
+            let m = app::eq89(y);
+            [m[0].clone(), m[2].clone()]
+        },
+        |y| {
+            let m = app::eq89(y);
+            [m[0].clone(), m[2].clone()]
+        },
+    )?;
+    f.note("slips that change no value: 'g cos θ' for g cos θs, and 'using eq. (17)' where (18) is used");
+    Ok(f)
+}
+
+pub fn eq90(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A4)? {
+        let [dt, dv] = app::eq90(&y);
+        let mut y0 = y.clone();
+        y0.y1d = y.r1.zero();
+        let mut yv = y.clone();
+        yv.y1 = y.r1.clone();
+        f.printed
+            .add("ΔT", &at, &dt, &(truth::t(&y) - truth::t(&y0)), &sc.energy);
+        f.printed
+            .add("ΔV", &at, &dv, &(truth::v(&y) - truth::v(&yv)), &sc.energy);
+    }
+    Ok(f)
+}
+
+pub fn eq91(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A4)? {
+        let m = momentum(Sys::A4, &y, QP1);
+        let [a, b] = app::eq91(&y, &truth::px(&y), &truth::l1(&y), &truth::l2(&y));
+        f.printed.add("form 1", &at, &a, &m, &sc.angmom);
+        f.printed
+            .add("r1 P_x + L1 + (r1/r2) L2", &at, &b, &m, &sc.angmom);
+    }
+    Ok(f)
+}
+
+pub fn eq92(cx: &mut Ctx) -> Result<Finding> {
+    jacobian_row(cx, 3, &[QP1, QTH, QY1], |y| app::eq92(y).to_vec())
+}
+
+pub fn eq93(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = lagrange(cx, Sys::A4, QP1, &["λ4 ∂f3/∂φ1", "0"], app::eq93, true)?;
+    f.note("a slip that changes no value: ∂f3/∂φ1 should read ∂f4/∂φ1 (both are 0); the text also announces 'four Lagrange equations' where there are three");
+    Ok(f)
+}
+
+pub fn eq94(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A4, QTH, &["λ4 ∂f4/∂θ", "0"], app::eq94, true)
+}
+
+pub fn eq95(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A4, QY1, &["λ4 ∂f4/∂y1", "λ4"], app::eq95, false)
+}
+
+fn lam_expr(
+    cx: &mut Ctx,
+    sys: Sys,
+    u: usize,
+    labels: &[&str],
+    forms: fn(&Sym) -> Vec<X>,
+    per_r2: bool,
+) -> Result<Finding> {
+    let mut f = Finding::default();
+    gen(cx, |c, y, _| {
+        let mut t = lagrange_lhs(sys, y, u);
+        if per_r2 {
+            t = t / &y.r2;
+        }
+        for (v, l) in forms(y).iter().zip(labels) {
+            f.printed.add(l, &c.name, v, &t, &c.scales.force);
+        }
+    })?;
+    Ok(f)
+}
+
+pub fn eq96(cx: &mut Ctx) -> Result<Finding> {
+    lam_expr(
+        cx,
+        Sys::A4,
+        QY1,
+        &["λ4", "(m1 + m2) ÿ1 − …"],
+        |y| app::eq96(y).to_vec(),
+        false,
+    )
+}
+
+fn n1_forms(cx: &mut Ctx, forms: fn(&Sym) -> [X; 2]) -> Result<Finding> {
+    let mut f = Finding::default();
+    gen(cx, |c, y, _| {
+        let [a, b] = forms(y);
+        f.printed.add(
+            "(m1 + m2) g − m2 r (…)",
+            &c.name,
+            &a,
+            &y.n1,
+            &c.scales.force,
+        );
+        f.printed
+            .add("(m1 + m2) g + m2 ÿ2", &c.name, &b, &y.n1, &c.scales.force);
+    })?;
+    Ok(f)
+}
+
+pub fn eq97(cx: &mut Ctx) -> Result<Finding> {
+    n1_forms(cx, app::eq97)
+}
+
+pub fn eq98(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = kinetic(cx, Sys::A5, app::eq98, true)?;
+    let mut corr = Tally::default();
+    for (at, y, sc) in random_states(cx, Sys::A5)? {
+        corr.add(
+            "T with m1 k1 r1²",
+            &at,
+            &corrected::eq98(&y),
+            &truth::t(&y),
+            &sc.energy,
+        );
+    }
+    f.corrected = Some((
+        "the spin term of cylinder 1 is (m1 k1 r1²/2) φ̇1² (printed m1 k2 r1²)".into(),
+        corr,
+    ));
+    f.note("(101) has the right m1 k1 r1² φ̇1, which contradicts the printed (98); (101) is right");
+    Ok(f)
+}
+
+pub fn eq99(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    let mut corr = Tally::default();
+    let mut on = Tally::default();
+    for (at, y, sc) in random_states(cx, Sys::A5)? {
+        let t = truth::v(&y);
+        f.printed.add("V", &at, &app::eq99(&y), &t, &sc.energy);
+        corr.add("V", &at, &corrected::eq99(&y), &t, &sc.energy);
+        let mut ym = y.clone();
+        ym.r = &y.r1 + &y.r2;
+        on.add(
+            "V on r = r1 + r2",
+            &at,
+            &app::eq99(&ym),
+            &truth::v(&ym),
+            &sc.energy,
+        );
+    }
+    f.corrected = Some((
+        "V = m2 g (r cos θ − r1 − r2) + (m1 + m2) g (y1 − r1)".into(),
+        corr,
+    ));
+    if let Some(m) = on.max() {
+        f.note(format!(
+            "with r a coordinate, −m2 g r (1 − cos θ) has ∂V/∂r = −m2 g (1 − cos θ) instead of m2 g cos θ; on r = r1 + r2 it is right (residual {}) but (107) differentiates in r; the paper's own (112) uses the correct + m2 g cos θ and A.3 writes the correct V, so (99) is the slip",
+            res_text(&m)
+        ));
+    }
+    Ok(f)
+}
+
+pub fn eq100(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A5)? {
+        let p = app::eq100(&y);
+        f.printed
+            .add("= ∂T/∂ẋ1", &at, &p, &momentum(Sys::A5, &y, QX1), &sc.mom);
+        f.printed.add("= P_x", &at, &p, &truth::px(&y), &sc.mom);
+    }
+    Ok(f)
+}
+
+pub fn eq101(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A5)? {
+        let p = app::eq101(&y);
+        f.printed
+            .add("= ∂T/∂φ̇1", &at, &p, &momentum(Sys::A5, &y, QP1), &sc.angmom);
+        f.printed.add("= L1", &at, &p, &truth::l1(&y), &sc.angmom);
+    }
+    Ok(f)
+}
+
+pub fn eq102(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    for (at, y, sc) in random_states(cx, Sys::A5)? {
+        let p = app::eq102(&y);
+        f.printed
+            .add("= ∂T/∂φ̇2", &at, &p, &momentum(Sys::A5, &y, QP2), &sc.angmom);
+        f.printed.add("= L2", &at, &p, &truth::l2(&y), &sc.angmom);
+    }
+    Ok(f)
+}
+
+pub fn eq103(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A5, QX1, &["Σ λj ∂fj/∂x1", "λ1"], app::eq103, false)
+}
+
+pub fn eq104(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = lagrange(
+        cx,
+        Sys::A5,
+        QP1,
+        &["Σ λj ∂fj/∂φ1", "−r1 λ1 − r1 λ2"],
+        app::eq104,
+        true,
+    )?;
+    f.note("I1 φ̈1 = −r1 (F1 + F21): the torque balance that the printed (29) gets wrong");
+    Ok(f)
+}
+
+pub fn eq105(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(
+        cx,
+        Sys::A5,
+        QP2,
+        &["Σ λj ∂fj/∂φ2", "r2 λ2"],
+        app::eq105,
+        true,
+    )
+}
+
+pub fn eq106(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(
+        cx,
+        Sys::A5,
+        QTH,
+        &["Σ λj ∂fj/∂θ", "r1 λ2"],
+        app::eq106,
+        true,
+    )
+}
+
+pub fn eq107(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A5, QR, &["Σ λj ∂fj/∂r", "λ3"], app::eq107, false)
+}
+
+pub fn eq108(cx: &mut Ctx) -> Result<Finding> {
+    lagrange(cx, Sys::A5, QY1, &["Σ λj ∂fj/∂y1", "λ4"], app::eq108, false)
+}
+
+pub fn eq109(cx: &mut Ctx) -> Result<Finding> {
+    momentum_sum(
+        cx,
+        |y| app::eq109(y, &truth::px(y), &truth::l1(y), &truth::l2(y)).to_vec(),
+        &["p_x1 + p_φ1/r1 + p_φ2/r2 (100–102)", "P_x + L1/r1 + L2/r2"],
+        |y| {
+            momentum(Sys::A5, y, QX1)
+                + momentum(Sys::A5, y, QP1) / &y.r1
+                + momentum(Sys::A5, y, QP2) / &y.r2
+        },
+    )
+}
+
+pub fn eq110(cx: &mut Ctx) -> Result<Finding> {
+    lam_expr(
+        cx,
+        Sys::A5,
+        QX1,
+        &["λ1", "(m1 + m2) ẍ1 + m2 (…)"],
+        |y| app::eq110(y).to_vec(),
+        false,
+    )
+}
+
+pub fn eq111(cx: &mut Ctx) -> Result<Finding> {
+    lam_expr(
+        cx,
+        Sys::A5,
+        QP2,
+        &["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"],
+        |y| app::eq111(y).to_vec(),
+        true,
+    )
+}
+
+pub fn eq112(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = lam_expr(
+        cx,
+        Sys::A5,
+        QR,
+        &["first line", "m2 (ẍ1 sin θ − r θ̇² + g cos θ)"],
+        |y| app::eq112(y).to_vec(),
+        false,
+    )?;
+    f.note("uses ∂V/∂r = m2 g cos θ, i.e. the correct V, not the printed (99)");
+    Ok(f)
+}
+
+pub fn eq113(cx: &mut Ctx) -> Result<Finding> {
+    lam_expr(
+        cx,
+        Sys::A5,
+        QY1,
+        &["λ4", "(m1 + m2) ÿ1 − …"],
+        |y| app::eq113(y).to_vec(),
+        false,
+    )
+}
+
+pub fn eq114(cx: &mut Ctx) -> Result<Finding> {
+    n1_forms(cx, app::eq114)
+}
+
+pub fn fn1(_: &mut Ctx) -> Result<Finding> {
+    Ok(Finding::definition(
+        "a remark on the admissible k (the mechanics takes any k ≥ 0; k2 > 1 is audited at P2, k1 > 1 at P4)",
+    ))
+}
+
+pub fn fn3(_: &mut Ctx) -> Result<Finding> {
+    Ok(Finding::definition(
+        "a count, not a formula: 3n − n − n = n coordinates, one cyclic (φ1); consistent",
+    ))
+}
+
+pub fn fn15(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = Finding::default();
+    gen(cx, |c, y, _| {
+        let l2 = lagrange_lhs(Sys::A5, y, QTH) / &y.r1;
+        let l1 = -(lagrange_lhs(Sys::A5, y, QP1) / &y.r1) - &l2;
+        f.printed
+            .add("F21 from (106)", &c.name, &l2, &y.f21, &c.scales.force);
+        f.printed
+            .add("F1 from (104)", &c.name, &l1, &y.f1, &c.scales.force);
+    })?;
+    f.note("λ2 = (θ equation)/r1, λ1 = −(φ1 equation)/r1 − λ2, against the multiplier system's F21 and F1");
+    Ok(f)
+}
