@@ -555,3 +555,44 @@ fn golden_data_is_reproduced_by_route_2() {
     }
     assert!(total > 4000, "{total}");
 }
+
+/// Cylinders without inertia (k = 0) on frictionless contacts: their free
+/// rates keep the reference value (the first route's convention), and both
+/// routes agree, also for the combined direction of a frictionless floor
+/// under k1 = k2 = 0 with a rolling contact.
+#[test]
+fn massless_spins_agree_with_first_route() {
+    let digits = 30;
+    for (floor, contact, k1, k2) in [
+        (Floor::Slip, Contact::Slip, "0", "0"),
+        (Floor::Slip, Contact::Roll, "0", "0"),
+        (Floor::Roll, Contact::Slip, "0.5", "0"),
+    ] {
+        let mut p = Params::identical_solid();
+        p.k1 = q(k1);
+        p.k2 = q(k2);
+        let start = Start {
+            theta0: Exact::parse("t", "0.1", false).unwrap(),
+            thetadot0: q("0.2"),
+            omega0: q("0.3"),
+        };
+        let m = Model::new(p, floor, contact, start).unwrap();
+        let case = VerifyCase {
+            name: format!("{floor}-{contact} k1={k1} k2={k2}"),
+            model: m,
+        };
+        let rep = compare_case(&case, digits).unwrap();
+        for r in &rep.rows {
+            if let Some(a) = r.agree {
+                assert!(
+                    a >= digits,
+                    "{} {}: {a} digits: {} vs {}",
+                    case.name,
+                    r.quantity,
+                    r.route1.text,
+                    r.route2.text
+                );
+            }
+        }
+    }
+}

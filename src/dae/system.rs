@@ -36,9 +36,11 @@
 //! ```
 //!
 //! is solved by Gaussian elimination with partial pivoting on `rug::Float`.
-//! A direction of motion with no inertia that no constraint touches (a
-//! frictionless spin with k = 0) gets an extra row fixing its acceleration
-//! to 0 (its multiplier is 0), so the system stays regular.
+//! A cyclic direction of motion without inertia (a frictionless spin with
+//! k = 0, or a frictionless floor under k1 = 0 with spins rolling on it at
+//! k = 0) gets an extra row fixing the acceleration of its independent
+//! coordinate to 0 (its multiplier is 0): the system stays regular and that
+//! rate keeps its reference value, the convention of the first route.
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
@@ -225,7 +227,8 @@ pub enum Row {
     Normal(usize),
     /// No slip at line j: F_{j+1,j}.
     Friction(usize),
-    /// A massless free direction (index into the list): multiplier 0.
+    /// A cyclic direction without inertia (index into the list): its
+    /// independent rate is held constant; multiplier 0.
     Massless(usize),
 }
 
@@ -761,15 +764,16 @@ impl System {
                 let rhs = -Float::with_val(p, &v[rr(j)] * &v[th(j)]);
                 (vec![(th(j), q[rr(j)].clone()), (i0, c0), (i1, c1)], rhs)
             }
-            Row::Massless(k) => (
-                self.massless[k]
+            Row::Massless(k) => {
+                // the direction's own independent coordinate (its first
+                // nonzero entry: x1, φ1 or the free spin), whose rate no
+                // other independent direction moves
+                let i = self.massless[k]
                     .iter()
-                    .enumerate()
-                    .filter(|(_, d)| !d.is_zero())
-                    .map(|(i, d)| (i, d.clone()))
-                    .collect(),
-                Float::new(p),
-            ),
+                    .position(|d| !d.is_zero())
+                    .unwrap_or(PHI1);
+                (vec![(i, one)], Float::new(p))
+            }
         }
     }
 
