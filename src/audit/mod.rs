@@ -359,15 +359,8 @@ pub fn run(equation: Option<&str>, reports_dir: &Path) -> Result<String> {
         None => {
             let rows = audit_all()?;
             let md = render_report(&rows);
-            std::fs::create_dir_all(reports_dir).map_err(|e| Error::Io {
-                path: reports_dir.display().to_string(),
-                what: e.to_string(),
-            })?;
             let path = reports_dir.join("audit.md");
-            std::fs::write(&path, &md).map_err(|e| Error::Io {
-                path: path.display().to_string(),
-                what: e.to_string(),
-            })?;
+            crate::record::write_atomic(&path, md.as_bytes())?;
             let errata = rows
                 .iter()
                 .filter(|r| r.verdict() == Verdict::Erratum)
