@@ -1,11 +1,306 @@
-//! Figures and tables (issue 6). Not yet implemented.
+//! The report: figures and tables for the built-in cases (`cylroll report`).
+//!
+//! [`run`] writes into a directory:
+//! - `figures/*.svg`: θ(t), dθ/dt, φ1(t), φ2(t) and the contact forces F1,
+//!   N1, F21, N12 against t and against θ for the paper's main case and for
+//!   every contact model (overlaid where comparison is the point), the
+//!   friction coefficient needed, and θs over the (m2/m1, k2) plane with the
+//!   fixed-lower closed form;
+//! - `index.html` and `README.md`: one page with every figure and the tables
+//!   (separation angles and times per contact model with verified digits and
+//!   their closed forms, forces, slip angles, the parameter plane);
+//! - `separation.csv`, `plane.csv`: the tables' numbers as decimal strings.
+//!
+//! Every plotted point is an oracle answer verified to
+//! [`Config::plot_digits`] digits and only then rounded to `f64`; every table
+//! entry is printed with exactly its verified digits.
+//!
+//! Deterministic: the work runs on a few threads, but each result lands in a
+//! fixed slot, tick labels are formatted with fixed decimals and nothing
+//! volatile is written, so two runs give byte-identical files. Each file is
+//! written to a temporary file in the same directory and renamed over the old
+//! one, so an interrupted run leaves the previous files intact. Files of
+//! other tools in the directory (e.g. `audit.md`) are left alone.
+
+pub mod data;
+pub mod figures;
+pub mod page;
+pub mod plot;
+pub mod tables;
 
 use crate::error::{Error, Result};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::io::IsTerminal;
 use std::path::Path;
 
+/// What the report computes, and how finely.
+#[derive(Debug, Clone)]
+pub struct Config {
+    /// Significant digits of the tables.
+    pub digits: u32,
+    /// Significant digits verified for every plotted point.
+    pub plot_digits: u32,
+    /// Intervals of each trajectory (time plots): points = intervals + 1.
+    pub time_points: usize,
+    /// Intervals of each curve against θ.
+    pub theta_points: usize,
+    /// Decades of m2/m1 of the curves θs(m2/m1): 10^lo ..= 10^hi.
+    pub ratio_range: (i32, i32),
+    /// Points per decade of those curves.
+    pub ratio_per_decade: usize,
+    /// Intervals of k2 over [0, 2] of the curves θs(k2).
+    pub k2_steps: usize,
+    /// Decades of m2/m1 of the heat map.
+    pub heat_ratio_range: (i32, i32),
+    /// Nodes per decade of the heat map.
+    pub heat_per_decade: usize,
+    /// Intervals of k2 over [0, 2] of the heat map.
+    pub heat_k2_steps: usize,
+    /// Significant digits of the parameter-plane table.
+    pub plane_table_digits: u32,
+    /// Worker threads (the result does not depend on it).
+    pub threads: usize,
+    /// Show progress bars (only when stderr is a terminal).
+    pub progress: bool,
+}
+
+impl Config {
+    /// The configuration of `cylroll report`.
+    pub fn full() -> Self {
+        Config {
+            digits: 20,
+            plot_digits: 12,
+            time_points: 120,
+            theta_points: 180,
+            ratio_range: (-2, 2),
+            ratio_per_decade: 8,
+            k2_steps: 24,
+            heat_ratio_range: (-1, 1),
+            heat_per_decade: 12,
+            heat_k2_steps: 24,
+            plane_table_digits: 15,
+            threads: default_threads(),
+            progress: false,
+        }
+    }
+
+    /// A small configuration for tests: the same files, coarser curves.
+    pub fn quick() -> Self {
+        Config {
+            digits: 20,
+            plot_digits: 8,
+            time_points: 8,
+            theta_points: 10,
+            ratio_range: (-1, 1),
+            ratio_per_decade: 1,
+            k2_steps: 4,
+            heat_ratio_range: (-1, 1),
+            heat_per_decade: 1,
+            heat_k2_steps: 4,
+            plane_table_digits: 12,
+            threads: default_threads(),
+            progress: false,
+        }
+    }
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Config::full()
+    }
+}
+
+fn default_threads() -> usize {
+    std::thread::available_parallelism()
+        .map(|n| n.get())
+        .unwrap_or(1)
+        .min(8)
+}
+
 /// Writes the report (figures, README.md, index.html) into `reports_dir` and
-/// returns a summary to print. `progress` shows progress bars on stderr.
+/// returns a summary to print. `progress` shows a progress bar on stderr when
+/// it is a terminal.
 pub fn run(reports_dir: &Path, progress: bool) -> Result<String> {
-    let _ = (reports_dir, progress);
-    Err(Error::not_physical("the report is not implemented yet"))
+    let mut cfg = Config::full();
+    cfg.progress = progress;
+    run_with(reports_dir, &cfg)
+}
+
+fn io_err(path: &Path, e: std::io::Error) -> Error {
+    Error::Io {
+        path: path.display().to_string(),
+        what: e.to_string(),
+    }
+}
+
+/// Writes `bytes` to `path` through a temporary file in the same directory
+/// and a rename, so the old file stays intact until the new one is complete.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    let dir = path.parent().unwrap_or_else(|| Path::new("."));
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "file".into());
+    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
+    std::fs::write(&tmp, bytes).map_err(|e| io_err(&tmp, e))?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        io_err(path, e)
+    })
+}
+
+/// A progress bar that draws nothing until [`show_progress`] is called (so
+/// that it never shows an empty 0/0 bar), and never unless asked for and
+/// stderr is a terminal.
+fn progress_bar(cfg: &Config) -> (ProgressBar, bool) {
+    let show = cfg.progress && std::io::stderr().is_terminal();
+    let pb = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::hidden());
+    if let Ok(style) =
+        ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} {elapsed} (eta {eta}) {msg}")
+    {
+        pb.set_style(style.progress_chars("=> "));
+    }
+    pb.set_prefix("cylroll report");
+    (pb, show)
+}
+
+/// Starts drawing `pb` on stderr if `show`.
+pub(crate) fn show_progress(pb: &ProgressBar, show: bool) {
+    if show {
+        pb.set_draw_target(ProgressDrawTarget::stderr());
+    }
+}
+
+/// The page's title.
+const TITLE: &str = "cylroll report: a cylinder rolling on a rolling cylinder";
+
+fn intro(cfg: &Config) -> Vec<String> {
+    vec![
+        "Figures and tables computed by cylroll, the arbitrary-precision reference oracle for the problem of \
+         K. T. McDonald's \"Cylinder Rolling on Another Rolling Cylinder\": cylinder 2 rolls on cylinder 1, which \
+         stands on a horizontal floor, from near the top until the two separate. Six contact models are shown: \
+         the floor rolling (no slip), frictionless (slip) or holding cylinder 1 fixed, times the contact between \
+         the cylinders rolling or frictionless."
+            .to_string(),
+        format!(
+            "Every number in a table is printed with exactly the digits the oracle verified ({} significant \
+             digits unless a table says otherwise): each was computed at two working precisions together with \
+             the method's own error estimate, and is printed only when every value inside the error bound rounds \
+             to the same digits (an estimate, not a rigorous enclosure: see the project README, \"Guarantees\"). \
+             Every plotted point is an oracle answer verified to {} digits, rounded to double precision for \
+             drawing only.",
+            cfg.digits, cfg.plot_digits
+        ),
+        format!(
+            "Units and conventions: unless said otherwise m1 = m2 = r1 = r2 = g = 1 and k1 = k2 = 1/2 (identical \
+             solid cylinders); time in units of {} and forces in units of m1 g (so N1 = 2 and N12 = 1 at rest at \
+             the top). θ is the line of centres measured clockwise from the vertical; φ1 the clockwise rotation of \
+             cylinder 1; φ2 the paper's angle (eq. 2). F1, N1: the floor's force on cylinder 1 (the holder's when \
+             it is fixed); F21: the friction force of cylinder 1 on cylinder 2; N12: the normal force between the \
+             cylinders, which vanishes at separation θs. A start from rest exactly at the top takes infinitely \
+             long, so the plots against time start from rest at θ0 = {}; the plots against θ and the main tables \
+             are the limit θ0 → 0+.",
+            figures::TAU,
+            data::THETA0_TIME
+        ),
+        "Regenerate with `cargo run --release -- report` (deterministic: a second run writes the same bytes)."
+            .to_string(),
+    ]
+}
+
+/// Writes the report into `dir` with the given configuration and returns a
+/// summary: the files written and any problem met (points that could not be
+/// verified, closed forms that disagree).
+pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
+    let (pb, show) = progress_bar(cfg);
+    let data = data::compute(cfg, &pb, show)?;
+    pb.set_message("drawing");
+    let figs = figures::figures(&data, cfg);
+    let tabs = tables::tables(&data, cfg)?;
+    let mut svgs = Vec::with_capacity(figs.len());
+    for f in &figs {
+        svgs.push((f.file.clone(), plot::render(f)?));
+    }
+
+    use page::{Block, Section};
+    let mut blocks = Vec::new();
+    blocks.push(Block::Heading("Tables".into()));
+    let mut tables_iter = tabs.tables.iter().cloned();
+    for _ in 0..2 {
+        if let Some(t) = tables_iter.next() {
+            blocks.push(Block::Table(t));
+        }
+    }
+    blocks.push(Block::Heading(
+        "The main case: both contacts rolling".into(),
+    ));
+    let mut rest: Vec<page::Table> = tables_iter.collect();
+    let plane_table = rest.pop();
+    for t in rest {
+        blocks.push(Block::Table(t));
+    }
+    for f in figs.iter().filter(|f| f.file.starts_with("main_")) {
+        blocks.push(Block::Figure(f.clone()));
+    }
+    blocks.push(Block::Heading("All contact models".into()));
+    for f in figs.iter().filter(|f| f.file.starts_with("variant")) {
+        blocks.push(Block::Figure(f.clone()));
+    }
+    blocks.push(Block::Heading("The parameter plane".into()));
+    if let Some(t) = plane_table {
+        blocks.push(Block::Table(t));
+    }
+    for f in figs.iter().filter(|f| f.file.starts_with("plane_")) {
+        blocks.push(Block::Figure(f.clone()));
+    }
+    blocks.push(Block::Heading("Notes and data".into()));
+    blocks.push(Block::Section(tabs.notes.clone()));
+    blocks.push(Block::Section(Section {
+        title: "Data files".into(),
+        paragraphs: vec![
+            "The tables' numbers as CSV (decimal strings with only verified digits), and the figures as SVG."
+                .into(),
+        ],
+        items: Vec::new(),
+        links: vec![
+            (
+                "separation.csv".into(),
+                "separation.csv: θs, t_s and F21 at separation per contact model and start, with the closed forms"
+                    .into(),
+            ),
+            (
+                "plane.csv".into(),
+                "plane.csv: θs at every point of the parameter plane computed for the figures and the table".into(),
+            ),
+        ],
+    }));
+
+    let intro = intro(cfg);
+    let md = page::markdown(TITLE, &intro, &blocks);
+    let html = page::html(TITLE, &intro, &blocks);
+
+    let figdir = dir.join("figures");
+    std::fs::create_dir_all(&figdir).map_err(|e| io_err(&figdir, e))?;
+    for (name, svg) in &svgs {
+        write_atomic(&figdir.join(name), svg.as_bytes())?;
+    }
+    write_atomic(&dir.join("separation.csv"), tabs.separation_csv.as_bytes())?;
+    write_atomic(&dir.join("plane.csv"), tabs.plane_csv.as_bytes())?;
+    write_atomic(&dir.join("README.md"), md.as_bytes())?;
+    write_atomic(&dir.join("index.html"), html.as_bytes())?;
+    pb.finish_and_clear();
+
+    let mut out = format!(
+        "report written to {}: index.html, README.md, separation.csv, plane.csv and {} figures in figures/\n",
+        dir.display(),
+        svgs.len()
+    );
+    if tabs.problems.is_empty() {
+        out.push_str("every table entry verified; every closed form agrees to all digits shown\n");
+    } else {
+        for p in &tabs.problems {
+            out.push_str(&format!("problem: {p}\n"));
+        }
+    }
+    Ok(out)
 }

@@ -1,0 +1,572 @@
+//! The report's tables, closed forms and CSV files.
+
+use super::data::{
+    paper_ref, variant_name, Data, FloorKey, PlaneKey, FORCE_ANGLES, MU_VALUES, PLANE_K2,
+    PLANE_TABLE_RATIOS, TABLE_STARTS, VARIANTS,
+};
+use super::page::{num, Section, Table};
+use super::Config;
+use crate::error::Result;
+use crate::exact::Exact;
+use crate::model::{Contact, Floor};
+use crate::numeric::decimal::to_sig;
+use crate::numeric::verify::Verified;
+use crate::oracle::Separation;
+use rug::float::Constant;
+use rug::Float;
+
+/// Working precision of the closed forms (bits): far beyond any digits shown.
+const CF_PREC: u32 = 512;
+
+/// The closed form of θs for identical solid cylinders (k2 = 1/2) from rest
+/// at `theta0`, where one is known: (formula, value).
+///
+/// - both rolling, θ0 → 0+: π/3;
+/// - no friction anywhere, θ0 → 0+: arccos(√3 − 1), the corrected eq. (43)
+///   m2 cos³θs = (m1 + m2)(3 cos θs − 2) with m1 = m2;
+/// - fixed lower cylinder, rolling contact: cos θs = 2 cos θ0 / (3 + k2)
+///   (eq. 36 for θ0 = 0: energy (1 + k2) r θ̇²/2 = g (cos θ0 − cos θ) and
+///   separation at r θ̇² = g cos θ);
+/// - fixed lower cylinder, frictionless contact: cos θs = 2 cos θ0 / 3.
+pub fn closed_form(v: (Floor, Contact), theta0: &str) -> Result<Option<(String, Float)>> {
+    let p = CF_PREC;
+    let th0 = Exact::parse("theta0", theta0, true)?;
+    let at_top = th0.is_zero();
+    let c0 = th0.to_float(p).cos();
+    Ok(match v {
+        (Floor::Roll, Contact::Roll) if at_top => {
+            Some(("π/3".to_string(), Float::with_val(p, Constant::Pi) / 3u32))
+        }
+        (Floor::Slip, Contact::Slip) if at_top => {
+            let c = Float::with_val(p, 3u32).sqrt() - 1u32;
+            Some(("arccos(√3 − 1), eq. (43) corrected".to_string(), c.acos()))
+        }
+        (Floor::Fixed, Contact::Roll) => {
+            let c = Float::with_val(p, &c0 * 4u32) / 7u32;
+            let f = if at_top {
+                "arccos(4/7), eq. (36)".to_string()
+            } else {
+                "arccos(4 cos θ0 / 7)".to_string()
+            };
+            Some((f, c.acos()))
+        }
+        (Floor::Fixed, Contact::Slip) => {
+            let c = Float::with_val(p, &c0 * 2u32) / 3u32;
+            let f = if at_top {
+                "arccos(2/3)".to_string()
+            } else {
+                "arccos(2 cos θ0 / 3)".to_string()
+            };
+            Some((f, c.acos()))
+        }
+        _ => None,
+    })
+}
+
+/// arccos(2/(3 + k2)) for an exact k2 (the fixed lower cylinder, eq. 36).
+pub fn fixed_lower(k2: &str) -> Result<Float> {
+    let k = Exact::parse("k2", k2, false)?.to_float(CF_PREC);
+    let c = Float::with_val(CF_PREC, 2u32) / (k + 3u32);
+    Ok(c.acos())
+}
+
+fn err_cell(e: &crate::error::Error) -> String {
+    let s = e.to_string();
+    let short: String = s.chars().take(90).collect();
+    format!("not verified: {short}")
+}
+
+fn extra<'a>(s: &'a Separation, name: &str) -> Option<&'a Verified> {
+    s.extra.iter().find(|v| v.name == name)
+}
+
+/// Whether a closed-form value agrees with a verified one: the verified text
+/// equals the closed form rounded to the same digits.
+fn agrees(v: &Verified, cf: &Float) -> (String, bool) {
+    let text = to_sig(cf, v.digits.max(1));
+    let ok = text == v.text;
+    (text, ok)
+}
+
+fn degrees(v: &Verified) -> String {
+    format!("≈ {:.6}°", v.value.to_f64().to_degrees())
+}
+
+/// All tables, and the lines of `separation.csv` and `plane.csv`.
+pub struct Tables {
+    /// Tables in page order.
+    pub tables: Vec<Table>,
+    /// Findings and problems, as page text.
+    pub notes: Section,
+    /// `separation.csv`.
+    pub separation_csv: String,
+    /// `plane.csv`.
+    pub plane_csv: String,
+    /// Problems worth a line in the run's summary.
+    pub problems: Vec<String>,
+}
+
+/// Builds every table from the data.
+pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
+    let d = cfg.digits;
+    let mut problems = Vec::new();
+    let mut csv = String::from(
+        "floor,contact,theta0,digits,theta_s,t_s,F21_at_s,closed_form,closed_form_value,agrees\n",
+    );
+
+    // --- 1. separation from rest at the top
+    let mut rows = Vec::new();
+    // --- 2. separation from small starts
+    let mut rows2 = Vec::new();
+    for (vi, v) in VARIANTS.iter().enumerate() {
+        for (si, th0) in TABLE_STARTS.iter().enumerate() {
+            let cf = closed_form(*v, th0)?;
+            let res = data.sep.get(vi).and_then(|s| s.get(si));
+            let (theta_cell, ts_cell, f21_cell, deg_cell, cf_val, agree_cell) = match res {
+                Some(Ok(s)) => {
+                    let (cf_text, agree) = match &cf {
+                        Some((_, val)) => {
+                            let (t, ok) = agrees(&s.theta_s, val);
+                            if !ok {
+                                problems.push(format!(
+                                    "{} from theta0 = {th0}: theta_s = {} but the closed form gives {t}",
+                                    variant_name(*v),
+                                    s.theta_s.text
+                                ));
+                            }
+                            (
+                                num(&t),
+                                if ok {
+                                    format!("yes, all {} digits", s.theta_s.digits)
+                                } else {
+                                    "NO".to_string()
+                                },
+                            )
+                        }
+                        None => ("—".to_string(), "—".to_string()),
+                    };
+                    let f21 = match extra(s, "F21_at_s") {
+                        Some(f) => num(&f.text),
+                        None => "0 (frictionless)".to_string(),
+                    };
+                    let ts = match &s.t_s {
+                        Some(t) => num(&t.text),
+                        None => "∞ (start at rest at the top)".to_string(),
+                    };
+                    csv.push_str(&format!(
+                        "{},{},{},{},{},{},{},\"{}\",{},{}\n",
+                        v.0,
+                        v.1,
+                        th0,
+                        s.theta_s.digits,
+                        s.theta_s.text,
+                        s.t_s.as_ref().map(|t| t.text.as_str()).unwrap_or("inf"),
+                        extra(s, "F21_at_s").map(|f| f.text.as_str()).unwrap_or("0"),
+                        cf.as_ref().map(|c| c.0.as_str()).unwrap_or(""),
+                        cf_text.trim_start_matches('='),
+                        if cf.is_none() {
+                            ""
+                        } else if agree.starts_with("yes") {
+                            "yes"
+                        } else {
+                            "no"
+                        },
+                    ));
+                    (
+                        num(&s.theta_s.text),
+                        ts,
+                        f21,
+                        degrees(&s.theta_s),
+                        cf_text,
+                        agree,
+                    )
+                }
+                Some(Err(e)) => {
+                    problems.push(format!("{} from theta0 = {th0}: {e}", variant_name(*v)));
+                    let c = err_cell(e);
+                    (c.clone(), c.clone(), c.clone(), c.clone(), c.clone(), c)
+                }
+                None => {
+                    let c = "missing".to_string();
+                    (c.clone(), c.clone(), c.clone(), c.clone(), c.clone(), c)
+                }
+            };
+            let formula = cf
+                .as_ref()
+                .map(|c| c.0.clone())
+                .unwrap_or_else(|| "—".into());
+            if si == 0 {
+                rows.push(vec![
+                    variant_name(*v),
+                    paper_ref(*v).to_string(),
+                    theta_cell,
+                    deg_cell,
+                    formula,
+                    cf_val,
+                    agree_cell,
+                    f21_cell,
+                ]);
+            } else {
+                rows2.push(vec![
+                    variant_name(*v),
+                    num(th0),
+                    theta_cell,
+                    ts_cell,
+                    formula,
+                    cf_val,
+                    agree_cell,
+                ]);
+            }
+        }
+    }
+    let t1 = Table {
+        id: "separation-top".into(),
+        title: "Separation from rest at the top (θ0 → 0+)".into(),
+        intro: format!(
+            "Identical solid cylinders (m1 = m2, r1 = r2, k1 = k2 = 1/2), every contact model, started from rest \
+             with the upper cylinder on top (the paper's case, the limit θ0 → 0+; the time is then infinite). \
+             θs in radians to {d} verified significant digits; the closed form, where one is known, is evaluated \
+             independently at {CF_PREC} bits and rounded to the same digits. F21 at separation is in units of m1 g: \
+             where it is not zero, the friction coefficient that rolling needs diverges as θ → θs."
+        ),
+        header: [
+            "contact model",
+            "paper",
+            "θs [rad]",
+            "θs [deg]",
+            "closed form",
+            "closed form value",
+            "agrees",
+            "F21 at θs [m1 g]",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect(),
+        rows,
+    };
+    let t2 = Table {
+        id: "separation-start".into(),
+        title: "Separation from rest at θ0 = 1/100 and θ0 = 1/20".into(),
+        intro: format!(
+            "The same cylinders started from rest a little off the top: θs [rad] and the time t_s to separation \
+             [τ = √(r1/g)], {d} verified digits. For the fixed lower cylinder the closed form is \
+             cos θs = 2 cos θ0 / (3 + k2) (rolling contact) or 2 cos θ0 / 3 (frictionless contact)."
+        ),
+        header: [
+            "contact model",
+            "θ0 [rad]",
+            "θs [rad]",
+            "t_s [τ]",
+            "closed form",
+            "closed form value",
+            "agrees",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect(),
+        rows: rows2,
+    };
+
+    // --- 3. forces at chosen angles, main case
+    let names = [
+        "F1 [m1 g]",
+        "N1 [m1 g]",
+        "F21 [m1 g]",
+        "N12 [m1 g]",
+        "dθ/dt [rad/τ]",
+        "d²θ/dt² [rad/τ²]",
+        "μ needed at the floor, |F1|/N1",
+        "μ needed between the cylinders, |F21|/N12",
+    ];
+    let mut rows3 = Vec::new();
+    for (qi, name) in names.iter().enumerate() {
+        let mut row = vec![name.to_string()];
+        for (ai, a) in FORCE_ANGLES.iter().enumerate() {
+            row.push(match data.forces.get(ai) {
+                Some(Ok(f)) => f.get(qi).map(|v| num(&v.text)).unwrap_or_default(),
+                Some(Err(e)) => {
+                    if qi == 0 {
+                        problems.push(format!("forces at theta = {a}: {e}"));
+                    }
+                    err_cell(e)
+                }
+                None => "missing".into(),
+            });
+        }
+        rows3.push(row);
+    }
+    let mut header3 = vec!["quantity".to_string()];
+    header3.extend(FORCE_ANGLES.iter().map(|a| {
+        let t = a.replace("pi", "π");
+        if t.contains('π') {
+            format!("θ = {t}")
+        } else {
+            format!("θ = {t} rad")
+        }
+    }));
+    let t3 = Table {
+        id: "forces".into(),
+        title: "Forces in the main case at chosen angles".into(),
+        intro: format!(
+            "Both contacts rolling, identical solid cylinders, from rest at the top (θ0 → 0+); {d} verified digits; \
+             m1 = m2 = r1 = r2 = g = 1."
+        ),
+        header: header3,
+        rows: rows3,
+    };
+
+    // --- 4. where rolling first fails for μ
+    let mut rows4 = Vec::new();
+    for (i, mu) in MU_VALUES.iter().enumerate() {
+        let row = match data.mu.get(i) {
+            Some(Ok(s)) => {
+                let fl = extra(s, "theta_slip_floor");
+                let ct = extra(s, "theta_slip_contact");
+                let cell = |v: Option<&Verified>| match v {
+                    Some(v) => num(&v.text),
+                    None => "rolls until separation".to_string(),
+                };
+                let first = match (fl, ct) {
+                    (Some(a), Some(b)) => {
+                        if a.value < b.value {
+                            "the floor"
+                        } else {
+                            "the contact between the cylinders"
+                        }
+                    }
+                    (Some(_), None) => "the floor",
+                    (None, Some(_)) => "the contact between the cylinders",
+                    (None, None) => "neither",
+                };
+                vec![
+                    num(mu),
+                    cell(fl),
+                    cell(ct),
+                    first.to_string(),
+                    num(&s.theta_s.text),
+                ]
+            }
+            Some(Err(e)) => {
+                problems.push(format!("slip angles for mu = {mu}: {e}"));
+                vec![
+                    num(mu),
+                    err_cell(e),
+                    String::new(),
+                    String::new(),
+                    String::new(),
+                ]
+            }
+            None => vec![
+                num(mu),
+                "missing".into(),
+                String::new(),
+                String::new(),
+                String::new(),
+            ],
+        };
+        rows4.push(row);
+    }
+    let t4 = Table {
+        id: "friction".into(),
+        title: "Where rolling first fails, for a friction coefficient μ".into(),
+        intro: format!(
+            "Main case (both contacts rolling, identical solid cylinders, from rest at the top): the first angle \
+             at which rolling without slipping would need more friction than μ, at the floor (|F1| > μ N1) and \
+             between the cylinders (|F21| > μ N12); {d} verified digits. Past that angle the rolling model no longer \
+             applies. Between the cylinders it always fails before θs, since N12 → 0 while F21 does not."
+        ),
+        header: ["μ", "floor slips at θ [rad]", "cylinders slip at θ [rad]", "slips first", "θs [rad]"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
+        rows: rows4,
+    };
+
+    // --- 5. the parameter plane
+    let td = cfg.plane_table_digits;
+    let mut rows5 = Vec::new();
+    for k2 in PLANE_K2 {
+        let mut row = vec![num(k2)];
+        for r in PLANE_TABLE_RATIOS {
+            let key = PlaneKey {
+                floor: FloorKey::Roll,
+                ratio: r.to_string(),
+                k2: k2.to_string(),
+                digits: td,
+            };
+            row.push(match data.plane.get(&key) {
+                Some(Ok(v)) => num(&v.text),
+                Some(Err(e)) => {
+                    problems.push(format!("plane m2/m1 = {r}, k2 = {k2}: {e}"));
+                    err_cell(e)
+                }
+                None => "missing".into(),
+            });
+        }
+        let key = PlaneKey {
+            floor: FloorKey::Fixed,
+            ratio: "1".to_string(),
+            k2: k2.to_string(),
+            digits: d,
+        };
+        let cf = fixed_lower(k2)?;
+        match data.plane.get(&key) {
+            Some(Ok(v)) => {
+                let (t, ok) = agrees(v, &cf);
+                if !ok {
+                    problems.push(format!(
+                        "fixed lower cylinder, k2 = {k2}: theta_s = {} but arccos(2/(3+k2)) = {t}",
+                        v.text
+                    ));
+                }
+                row.push(num(&v.text));
+                row.push(num(&t));
+                row.push(if ok {
+                    format!("yes, all {} digits", v.digits)
+                } else {
+                    "NO".into()
+                });
+            }
+            Some(Err(e)) => {
+                problems.push(format!("fixed lower cylinder, k2 = {k2}: {e}"));
+                row.push(err_cell(e));
+                row.push(num(to_sig(&cf, d)));
+                row.push("—".into());
+            }
+            None => {
+                row.push("missing".into());
+                row.push(num(to_sig(&cf, d)));
+                row.push("—".into());
+            }
+        }
+        rows5.push(row);
+    }
+    let mut header5 = vec!["k2".to_string()];
+    header5.extend(PLANE_TABLE_RATIOS.iter().map(|r| format!("m2/m1 = {r}")));
+    header5.push("fixed lower cylinder (oracle)".into());
+    header5.push("arccos(2/(3 + k2))".into());
+    header5.push("agrees".into());
+    let t5 = Table {
+        id: "plane".into(),
+        title: "θs at chosen points of the parameter plane".into(),
+        intro: format!(
+            "θs [rad] with both contacts rolling, from rest at the top, m1 = r1 = r2 = g = 1, k1 = 1/2, for \
+             several mass ratios m2/m1 and k2 ({td} verified digits), and for a fixed lower cylinder ({d} verified \
+             digits) next to its closed form, eq. (36). As m2/m1 → 0 the lower cylinder stops moving and θs tends \
+             to the fixed-lower value."
+        ),
+        header: header5,
+        rows: rows5,
+    };
+
+    // --- plane.csv: every point computed
+    let mut plane_csv = String::from("floor,contact,m2_over_m1,k2,k1,digits,theta_s\n");
+    for (k, v) in &data.plane {
+        let floor = match k.floor {
+            FloorKey::Roll => "roll",
+            FloorKey::Fixed => "fixed",
+        };
+        let val = match v {
+            Ok(v) => v.text.clone(),
+            Err(_) => "not verified".to_string(),
+        };
+        plane_csv.push_str(&format!(
+            "{floor},roll,{},{},0.5,{},{val}\n",
+            k.ratio, k.k2, k.digits
+        ));
+    }
+    let plane_failed = data.plane.values().filter(|v| v.is_err()).count();
+    if plane_failed > 0 {
+        problems.push(format!(
+            "{plane_failed} parameter-plane points could not be verified and are left out of the figures"
+        ));
+    }
+
+    // --- notes
+    let mut items = Vec::new();
+    for (vi, v) in VARIANTS.iter().enumerate() {
+        if let Some(Ok(s)) = data.sep.get(vi).and_then(|s| s.first()) {
+            for n in &s.notes {
+                items.push(format!("{}: {n}", variant_name(*v)));
+            }
+            for x in &s.extra {
+                if x.name != "F21_at_s" {
+                    items.push(format!("{}: {} = {}", variant_name(*v), x.name, x.text));
+                }
+            }
+        }
+    }
+    for (vi, v) in VARIANTS.iter().enumerate() {
+        for (what, skipped) in [
+            (
+                "time",
+                data.time
+                    .get(vi)
+                    .and_then(|r| r.as_ref().ok())
+                    .map(|c| &c.skipped),
+            ),
+            (
+                "theta",
+                data.theta
+                    .get(vi)
+                    .and_then(|r| r.as_ref().ok())
+                    .map(|c| &c.skipped),
+            ),
+        ] {
+            if let Some(sk) = skipped {
+                if !sk.is_empty() {
+                    let msg = format!(
+                        "{}: {} plotted points against {what} could not be verified to {} digits and are left out (first: {} = {}: {})",
+                        variant_name(*v),
+                        sk.len(),
+                        cfg.plot_digits,
+                        what,
+                        sk[0].0,
+                        sk[0].1
+                    );
+                    problems.push(msg.clone());
+                    items.push(msg);
+                }
+            }
+        }
+        for (what, r) in [
+            (
+                "the trajectory",
+                data.time.get(vi).map(|r| r.as_ref().err()),
+            ),
+            (
+                "the forces against θ",
+                data.theta.get(vi).map(|r| r.as_ref().err()),
+            ),
+        ] {
+            if let Some(Some(e)) = r {
+                let msg = format!("{}: {what} could not be computed: {e}", variant_name(*v));
+                problems.push(msg.clone());
+                items.push(msg);
+            }
+        }
+    }
+    for p in &problems {
+        if !items.contains(p) {
+            items.push(p.clone());
+        }
+    }
+    let notes = Section {
+        title: "What the oracle reported".into(),
+        paragraphs: vec![format!(
+            "The oracle's findings for each contact model from rest at the top ({d} digits): where φ1 and dφ1/dt \
+             change sign, whether the lower cylinder stays on the floor, what happens to the friction at separation. \
+             Any point that could not be verified is listed here too."
+        )],
+        items,
+        links: Vec::new(),
+    };
+
+    Ok(Tables {
+        tables: vec![t1, t2, t3, t4, t5],
+        notes,
+        separation_csv: csv,
+        plane_csv,
+        problems,
+    })
+}
