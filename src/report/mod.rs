@@ -127,27 +127,13 @@ pub fn run(reports_dir: &Path, progress: bool) -> Result<String> {
 }
 
 fn io_err(path: &Path, e: std::io::Error) -> Error {
-    Error::Io {
+    Error::Write {
         path: path.display().to_string(),
         what: e.to_string(),
     }
 }
 
-/// Writes `bytes` to `path` through a temporary file in the same directory
-/// and a rename, so the old file stays intact until the new one is complete.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    let dir = path.parent().unwrap_or_else(|| Path::new("."));
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "file".into());
-    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
-    std::fs::write(&tmp, bytes).map_err(|e| io_err(&tmp, e))?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io_err(path, e)
-    })
-}
+use crate::record::write_atomic;
 
 /// A progress bar that draws nothing until [`show_progress`] is called (so
 /// that it never shows an empty 0/0 bar), and never unless asked for and
