@@ -510,9 +510,9 @@ fn stack_spec_help_and_errors() {
     }
 }
 
-/// Heavier: the routes agree to 100 digits on three cases (about a minute).
+/// Heavier: the routes agree to 100 digits on three cases.
 #[test]
-#[ignore = "about a minute: run with --ignored"]
+#[ignore = "about 10 s of CPU (longer under load): run with --ignored"]
 fn routes_agree_at_100_digits() {
     let digits = 100;
     for case in cases()
