@@ -12,15 +12,25 @@
 //!   error can be driven to hundreds of digits.
 //! * [`solve`]: the driver: integrates y = (q, q̇), samples at given times,
 //!   locates events (N12 = 0, N1 = 0, θ̇ = 0, …) to full precision by
-//!   re-integration and a bracketed secant iteration, measures constraint
-//!   drift (and projects if it ever exceeds 2^−(prec−16)).
+//!   re-integration from the step's start and Newton's method safeguarded
+//!   by the bracket, measures constraint drift (and projects back onto the
+//!   manifold if it ever exceeds 2^−(prec+8); it has not in any case run).
 //! * [`spec`]: the `--stack` SPEC syntax (`stack_report("help", ..)` prints it).
 //! * [`golden`]: every number of a golden data file recomputed by this route.
 //!
 //! The route shares with the first only the model and the precision ladder
 //! ([`crate::numeric::verify::ladder`]: every value is computed at two
-//! precisions, each with its own tolerance 2^−(prec−8), and only agreeing
-//! digits are kept). Accuracy kind: *estimated*, like the first route.
+//! precisions p, each with its own local tolerance 2^−(p−8), and only
+//! agreeing digits are kept). Internally the arithmetic carries
+//! ⌈1.1 kmax⌉ + 16 guard bits above p (kmax = the largest extrapolation
+//! column, at most 60) because the extrapolation tableau amplifies rounding
+//! errors by up to 2^(1.1 k) at column k. Accuracy kind: *estimated*, like
+//! the first route.
+//!
+//! Limits: an event is found only if its function changes sign between two
+//! step ends (two zeros inside one step, e.g. a brief double turning point,
+//! would be missed); events are not searched for inside the first step if
+//! the watched function starts at exactly 0 (a start from rest).
 //!
 //! Entry points: [`verify_report`] (both routes on a set of cases, a table
 //! of agreeing digits), [`stack_report`] (footnote 3: n ≥ 2 cylinders),
