@@ -9,7 +9,7 @@
 use super::{Reduced, PSI2, X1};
 use crate::error::Result;
 use crate::model::{Contact, Floor, Model};
-use rug::{Assign, Float};
+use rug::{Assign, Float, Rational};
 
 /// Constants of a model at one precision.
 #[derive(Debug, Clone)]
@@ -186,6 +186,36 @@ impl Dyn {
         out.sqrt_mut();
     }
 
+    /// [`Dyn::inv_thetadot`] without allocating: the same operations in the
+    /// same order at the same precision (so the same bits), on `w`'s Floats.
+    /// `out` must have this precision.
+    pub fn inv_thetadot_with(&self, delta: &Float, out: &mut Float, w: &mut Scratch) {
+        let [sh, ch, sm, cm, c, t1, t2, h] = &mut w.f;
+        sh.assign(delta / 2u32);
+        sh.sin_cos_mut(ch);
+        t1.assign(&self.s0 * &*ch);
+        t2.assign(&self.c0 * &*sh);
+        sm.assign(&*t1 + &*t2);
+        t1.assign(&self.c0 * &*ch);
+        t2.assign(&self.s0 * &*sh);
+        cm.assign(&*t1 - &*t2);
+        // cos θ = cos(θ0+δ/2) cos(δ/2) − sin(θ0+δ/2) sin(δ/2)
+        t1.assign(&*cm * &*ch);
+        t2.assign(&*sm * &*sh);
+        c.assign(&*t1 - &*t2);
+        // H = 4 (g/r) sin(θ0+δ/2) sin(δ/2) + K(θ0) θ̇0²   (t2 = sm·sh)
+        h.assign(&*t2 * &self.gr);
+        *h <<= 2;
+        *h += &self.h0;
+        // K(c) = (q2 c + q1) c + q0
+        t1.assign(&self.q[2] * &*c);
+        *t1 += &self.q[1];
+        *t1 *= &*c;
+        *t1 += &self.q[0];
+        out.assign(&*t1 / &*h);
+        out.sqrt_mut();
+    }
+
     /// The full state at δ.
     pub fn state(&self, delta: &Float) -> State {
         let p = self.prec;
@@ -308,6 +338,316 @@ impl Dyn {
                     s += Float::with_val(p, &col[i] * &mv[i]);
                 }
                 s
+            })
+            .collect()
+    }
+}
+
+/// Reusable Floats for the allocation-free evaluations ([`Dyn::inv_thetadot_with`]).
+#[derive(Debug, Clone)]
+pub struct Scratch {
+    f: [Float; 8],
+}
+
+impl Scratch {
+    /// Scratch Floats at `prec` bits.
+    pub fn new(prec: u32) -> Self {
+        Scratch {
+            f: std::array::from_fn(|_| Float::new(prec)),
+        }
+    }
+}
+
+/// The time integrand in the half-angle variable s = sin(θ/2), an algebraic
+/// function (no trigonometry per evaluation):
+///
+/// dt = dθ/θ̇ = 2 √(K(c) / ((1 − s²) H)) ds,  c = cos θ = 1 − 2s²,
+/// H = K θ̇² = K(θ0)θ̇0² + 2(g/r)(cos θ0 − cos θ) = K(θ0)θ̇0² + 4(g/r) σ (s + s0),
+///
+/// with σ = s − s0 the distance from the start, supplied exactly by the
+/// quadrature (so H has no cancellation at the singular end). Written as
+/// dt/dσ = F·√(K / ((1 − s²)(σ(s + s0) + h0'))), F = 1/√(g/r),
+/// h0' = K(θ0)θ̇0²/(4 g/r). 1 − s² = cos²(θ/2) is free of cancellation while
+/// θ stays away from π; the oracle uses this form up to θ = 2π/3 (1 − s² ≥ 1/4).
+///
+/// One evaluation costs one division, one square root and about ten
+/// multiplications and additions, against one `sin_cos` more for the θ form.
+#[derive(Debug, Clone)]
+pub struct HalfAngleTime {
+    /// sin(θ0/2).
+    pub s0: Float,
+    /// K coefficients.
+    q: [Float; 3],
+    q1_zero: bool,
+    q2_zero: bool,
+    /// K(θ0)θ̇0² / (4 g/r).
+    h0r: Float,
+    h0_zero: bool,
+    /// 1/√(g/r).
+    pub factor: Float,
+    /// cos(θ0/2)
+    c0h: Float,
+    w: [Float; 3],
+}
+
+impl HalfAngleTime {
+    /// The integrand of `d`'s model at `d`'s precision.
+    pub fn new(d: &Dyn) -> Self {
+        let p = d.prec;
+        let half = Float::with_val(p, &d.th0 / 2u32);
+        let (s0, c0h) = half.sin_cos(Float::new(p));
+        let gr4 = Float::with_val(p, &d.gr * 4u32);
+        let h0r = Float::with_val(p, &d.h0 / &gr4);
+        let factor = Float::with_val(p, d.gr.sqrt_ref()).recip();
+        HalfAngleTime {
+            s0,
+            q: d.q.clone(),
+            q1_zero: d.q[1].is_zero(),
+            q2_zero: d.q[2].is_zero(),
+            h0_zero: h0r.is_zero(),
+            h0r,
+            factor,
+            c0h,
+            w: std::array::from_fn(|_| Float::new(p)),
+        }
+    }
+
+    /// σ = sin(θ/2) − sin(θ0/2) = 2 cos(θ0/2 + δ/4) sin(δ/4) for θ = θ0 + δ
+    /// (no cancellation for small δ).
+    pub fn sigma_of(&self, delta: &Float) -> Float {
+        let p = self.s0.prec();
+        let quarter = Float::with_val(p, delta / 4u32);
+        let (sq, cq) = quarter.sin_cos(Float::new(p));
+        // cos(θ0/2 + δ/4) = cos(θ0/2) cos(δ/4) − sin(θ0/2) sin(δ/4)
+        let c = Float::with_val(p, &self.c0h * &cq) - Float::with_val(p, &self.s0 * &sq);
+        Float::with_val(p, c * sq) * 2u32
+    }
+
+    /// Writes √(K(c) / ((1 − s²)(σ(s + s0) + h0'))) at distance σ into `out`
+    /// (multiply the integral by [`HalfAngleTime::factor`]). No allocation.
+    pub fn eval(&mut self, sigma: &Float, out: &mut Float) {
+        let [s, a, b] = &mut self.w;
+        s.assign(&self.s0 + sigma);
+        // H' = σ (s + s0) + h0'
+        b.assign(&*s + &self.s0);
+        *b *= sigma;
+        if !self.h0_zero {
+            *b += &self.h0r;
+        }
+        // (1 − s²) H'
+        a.assign(s.square_ref());
+        s.assign(1u32 - &*a);
+        *b *= &*s;
+        // c = 1 − 2 s²; K = (q2 c + q1) c + q0
+        *a <<= 1;
+        s.assign(1u32 - &*a);
+        if self.q2_zero {
+            if self.q1_zero {
+                out.assign(&self.q[0]);
+            } else {
+                out.assign(&self.q[1] * &*s);
+                *out += &self.q[0];
+            }
+        } else {
+            out.assign(&self.q[2] * &*s);
+            *out += &self.q[1];
+            *out *= &*s;
+            *out += &self.q[0];
+        }
+        *out /= &*b;
+        out.sqrt_mut();
+    }
+}
+
+impl HalfAngleTime {
+    /// The integrand in u for σ = Δσ sin²u, u ∈ [0, π/2] (`sin`, `cos` = sin u,
+    /// cos u), without its constant factor [`HalfAngleTime::u_factor`]:
+    /// cos u·√(K/((1 − s²)(s + s0))) from rest (the σ^(−1/2) singularity
+    /// divides out), cos u·sin u·√(K/((1 − s²)H')) otherwise. Analytic on the
+    /// closed interval, for Gauss–Legendre. No allocation.
+    pub fn eval_u(&mut self, dsig: &Float, sin: &Float, cos: &Float, out: &mut Float) {
+        let [s, a, b] = &mut self.w;
+        // σ = Δσ sin²u, s = s0 + σ
+        a.assign(sin.square_ref());
+        *a *= dsig;
+        s.assign(&self.s0 + &*a);
+        b.assign(&*s + &self.s0);
+        if !self.h0_zero {
+            *b *= &*a;
+            *b += &self.h0r;
+        }
+        a.assign(s.square_ref());
+        s.assign(1u32 - &*a);
+        *b *= &*s;
+        *a <<= 1;
+        s.assign(1u32 - &*a);
+        if self.q2_zero {
+            if self.q1_zero {
+                out.assign(&self.q[0]);
+            } else {
+                out.assign(&self.q[1] * &*s);
+                *out += &self.q[0];
+            }
+        } else {
+            out.assign(&self.q[2] * &*s);
+            *out += &self.q[1];
+            *out *= &*s;
+            *out += &self.q[0];
+        }
+        *out /= &*b;
+        out.sqrt_mut();
+        *out *= cos;
+        if !self.h0_zero {
+            *out *= sin;
+        }
+    }
+
+    /// The constant factor of [`HalfAngleTime::eval_u`]'s integral:
+    /// 2√Δσ/√(g/r) from rest, 2Δσ/√(g/r) otherwise.
+    pub fn u_factor(&self, dsig: &Float) -> Float {
+        let p = self.s0.prec();
+        let f = if self.h0_zero {
+            Float::with_val(p, dsig.sqrt_ref())
+        } else {
+            Float::with_val(p, dsig)
+        };
+        Float::with_val(p, f * &self.factor) * 2u32
+    }
+
+    /// The values of sin²u at which [`HalfAngleTime::eval_u`] is singular
+    /// (s = ±1, K(1 − 2s²) = 0, H' = 0), as complex `f64` for the
+    /// Gauss–Legendre convergence model ([`crate::numeric::gauss::rho_sin2`]).
+    pub fn singular_sin2(&self, dsig: &Float) -> Vec<crate::numeric::gauss::C64> {
+        use crate::numeric::gauss::C64;
+        let s0 = self.s0.to_f64();
+        let ds = dsig.to_f64();
+        let q: Vec<f64> = self.q.iter().map(|x| x.to_f64()).collect();
+        let mut svals = vec![C64::new(1.0, 0.0), C64::new(-1.0, 0.0)];
+        // K(c) = 0 → c, then s = ±√((1 − c)/2)
+        let mut cs = Vec::new();
+        if q[2] != 0.0 {
+            let disc = C64::new(q[1] * q[1] - 4.0 * q[2] * q[0], 0.0).sqrt();
+            for sg in [1.0, -1.0] {
+                cs.push(C64::new(
+                    (-q[1] + sg * disc.re) / (2.0 * q[2]),
+                    sg * disc.im / (2.0 * q[2]),
+                ));
+            }
+        } else if q[1] != 0.0 {
+            cs.push(C64::new(-q[0] / q[1], 0.0));
+        }
+        for c in cs {
+            let r = C64::new((1.0 - c.re) / 2.0, -c.im / 2.0).sqrt();
+            svals.push(r);
+            svals.push(C64::new(-r.re, -r.im));
+        }
+        // H' = 0: s = −s0 from rest, s² = s0² − h0' otherwise
+        if self.h0_zero {
+            svals.push(C64::new(-s0, 0.0));
+        } else {
+            let r = C64::new(s0 * s0 - self.h0r.to_f64(), 0.0).sqrt();
+            svals.push(r);
+            svals.push(C64::new(-r.re, -r.im));
+        }
+        svals
+            .into_iter()
+            .map(|s| C64::new((s.re - s0) / ds, s.im / ds))
+            .collect()
+    }
+}
+
+/// N12·K(c)²/m2 as a polynomial in c = cos θ, split as P0(c) + A_H·P1(c)
+/// with exact rational coefficients (ascending, degree ≤ 5), where
+/// A_H = K(θ0)θ̇0² + 2(g/r) cos θ0 carries the start. From the reduced
+/// dynamics with the energy integral θ̇² = H/K, H(c) = A_H − 2(g/r) c:
+///
+/// N12/m2 = g c + ẍ1 sin θ − r θ̇²,  ẍ1 = (α + β c) θ̈ − β sin θ θ̇²,
+/// θ̈ = sin θ ((g/r) K + ½ K' H)/K²,  sin²θ = 1 − c²,
+///
+/// so N12·K²/m2 = g c K² + (1 − c²)(α + β c)(g/r) K + H·R(c) with
+/// R = (1 − c²)(½(α + β c)K' − β K) − r K (α, β those of ẋ1, K' = dK/dc).
+/// K > 0, so N12 has the sign of the polynomial.
+#[derive(Debug, Clone, PartialEq)]
+pub struct N12Poly {
+    /// P0 (with H's −2(g/r)c part folded in).
+    pub base: Vec<Rational>,
+    /// P1 = R.
+    pub per_h: Vec<Rational>,
+}
+
+fn qmul(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
+    let mut out = vec![Rational::new(); (a.len() + b.len()).saturating_sub(1)];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += Rational::from(x * y);
+        }
+    }
+    out
+}
+
+fn qadd(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
+    (0..a.len().max(b.len()))
+        .map(|i| {
+            let mut s = Rational::new();
+            if let Some(x) = a.get(i) {
+                s += x;
+            }
+            if let Some(y) = b.get(i) {
+                s += y;
+            }
+            s
+        })
+        .collect()
+}
+
+fn qscale(a: &[Rational], k: &Rational) -> Vec<Rational> {
+    a.iter().map(|x| Rational::from(x * k)).collect()
+}
+
+impl N12Poly {
+    /// The polynomial of a reduced model with parameters `p`.
+    pub fn new(red: &Reduced, p: &crate::model::Params) -> Self {
+        use super::X1;
+        let r = p.r();
+        let gr = Rational::from(&p.g / &r);
+        let k = red.q.to_vec();
+        let dk = vec![red.q[1].clone(), Rational::from(&red.q[2] * 2u32)];
+        let lin = vec![red.alpha[X1].clone(), red.beta[X1].clone()];
+        let one_m_c2 = vec![Rational::from(1), Rational::new(), Rational::from(-1)];
+        let c = vec![Rational::new(), Rational::from(1)];
+        // R = (1 − c²)(½ lin K' − β K) − r K
+        let inner = qadd(
+            &qscale(&qmul(&lin, &dk), &Rational::from((1, 2))),
+            &qscale(&k, &Rational::from(-&red.beta[X1])),
+        );
+        let rr = qadd(&qmul(&one_m_c2, &inner), &qscale(&k, &Rational::from(-&r)));
+        // P0 = g c K² + (1 − c²) lin (g/r) K − 2 (g/r) c R
+        let gck2 = qscale(&qmul(&c, &qmul(&k, &k)), &p.g);
+        let lin_k = qscale(&qmul(&one_m_c2, &qmul(&lin, &k)), &gr);
+        let h_part = qscale(&qmul(&c, &rr), &Rational::from(&gr * -2i32));
+        let base = qadd(&qadd(&gck2, &lin_k), &h_part);
+        N12Poly { base, per_h: rr }
+    }
+
+    /// A_H = K(θ0)θ̇0² + 2(g/r) cos θ0 at `d`'s precision.
+    pub fn a_h(d: &Dyn) -> Float {
+        let p = d.prec;
+        Float::with_val(p, &d.gr * &d.c0) * 2u32 + &d.h0
+    }
+
+    /// The coefficients P0 + A_H·P1 at `prec` bits.
+    pub fn at(&self, a_h: &Float, prec: u32) -> Vec<Float> {
+        (0..self.base.len().max(self.per_h.len()))
+            .map(|i| {
+                let mut v = Float::new(prec);
+                if let Some(x) = self.per_h.get(i) {
+                    v.assign(x);
+                    v *= a_h;
+                }
+                if let Some(x) = self.base.get(i) {
+                    v += x;
+                }
+                v
             })
             .collect()
     }

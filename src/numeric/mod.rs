@@ -1,12 +1,17 @@
-//! Numerical building blocks on `rug::Float`: tanh-sinh quadrature, bracketed
+//! Numerical building blocks on `rug::Float`: tanh-sinh and Gauss–Legendre
+//! quadrature, bracketed
 //! roots, and the precision ladder that turns two runs into verified digits.
 //!
 //! No Rust crate integrates or root-solves on MPFR numbers; these are ours and
 //! are tested against closed forms in their own unit tests.
 
 pub mod decimal;
+pub mod fixed;
+pub mod gauss;
+pub mod poly;
 pub mod quad;
 pub mod root;
+pub mod taylor;
 pub mod verify;
 
 use rug::Float;

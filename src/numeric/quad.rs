@@ -17,10 +17,13 @@ use rug::float::Constant;
 use rug::{Assign, Float};
 
 /// Nodes of one level: for t = k h (k odd at levels ≥ 1, all k ≥ 0 at level 0),
-/// q = (1 − tanh(π/2 sinh t))/2 and the weight w = (π/2) cosh t / cosh²(π/2 sinh t).
+/// q = (1 − tanh(π/2 sinh t))/2, its complement 1 − q (rounded once, as the
+/// right node's distance is formed from it) and the weight
+/// w = (π/2) cosh t / cosh²(π/2 sinh t).
 #[derive(Debug, Clone)]
 struct Level {
     q: Vec<Float>,
+    one_minus_q: Vec<Float>,
     w: Vec<Float>,
 }
 
@@ -50,6 +53,19 @@ pub struct QuadResult {
 /// The most levels tried before giving up (h = 2^-16).
 pub const MAX_LEVEL: usize = 16;
 
+/// How the error of the last level is estimated from the level sums S_L.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stop {
+    /// Geometric extrapolation of the last two differences, ×4:
+    /// |S_L − S_{L−1}|²/|S_{L−1} − S_{L−2}|·4 (safe for any linearly
+    /// converging sequence; usually one level more than needed).
+    Geometric,
+    /// The double-exponential rule's quadratic convergence (E_L ≈ E_{L−1}²),
+    /// as Bailey and mpmath estimate it: with d1 = log2|S_L − S_{L−1}|/|S| and
+    /// d2 = log2|S_L − S_{L−2}|/|S|, the error is 2^max(d1²/d2, 2 d1) ×16.
+    Quadratic,
+}
+
 impl TanhSinh {
     /// A rule for working precision `prec` bits. The abscissa range t ≤ t_max is
     /// chosen so that q(t_max) < 2^-(2 prec + 20): the neglected tail of an
@@ -77,6 +93,7 @@ impl TanhSinh {
             let half_pi = Float::with_val(p, Constant::Pi) / 2u32;
             let (start, step) = if l == 0 { (0u32, 1u32) } else { (1, 2) };
             let mut q = Vec::new();
+            let mut one_minus_q = Vec::new();
             let mut w = Vec::new();
             let mut k = start;
             loop {
@@ -92,11 +109,12 @@ impl TanhSinh {
                 let qk = Float::with_val(self.prec, &e / &one_plus);
                 // 1/cosh²u = 4e/(1+e)²
                 let wk = Float::with_val(p, &half_pi * ch) * 4u32 * &e / one_plus.square();
+                one_minus_q.push(Float::with_val(self.prec, 1u32 - &qk));
                 q.push(qk);
                 w.push(Float::with_val(self.prec, wk));
                 k += step;
             }
-            self.levels.push(Level { q, w });
+            self.levels.push(Level { q, one_minus_q, w });
         }
     }
 
@@ -106,7 +124,24 @@ impl TanhSinh {
     ///
     /// Preconditions: Δ > 0; f finite on (0, Δ) and integrable; f may be
     /// singular (integrably) at δ = 0, analytic elsewhere on [0, Δ].
-    pub fn integrate<F>(&mut self, delta: &Float, tol_bits: u32, mut f: F) -> QuadResult
+    ///
+    /// The inner loop allocates nothing: nodes come from the cache, and the
+    /// distance, integrand value and term reuse three Floats.
+    pub fn integrate<F>(&mut self, delta: &Float, tol_bits: u32, f: F) -> QuadResult
+    where
+        F: FnMut(&Float, &mut Float),
+    {
+        self.integrate_with(delta, tol_bits, Stop::Geometric, f)
+    }
+
+    /// [`TanhSinh::integrate`] with a choice of error estimate ([`Stop`]).
+    pub fn integrate_with<F>(
+        &mut self,
+        delta: &Float,
+        tol_bits: u32,
+        stop: Stop,
+        mut f: F,
+    ) -> QuadResult
     where
         F: FnMut(&Float, &mut Float),
     {
@@ -116,19 +151,30 @@ impl TanhSinh {
         let mut x = Float::new(p);
         let mut fx = Float::new(p);
         let mut term = Float::new(p);
+        let mut bound = Float::new(p);
         let mut prev: Option<Float> = None;
+        let mut prev2: Option<Float> = None;
         let mut prev_diff: Option<Float> = None;
         let mut evals = 0u32;
         let tol = Float::with_val(p, 1u32) >> (tol_bits as i32);
         let floor = Float::with_val(p, 1u32) >> (p as i32);
-        let mut result = None;
-        for level in 0..=MAX_LEVEL {
+        // |term| < |sum|·cut, with |sum|·cut rounded as |sum·cut| (round to
+        // nearest is symmetric)
+        let small = |term: &Float, sum: &Float, cut: &Float, bound: &mut Float| {
+            if term.is_zero() {
+                return true;
+            }
+            bound.assign(sum * cut);
+            term.cmp_abs(bound) == Some(std::cmp::Ordering::Less)
+        };
+        let mut level = 0usize;
+        loop {
             self.ensure_level(level);
             let lv = &self.levels[level];
             // a term below cut·|sum| ends a side: the tail beyond it sums to
             // at most ~term/(h·slope) with slope ≥ 1, hence the factor h/16
             let cut = Float::with_val(p, &floor >> (level as i32));
-            for (k, (q, w)) in lv.q.iter().zip(&lv.w).enumerate() {
+            for (k, ((q, omq), w)) in lv.q.iter().zip(&lv.one_minus_q).zip(&lv.w).enumerate() {
                 if level == 0 && k == 0 {
                     x.assign(&half_delta);
                     f(&x, &mut fx);
@@ -142,25 +188,13 @@ impl TanhSinh {
                 f(&x, &mut fx);
                 evals += 1;
                 term.assign(&fx * w);
-                let left_small = term.is_zero() || {
-                    let mut a = term.clone();
-                    a.abs_mut();
-                    let mut s = sum.clone();
-                    s.abs_mut();
-                    a < s * &cut
-                };
+                let left_small = small(&term, &sum, &cut, &mut bound);
                 sum += &term;
-                x.assign(delta * Float::with_val(p, 1u32 - q));
+                x.assign(delta * omq);
                 f(&x, &mut fx);
                 evals += 1;
                 term.assign(&fx * w);
-                let right_small = term.is_zero() || {
-                    let mut a = term.clone();
-                    a.abs_mut();
-                    let mut s = sum.clone();
-                    s.abs_mut();
-                    a < s * &cut
-                };
+                let right_small = small(&term, &sum, &cut, &mut bound);
                 sum += &term;
                 // Beyond the peak the terms decay double-exponentially on both
                 // sides; once both are below the rounding floor the rest are too.
@@ -174,17 +208,32 @@ impl TanhSinh {
                 let diff = Float::with_val(p, &integral - pv).abs();
                 let scale = Float::with_val(p, integral.abs_ref());
                 // geometric extrapolation of the convergence; ×4 safety factor
-                let est = match &prev_diff {
-                    Some(pd) if !pd.is_zero() => {
-                        let ratio = Float::with_val(p, &diff / pd);
-                        let ratio = if ratio > 1u32 {
-                            Float::with_val(p, 1u32)
-                        } else {
-                            ratio
-                        };
-                        Float::with_val(p, &diff * ratio) * 4u32
+                let est = match (stop, &prev2) {
+                    (Stop::Quadratic, Some(p2)) => {
+                        let d2v = Float::with_val(p, &integral - p2);
+                        match (diff.get_exp(), d2v.get_exp(), integral.get_exp()) {
+                            (Some(e1), Some(e2), Some(es)) => {
+                                let d1 = (e1 - es) as i64;
+                                let d2 = (e2 - es) as i64;
+                                let q = if d2 < 0 { (d1 * d1) / d2 } else { d1 };
+                                let e = q.max(2 * d1).min(d1) + 4;
+                                Float::with_val(p, &scale) << e.clamp(-(1 << 30), 0) as i32
+                            }
+                            _ => Float::new(p),
+                        }
                     }
-                    _ => diff.clone(),
+                    _ => match &prev_diff {
+                        Some(pd) if !pd.is_zero() => {
+                            let ratio = Float::with_val(p, &diff / pd);
+                            let ratio = if ratio > 1u32 {
+                                Float::with_val(p, 1u32)
+                            } else {
+                                ratio
+                            };
+                            Float::with_val(p, &diff * ratio) * 4u32
+                        }
+                        _ => diff.clone(),
+                    },
                 };
                 // rounding noise of a sum of `evals` terms, each correctly rounded
                 let rounding = Float::with_val(p, &scale * &floor) * (evals.max(16) as f64).sqrt();
@@ -192,20 +241,30 @@ impl TanhSinh {
                 let est = if est < rounding { rounding } else { est };
                 let done = level >= 3 && (est <= Float::with_val(p, &scale * &tol) || at_floor);
                 if done || level == MAX_LEVEL {
-                    result = Some(QuadResult {
+                    return QuadResult {
                         value: integral,
                         err: est,
                         levels: level as u32,
                         evals,
                         converged: done,
-                    });
-                    break;
+                    };
                 }
                 prev_diff = Some(diff);
+            } else if level == MAX_LEVEL {
+                // only reachable with MAX_LEVEL = 0: no difference to judge
+                let err = Float::with_val(p, integral.abs_ref());
+                return QuadResult {
+                    value: integral,
+                    err,
+                    levels: 0,
+                    evals,
+                    converged: false,
+                };
             }
+            prev2 = prev.take();
             prev = Some(integral);
+            level += 1;
         }
-        result.expect("the level loop always returns")
     }
 }
 

@@ -116,6 +116,70 @@ pub fn agreeing_digits(v: &Float, b: &Float, max: u32) -> u32 {
     best
 }
 
+/// The text [`judge`] would print, found with one decimal conversion
+/// instead of two, or `None` to let the two-conversion path decide.
+///
+/// v is rendered with d + 3 digits, D = A·T (A the first d digits, T the last
+/// three, 0 ≤ T < 1000), |v − 0.D·10^e| ≤ ½·10^(e−d−3). v rounds to A (T <
+/// 500) or A + 1, and sits |T − 500| units of 10^(e−d−3) from the nearest
+/// boundary of that rounding cell (the midpoints A ± ½). If the bound is below
+/// that distance less one unit, v − bound and v + bound both lie inside the
+/// cell and round to the same d digits — the ones returned. Declined (the
+/// exact path decides): a cell at a power of ten (A = 10…0, where the cell
+/// below is finer) or a carry into d + 1 digits.
+fn fast_text(v: &Float, bound: &Float, digits: u32) -> Option<String> {
+    let d = digits as usize;
+    let (neg, dd, e) = round_sig(v, digits + 3)?;
+    let bytes = dd.as_bytes();
+    if bytes.len() != d + 3 {
+        return None;
+    }
+    let t: i64 = dd[d..].parse().ok()?;
+    let margin = (t - 500).abs() - 1;
+    if margin <= 0 {
+        return None;
+    }
+    // bound·10^(d+3−e) < margin ?
+    let k = d as i64 + 3 - e;
+    use rug::float::Round;
+    use rug::ops::{DivAssignRound, MulAssignRound};
+    let mut scaled = Float::with_val_round(64, bound, Round::Up).0;
+    let kk = u32::try_from(k.unsigned_abs()).ok()?;
+    if k >= 0 {
+        let pw = Float::with_val_round(64, Float::u_pow_u(10, kk), Round::Up).0;
+        scaled.mul_assign_round(&pw, Round::Up);
+    } else {
+        let pw = Float::with_val_round(64, Float::u_pow_u(10, kk), Round::Down).0;
+        scaled.div_assign_round(&pw, Round::Up);
+    }
+    scaled <<= 1; // a safety factor of 2
+    if scaled >= margin {
+        return None;
+    }
+    let mut a: Vec<u8> = bytes[..d].to_vec();
+    if a[0] == b'1' && a[1..].iter().all(|&c| c == b'0') {
+        return None;
+    }
+    if t >= 500 {
+        // A + 1
+        let mut i = d;
+        loop {
+            if i == 0 {
+                return None; // 99…9 + 1 carries into d + 1 digits
+            }
+            i -= 1;
+            if a[i] == b'9' {
+                a[i] = b'0';
+            } else {
+                a[i] += 1;
+                break;
+            }
+        }
+    }
+    let digits_str = String::from_utf8(a).ok()?;
+    Some(render(neg, &digits_str, e))
+}
+
 fn judge(
     name: &str,
     digits: u32,
@@ -159,6 +223,16 @@ fn judge(
         }
         return Err(0);
     }
+    if let Some(text) = fast_text(&b.value, &bound, digits) {
+        return Ok(Verified {
+            name: name.to_string(),
+            value: b.value.clone(),
+            text,
+            digits,
+            err_bound: bound,
+            precs,
+        });
+    }
     let lo = Float::with_val(p, &b.value - &bound);
     let hi = Float::with_val(p, &b.value + &bound);
     match (round_sig(&lo, digits), round_sig(&hi, digits)) {
@@ -188,11 +262,30 @@ pub fn ladder<F>(digits: u32, names: &[&str], mut f: F) -> Result<Vec<Verified>>
 where
     F: FnMut(u32) -> Result<Vec<Estimate>>,
 {
+    ladder_runs(digits, names, |p, _| f(p))
+}
+
+/// Which run of a rung of the ladder a computation is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Run {
+    /// The lower precision p1: the value compared against.
+    Low,
+    /// The higher precision p2: the value kept, whose error estimate counts.
+    High,
+}
+
+/// [`ladder`] with the run's role passed along, so that the two runs may use
+/// two different methods (e.g. tanh-sinh at p1, Gauss–Legendre at p2): the
+/// bound |v(p1) − v(p2)| + err(p2) then also compares the methods.
+pub fn ladder_runs<F>(digits: u32, names: &[&str], mut f: F) -> Result<Vec<Verified>>
+where
+    F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
+{
     let mut last_fail = None;
     for attempt in 0..MAX_ATTEMPTS {
         let precs = precisions(digits, attempt);
-        let a = f(precs.0)?;
-        let b = f(precs.1)?;
+        let a = f(precs.0, Run::Low)?;
+        let b = f(precs.1, Run::High)?;
         debug_assert_eq!(a.len(), names.len());
         debug_assert_eq!(b.len(), names.len());
         let mut out = Vec::with_capacity(names.len());
@@ -220,6 +313,84 @@ where
         }
     }
     let (name, reached, precs, value, diff, err) = last_fail.expect("at least one attempt failed");
+    Err(Error::NotConverged {
+        quantity: name,
+        requested: digits,
+        reached: format!("{reached} digits verified at {}/{} bits", precs.0, precs.1),
+        detail: format!(
+            "value ≈ {value}, difference between precisions {diff}, method error estimate {err}"
+        ),
+    })
+}
+
+/// The precision ladder for a table: `f(prec, run)` returns one row of
+/// estimates per item (one per name), all computed in one go (e.g. one ODE
+/// run serving every output time). Each row is judged on its own, exactly as
+/// [`ladder`] would: a row keeps the first rung at which all its quantities
+/// verify, and only when some row fails does the whole table climb.
+///
+/// Errors: whatever `f` returns; [`Error::NotConverged`] naming the first
+/// quantity (and its row) that could not be verified.
+pub fn ladder_table<F>(
+    digits: u32,
+    names: &[&str],
+    rows: usize,
+    mut f: F,
+) -> Result<Vec<Vec<Verified>>>
+where
+    F: FnMut(u32, Run) -> Result<Vec<Vec<Estimate>>>,
+{
+    let mut done: Vec<Option<Vec<Verified>>> = vec![None; rows];
+    let mut last_fail = None;
+    for attempt in 0..MAX_ATTEMPTS {
+        let precs = precisions(digits, attempt);
+        let a = f(precs.0, Run::Low)?;
+        let b = f(precs.1, Run::High)?;
+        let mut failed = None;
+        for (r, slot) in done.iter_mut().enumerate() {
+            if slot.is_some() {
+                continue;
+            }
+            let mut out = Vec::with_capacity(names.len());
+            let mut row_failed = None;
+            for (i, name) in names.iter().enumerate() {
+                match judge(name, digits, precs, &a[r][i], &b[r][i]) {
+                    Ok(v) => out.push(v),
+                    Err(reached) => {
+                        let diff = Float::with_val(precs.1, &a[r][i].value - &b[r][i].value).abs();
+                        row_failed = Some((
+                            format!("{name} (row {r})"),
+                            reached,
+                            precs,
+                            to_sig(&b[r][i].value, 12),
+                            short(&diff),
+                            short(&b[r][i].err),
+                        ));
+                        break;
+                    }
+                }
+            }
+            match row_failed {
+                None => *slot = Some(out),
+                Some(fl) => {
+                    if failed.is_none() {
+                        failed = Some(fl);
+                    }
+                }
+            }
+        }
+        match failed {
+            None => return Ok(done.into_iter().flatten().collect()),
+            Some(fl) => last_fail = Some(fl),
+        }
+    }
+    let (name, reached, precs, value, diff, err) =
+        last_fail.ok_or_else(|| Error::NotConverged {
+            quantity: "table".into(),
+            requested: digits,
+            reached: "no rung ran".into(),
+            detail: String::new(),
+        })?;
     Err(Error::NotConverged {
         quantity: name,
         requested: digits,
@@ -287,6 +458,43 @@ mod tests {
                 );
             }
             other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn the_fast_judgement_agrees_with_the_two_conversions() {
+        // values near rounding boundaries, powers of ten, carries, signs
+        let p = 200;
+        let mut cases = vec![];
+        for num in [
+            "1.23449999999",
+            "1.2345",
+            "9.9999999",
+            "0.099999999",
+            "1.000000001",
+            "-7.77777777",
+            "123456.5",
+            "3.14159265358979",
+            "0.999999999999",
+            "2.5e-30",
+        ] {
+            cases.push(Float::with_val(p, Float::parse(num).unwrap()));
+        }
+        for v in &cases {
+            for digits in [1u32, 3, 5, 8, 12] {
+                for bexp in [5, 12, 20, 40, 60, 100] {
+                    let bound = Float::with_val(p, v.abs_ref()) >> bexp;
+                    let lo = Float::with_val(p, v - &bound);
+                    let hi = Float::with_val(p, v + &bound);
+                    let slow = match (round_sig(&lo, digits), round_sig(&hi, digits)) {
+                        (Some(a), Some(b)) if a == b => Some(render(a.0, &a.1, a.2)),
+                        _ => None,
+                    };
+                    if let Some(fast) = fast_text(v, &bound, digits) {
+                        assert_eq!(Some(fast), slow, "v {v} digits {digits} bound 2^-{bexp}");
+                    }
+                }
+            }
         }
     }
 

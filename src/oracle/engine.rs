@@ -2,23 +2,56 @@
 //! rule with its node cache.
 
 use crate::error::Result;
-use crate::mechanics::dynamics::Dyn;
+use crate::mechanics::dynamics::{Dyn, HalfAngleTime, Scratch};
 use crate::mechanics::{Reduced, PHI1};
 use crate::model::Model;
-use crate::numeric::quad::TanhSinh;
+use crate::numeric::gauss::{self, GaussLegendre, HalfPiRule};
+use crate::numeric::quad::{QuadResult, Stop, TanhSinh};
 use crate::numeric::root;
 use rug::Float;
+use std::collections::HashMap;
 
 pub(super) struct Engine {
     pub dynm: Dyn,
     pub ts: TanhSinh,
+    scratch: Scratch,
+    half: HalfAngleTime,
+    /// θ = 2π/3 − θ0: the half-angle form is used up to this δ.
+    half_limit: Float,
+    /// Gauss–Legendre rules on [0, π/2] built so far, by number of points.
+    gl: HashMap<usize, HalfPiRule>,
+    /// Multiplications spent on tanh-sinh integrals that a Gauss–Legendre
+    /// rule could have done (decides when building a rule pays off).
+    ts_work: f64,
+}
+
+/// The largest Gauss–Legendre rule considered, per bit of precision.
+const GL_MAX_POINTS_PER_BIT: usize = 2;
+
+/// Which rule a quadrature used.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rule {
+    /// Tanh-sinh on the θ form.
+    TanhSinhTheta,
+    /// Tanh-sinh on the half-angle form.
+    TanhSinh,
+    /// Gauss–Legendre on the half-angle form.
+    GaussLegendre,
 }
 
 impl Engine {
     pub fn new(model: &Model, red: &Reduced, prec: u32) -> Result<Self> {
+        let dynm = Dyn::new(model, red, prec)?;
+        let half = HalfAngleTime::new(&dynm);
+        let half_limit = Float::with_val(prec, rug::float::Constant::Pi) * 2u32 / 3u32 - &dynm.th0;
         Ok(Engine {
-            dynm: Dyn::new(model, red, prec)?,
+            dynm,
             ts: TanhSinh::new(prec),
+            scratch: Scratch::new(prec),
+            half,
+            half_limit,
+            gl: HashMap::new(),
+            ts_work: 0.0,
         })
     }
 
@@ -34,9 +67,95 @@ impl Engine {
         }
         let d = Float::with_val(p, delta);
         let dynm = &self.dynm;
+        let w = &mut self.scratch;
+        let r = self.ts.integrate(&d, p.saturating_sub(10), |x, out| {
+            dynm.inv_thetadot_with(x, out, w)
+        });
+        Self::quad_answer(p, r)
+    }
+
+    /// t(δ) as [`Engine::time`], by the cheaper routes where they apply (θ ≤
+    /// 2π/3): the algebraic half-angle integrand ([`HalfAngleTime`]), by
+    /// tanh-sinh — or, when `high` (the precision ladder's second run) and a
+    /// Gauss–Legendre rule of the size the integrand's singularities call for
+    /// is built or pays for itself by now, by Gauss–Legendre with its
+    /// a-priori error estimate ([`gauss::error_log2`]). Beyond 2π/3 the θ form.
+    /// `may_build`: whether this call may build a new rule.
+    pub fn time_fast(
+        &mut self,
+        delta: &Float,
+        high: bool,
+        may_build: bool,
+    ) -> (Float, Float, Rule) {
+        let p = self.prec();
+        if delta.is_zero() {
+            return (Float::new(p), Float::new(p), Rule::TanhSinh);
+        }
+        if *delta > self.half_limit {
+            let (v, e) = self.time(delta);
+            return (v, e, Rule::TanhSinhTheta);
+        }
+        let sigma = self.half.sigma_of(delta);
+        if high {
+            let rho = gauss::rho_sin2(&self.half.singular_sin2(&sigma));
+            let max_n = GL_MAX_POINTS_PER_BIT * p as usize;
+            if let Some(n) = gauss::points_for(p + 8, rho, max_n) {
+                let ready = self.gl.contains_key(&n)
+                    || (may_build && self.ts_work >= GaussLegendre::cost(n) * 0.5);
+                if ready {
+                    let (v, e) = self.time_gl(&sigma, n, rho);
+                    return (v, e, Rule::GaussLegendre);
+                }
+            }
+        }
+        let stop = if high {
+            Stop::Geometric
+        } else {
+            Stop::Quadratic
+        };
+        let half = &mut self.half;
         let r = self
             .ts
-            .integrate(&d, p.saturating_sub(10), |x, out| dynm.inv_thetadot(x, out));
+            .integrate_with(&sigma, p.saturating_sub(10), stop, |x, out| {
+                half.eval(x, out)
+            });
+        // about 14 multiplications per evaluation; a rule of ~evals/5 points
+        // would have done it
+        self.ts_work += r.evals as f64 * 14.0;
+        let (mut v, mut e) = Self::quad_answer(p, r);
+        v *= &self.half.factor;
+        e *= &self.half.factor;
+        // the roundings of σ(δ), of the factor and of the product
+        let ulps = Float::with_val(p, v.abs_ref()) >> (p as i32 - 4);
+        e += ulps;
+        (v, e, Rule::TanhSinh)
+    }
+
+    /// Gauss–Legendre with `n` points on the half-angle form in u.
+    fn time_gl(&mut self, sigma: &Float, n: usize, rho: f64) -> (Float, Float) {
+        let p = self.prec();
+        let rule = self
+            .gl
+            .entry(n)
+            .or_insert_with(|| GaussLegendre::new(n, p).half_pi(p));
+        let mut sum = Float::new(p);
+        let mut fx = Float::new(p);
+        for k in 0..rule.n {
+            self.half.eval_u(sigma, &rule.sin[k], &rule.cos[k], &mut fx);
+            fx *= &rule.w[k];
+            sum += &fx;
+        }
+        let v = Float::with_val(p, sum * self.half.u_factor(sigma));
+        // truncation (the model) and rounding (n terms, ~20 roundings each)
+        let trunc = gauss::error_log2(n, rho);
+        let t_exp = trunc.ceil().clamp(-(p as f64) * 4.0, 0.0) as i32;
+        let mut e = Float::with_val(p, v.abs_ref()) << t_exp;
+        let rounding = (Float::with_val(p, v.abs_ref()) * (20.0 * (n as f64).sqrt())) >> (p as i32);
+        e += rounding;
+        (v, e)
+    }
+
+    fn quad_answer(p: u32, r: QuadResult) -> (Float, Float) {
         let err = if r.converged {
             r.err
         } else {

@@ -14,7 +14,8 @@ use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::mechanics::Reduced;
 use crate::model::{Contact, Floor, Model};
-use crate::numeric::verify::{ladder, Estimate, Verified};
+use crate::numeric::taylor::{self, Conservative};
+use crate::numeric::verify::{ladder, ladder_runs, ladder_table, Estimate, Run, Verified};
 use engine::Engine;
 use rug::Float;
 use std::collections::HashMap;
@@ -75,6 +76,21 @@ pub struct Oracle {
     digits: u32,
     engines: HashMap<u32, Engine>,
     mu: Option<Exact>,
+    /// t_s at each precision asked for (for the trajectory's time check).
+    t_s_at: HashMap<u32, Float>,
+    /// The first sign change of N12 on the 96-bit scan (computed once).
+    scan_s: Option<Option<(Float, Float)>>,
+    /// δs = θs − θ0 refined at each precision asked for.
+    delta_s_at: HashMap<u32, (Float, Float)>,
+    /// N12·K²/m2 as an exact polynomial in cos θ (built on first use).
+    n12_poly: Option<crate::mechanics::dynamics::N12Poly>,
+}
+
+/// The one value of a one-name ladder.
+fn single(v: Vec<Verified>) -> Result<Verified> {
+    v.into_iter()
+        .next()
+        .ok_or_else(|| Error::not_physical("internal: the ladder returned no value"))
 }
 
 /// Precision of the scans that locate brackets (refined afterwards).
@@ -110,6 +126,10 @@ impl Oracle {
             digits,
             engines: HashMap::new(),
             mu: None,
+            scan_s: None,
+            t_s_at: HashMap::new(),
+            delta_s_at: HashMap::new(),
+            n12_poly: None,
         };
         let e = o.engine(SCAN_PREC)?;
         let z = Float::new(SCAN_PREC);
@@ -167,20 +187,36 @@ impl Oracle {
         ))
     }
 
+    /// The 96-bit scan's bracket of the first sign change of N12 (cached).
+    fn scan_bracket(&mut self) -> Result<(Float, Float)> {
+        if self.scan_s.is_none() {
+            let th0 = self.work.start().theta0.to_float(SCAN_PREC);
+            let hi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi) - th0;
+            let scan = self.engine(SCAN_PREC)?;
+            let zero = Float::new(SCAN_PREC);
+            let bracket =
+                crate::numeric::root::first_sign_change(&zero, &hi, SCAN_STEPS, |d| scan.n12(d));
+            self.scan_s = Some(bracket);
+        }
+        match &self.scan_s {
+            Some(Some(b)) => Ok(b.clone()),
+            _ => Err(Error::not_physical(
+                "N12 stays positive up to theta = pi: the cylinders never separate",
+            )),
+        }
+    }
+
     /// δs = θs − θ0 at `prec`, as (value, error), with the bracket scanned at
-    /// low precision first.
+    /// low precision first. Both are deterministic and cached.
     fn delta_s(&mut self, prec: u32) -> Result<(Float, Float)> {
-        let th0 = self.work.start().theta0.to_float(SCAN_PREC);
-        let hi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi) - th0;
-        let scan = self.engine(SCAN_PREC)?;
-        let zero = Float::new(SCAN_PREC);
-        let bracket =
-            crate::numeric::root::first_sign_change(&zero, &hi, SCAN_STEPS, |d| scan.n12(d));
-        let (lo, hi) = bracket.ok_or_else(|| {
-            Error::not_physical("N12 stays positive up to theta = pi: the cylinders never separate")
-        })?;
+        if let Some(v) = self.delta_s_at.get(&prec) {
+            return Ok(v.clone());
+        }
+        let (lo, hi) = self.scan_bracket()?;
         let e = self.engine(prec)?;
-        e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))
+        let v = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
+        self.delta_s_at.insert(prec, v.clone());
+        Ok(v)
     }
 
     /// θ in the working frame from a user angle.
@@ -253,6 +289,58 @@ impl Oracle {
             extra,
             notes,
         })
+    }
+
+    /// θs alone: the first angle past θ0 where N12 = 0, with verified digits
+    /// (the same quantity as [`Separation::theta_s`], without the other
+    /// findings of [`Oracle::separation`]).
+    ///
+    /// Method: N12·K²/m2 is a polynomial of degree ≤ 5 in c = cos θ
+    /// ([`crate::mechanics::dynamics::Dyn::n12_polynomial`]); its sign changes
+    /// on [−1, cos θ0] are isolated at 64 bits by the monotone pieces between
+    /// the roots of its derivatives (so, unlike a scan, no pair of close roots
+    /// is missed), the largest one (the first in θ) is refined by Newton steps
+    /// at doubling precision to a bracket [c − ε, c + ε] across which the
+    /// polynomial changes sign, and θs = acos c with error ε/sin θs. Each call
+    /// computes from scratch (nothing is memoised between calls).
+    ///
+    /// Errors: no sign change before θ = π.
+    pub fn separation_angle(&mut self) -> Result<Verified> {
+        use crate::mechanics::dynamics::N12Poly;
+        use crate::numeric::poly;
+        const ISO: u32 = 64;
+        if self.n12_poly.is_none() {
+            self.n12_poly = Some(N12Poly::new(&self.red, self.work.params()));
+        }
+        let coef_at = |o: &mut Oracle, p: u32| -> Result<Vec<Float>> {
+            let a_h = N12Poly::a_h(&o.engine(p)?.dynm);
+            Ok(match &o.n12_poly {
+                Some(n) => n.at(&a_h, p),
+                None => Vec::new(),
+            })
+        };
+        let c0 = self.engine(ISO)?.dynm.c0.clone();
+        let coef = coef_at(self, ISO)?;
+        let roots = poly::sign_change_roots(&coef, &Float::with_val(ISO, -1), &c0);
+        let start = roots.into_iter().rev().find(|c| *c < c0).ok_or_else(|| {
+            Error::not_physical("N12 stays positive up to theta = pi: the cylinders never separate")
+        })?;
+        let v = ladder(self.digits, &["theta_s"], |p| {
+            let coef = coef_at(self, p + 16)?;
+            let (c, eps) = poly::refine_root("theta_s", &coef, &start, p)?;
+            let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
+            // dθ = −dc / sin θ, sin θ = √(1 − c²) (> 0 on (0, π)); ×(1 + 2^-16)
+            let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
+            let mut err = Float::with_val(p, &eps / &sin);
+            err += Float::with_val(p, &err >> 16);
+            err += th_err;
+            Ok(vec![Estimate::new(
+                self.odd(th),
+                err,
+                Float::with_val(p, 1u32),
+            )])
+        })?;
+        single(v)
     }
 
     /// Sign-change angles, N1 > 0, friction needed, slip angles for μ.
@@ -443,7 +531,16 @@ impl Oracle {
         let w = self.to_work(theta);
         let th0 = self.work.start().theta0.clone();
         let d = Float::with_val(p, w.to_float(p) - th0.to_float(p));
-        let (ds, _) = self.delta_s(p.min(SCAN_PREC.max(p)))?;
+        // Inside the motion by a clear margin below the scan's bracket of δs:
+        // no need to refine δs at this precision.
+        let (lo, _) = self.scan_bracket()?;
+        if !d.is_sign_negative() || d.is_zero() {
+            let margin = Float::with_val(p, lo.abs_ref()) >> (p.min(SCAN_PREC) as i32 - 4);
+            if Float::with_val(p.max(SCAN_PREC), &d + &margin) < lo {
+                return Ok(d);
+            }
+        }
+        let (ds, _) = self.delta_s(p)?;
         let th_s = Float::with_val(p, th0.to_float(p) + &ds);
         let range = format!(
             "must lie in the motion, between theta0 = {} and the separation angle theta_s = {}",
@@ -474,10 +571,10 @@ impl Oracle {
         if self.work.starts_at_equilibrium() {
             return Err(self.infinite_time_error("the time to any angle"));
         }
-        let v = ladder(self.digits, &["t"], |p| {
+        let v = ladder_runs(self.digits, &["t"], |p, run| {
             let d = self.delta_of("to", theta, p)?;
             let ts = self.scale_time(p);
-            let (t, err) = self.engine(p)?.time(&d);
+            let (t, err, _) = self.engine(p)?.time_fast(&d, run == Run::High, true);
             Ok(vec![Estimate::new(t, err, ts)])
         })?;
         Ok(v.into_iter().next().expect("one"))
@@ -538,9 +635,64 @@ impl Oracle {
     /// The trajectory at the given times: one row per time with the columns of
     /// [`TRAJECTORY_COLUMNS`] (t first, as given).
     ///
+    /// Method: one Taylor-series run of θ̈ = F(θ) per working precision
+    /// ([`crate::numeric::taylor`]) serves every time (dense output); each row
+    /// then follows from δ = θ − θ0 as before. Verified by the precision
+    /// ladder row by row ([`crate::numeric::verify::ladder_table`]), with the
+    /// integrator's error estimate, and checked at the last time against the
+    /// energy quadrature: t(θ ∓ ε) must bracket it.
+    ///
     /// Errors: a start from rest at the top; a negative time; a time after
     /// separation.
     pub fn trajectory(&mut self, times: &[Exact]) -> Result<Vec<Vec<Verified>>> {
+        self.check_times(times)?;
+        let floor = self.work.floor();
+        let contact = self.work.contact();
+        let mut rows = ladder_table(self.digits, &TRAJECTORY_COLUMNS, times.len(), |p, run| {
+            let deltas = self.deltas_at(times, p, run, true)?;
+            let mut out = Vec::with_capacity(times.len());
+            for (t, (d, derr)) in times.iter().zip(deltas) {
+                out.push(self.row_estimates(t, &d, &derr, p, floor, contact)?);
+            }
+            Ok(out)
+        })?;
+        for (row, t) in rows.iter_mut().zip(times) {
+            // the time is an input: print it exactly when it is a terminating decimal
+            let exact = crate::exact::rational_text(&t.coef);
+            if !t.times_pi && !exact.contains('/') {
+                row[0].text = exact;
+            }
+        }
+        Ok(rows)
+    }
+
+    /// θ alone at the given times (the `theta` column of
+    /// [`Oracle::trajectory`], with the same digits), without the other
+    /// columns: one Taylor run per working precision and one Horner
+    /// evaluation per time.
+    ///
+    /// Errors: as [`Oracle::trajectory`].
+    pub fn theta_at_times(&mut self, times: &[Exact]) -> Result<Vec<Verified>> {
+        self.check_times(times)?;
+        let rows = ladder_table(self.digits, &["theta"], times.len(), |p, run| {
+            let deltas = self.deltas_at(times, p, run, false)?;
+            let th0 = self.work.start().theta0.to_float(p);
+            Ok(deltas
+                .into_iter()
+                .map(|(d, derr)| {
+                    let th = Float::with_val(p, &th0 + &d);
+                    let err = derr + (Float::with_val(p, th.abs_ref()) >> (p as i32 - 4));
+                    vec![Estimate::new(self.odd(th), err, Float::with_val(p, 1u32))]
+                })
+                .collect())
+        })?;
+        Ok(rows
+            .into_iter()
+            .filter_map(|r| r.into_iter().next())
+            .collect())
+    }
+
+    fn check_times(&self, times: &[Exact]) -> Result<()> {
         if self.work.starts_at_equilibrium() {
             return Err(self.infinite_time_error("every time along the motion"));
         }
@@ -553,31 +705,66 @@ impl Oracle {
                 ));
             }
         }
-        let mut rows = Vec::with_capacity(times.len());
-        for t in times {
-            rows.push(self.row_at(t)?);
-        }
-        Ok(rows)
+        Ok(())
     }
 
-    fn row_at(&mut self, t: &Exact) -> Result<Vec<Verified>> {
-        let mut row = self.row_values(t)?;
-        // the time is an input: print it exactly when it is a terminating decimal
-        let exact = crate::exact::rational_text(&t.coef);
-        if !t.times_pi && !exact.contains('/') {
-            row[0].text = exact;
+    /// t_s at precision `p` (cached: a fact of the model).
+    fn t_s_at(&mut self, p: u32) -> Result<Float> {
+        if let Some(t) = self.t_s_at.get(&p) {
+            return Ok(t.clone());
         }
-        Ok(row)
+        let (ds, _) = self.delta_s(p)?;
+        let (t_s, _, _) = self.engine(p)?.time_fast(&ds, false, false);
+        self.t_s_at.insert(p, t_s.clone());
+        Ok(t_s)
     }
 
-    fn row_values(&mut self, t: &Exact) -> Result<Vec<Verified>> {
-        let floor = self.work.floor();
-        let contact = self.work.contact();
-        ladder(self.digits, &TRAJECTORY_COLUMNS, |p| {
-            let tf = t.to_float(p);
-            let (ds, _) = self.delta_s(p)?;
-            let (t_s, _) = self.engine(p)?.time(&ds);
-            if tf > t_s {
+    /// The right-hand side θ̈ = sin θ·P(c)/K(c)² of the model at `p` bits:
+    /// with A_H = K(θ0)θ̇0² + 2(g/r) cos θ0, P = (g/r) q0 + q1 A_H/2 +
+    /// q2 A_H c − (g/r) q2 c² (θ̈ = sin θ (g/r + ½K'θ̇²)/K with θ̇² = H/K).
+    fn taylor_rhs(&mut self, p: u32) -> Result<Conservative> {
+        let d = &self.engine(p)?.dynm;
+        let a_h = crate::mechanics::dynamics::N12Poly::a_h(d);
+        let e0 = Float::with_val(p, &d.gr * &d.q[0]) + Float::with_val(p, &d.q[1] * &a_h) / 2u32;
+        let e1 = Float::with_val(p, &d.q[2] * &a_h);
+        let e2 = -Float::with_val(p, &d.gr * &d.q[2]);
+        Ok(Conservative {
+            e: [e0, e1, e2],
+            k: d.q.clone(),
+        })
+    }
+
+    /// δ = θ − θ0 and its error bound ε at each time, at precision `p`: the
+    /// separation-time check (each time ≤ t_s), one Taylor run to the last
+    /// time, and the quadrature check there. ε is twice the estimate (at
+    /// least |δ|·2^-(p−9)), as the Newton inversion used to report it.
+    fn deltas_at(
+        &mut self,
+        times: &[Exact],
+        p: u32,
+        run: Run,
+        rel_delta: bool,
+    ) -> Result<Vec<(Float, Float)>> {
+        let t_s = self.t_s_at(p)?;
+        // fixed-point bits for the smallest positive time: δ ≈ θ̈0 t²/2 there
+        // (only the trajectory's rows need δ to full relative accuracy)
+        let t_min = times
+            .iter()
+            .filter(|t| !t.is_zero())
+            .map(|t| t.to_f64())
+            .fold(f64::INFINITY, f64::min);
+        let lt = t_min.max(1e-300).log2();
+        let extra = if rel_delta && lt < 0.0 {
+            ((-2.0 * lt).ceil() as u32 + 8).min(p)
+        } else {
+            0
+        };
+        let tq = taylor::time_prec_for(p, extra);
+        let tt_all: Vec<Float> = times.iter().map(|t| t.to_float(tq)).collect();
+        let mut tf: Vec<Float> = Vec::with_capacity(times.len());
+        for (t, tt) in times.iter().zip(&tt_all) {
+            let f = Float::with_val(p, tt);
+            if f > t_s {
                 return Err(Error::invalid(
                     "times",
                     t,
@@ -587,207 +774,150 @@ impl Oracle {
                     ),
                 ));
             }
-            let (d, derr) = self.delta_at_time(&tf, &ds, &t_s, p)?;
-            let sf = self.scale_force(p);
-            let ts = self.scale_time(p);
-            let pr = self.work.params().clone();
-            let rr = Float::with_val(p, &pr.r());
-            let r1 = Float::with_val(p, &pr.r1);
-            let e = self.engine(p)?;
-            let st = e.dynm.state(&d);
-            let d2 = Float::with_val(p, &d + &derr);
-            let st2 = e.dynm.state(&d2);
-            let vals = |st: &crate::mechanics::dynamics::State, e: &Engine| -> Vec<Float> {
-                let pos = e.dynm.positions(st, &tf);
-                let f = e.dynm.forces(st);
-                let x2 = Float::with_val(p, &rr * &st.s) + &pos[0];
-                let y2 = Float::with_val(p, &rr * &st.c) + &r1;
-                let phi2 = Float::with_val(p, &pos[2] + &st.theta);
-                vec![
-                    st.theta.clone(),
-                    st.thetadot.clone(),
-                    st.thetaddot.clone(),
-                    pos[1].clone(),
-                    phi2,
-                    pos[0].clone(),
-                    x2,
-                    y2,
-                    f.f1,
-                    f.n1,
-                    f.f21,
-                    f.n12,
-                ]
-            };
-            let a = vals(&st, e);
-            let b = vals(&st2, e);
-            let one = Float::with_val(p, 1u32);
-            let scales = [
-                one.clone(),
-                Float::with_val(p, &one / &ts),
-                Float::with_val(p, &one / &ts) / &ts,
-                one.clone(),
-                one.clone(),
-                rr.clone(),
-                rr.clone(),
-                rr.clone(),
-                sf.clone(),
-                sf.clone(),
-                sf.clone(),
-                sf.clone(),
-            ];
-            // odd columns change sign in the mirror
-            let odd = [
-                true, true, true, true, true, true, true, false, true, false, true, false,
-            ];
-            let mut out = vec![Estimate {
-                value: tf.clone(),
-                err: Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2),
-                exact_zero: t.is_zero(),
-                scale: ts.clone(),
-            }];
-            for i in 0..12 {
-                let prop = Float::with_val(p, &b[i] - &a[i]).abs();
-                let ulps = Float::with_val(p, a[i].abs_ref()) >> (p as i32 - 4);
-                let zero =
-                    (i == 8 && floor == Floor::Slip) || (i == 10 && contact == Contact::Slip);
-                let v = if odd[i] {
-                    self.odd(a[i].clone())
-                } else {
-                    a[i].clone()
-                };
-                out.push(Estimate {
-                    value: v,
-                    err: prop + ulps,
-                    exact_zero: zero,
-                    scale: scales[i].clone(),
-                });
-            }
-            Ok(out)
-        })
-    }
-
-    /// Solves t(δ) = t for δ at `prec`: a safeguarded Newton iteration at low
-    /// precision, then Newton steps at doubling precision, then a check that
-    /// t(δ∓ε) brackets t. Returns (δ, error estimate).
-    fn delta_at_time(
-        &mut self,
-        t: &Float,
-        ds: &Float,
-        t_s: &Float,
-        prec: u32,
-    ) -> Result<(Float, Float)> {
-        if t.is_zero() {
-            return Ok((Float::new(prec), Float::new(prec)));
+            tf.push(f);
         }
-        let rest = self.work.start().thetadot0 == 0;
-        // σ = sqrt(δ) for a start from rest (t is smooth in σ there), else σ = δ
-        let to_sigma = |d: &Float| {
-            if rest {
-                Float::with_val(d.prec(), d.sqrt_ref())
-            } else {
-                d.clone()
-            }
-        };
-        let to_delta = |s: &Float| {
-            if rest {
-                Float::with_val(s.prec(), s.square_ref())
-            } else {
-                s.clone()
-            }
-        };
-        // stage 1: 64-bit safeguarded Newton on [0, σs]
-        let lp = 64;
-        let e = self.engine(lp)?;
-        let tl = Float::with_val(lp, t);
-        let mut lo = Float::new(lp);
-        let mut hi = to_sigma(&Float::with_val(lp, ds));
-        let ts_l = Float::with_val(lp, t_s);
-        let mut s = Float::with_val(lp, &hi * Float::with_val(lp, &tl / &ts_l));
-        for _ in 0..60 {
-            let d = to_delta(&s);
-            let (tv, _) = e.time(&d);
-            let resid = Float::with_val(lp, &tv - &tl);
-            if resid.is_sign_negative() {
-                lo = s.clone();
-            } else {
-                hi = s.clone();
-            }
-            let mut dt = Float::new(lp);
-            e.dynm.inv_thetadot(&d, &mut dt);
-            if rest {
-                dt *= Float::with_val(lp, &s * 2u32);
-            }
-            let mut next = Float::with_val(lp, &s - Float::with_val(lp, &resid / &dt));
-            if next <= lo || next >= hi || !next.is_finite() {
-                next = Float::with_val(lp, &lo + &hi) / 2u32;
-            }
-            let change = Float::with_val(lp, &next - &s).abs();
-            s = next;
-            if change <= Float::with_val(lp, s.abs_ref()) >> 40 {
-                break;
-            }
+        let zero = Float::new(p);
+        let t_max = tf
+            .iter()
+            .fold(zero.clone(), |m, t| if *t > m { t.clone() } else { m });
+        if t_max.is_zero() {
+            return Ok(vec![(zero.clone(), zero); times.len()]);
         }
-        // stage 2: Newton at doubling precision (each step doubles the digits)
-        let mut precs = vec![prec];
-        while *precs.last().expect("nonempty") / 2 > 48 {
-            let q = precs.last().expect("nonempty") / 2;
-            precs.push(q);
-        }
-        precs.reverse();
-        precs.push(prec); // a final confirming step at full precision
-        let mut s = Float::with_val(prec, &s);
-        let mut last_corr = Float::with_val(prec, 1u32);
-        for &q in &precs {
-            let e = self.engine(q)?;
-            let sq = Float::with_val(q, &s);
-            let d = to_delta(&sq);
-            let (tv, _) = e.time(&d);
-            let resid = Float::with_val(q, &tv - t);
-            let mut dt = Float::new(q);
-            e.dynm.inv_thetadot(&d, &mut dt);
-            if rest {
-                dt *= Float::with_val(q, &sq * 2u32);
+        let rhs = self.taylor_rhs(p)?;
+        let th0 = self.work.start().theta0.to_float(p);
+        let td0 = Float::with_val(p, &self.work.start().thetadot0);
+        let t_end = tt_all
+            .iter()
+            .fold(Float::new(tq), |m, t| if *t > m { t.clone() } else { m });
+        let mut traj = taylor::integrate(&rhs, &th0, &td0, &t_end, p, extra)?;
+        let mut out = Vec::with_capacity(times.len());
+        let mut last = (Float::new(p), Float::new(p), Float::new(p));
+        for (t, tt) in times.iter().zip(tt_all) {
+            if t.is_zero() {
+                out.push((Float::new(p), Float::new(p)));
+                continue;
             }
-            let corr = Float::with_val(q, &resid / &dt);
-            s = Float::with_val(prec, &sq - &corr);
-            last_corr = Float::with_val(prec, corr.abs_ref());
+            let (d, e) = traj.delta_at(&tt).ok_or_else(|| Error::NotConverged {
+                quantity: "theta(t)".into(),
+                requested: self.digits,
+                reached: format!("no Taylor output at {p} bits"),
+                detail: format!("t = {}", crate::numeric::decimal::to_sig(&tt, 20)),
+            })?;
+            let floor = Float::with_val(p, d.abs_ref()) >> (p as i32 - 8);
+            let e = if e < floor { floor } else { e };
+            let eps = Float::with_val(p, &e * 2u32);
+            if tt >= last.0 {
+                last = (Float::with_val(tq, &tt), d.clone(), eps.clone());
+            }
+            out.push((d, eps));
         }
-        let d = to_delta(&s);
-        // error: the last correction (quadratic convergence makes it an
-        // overestimate) plus the quadrature's error mapped through θ̇
-        let e = self.engine(prec)?;
-        let (tv, terr) = e.time(&d);
-        let st = e.dynm.state(&d);
-        let _ = tv;
-        let mut err = Float::with_val(prec, &terr * &st.thetadot);
-        let dcorr = if rest {
-            Float::with_val(prec, &last_corr * &s) * 2u32
+        // certify at the last time: t(δ − ε) ≤ t ≤ t(δ + ε) by the energy quadrature
+        let (t_last, d, eps) = last;
+        let high = run == Run::High;
+        let e = self.engine(p)?;
+        let dlo = Float::with_val(p, &d - &eps);
+        let dhi = Float::with_val(p, &d + &eps);
+        let tlo = if dlo.is_sign_positive() {
+            e.time_fast(&dlo, high, false).0
         } else {
-            last_corr
+            Float::new(p)
         };
-        err += dcorr;
-        let floor = Float::with_val(prec, d.abs_ref()) >> (prec as i32 - 8);
-        if err < floor {
-            err = floor;
-        }
-        // certify: t(δ − ε) ≤ t ≤ t(δ + ε)
-        let eps = Float::with_val(prec, &err * 2u32);
-        let dlo = Float::with_val(prec, &d - &eps);
-        let dhi = Float::with_val(prec, &d + &eps);
-        let (tlo, _) = if dlo.is_sign_positive() {
-            e.time(&dlo)
-        } else {
-            (Float::new(prec), Float::new(prec))
-        };
-        let (thi, _) = e.time(&dhi);
-        if !(tlo <= *t && *t <= thi) {
+        let thi = e.time_fast(&dhi, high, false).0;
+        if !(tlo <= t_last && t_last <= thi) {
             return Err(Error::NotConverged {
                 quantity: "theta(t)".into(),
                 requested: self.digits,
-                reached: format!("no certified bracket at {prec} bits"),
-                detail: format!("t = {}", crate::numeric::decimal::to_sig(t, 20)),
+                reached: format!("no certified bracket at {p} bits"),
+                detail: format!("t = {}", crate::numeric::decimal::to_sig(&t_last, 20)),
             });
         }
-        Ok((d, eps))
+        Ok(out)
+    }
+
+    /// The estimates of one trajectory row at time `t` from δ and its bound.
+    fn row_estimates(
+        &mut self,
+        t: &Exact,
+        d: &Float,
+        derr: &Float,
+        p: u32,
+        floor: Floor,
+        contact: Contact,
+    ) -> Result<Vec<Estimate>> {
+        let tf = t.to_float(p);
+        let sf = self.scale_force(p);
+        let ts = self.scale_time(p);
+        let pr = self.work.params().clone();
+        let rr = Float::with_val(p, &pr.r());
+        let r1 = Float::with_val(p, &pr.r1);
+        let e = self.engine(p)?;
+        let st = e.dynm.state(d);
+        let d2 = Float::with_val(p, d + derr);
+        let st2 = e.dynm.state(&d2);
+        let vals = |st: &crate::mechanics::dynamics::State, e: &Engine| -> Vec<Float> {
+            let pos = e.dynm.positions(st, &tf);
+            let f = e.dynm.forces(st);
+            let x2 = Float::with_val(p, &rr * &st.s) + &pos[0];
+            let y2 = Float::with_val(p, &rr * &st.c) + &r1;
+            let phi2 = Float::with_val(p, &pos[2] + &st.theta);
+            vec![
+                st.theta.clone(),
+                st.thetadot.clone(),
+                st.thetaddot.clone(),
+                pos[1].clone(),
+                phi2,
+                pos[0].clone(),
+                x2,
+                y2,
+                f.f1,
+                f.n1,
+                f.f21,
+                f.n12,
+            ]
+        };
+        let a = vals(&st, e);
+        let b = vals(&st2, e);
+        let one = Float::with_val(p, 1u32);
+        let scales = [
+            one.clone(),
+            Float::with_val(p, &one / &ts),
+            Float::with_val(p, &one / &ts) / &ts,
+            one.clone(),
+            one.clone(),
+            rr.clone(),
+            rr.clone(),
+            rr.clone(),
+            sf.clone(),
+            sf.clone(),
+            sf.clone(),
+            sf.clone(),
+        ];
+        // odd columns change sign in the mirror
+        let odd = [
+            true, true, true, true, true, true, true, false, true, false, true, false,
+        ];
+        let mut out = vec![Estimate {
+            value: tf.clone(),
+            err: Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2),
+            exact_zero: t.is_zero(),
+            scale: ts.clone(),
+        }];
+        for i in 0..12 {
+            let prop = Float::with_val(p, &b[i] - &a[i]).abs();
+            let ulps = Float::with_val(p, a[i].abs_ref()) >> (p as i32 - 4);
+            let zero = (i == 8 && floor == Floor::Slip) || (i == 10 && contact == Contact::Slip);
+            let v = if odd[i] {
+                self.odd(a[i].clone())
+            } else {
+                a[i].clone()
+            };
+            out.push(Estimate {
+                value: v,
+                err: prop + ulps,
+                exact_zero: zero,
+                scale: scales[i].clone(),
+            });
+        }
+        Ok(out)
     }
 }

@@ -1,0 +1,330 @@
+//! The benchmark tasks of `../shared/bench` (T1, T2, T2b, T3) through the public
+//! library API, each result checked against the Arb references of
+//! `../shared/bench/results` before anything is timed.
+//!
+//! Two modes:
+//! - `cargo bench --bench tasks` runs divan (wall time);
+//! - `CYLROLL_BENCH=cpu cargo bench --bench tasks [-- TASK…]` prints one JSON line
+//!   per task and precision with the median *CPU* time of warm repeats (and the
+//!   cold first call), the numbers `bench/compare.sh` sets side by side with the
+//!   anchors. The machine may be shared: CPU time is the steadier figure.
+//!
+//! "Warm" reuses one `Oracle` (its node caches filled by the first call), as
+//! the anchors reuse their integrator objects; "cold" is a fresh `Oracle`.
+//!
+//! The reference folder is `$CYLROLL_BENCH_REF` or `../shared/bench/results`
+//! relative to the crate.
+
+use cylroll::exact::Exact;
+use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::numeric::decimal::to_sig;
+use cylroll::numeric::verify::Verified;
+use cylroll::oracle::Oracle;
+use rug::{Float, Rational};
+use std::path::PathBuf;
+use std::sync::OnceLock;
+use std::time::Instant;
+
+const DIGITS: [u32; 4] = [30, 100, 300, 1000];
+const T3_DIGITS: [u32; 2] = [30, 100];
+/// Output times of T3.
+const T3_POINTS: usize = 1000;
+
+struct Refs {
+    t1: String,
+    t2: String,
+    t2b: String,
+    t3_tend: String,
+    t3: Vec<String>,
+}
+
+fn ref_dir() -> PathBuf {
+    match std::env::var_os("CYLROLL_BENCH_REF") {
+        Some(p) => PathBuf::from(p),
+        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/bench/results"),
+    }
+}
+
+fn refs() -> &'static Refs {
+    static R: OnceLock<Refs> = OnceLock::new();
+    R.get_or_init(|| {
+        let dir = ref_dir();
+        let path = dir.join("reference.json");
+        let text = std::fs::read_to_string(&path)
+            .unwrap_or_else(|e| panic!("{}: {e} (set CYLROLL_BENCH_REF)", path.display()));
+        let j: serde_json::Value = serde_json::from_str(&text).expect("reference.json");
+        let s = |a: &str, b: &str| j[a][b].as_str().expect("reference field").to_string();
+        let table =
+            std::fs::read_to_string(dir.join("T3_reference.txt")).expect("T3_reference.txt");
+        let t3: Vec<String> = table.lines().map(|l| l.trim().to_string()).collect();
+        assert_eq!(t3.len(), T3_POINTS, "T3_reference.txt rows");
+        Refs {
+            t1: s("T1", "mid"),
+            t2: s("T2", "mid"),
+            t2b: s("T2b", "mid"),
+            t3_tend: s("T3", "t_end"),
+            t3,
+        }
+    })
+}
+
+fn q(s: &str) -> Exact {
+    Exact::parse("x", s, false).expect("exact")
+}
+
+/// Identical solid cylinders, both rolling, from rest at θ0; `m2` the upper mass.
+fn model(m2: i64, theta0: &str) -> Model {
+    let mut p = Params::identical_solid();
+    p.m2 = Rational::from(m2);
+    Model::new(p, Floor::Roll, Contact::Roll, Start::rest(q(theta0))).expect("model")
+}
+
+/// `reference` (a long decimal) rounded to `digits` significant digits.
+fn rounded(reference: &str, digits: u32) -> String {
+    let f = Float::with_val(digits * 4 + 64, Float::parse(reference).expect("decimal"));
+    to_sig(&f, digits)
+}
+
+fn check(task: &str, v: &Verified, reference: &str, digits: u32) {
+    assert_eq!(
+        v.digits, digits,
+        "{task} at {digits} digits: digits verified"
+    );
+    assert_eq!(
+        v.text,
+        rounded(reference, digits),
+        "{task} at {digits} digits"
+    );
+}
+
+fn t3_times() -> Vec<Exact> {
+    let tend = q(&refs().t3_tend).coef;
+    (0..T3_POINTS)
+        .map(|i| Exact::rational(&tend * Rational::from((i as i64, 999))))
+        .collect()
+}
+
+// ---------------------------------------------------------------- the tasks
+
+struct Task {
+    name: &'static str,
+    oracle: Oracle,
+    times: Vec<Exact>,
+}
+
+impl Task {
+    fn new(name: &'static str, digits: u32) -> Task {
+        let (m2, theta0) = match name {
+            "T1" | "T3" | "T3rows" => (1, "1/10"),
+            "T2" => (1, "0"),
+            "T2b" => (2, "0"),
+            _ => panic!("unknown task {name}"),
+        };
+        let times = if name.starts_with("T3") {
+            t3_times()
+        } else {
+            Vec::new()
+        };
+        Task {
+            name,
+            oracle: Oracle::new(&model(m2, theta0), digits).expect("oracle"),
+            times,
+        }
+    }
+
+    /// One run of the task; returns a short value for the record.
+    fn run(&mut self) -> String {
+        match self.name {
+            "T1" => self.oracle.time_at(&q("9/10")).expect("T1").text,
+            "T2" | "T2b" => self.oracle.separation_angle().expect("T2").text,
+            "T3" => {
+                let th = self.oracle.theta_at_times(&self.times).expect("T3");
+                th[T3_POINTS - 1].text.clone()
+            }
+            "T3rows" => {
+                let rows = self.oracle.trajectory(&self.times).expect("T3rows");
+                rows[T3_POINTS - 1][1].text.clone()
+            }
+            _ => unreachable!(),
+        }
+    }
+
+    /// Runs once and checks every value against the references.
+    fn run_checked(&mut self) {
+        let d = self.oracle.digits();
+        let r = refs();
+        match self.name {
+            "T1" => check(
+                "T1",
+                &self.oracle.time_at(&q("9/10")).expect("T1"),
+                &r.t1,
+                d,
+            ),
+            "T2" => check("T2", &self.oracle.separation_angle().expect("T2"), &r.t2, d),
+            "T2b" => check(
+                "T2b",
+                &self.oracle.separation_angle().expect("T2b"),
+                &r.t2b,
+                d,
+            ),
+            "T3" => {
+                let th = self.oracle.theta_at_times(&self.times).expect("T3");
+                assert_eq!(th.len(), T3_POINTS);
+                for (i, v) in th.iter().enumerate() {
+                    check(&format!("T3 row {i}"), v, &r.t3[i], d);
+                }
+            }
+            "T3rows" => {
+                let rows = self.oracle.trajectory(&self.times).expect("T3rows");
+                assert_eq!(rows.len(), T3_POINTS);
+                for (i, row) in rows.iter().enumerate() {
+                    check(&format!("T3rows row {i}"), &row[1], &r.t3[i], d);
+                }
+            }
+            _ => unreachable!(),
+        }
+    }
+}
+
+// ---------------------------------------------------------------- divan
+
+fn divan_task(bencher: divan::Bencher, name: &'static str, digits: u32) {
+    let mut task = Task::new(name, digits);
+    task.run_checked();
+    bencher.bench_local(|| task.run());
+}
+
+#[divan::bench(args = DIGITS, sample_count = 10, sample_size = 1)]
+fn t1(bencher: divan::Bencher, digits: u32) {
+    divan_task(bencher, "T1", digits);
+}
+
+#[divan::bench(args = DIGITS, sample_count = 20, sample_size = 1)]
+fn t2(bencher: divan::Bencher, digits: u32) {
+    divan_task(bencher, "T2", digits);
+}
+
+#[divan::bench(args = DIGITS, sample_count = 20, sample_size = 1)]
+fn t2b(bencher: divan::Bencher, digits: u32) {
+    divan_task(bencher, "T2b", digits);
+}
+
+#[divan::bench(args = T3_DIGITS, sample_count = 5, sample_size = 1)]
+fn t3(bencher: divan::Bencher, digits: u32) {
+    divan_task(bencher, "T3", digits);
+}
+
+#[divan::bench(args = T3_DIGITS, sample_count = 3, sample_size = 1)]
+fn t3_rows(bencher: divan::Bencher, digits: u32) {
+    divan_task(bencher, "T3rows", digits);
+}
+
+// ---------------------------------------------------------------- CPU mode
+
+#[repr(C)]
+struct Timespec {
+    tv_sec: i64,
+    tv_nsec: i64,
+}
+
+extern "C" {
+    fn clock_gettime(clock: i32, ts: *mut Timespec) -> i32;
+}
+
+/// CPU time of this thread in seconds (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`,
+/// Linux x86_64/aarch64; NaN if the call fails).
+fn cpu_now() -> f64 {
+    const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
+    let mut ts = Timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec for the duration of the call.
+    let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    if rc != 0 {
+        return f64::NAN;
+    }
+    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(|a, b| a.total_cmp(b));
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        (v[n / 2 - 1] + v[n / 2]) / 2.0
+    }
+}
+
+/// Times `name` at `digits`: the cold first call (fresh oracle), a check of
+/// every value, then warm repeats (batched so each sample lasts ≥ 2 ms) until
+/// `min_runs` samples and `budget` seconds, or `max_runs` samples.
+fn cpu_task(name: &'static str, digits: u32) {
+    let (c0, w0) = (cpu_now(), Instant::now());
+    let mut task = Task::new(name, digits);
+    let value = task.run();
+    let (cold_cpu, cold_wall) = (cpu_now() - c0, w0.elapsed().as_secs_f64());
+    task.run_checked();
+    // batch size: enough calls for ≥ 2 ms per sample
+    let c = cpu_now();
+    task.run();
+    let one = (cpu_now() - c).max(1e-7);
+    let batch = ((2e-3 / one).ceil() as usize).clamp(1, 10_000);
+    let (min_runs, max_runs, budget) = (5usize, 15usize, 10.0f64);
+    let mut cpus = Vec::new();
+    let mut walls = Vec::new();
+    let start = Instant::now();
+    while cpus.len() < max_runs && (cpus.len() < min_runs || start.elapsed().as_secs_f64() < budget)
+    {
+        let (c, w) = (cpu_now(), Instant::now());
+        for _ in 0..batch {
+            std::hint::black_box(task.run());
+        }
+        cpus.push((cpu_now() - c) / batch as f64);
+        walls.push(w.elapsed().as_secs_f64() / batch as f64);
+    }
+    let short: String = value.chars().take(40).collect();
+    println!(
+        "{{\"tool\":\"cylroll\",\"task\":\"{name}\",\"digits\":{digits},\"cpu_median_s\":{:.6e},\
+         \"wall_median_s\":{:.6e},\"cpu_min_s\":{:.6e},\"cold_cpu_s\":{:.6e},\"cold_wall_s\":{:.6e},\
+         \"samples\":{},\"batch\":{batch},\"checked\":true,\"value\":\"{short}\"}}",
+        median(cpus.clone()),
+        median(walls),
+        cpus.iter().cloned().fold(f64::INFINITY, f64::min),
+        cold_cpu,
+        cold_wall,
+        cpus.len(),
+    );
+}
+
+fn cpu_main() {
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with('-'))
+        .collect();
+    let wanted = |t: &str| args.is_empty() || args.iter().any(|a| a == t);
+    let digits: Vec<u32> = match std::env::var("CYLROLL_BENCH_DIGITS") {
+        Ok(s) => s.split(',').filter_map(|x| x.trim().parse().ok()).collect(),
+        Err(_) => DIGITS.to_vec(),
+    };
+    for name in ["T1", "T2", "T2b", "T3", "T3rows"] {
+        if !wanted(name) {
+            continue;
+        }
+        for &d in &digits {
+            if name.starts_with("T3") && !T3_DIGITS.contains(&d) {
+                continue;
+            }
+            cpu_task(name, d);
+        }
+    }
+}
+
+fn main() {
+    if std::env::var("CYLROLL_BENCH").as_deref() == Ok("cpu") {
+        cpu_main();
+    } else {
+        divan::main();
+    }
+}
