@@ -23,6 +23,7 @@
 //! coefficient times anything only reaches the low limbs.
 
 use rug::integer::Order;
+use rug::ops::NegAssign;
 use rug::{Float, Integer};
 
 /// The limb counts the integrator is instantiated for, ascending.
@@ -143,11 +144,65 @@ impl<const L: usize> Fx<L> {
     }
 }
 
+/// Scratch for conversions between Floats and fixed point without
+/// allocating (after the first use).
+#[derive(Debug, Clone)]
+pub struct Conv {
+    f: Float,
+    i: Integer,
+}
+
+impl Conv {
+    /// Scratch for values of up to `prec` bits.
+    pub fn new(prec: u32) -> Self {
+        Conv {
+            f: Float::new(prec.max(64)),
+            i: Integer::with_capacity(prec as usize + 128),
+        }
+    }
+
+    /// `x` rounded to nearest at `L − 1` fraction limbs (|x| < 2^64).
+    pub fn to_fx<const L: usize>(&mut self, x: &Float) -> Fx<L> {
+        let lf = Fx::<L>::LF as u32;
+        let p = x.prec().max(64 * lf + 8);
+        if self.f.prec() != p {
+            self.f.set_prec(p);
+        }
+        rug::Assign::assign(&mut self.f, x << (64 * lf));
+        if self
+            .f
+            .to_integer_round_in_place(&mut self.i, rug::float::Round::Nearest)
+            .is_none()
+        {
+            return Fx::ZERO;
+        }
+        let mut m = [0u64; L];
+        let neg = self.i.is_negative();
+        if self.i.significant_digits::<u64>() <= L {
+            self.i.as_abs().write_digits(&mut m, Order::Lsf);
+        }
+        Fx::from_mag(m, neg)
+    }
+
+    /// `v` into `out` (rounded to `out`'s precision).
+    pub fn to_float<const L: usize>(&mut self, v: &Fx<L>, out: &mut Float) {
+        self.i.assign_digits(&v.m[..v.len as usize], Order::Lsf);
+        rug::Assign::assign(&mut *out, &self.i);
+        *out >>= 64 * Fx::<L>::LF as u32;
+        if v.neg {
+            out.neg_assign();
+        }
+    }
+}
+
 /// acc += a·b (magnitudes), without the limb products a_i b_j, i + j < cut.
 #[inline(always)]
 fn mac_mag<const L: usize>(acc: &mut [u64], a: &Fx<L>, b: &Fx<L>, cut: usize) {
     let la = a.len as usize;
     let lb = b.len as usize;
+    if la + lb < cut + 2 {
+        return; // every limb product is below the cut
+    }
     let acc = &mut acc[..2 * L + 2];
     for i in 0..la.min(L) {
         let ai = a.m[i];

@@ -46,7 +46,7 @@
 
 use super::fixed::{self, Acc, Fx};
 use crate::error::{Error, Result};
-use rug::Float;
+use rug::{Assign, Float};
 
 /// The right-hand side θ̈ = sin θ (e0 + e1 c + e2 c²) / (k0 + k1 c + k2 c²)².
 #[derive(Debug, Clone)]
@@ -93,15 +93,22 @@ struct Step<const L: usize> {
     lambda: f64,
     /// log2 of the rounding error of one evaluation.
     round: f64,
+    /// log2 |X_k| for the last three orders (truncation estimate).
+    tail: [(f64, f64); 3],
+    /// log2 |X_k| for every k (to cut each evaluation's series short).
+    lx: Vec<f64>,
 }
 
-/// The steps of a run at one limb count.
+/// The steps of a run at one limb count, and scratch for dense output.
 #[derive(Debug, Clone)]
 struct Run<const L: usize> {
     prec: u32,
     order: usize,
     steps: Vec<Step<L>>,
     prod: Vec<u64>,
+    conv: fixed::Conv,
+    tau: Float,
+    inc: Float,
 }
 
 /// Dense output of a run, whatever its limb count.
@@ -120,11 +127,12 @@ pub struct TaylorRun {
     pub work: u64,
 }
 
-/// Fraction bits beyond the working precision: the rounding of ~8N
-/// operations per coefficient, and a margin.
-fn guard_bits(prec: u32) -> u32 {
-    let n = order_for(prec) as f64;
-    (8.0 * n).log2().ceil() as u32 + 6
+/// Fraction bits beyond the working precision. Few: the rounding of the
+/// ~8N operations per coefficient (log2(8N) bits) is part of the error
+/// estimate, and the ladder's precisions already carry 24 guard bits over
+/// the requested digits; more fraction bits would mostly cost a limb.
+fn guard_bits(_prec: u32) -> u32 {
+    4
 }
 
 /// Limbs for working precision `prec` and `extra` bits (one integer limb).
@@ -439,6 +447,10 @@ fn run<const L: usize>(
         let lambda = 1.25 * 1f64.max(df0.abs()).max(df1.abs());
         let hf = h.to_f64();
         let local = log2_add(log2_add(trunc, trunc_d), round);
+        let mut tail = [(0.0, f64::NEG_INFINITY); 3];
+        for (i, k) in (n.saturating_sub(2)..=n).enumerate() {
+            tail[i] = (k as f64, ser.x[k].log2());
+        }
         steps.push(Step {
             t0: t.clone(),
             t1: t1.clone(),
@@ -448,6 +460,8 @@ fn run<const L: usize>(
             err0: err,
             lambda,
             round,
+            tail,
+            lx: ser.x.iter().map(|x| x.log2()).collect(),
         });
         err = log2_add(err + lambda * hf * std::f64::consts::LOG2_E, local);
         t = t1;
@@ -474,6 +488,9 @@ fn run<const L: usize>(
             order: n,
             steps,
             prod,
+            conv: fixed::Conv::new(pw),
+            tau: Float::new(pw),
+            inc: Float::new(pw),
         }),
     })
 }
@@ -488,32 +505,50 @@ impl<const L: usize> Dense for Run<L> {
         if t.is_zero() {
             return Some((Float::new(prec), Float::new(prec)));
         }
-        let j = self.steps.partition_point(|s| s.t1 < *t);
+        let mut j = self.steps.partition_point(|s| s.t1 < *t);
+        if j == self.steps.len() {
+            // a time past the end by a rounding of t_end (the caller's time
+            // may carry more bits than the run's): the last step's series
+            // holds a little beyond its end
+            let last = self.steps.last()?;
+            let over = Float::with_val(64, t - &last.t1);
+            let tol = Float::with_val(64, last.t1.abs_ref()) >> (last.t1.prec() as i32 - 8);
+            if over > tol {
+                return None;
+            }
+            j -= 1;
+        }
         let st = self.steps.get(j)?;
         if *t < st.t0 {
             return None;
         }
-        let pw = 64 * L as u32 + 32;
-        let tau = Float::with_val(pw, t - &st.t0);
-        let u_f = Float::with_val(pw, &tau * &st.inv_h);
-        let lu = u_f.to_f64().max(1e-300).log2();
-        // highest order whose term is above 2^-frac at this u
+        // u = (t − t0)/H, in place
+        self.tau.assign(t - &st.t0);
+        let tau = self.tau.to_f64();
+        self.tau *= &st.inv_h;
+        let lu = self.tau.to_f64().max(1e-300).log2();
+        // highest order whose term is above 2^-(p+12) at this u: the terms
+        // left out decay geometrically and add less than 2^-(p+10)
         let n = self.order;
-        let floor = -(64.0 * (L as f64 - 1.0));
+        let floor = -(prec as f64 + 12.0);
         let mut m = n;
-        while m > 1 && st.x[m].log2() + m as f64 * lu <= floor {
+        while m > 1 && st.lx[m] + m as f64 * lu <= floor {
             m -= 1;
         }
-        let u = Fx::<L>::from_float(&u_f);
-        let inc = fixed::horner(&st.x, m, &u, &mut self.prod).to_float(pw);
-        let delta = Float::with_val(prec, &st.delta0 + &inc);
+        let u = self.conv.to_fx::<L>(&self.tau);
+        let r = fixed::horner(&st.x, m, &u, &mut self.prod);
+        self.conv.to_float(&r, &mut self.inc);
+        let delta = Float::with_val(prec, &st.delta0 + &self.inc);
         // error: carried, truncation at u, rounding
         let mut trunc = f64::NEG_INFINITY;
-        for k in n.saturating_sub(2)..=n {
-            trunc = log2_add(trunc, st.x[k].log2() + k as f64 * lu);
+        for &(k, lx) in &st.tail {
+            trunc = log2_add(trunc, lx + k * lu);
         }
-        let carried = st.err0 + st.lambda * tau.to_f64() * std::f64::consts::LOG2_E;
-        let e = log2_add(log2_add(carried, trunc), st.round);
+        let carried = st.err0 + st.lambda * tau * std::f64::consts::LOG2_E;
+        let mut e = log2_add(log2_add(carried, trunc), st.round);
+        if m < n {
+            e = log2_add(e, floor + 2.0);
+        }
         let e = e.clamp(-1e9, 1e6).ceil() as i32 + 1;
         let err = Float::with_val(prec, 1u32) << e;
         Some((delta, err))

@@ -198,13 +198,13 @@ fn judge(
             precs,
         });
     }
-    let diff = Float::with_val(p, &a.value - &b.value).abs();
-    let bound = Float::with_val(p, &diff + &b.err);
+    let mut bound = Float::with_val(p, &a.value - &b.value);
+    bound.abs_mut();
+    bound += &b.err;
     if !b.value.is_finite() || !bound.is_finite() {
         return Err(0);
     }
-    let mag = Float::with_val(p, b.value.abs_ref());
-    if mag <= bound {
+    if b.value.cmp_abs(&bound) != Some(std::cmp::Ordering::Greater) {
         // indistinguishable from zero: print 0 if the bound is negligible
         // at the requested digits relative to the quantity's natural scale
         let tiny = Float::with_val(
@@ -323,9 +323,9 @@ where
     })
 }
 
-/// The precision ladder for a table: `f(prec, run)` returns one row of
-/// estimates per item (one per name), all computed in one go (e.g. one ODE
-/// run serving every output time). Each row is judged on its own, exactly as
+/// The precision ladder for a table: `f(prec, run)` returns the estimates of
+/// all rows in one flat vector (row after row, one per name), all computed in
+/// one go (e.g. one ODE run serving every output time). Each row is judged on its own, exactly as
 /// [`ladder`] would: a row keeps the first rung at which all its quantities
 /// verify, and only when some row fails does the whole table climb.
 ///
@@ -338,8 +338,9 @@ pub fn ladder_table<F>(
     mut f: F,
 ) -> Result<Vec<Vec<Verified>>>
 where
-    F: FnMut(u32, Run) -> Result<Vec<Vec<Estimate>>>,
+    F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
 {
+    let w = names.len();
     let mut done: Vec<Option<Vec<Verified>>> = vec![None; rows];
     let mut last_fail = None;
     for attempt in 0..MAX_ATTEMPTS {
@@ -354,17 +355,18 @@ where
             let mut out = Vec::with_capacity(names.len());
             let mut row_failed = None;
             for (i, name) in names.iter().enumerate() {
-                match judge(name, digits, precs, &a[r][i], &b[r][i]) {
+                let (ea, eb) = (&a[r * w + i], &b[r * w + i]);
+                match judge(name, digits, precs, ea, eb) {
                     Ok(v) => out.push(v),
                     Err(reached) => {
-                        let diff = Float::with_val(precs.1, &a[r][i].value - &b[r][i].value).abs();
+                        let diff = Float::with_val(precs.1, &ea.value - &eb.value).abs();
                         row_failed = Some((
                             format!("{name} (row {r})"),
                             reached,
                             precs,
-                            to_sig(&b[r][i].value, 12),
+                            to_sig(&eb.value, 12),
                             short(&diff),
-                            short(&b[r][i].err),
+                            short(&eb.err),
                         ));
                         break;
                     }

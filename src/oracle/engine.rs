@@ -166,6 +166,13 @@ impl Engine {
         (r.value, err)
     }
 
+    /// 1/θ̇ at δ (allocation-free integrand of [`Engine::time`]).
+    pub fn inv_thetadot(&mut self, d: &Float) -> Float {
+        let mut out = Float::new(self.prec());
+        self.dynm.inv_thetadot_with(d, &mut out, &mut self.scratch);
+        out
+    }
+
     pub fn n12(&mut self, d: &Float) -> Float {
         let st = self.dynm.state(d);
         self.dynm.forces(&st).n12

@@ -17,7 +17,7 @@ use crate::model::{Contact, Floor, Model};
 use crate::numeric::taylor::{self, Conservative};
 use crate::numeric::verify::{ladder, ladder_runs, ladder_table, Estimate, Run, Verified};
 use engine::Engine;
-use rug::Float;
+use rug::{Assign, Float};
 use std::collections::HashMap;
 
 /// Largest number of significant digits accepted.
@@ -648,11 +648,12 @@ impl Oracle {
         self.check_times(times)?;
         let floor = self.work.floor();
         let contact = self.work.contact();
+        let mut cache = (0, Vec::new());
         let mut rows = ladder_table(self.digits, &TRAJECTORY_COLUMNS, times.len(), |p, run| {
-            let deltas = self.deltas_at(times, p, run, true)?;
-            let mut out = Vec::with_capacity(times.len());
+            let deltas = self.deltas_at(times, p, run, true, &mut cache)?;
+            let mut out = Vec::with_capacity(times.len() * TRAJECTORY_COLUMNS.len());
             for (t, (d, derr)) in times.iter().zip(deltas) {
-                out.push(self.row_estimates(t, &d, &derr, p, floor, contact)?);
+                out.extend(self.row_estimates(t, &d, &derr, p, floor, contact)?);
             }
             Ok(out)
         })?;
@@ -674,15 +675,20 @@ impl Oracle {
     /// Errors: as [`Oracle::trajectory`].
     pub fn theta_at_times(&mut self, times: &[Exact]) -> Result<Vec<Verified>> {
         self.check_times(times)?;
+        let mut cache = (0, Vec::new());
         let rows = ladder_table(self.digits, &["theta"], times.len(), |p, run| {
-            let deltas = self.deltas_at(times, p, run, false)?;
+            let deltas = self.deltas_at(times, p, run, false, &mut cache)?;
             let th0 = self.work.start().theta0.to_float(p);
+            let one = Float::with_val(p, 1u32);
+            let mut ulps = Float::new(p);
             Ok(deltas
                 .into_iter()
-                .map(|(d, derr)| {
+                .map(|(d, mut err)| {
                     let th = Float::with_val(p, &th0 + &d);
-                    let err = derr + (Float::with_val(p, th.abs_ref()) >> (p as i32 - 4));
-                    vec![Estimate::new(self.odd(th), err, Float::with_val(p, 1u32))]
+                    ulps.assign(th.abs_ref());
+                    ulps >>= p as i32 - 4;
+                    err += &ulps;
+                    Estimate::new(self.odd(th), err, one.clone())
                 })
                 .collect())
         })?;
@@ -738,12 +744,14 @@ impl Oracle {
     /// separation-time check (each time ≤ t_s), one Taylor run to the last
     /// time, and the quadrature check there. ε is twice the estimate (at
     /// least |δ|·2^-(p−9)), as the Newton inversion used to report it.
+    /// `cache` holds the times as Floats (converted once per rung).
     fn deltas_at(
         &mut self,
         times: &[Exact],
         p: u32,
         run: Run,
         rel_delta: bool,
+        cache: &mut (u32, Vec<Float>),
     ) -> Result<Vec<(Float, Float)>> {
         let t_s = self.t_s_at(p)?;
         // fixed-point bits for the smallest positive time: δ ≈ θ̈0 t²/2 there
@@ -760,11 +768,16 @@ impl Oracle {
             0
         };
         let tq = taylor::time_prec_for(p, extra);
-        let tt_all: Vec<Float> = times.iter().map(|t| t.to_float(tq)).collect();
-        let mut tf: Vec<Float> = Vec::with_capacity(times.len());
-        for (t, tt) in times.iter().zip(&tt_all) {
-            let f = Float::with_val(p, tt);
-            if f > t_s {
+        if cache.0 < tq {
+            // once for both runs of a rung: at the p2 run's precision
+            let hi = taylor::time_prec_for(p + p / 8 + 40, extra);
+            *cache = (hi, times.iter().map(|t| t.to_float(hi)).collect());
+        }
+        let tt_all = &cache.1;
+        // the separation-time check, and the last time
+        let mut i_max = None;
+        for (i, (t, tt)) in times.iter().zip(tt_all).enumerate() {
+            if *tt > t_s {
                 return Err(Error::invalid(
                     "times",
                     t,
@@ -774,56 +787,65 @@ impl Oracle {
                     ),
                 ));
             }
-            tf.push(f);
+            if !tt.is_zero() && i_max.is_none_or(|m: usize| *tt >= tt_all[m]) {
+                i_max = Some(i);
+            }
         }
-        let zero = Float::new(p);
-        let t_max = tf
-            .iter()
-            .fold(zero.clone(), |m, t| if *t > m { t.clone() } else { m });
-        if t_max.is_zero() {
+        let Some(i_max) = i_max else {
+            let zero = Float::new(p);
             return Ok(vec![(zero.clone(), zero); times.len()]);
-        }
+        };
         let rhs = self.taylor_rhs(p)?;
         let th0 = self.work.start().theta0.to_float(p);
         let td0 = Float::with_val(p, &self.work.start().thetadot0);
-        let t_end = tt_all
-            .iter()
-            .fold(Float::new(tq), |m, t| if *t > m { t.clone() } else { m });
+        let t_end = Float::with_val(tq, &tt_all[i_max]);
         let mut traj = taylor::integrate(&rhs, &th0, &td0, &t_end, p, extra)?;
         let mut out = Vec::with_capacity(times.len());
-        let mut last = (Float::new(p), Float::new(p), Float::new(p));
+        let mut floor = Float::new(p);
         for (t, tt) in times.iter().zip(tt_all) {
             if t.is_zero() {
                 out.push((Float::new(p), Float::new(p)));
                 continue;
             }
-            let (d, e) = traj.delta_at(&tt).ok_or_else(|| Error::NotConverged {
+            let (d, mut e) = traj.delta_at(tt).ok_or_else(|| Error::NotConverged {
                 quantity: "theta(t)".into(),
                 requested: self.digits,
                 reached: format!("no Taylor output at {p} bits"),
-                detail: format!("t = {}", crate::numeric::decimal::to_sig(&tt, 20)),
+                detail: format!("t = {}", crate::numeric::decimal::to_sig(tt, 20)),
             })?;
-            let floor = Float::with_val(p, d.abs_ref()) >> (p as i32 - 8);
-            let e = if e < floor { floor } else { e };
-            let eps = Float::with_val(p, &e * 2u32);
-            if tt >= last.0 {
-                last = (Float::with_val(tq, &tt), d.clone(), eps.clone());
+            floor.assign(d.abs_ref());
+            floor >>= p as i32 - 8;
+            if e < floor {
+                e.assign(&floor);
             }
-            out.push((d, eps));
+            e <<= 1;
+            out.push((d, e));
         }
-        // certify at the last time: t(δ − ε) ≤ t ≤ t(δ + ε) by the energy quadrature
-        let (t_last, d, eps) = last;
+        let t_last = Float::with_val(tq, &tt_all[i_max]);
+        let (d, eps) = out[i_max].clone();
+        // certify at the last time: t(δ − ε) ≤ t ≤ t(δ + ε) by the energy
+        // quadrature. One integral suffices when |t(δ) − t| + its error is
+        // below ε θ̇(δ) (less 2^-16: θ̇ varies by far less over [δ−ε, δ+ε]);
+        // otherwise both ends are integrated.
         let high = run == Run::High;
         let e = self.engine(p)?;
-        let dlo = Float::with_val(p, &d - &eps);
-        let dhi = Float::with_val(p, &d + &eps);
-        let tlo = if dlo.is_sign_positive() {
-            e.time_fast(&dlo, high, false).0
-        } else {
-            Float::new(p)
+        let (tm, tm_err, _) = e.time_fast(&d, high, false);
+        let gap = Float::with_val(p, &tm - &t_last).abs() + &tm_err;
+        let thetadot = e.inv_thetadot(&d).recip();
+        let room = Float::with_val(p, &eps * &thetadot);
+        let room = Float::with_val(p, &room - Float::with_val(p, &room >> 16));
+        let certified = gap <= room || {
+            let dlo = Float::with_val(p, &d - &eps);
+            let dhi = Float::with_val(p, &d + &eps);
+            let tlo = if dlo.is_sign_positive() {
+                e.time_fast(&dlo, high, false).0
+            } else {
+                Float::new(p)
+            };
+            let thi = e.time_fast(&dhi, high, false).0;
+            tlo <= t_last && t_last <= thi
         };
-        let thi = e.time_fast(&dhi, high, false).0;
-        if !(tlo <= t_last && t_last <= thi) {
+        if !certified {
             return Err(Error::NotConverged {
                 quantity: "theta(t)".into(),
                 requested: self.digits,
