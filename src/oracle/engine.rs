@@ -220,3 +220,42 @@ impl Engine {
         Ok((r.mid(), half + ulp))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::Exact;
+
+    /// Bench T1 (Arb), 200 digits.
+    const T1: &str = "4.92431546824328750958943890767440975619729716583700828514899461093135589746020777297976446424524230206377179649802708141731744155015356680000186295700477357023137793369600976317464740174177433799554600220397931327911392476381406432533800713103931733926945527301995113637198679903750992152105290692480683594699937880616";
+
+    #[test]
+    fn tanh_sinh_and_gauss_legendre_routes_agree_within_their_estimates() {
+        let m = Model::paper_default(Exact::parse("t", "1/10", false).unwrap());
+        let red = Reduced::new(&m).unwrap();
+        let reference = Float::with_val(800, Float::parse(T1).unwrap());
+        for p in [128u32, 400, 600] {
+            let mut e = Engine::new(&m, &red, p).unwrap();
+            let d = Float::with_val(p, 8u32) / 10u32;
+            let (v_ts, e_ts, r_ts) = e.time_fast(&d, true, false);
+            assert_eq!(r_ts, Rule::TanhSinh);
+            // pretend enough work was done for the rule to pay
+            e.ts_work = f64::INFINITY;
+            let (v_gl, e_gl, r_gl) = e.time_fast(&d, true, true);
+            assert_eq!(r_gl, Rule::GaussLegendre);
+            for (name, v, err) in [("ts", &v_ts, &e_ts), ("gl", &v_gl, &e_gl)] {
+                let true_err = Float::with_val(p, v - &reference).abs();
+                assert!(
+                    true_err <= *err,
+                    "{name} at {p}: true {true_err:e} > estimate {err:e}"
+                );
+                let scale = Float::with_val(p, 1u32) >> (p as i32 - 12);
+                assert!(*err < scale, "{name} at {p}: estimate {err:e}");
+            }
+            // the θ form of the same integral
+            let (v_th, _) = e.time(&d);
+            let diff = Float::with_val(p, &v_th - &v_ts).abs();
+            assert!(diff < Float::with_val(p, 1u32) >> (p as i32 - 12), "{p}");
+        }
+    }
+}

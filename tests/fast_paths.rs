@@ -1,0 +1,204 @@
+//! The fast routes against the references and against the routes they
+//! replace: the Taylor integrator for θ(t) (bench T3 rows, the energy
+//! quadrature, the trajectory's θ column), the polynomial separation root
+//! (against `separation()`'s scan-and-refine), and the time integral by
+//! tanh-sinh at p1 and Gauss–Legendre at p2 (against the Arb reference, and
+//! the same digits before and after the rule is built).
+//!
+//! Reference values are the Arb balls of `../shared/bench/results`
+//! (reference.json, T3_reference.txt), copied here.
+
+use cylroll::exact::Exact;
+use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::numeric::decimal::to_sig;
+use cylroll::oracle::Oracle;
+use rug::{Float, Rational};
+
+fn q(s: &str) -> Exact {
+    Exact::parse("x", s, true).unwrap()
+}
+
+fn rounded(reference: &str, digits: u32) -> String {
+    let f = Float::with_val(digits * 4 + 64, Float::parse(reference).unwrap());
+    to_sig(&f, digits)
+}
+
+/// Bench T1 (Arb, first 320 digits).
+const T1: &str = "4.924315468243287509589438907674409756197297165837008285148994610931355897460207772979764464245242302063771796498027081417317441550153566800001862957004773570231377933696009763174647401741774337995546002203979313279113924763814064325338007131039317339269455273019951136371986799037509921521052906924806835946999378806167";
+/// Bench T2b (Arb).
+const T2B: &str = "1.094098559385214477287125461950827533993215543405195872523622477219732370957697491796839431463256965543146819542899372330617615521827964581301720338922301005410997405000631008467107274165901370501744605709030775797536680507748972662782341968949002413765853255028543974828248486829262147974527326720959141300937027658265";
+/// Bench T3: t_end and some rows i of θ(i·t_end/999) (Arb, 110 digits).
+const T3_TEND: &str = "5.14675898312254090169631708270521633947776197330584879910456893909223260854511843882078068940435133427355809947833529851639293631353223";
+const T3_ROWS: [(u32, &str); 7] = [
+    (1, "0.10000046706532598866495584834317577640848124365603922659677337058159723240800433185166202940800184118817454772"),
+    (37, "0.10064008817690437146995852485071630650893480953019178886175909438788129350118400466215553410699311018503591351"),
+    (250, "0.13062575458410312366836286125117085142295512931984214897730893597905059116400854392642373901786408574337022055"),
+    (500, "0.24092731838777861704829175024986325936386763363243209420399978664554533774453752456591155842429272411595820355"),
+    (777, "0.53557496899447483109853834676981978845751738428798398124533374220447980142491457520829664755793429882154498862"),
+    (998, "1.01484067186842801659760402774568257130022243752117589103855896513265561360916426760696077777773129050952107055"),
+    (999, "1.01772004789856554132432078887980707918449260327807644975088123511602809941281270965137749309973304086448380853"),
+];
+
+fn t3_model() -> Model {
+    Model::paper_default(q("1/10"))
+}
+
+fn t3_time(i: u32) -> Exact {
+    Exact::rational(q(T3_TEND).coef * Rational::from((i, 999)))
+}
+
+#[test]
+fn taylor_matches_the_bench_t3_rows_at_30_and_100_digits() {
+    for digits in [30u32, 100] {
+        let mut o = Oracle::new(&t3_model(), digits).unwrap();
+        let times: Vec<Exact> = T3_ROWS.iter().map(|&(i, _)| t3_time(i)).collect();
+        let th = o.theta_at_times(&times).unwrap();
+        for ((i, want), v) in T3_ROWS.iter().zip(&th) {
+            assert_eq!(v.digits, digits, "row {i}");
+            assert_eq!(v.text, rounded(want, digits), "row {i} at {digits} digits");
+        }
+    }
+}
+
+#[test]
+fn theta_column_of_the_trajectory_is_theta_at_times() {
+    let times: Vec<Exact> = [0u32, 3, 250, 999].iter().map(|&i| t3_time(i)).collect();
+    let mut o = Oracle::new(&t3_model(), 40).unwrap();
+    let rows = o.trajectory(&times).unwrap();
+    let th = o.theta_at_times(&times).unwrap();
+    for (r, t) in rows.iter().zip(&th) {
+        assert_eq!(r[1].text, t.text);
+    }
+    assert_eq!(th[0].text, "0.1000000000000000000000000000000000000000");
+}
+
+#[test]
+fn taylor_agrees_with_the_energy_quadrature() {
+    // θ(t) by the Taylor route, then t(θ) by the quadrature: back to t. θ is
+    // printed to 45 digits, so t comes back to about 45 digits (θ̇ ≈ 0.1–0.6).
+    let digits = 45;
+    let mut o = Oracle::new(&t3_model(), digits).unwrap();
+    for t in ["1/3", "2", "4.5", "5.1"] {
+        let th = o.theta_at_times(&[q(t)]).unwrap();
+        let back = o.time_at(&q(&th[0].text)).unwrap();
+        let p = 200;
+        let diff = Float::with_val(p, Float::parse(&back.text).unwrap()) - q(t).to_float(p);
+        assert!(
+            diff.abs() < Float::with_val(p, 1e-40),
+            "t = {t}: theta = {}, t(theta) = {}",
+            th[0].text,
+            back.text
+        );
+    }
+}
+
+#[test]
+fn taylor_works_for_every_contact_model_and_a_moving_start() {
+    // θ(t) against t(θ) for each contact model, a mirrored start and a start
+    // with θ̇0 ≠ 0: the Taylor route and the quadrature route agree.
+    let cases = [
+        (Floor::Roll, Contact::Roll, "0.1", "0"),
+        (Floor::Slip, Contact::Roll, "0.1", "0"),
+        (Floor::Roll, Contact::Slip, "0.1", "0"),
+        (Floor::Slip, Contact::Slip, "0.1", "0"),
+        (Floor::Fixed, Contact::Roll, "0.1", "0"),
+        (Floor::Roll, Contact::Roll, "-0.2", "-0.3"),
+        (Floor::Roll, Contact::Roll, "0", "0.25"),
+    ];
+    for (floor, contact, th0, td0) in cases {
+        let mut p = Params::identical_solid();
+        p.k2 = Rational::from((2, 5));
+        p.m2 = Rational::from(3);
+        let start = Start {
+            theta0: q(th0),
+            thetadot0: q(td0).coef,
+            omega0: Rational::new(),
+        };
+        let m = Model::new(p, floor, contact, start).unwrap();
+        let mut o = Oracle::new(&m, 35).unwrap();
+        let th = o.theta_at_times(&[q("1.5")]).unwrap();
+        let back = o.time_at(&q(&th[0].text)).unwrap();
+        let pr = 200;
+        let diff = Float::with_val(pr, Float::parse(&back.text).unwrap()) - 1.5f64;
+        assert!(
+            diff.abs() < Float::with_val(pr, 1e-30),
+            "{floor:?}/{contact:?} theta0 {th0} thetadot0 {td0}: theta = {}, t = {}",
+            th[0].text,
+            back.text
+        );
+    }
+}
+
+#[test]
+fn separation_angle_is_separation_theta_s() {
+    let mut cases = vec![];
+    for (floor, contact) in [
+        (Floor::Roll, Contact::Roll),
+        (Floor::Slip, Contact::Roll),
+        (Floor::Roll, Contact::Slip),
+        (Floor::Slip, Contact::Slip),
+        (Floor::Fixed, Contact::Roll),
+        (Floor::Fixed, Contact::Slip),
+    ] {
+        for (m2, k2, th0, td0) in [
+            ("1", "1/2", "0", "0"),
+            ("2", "1/2", "1/10", "0"),
+            ("1/3", "3/2", "-1/5", "-1/4"),
+        ] {
+            cases.push((floor, contact, m2, k2, th0, td0));
+        }
+    }
+    for (floor, contact, m2, k2, th0, td0) in cases {
+        let mut p = Params::identical_solid();
+        p.m2 = q(m2).coef;
+        p.k2 = q(k2).coef;
+        let start = Start {
+            theta0: q(th0),
+            thetadot0: q(td0).coef,
+            omega0: Rational::new(),
+        };
+        let m = Model::new(p, floor, contact, start).unwrap();
+        for digits in [20u32, 60] {
+            let mut o = Oracle::new(&m, digits).unwrap();
+            let fast = o.separation_angle().unwrap();
+            let full = o.separation().unwrap().theta_s;
+            assert_eq!(
+                fast.text, full.text,
+                "{floor:?}/{contact:?} m2 {m2} k2 {k2} theta0 {th0} thetadot0 {td0} at {digits}"
+            );
+        }
+    }
+}
+
+#[test]
+fn time_integral_matches_the_bench_t1_value_to_300_digits() {
+    let mut o = Oracle::new(&t3_model(), 300).unwrap();
+    assert_eq!(o.time_at(&q("9/10")).unwrap().text, rounded(T1, 300));
+}
+
+#[test]
+fn separation_angle_matches_the_bench_t2b_root_to_300_digits() {
+    let mut p = Params::identical_solid();
+    p.m2 = Rational::from(2);
+    let m = Model::new(p, Floor::Roll, Contact::Roll, Start::rest(Exact::zero())).unwrap();
+    let mut o = Oracle::new(&m, 300).unwrap();
+    assert_eq!(o.separation_angle().unwrap().text, rounded(T2B, 300));
+    // T2: exactly π/3
+    let mut o = Oracle::new(&Model::paper_default(Exact::zero()), 300).unwrap();
+    let pi3 = Float::with_val(1300, rug::float::Constant::Pi) / 3u32;
+    assert_eq!(o.separation_angle().unwrap().text, to_sig(&pi3, 300));
+}
+
+#[test]
+fn time_integral_by_both_second_runs() {
+    // the first calls run tanh-sinh at both precisions; once a Gauss–Legendre
+    // rule pays for itself (here by the third call), it takes the second run:
+    // the digits must not move (the routes themselves are compared in the
+    // oracle's unit tests)
+    let mut o = Oracle::new(&t3_model(), 120).unwrap();
+    let want = rounded(T1, 120);
+    for _ in 0..6 {
+        let t = o.time_at(&q("9/10")).unwrap();
+        assert_eq!(t.text, want);
+    }
+}
