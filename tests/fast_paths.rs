@@ -202,3 +202,38 @@ fn time_integral_by_both_second_runs() {
         assert_eq!(t.text, want);
     }
 }
+
+#[test]
+fn taylor_is_independent_of_the_time_unit() {
+    // g = 1000 and g = 1/1000 are the same motion with time scaled by
+    // 1/√1000 and √1000: θ at the scaled time must agree, and come back
+    // through the quadrature
+    let digits = 32;
+    let mut thetas = vec![];
+    for (g, t) in [
+        ("1", "3.6"),
+        ("1000", "0.113841995766062"),
+        ("1/1000", "113.841995766062"),
+    ] {
+        let mut p = Params::identical_solid();
+        p.g = q(g).coef;
+        let m = Model::new(p, Floor::Roll, Contact::Roll, Start::rest(q("1/10"))).unwrap();
+        let mut o = Oracle::new(&m, digits).unwrap();
+        let th = o.theta_at_times(&[q(t)]).unwrap();
+        let back = o.time_at(&q(&th[0].text)).unwrap();
+        let pr = 200;
+        let rel = (Float::with_val(pr, Float::parse(&back.text).unwrap()) - q(t).to_float(pr))
+            / q(t).to_float(pr);
+        assert!(
+            rel.abs() < 1e-28,
+            "g = {g}: theta {} t {}",
+            th[0].text,
+            back.text
+        );
+        thetas.push(th[0].text.clone());
+    }
+    // the scaled times are rounded to 15 digits: θ agrees to about that
+    for t in &thetas[1..] {
+        assert_eq!(t[..14], thetas[0][..14], "{thetas:?}");
+    }
+}

@@ -3,7 +3,9 @@
 //! lowest `L − 1` are the fraction (value = ±m·2^(−64(L−1)), so |value| <
 //! 2^64). Products are accumulated exactly (up to the truncation below) in a
 //! double-length accumulator and rounded toward zero once per result, by
-//! dropping whole limbs.
+//! dropping whole limbs. A result that does not fit raises the accumulator's
+//! overflow flag. Values below 1 leave the integer limb zero, and every loop
+//! runs over the significant limbs only, so that limb costs nothing.
 //!
 //! The limb count is a const generic: the loops have fixed bounds, unroll,
 //! and carry no bounds checks; the integrator is instantiated for a list of
@@ -131,6 +133,18 @@ impl<const L: usize> Fx<L> {
         m.log2() + 64.0 * (n as f64 - 1.0 - Self::LF as f64)
     }
 
+    /// self / k (k > 0, toward zero).
+    pub fn div_small(&self, k: u64) -> Self {
+        let mut m = self.m;
+        let mut rem: u128 = 0;
+        for x in m.iter_mut().rev() {
+            let cur = (rem << 64) | *x as u128;
+            *x = (cur / k as u128) as u64;
+            rem = cur % k as u128;
+        }
+        Self::from_mag(m, self.neg)
+    }
+
     /// k·self (k small; |result| < 2^64).
     pub fn mul_small(&self, k: u64) -> Self {
         let mut m = [0u64; L];
@@ -255,6 +269,8 @@ fn add_shifted(acc: &mut [u64], a: &[u64], shift: usize) {
 pub struct Acc<const L: usize> {
     pos: Vec<u64>,
     neg: Vec<u64>,
+    /// Set when a result did not fit in the integer limb (sticky).
+    pub overflow: bool,
 }
 
 impl<const L: usize> Default for Acc<L> {
@@ -271,10 +287,11 @@ impl<const L: usize> Acc<L> {
         Acc {
             pos: vec![0; 2 * L + 2],
             neg: vec![0; 2 * L + 2],
+            overflow: false,
         }
     }
 
-    /// Sets to zero.
+    /// Sets to zero (the overflow flag stays).
     #[inline]
     pub fn clear(&mut self) {
         self.pos.fill(0);
@@ -344,23 +361,26 @@ impl<const L: usize> Acc<L> {
         };
         let mut m = [0u64; L];
         let mut borrow = 0u64;
-        for k in 0..lf + L {
+        let mut high = 0u64;
+        for k in 0..2 * L + 2 {
             let (d1, b1) = a[k].overflowing_sub(b[k]);
             let (d2, b2) = d1.overflowing_sub(borrow);
             borrow = (b1 as u64) + (b2 as u64);
-            if k >= lf {
+            if k >= lf + L {
+                high |= d2;
+            } else if k >= lf {
                 m[k - lf] = d2;
             }
         }
-        if div > 1 {
-            let mut rem: u128 = 0;
-            for x in m.iter_mut().rev() {
-                let cur = (rem << 64) | *x as u128;
-                *x = (cur / div as u128) as u64;
-                rem = cur % div as u128;
-            }
+        if high != 0 {
+            self.overflow = true;
         }
-        Fx::from_mag(m, neg)
+        let r = Fx::from_mag(m, neg);
+        if div > 1 {
+            r.div_small(div)
+        } else {
+            r
+        }
     }
 }
 
@@ -492,6 +512,12 @@ mod tests {
         horner_case::<2>();
         horner_case::<4>();
         horner_case::<9>();
+        let big = Fx::<2>::from_float(&Float::with_val(64, 2u64.pow(40)));
+        let mut acc = Acc::<2>::new();
+        acc.clear();
+        acc.mac(&big, &big);
+        let _ = acc.finish(1);
+        assert!(acc.overflow, "overflow is flagged, not silent");
         assert_eq!(limbs_for(1), Some(2));
         assert_eq!(limbs_for(11), Some(12));
         assert_eq!(limbs_for(300), None);

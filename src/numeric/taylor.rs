@@ -163,6 +163,14 @@ fn log2_add(a: f64, b: f64) -> f64 {
 }
 
 /// Series workspace at one limb count.
+///
+/// The quantities are kept O(1) (values below 1 leave the fixed-point integer
+/// limb empty, and an overflow would be wrong): K is divided by κ (a power of
+/// two with |k_i|/κ ≤ 1), P by κ², and P is multiplied by H² per step, so
+/// that the series A of H²·θ̈ is computed directly and
+/// X_{k+2} = A_k/((k+1)(k+2)). With H near the step size the scaled
+/// coefficients are at most about 1; a result that does not fit raises the
+/// overflow flag and the step is redone with H halved.
 struct Series<const L: usize> {
     n: usize,
     x: Vec<Fx<L>>,
@@ -174,8 +182,12 @@ struct Series<const L: usize> {
     kk: Vec<Fx<L>>,
     pser: Vec<Fx<L>>,
     a: Vec<Fx<L>>,
-    e: [Fx<L>; 3],
+    /// K/κ.
     k: [Fx<L>; 3],
+    /// P/κ² as Floats (scaled by H² per step).
+    e: [Float; 3],
+    /// κ² (Float).
+    kappa2: Float,
     acc: Acc<L>,
     work: u64,
 }
@@ -183,6 +195,18 @@ struct Series<const L: usize> {
 impl<const L: usize> Series<L> {
     fn new(rhs: &Conservative, n: usize) -> Self {
         let v = || vec![Fx::<L>::ZERO; n + 1];
+        let pw = 64 * L as u32 + 32;
+        let kmax = rhs
+            .k
+            .iter()
+            .map(|x| x.to_f64().abs())
+            .fold(0f64, f64::max)
+            .max(1e-300);
+        let kexp = kmax.log2().ceil() as i32;
+        let kappa = Float::with_val(pw, 1u32) << kexp;
+        let kappa2 = Float::with_val(pw, kappa.square_ref());
+        let ks = |i: usize| Fx::from_float(&Float::with_val(pw, &rhs.k[i] / &kappa));
+        let es = |i: usize| Float::with_val(pw, &rhs.e[i] / &kappa2);
         Series {
             n,
             x: v(),
@@ -194,35 +218,46 @@ impl<const L: usize> Series<L> {
             kk: v(),
             pser: v(),
             a: v(),
-            e: [
-                Fx::from_float(&rhs.e[0]),
-                Fx::from_float(&rhs.e[1]),
-                Fx::from_float(&rhs.e[2]),
-            ],
-            k: [
-                Fx::from_float(&rhs.k[0]),
-                Fx::from_float(&rhs.k[1]),
-                Fx::from_float(&rhs.k[2]),
-            ],
+            k: [ks(0), ks(1), ks(2)],
+            e: [es(0), es(1), es(2)],
+            kappa2,
             acc: Acc::new(),
             work: 0,
         }
     }
 
-    /// Fills X_0..X_N for θ(T) = theta, θ̇(T) = thetadot and step scale H.
-    fn compute(&mut self, rhs: &Conservative, theta: &Float, thetadot: &Float, h: &Float) {
+    /// Fills X_0..X_N for θ(T) = theta, θ̇(T) = thetadot and step scale H;
+    /// false if a value overflowed (H too large for this step).
+    fn compute(&mut self, rhs: &Conservative, theta: &Float, thetadot: &Float, h: &Float) -> bool {
         let n = self.n;
         let pw = 64 * L as u32 + 32;
+        self.acc.overflow = false;
         self.x[0] = Fx::from_float(theta);
-        self.x[1] = Fx::from_float(&Float::with_val(pw, thetadot * h));
+        let v1 = Float::with_val(pw, thetadot * h);
+        if v1.to_f64().abs() >= 1e12 {
+            return false;
+        }
+        self.x[1] = Fx::from_float(&v1);
         let (sn, cs) = Float::with_val(pw, theta).sin_cos(Float::new(pw));
         self.s[0] = Fx::from_float(&sn);
         self.c[0] = Fx::from_float(&cs);
-        // 1/K(c0)² and H²
+        // κ²/K(c0)² and the per-step P·H²/κ²
         let kv = Float::with_val(pw, &rhs.k[2] * &cs) + &rhs.k[1];
         let kv = Float::with_val(pw, kv * &cs) + &rhs.k[0];
-        let rinv = Fx::<L>::from_float(&Float::with_val(pw, kv.square_ref()).recip());
-        let h2 = Fx::<L>::from_float(&Float::with_val(pw, h.square_ref()));
+        let rinv = Float::with_val(pw, &self.kappa2 / Float::with_val(pw, kv.square_ref()));
+        if rinv.to_f64() >= 1e12 {
+            return false;
+        }
+        let rinv = Fx::<L>::from_float(&rinv);
+        let h2 = Float::with_val(pw, h.square_ref());
+        let mut e = [Fx::<L>::ZERO; 3];
+        for (o, ei) in e.iter_mut().zip(&self.e) {
+            let v = Float::with_val(pw, ei * &h2);
+            if v.to_f64().abs() >= 1e12 {
+                return false;
+            }
+            *o = Fx::from_float(&v);
+        }
         self.d[0] = Fx::ZERO;
         self.d[1] = self.x[1];
         let Series {
@@ -235,7 +270,6 @@ impl<const L: usize> Series<L> {
             kk,
             pser,
             a,
-            e,
             k: kc,
             acc,
             work,
@@ -302,16 +336,15 @@ impl<const L: usize> Series<L> {
             acc.clear();
             acc.mac(&num, &rinv);
             a[k] = acc.finish(1);
-            *work += 5 * k as u64 + 8;
-            // X_{k+2} = H² A_k / ((k+1)(k+2)), D_{k+2} = (k+2) X_{k+2}
+            *work += 5 * k as u64 + 7;
+            // X_{k+2} = A_k / ((k+1)(k+2)), D_{k+2} = (k+2) X_{k+2}
             let idx = k + 2;
             if idx <= n {
-                acc.clear();
-                acc.mac(&a[k], &h2);
-                x[idx] = acc.finish(((k + 1) * (k + 2)) as u64);
+                x[idx] = a[k].div_small(((k + 1) * (k + 2)) as u64);
                 d[idx] = x[idx].mul_small(idx as u64);
             }
         }
+        !acc.overflow
     }
 }
 
@@ -374,21 +407,35 @@ fn run<const L: usize>(
     let mut delta = Float::new(pw);
     let mut theta = th0.clone();
     let mut thetadot = Float::with_val(pw, thetadot0);
+    let t_end = Float::with_val(pw, t_end);
+    // the growth rate of errors, in the norm max(|δθ|, |δθ̇|/ω): ω ≥ √|F'|
+    // along the step (and ≥ 1/t_end, which bounds the growth where F' ≈ 0)
+    let w_floor = 1.0 / t_end.to_f64().max(1e-300);
+    let omega_at = |th: f64| rhs.f_and_df(th).1.abs().sqrt().max(w_floor);
+    let w0 = omega_at(theta0.to_f64());
     // initial data: rounded at `prec` by the caller
     let mut err = log2_add(
         theta0.to_f64().abs().max(1e-300).log2() - prec as f64,
-        thetadot0.to_f64().abs().max(1e-300).log2() - prec as f64,
+        (thetadot0.to_f64().abs() / w0).max(1e-300).log2() - prec as f64,
     );
-    // the series scale H: the next step's expected size (doubled when a step
-    // is capped at u = 1)
-    let mut hscale = Float::with_val(pw, 1u32);
-    let t_end = Float::with_val(pw, t_end);
+    // the series scale H: a power of two near the local time scale first,
+    // then the next step's expected size (doubled when a step is capped at
+    // u = 1, halved when a value overflows)
+    let scale0 = 1.0 / w0.max(thetadot0.to_f64().abs());
+    let mut hscale =
+        Float::with_val(pw, 1u32) << scale0.log2().floor().clamp(-1000.0, 1000.0) as i32;
     let mut dv = vec![Fx::<L>::ZERO; n + 1];
     while t < t_end {
         if steps.len() > 100_000 {
             return Err(collapsed(prec, &t));
         }
-        ser.compute(rhs, &theta, &thetadot, &hscale);
+        if !ser.compute(rhs, &theta, &thetadot, &hscale) {
+            hscale >>= 1;
+            if hscale.to_f64() * w0 < 1e-12 {
+                return Err(collapsed(prec, &t));
+            }
+            continue;
+        }
         // step: largest u ≤ 1 with |X_k| u^k ≤ tol for the last three orders
         let mut log_u = 0.0f64;
         for k in n.saturating_sub(2)..=n {
@@ -441,12 +488,11 @@ fn run<const L: usize>(
             trunc_d = log2_add(trunc_d, lx + (k as f64).log2() + (k as f64 - 1.0) * lu - lh);
         }
         let sum_mag = ser.x[0].log2().max(0.0);
-        let round = (8.0 * n as f64).log2() - frac as f64 + sum_mag + (-lh).max(0.0);
-        let (_, df0) = rhs.f_and_df(theta.to_f64());
-        let (_, df1) = rhs.f_and_df(new_theta.to_f64());
-        let lambda = 1.25 * 1f64.max(df0.abs()).max(df1.abs());
+        let round = (8.0 * n as f64).log2() - frac as f64 + sum_mag;
+        let omega = 1.25 * omega_at(theta.to_f64()).max(omega_at(new_theta.to_f64()));
+        let lambda = omega;
         let hf = h.to_f64();
-        let local = log2_add(log2_add(trunc, trunc_d), round);
+        let local = log2_add(log2_add(trunc, trunc_d - omega.log2()), round);
         let mut tail = [(0.0, f64::NEG_INFINITY); 3];
         for (i, k) in (n.saturating_sub(2)..=n).enumerate() {
             tail[i] = (k as f64, ser.x[k].log2());
@@ -512,7 +558,7 @@ impl<const L: usize> Dense for Run<L> {
             // holds a little beyond its end
             let last = self.steps.last()?;
             let over = Float::with_val(64, t - &last.t1);
-            let tol = Float::with_val(64, last.t1.abs_ref()) >> (last.t1.prec() as i32 - 8);
+            let tol = Float::with_val(64, last.t1.abs_ref()) >> (prec as i32);
             if over > tol {
                 return None;
             }

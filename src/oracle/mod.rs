@@ -798,7 +798,7 @@ impl Oracle {
         let rhs = self.taylor_rhs(p)?;
         let th0 = self.work.start().theta0.to_float(p);
         let td0 = Float::with_val(p, &self.work.start().thetadot0);
-        let t_end = Float::with_val(tq, &tt_all[i_max]);
+        let t_end = tt_all[i_max].clone();
         let mut traj = taylor::integrate(&rhs, &th0, &td0, &t_end, p, extra)?;
         let mut out = Vec::with_capacity(times.len());
         let mut floor = Float::new(p);
