@@ -33,6 +33,8 @@ pub struct TanhSinh {
     prec: u32,
     t_max: f64,
     levels: Vec<Level>,
+    /// Nodes by the exponential recurrence ([`TanhSinh::with_fast_nodes`]).
+    fast_nodes: bool,
 }
 
 /// The result of one integration.
@@ -77,6 +79,21 @@ impl TanhSinh {
             prec,
             t_max,
             levels: Vec::new(),
+            fast_nodes: false,
+        }
+    }
+
+    /// A rule whose nodes come from the recurrence e^(t+2h) = e^t·e^(2h)
+    /// (sinh and cosh from e^t by one division, refreshed by an `exp` every
+    /// 64 nodes): one transcendental call per node instead of two, so about
+    /// half the cost of building a level. The nodes sit within a few units of
+    /// the working precision + 16 guard bits of k·h, and each weight belongs
+    /// to its own node, so the rule is the same to far below the tolerance
+    /// (but not bit for bit the rule of [`TanhSinh::new`]).
+    pub fn with_fast_nodes(prec: u32) -> Self {
+        TanhSinh {
+            fast_nodes: true,
+            ..Self::new(prec)
         }
     }
 
@@ -96,13 +113,27 @@ impl TanhSinh {
             let mut one_minus_q = Vec::new();
             let mut w = Vec::new();
             let mut k = start;
+            let step_exp = Float::with_val(p, &h * step).exp();
+            let mut et = Float::new(p);
             loop {
                 let t = Float::with_val(p, &h * k);
                 if t.to_f64() > self.t_max {
                     break;
                 }
                 // u = (π/2) sinh t; e = exp(-2u); q = e/(1+e); cosh u = (1+e)/(2 sqrt e)
-                let (sh, ch) = t.sinh_cosh(Float::new(p));
+                let (sh, ch) = if self.fast_nodes {
+                    if (k - start) % (64 * step) == 0 {
+                        et.assign(t.exp_ref());
+                    } else {
+                        et *= &step_exp;
+                    }
+                    let inv = Float::with_val(p, et.recip_ref());
+                    let sh = Float::with_val(p, &et - &inv) / 2u32;
+                    let ch = Float::with_val(p, &et + &inv) / 2u32;
+                    (sh, ch)
+                } else {
+                    t.sinh_cosh(Float::new(p))
+                };
                 let u = Float::with_val(p, &half_pi * &sh);
                 let e = Float::with_val(p, -2 * u).exp();
                 let one_plus = Float::with_val(p, 1u32 + &e);
@@ -314,6 +345,30 @@ mod tests {
                     out.assign(x.sqrt_ref());
                     out.recip_mut();
                 },
+            );
+        }
+    }
+
+    #[test]
+    fn fast_nodes_integrate_as_well() {
+        // ∫_0^1 δ^(-1/2) dδ = 2 with the recurrence-built nodes
+        for prec in [100u32, 340, 1000] {
+            let d = Float::with_val(prec, 1u32);
+            let mut ts = TanhSinh::with_fast_nodes(prec);
+            let r = ts.integrate(&d, prec - 8, |x, out| {
+                out.assign(x.sqrt_ref());
+                out.recip_mut();
+            });
+            assert!(r.converged);
+            let err = Float::with_val(prec, &r.value - 2u32).abs();
+            assert!(
+                err <= Float::with_val(prec, &r.err * 4u32),
+                "{prec}: {err:e} vs {:e}",
+                r.err
+            );
+            assert!(
+                err < Float::with_val(prec, 1u32) >> (prec as i32 - 20),
+                "{prec}: {err:e}"
             );
         }
     }

@@ -13,7 +13,11 @@ use std::collections::HashMap;
 
 pub(super) struct Engine {
     pub dynm: Dyn,
+    /// The rule of [`Engine::time`] (its nodes are part of `separation()`'s
+    /// recorded output, so they stay bit for bit as they were).
     pub ts: TanhSinh,
+    /// The rule of [`Engine::time_fast`] (nodes built at half the cost).
+    ts_half: TanhSinh,
     scratch: Scratch,
     half: HalfAngleTime,
     /// θ = 2π/3 − θ0: the half-angle form is used up to this δ.
@@ -47,6 +51,7 @@ impl Engine {
         Ok(Engine {
             dynm,
             ts: TanhSinh::new(prec),
+            ts_half: TanhSinh::with_fast_nodes(prec),
             scratch: Scratch::new(prec),
             half,
             half_limit,
