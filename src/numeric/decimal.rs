@@ -34,6 +34,41 @@ pub fn round_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
     Some((neg, d, e - lead_zeros))
 }
 
+/// `x` to `digits` significant decimal digits *within one unit of the last
+/// digit* (not always correctly rounded), as [`round_sig`]'s (sign, digits,
+/// exponent): |x| scaled by a power of ten and rounded to an integer, at a
+/// precision where that product is exact to far below a unit. Cheaper than
+/// MPFR's correctly rounded conversion; for callers that allow for the unit
+/// (the precision ladder's fast judgement). Needs digits·log2(10) < prec(x).
+pub fn approx_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
+    if x.is_zero() || !x.is_finite() {
+        return None;
+    }
+    let (m, ex) = x.to_f64_exp();
+    let mut e = (m.abs().log10() + ex as f64 * std::f64::consts::LOG10_2).floor() as i64 + 1;
+    let p = x.prec() + 16;
+    let n = digits as i64;
+    for _ in 0..3 {
+        let k = n - e;
+        let kk = u32::try_from(k.unsigned_abs()).ok()?;
+        let pow = Float::with_val(p, Float::u_pow_u(10, kk));
+        let mut y = Float::with_val(p, x.abs_ref());
+        if k >= 0 {
+            y *= &pow;
+        } else {
+            y /= &pow;
+        }
+        let (mi, _) = y.to_integer_round(Round::Nearest)?;
+        let s = mi.to_string();
+        match (s.len() as i64).cmp(&n) {
+            std::cmp::Ordering::Greater => e += 1,
+            std::cmp::Ordering::Less => e -= 1,
+            std::cmp::Ordering::Equal => return Some((x.is_sign_negative(), s, e)),
+        }
+    }
+    None
+}
+
 /// Plain text of ±0.d·10^e: positional when −7 ≤ e ≤ 21, else `d.ddde±x`.
 pub fn render(neg: bool, d: &str, e: i64) -> String {
     let sign = if neg { "-" } else { "" };

@@ -119,23 +119,27 @@ pub fn agreeing_digits(v: &Float, b: &Float, max: u32) -> u32 {
 /// The text [`judge`] would print, found with one decimal conversion
 /// instead of two, or `None` to let the two-conversion path decide.
 ///
-/// v is rendered with d + 3 digits, D = A·T (A the first d digits, T the last
-/// three, 0 ≤ T < 1000), |v − 0.D·10^e| ≤ ½·10^(e−d−3). v rounds to A (T <
-/// 500) or A + 1, and sits |T − 500| units of 10^(e−d−3) from the nearest
-/// boundary of that rounding cell (the midpoints A ± ½). If the bound is below
-/// that distance less one unit, v − bound and v + bound both lie inside the
-/// cell and round to the same d digits — the ones returned. Declined (the
+/// v is rendered with d + 3 digits good to one unit of the last
+/// ([`super::decimal::approx_sig`]), D = A·T (A the first d digits, T the
+/// last three, 0 ≤ T < 1000), |v − 0.D·10^e| ≤ 10^(e−d−3). v rounds to A
+/// (T < 500) or A + 1, and sits at least |T − 500| − 1 units of 10^(e−d−3)
+/// from the nearest boundary of that rounding cell (the midpoints A ± ½). If
+/// the bound is below that distance less one more unit, v − bound and
+/// v + bound both lie inside the cell and round to the same d digits — the
+/// ones returned. Declined (the
 /// exact path decides): a cell at a power of ten (A = 10…0, where the cell
 /// below is finer) or a carry into d + 1 digits.
 fn fast_text(v: &Float, bound: &Float, digits: u32) -> Option<String> {
     let d = digits as usize;
-    let (neg, dd, e) = round_sig(v, digits + 3)?;
+    let (neg, dd, e) = super::decimal::approx_sig(v, digits + 3)?;
     let bytes = dd.as_bytes();
     if bytes.len() != d + 3 {
         return None;
     }
     let t: i64 = dd[d..].parse().ok()?;
-    let margin = (t - 500).abs() - 1;
+    // the three guard digits are good to one unit: the rounding boundary
+    // T = 500 is more than two units away
+    let margin = (t - 500).abs() - 2;
     if margin <= 0 {
         return None;
     }

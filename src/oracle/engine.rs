@@ -120,7 +120,7 @@ impl Engine {
         };
         let half = &mut self.half;
         let r = self
-            .ts
+            .ts_half
             .integrate_with(&sigma, p.saturating_sub(10), stop, |x, out| {
                 half.eval(x, out)
             });

@@ -86,6 +86,28 @@ pub struct Oracle {
     n12_poly: Option<crate::mechanics::dynamics::N12Poly>,
 }
 
+/// Constants of the trajectory rows at one precision.
+struct RowContext {
+    p: u32,
+    /// Natural scales of the 12 columns after t.
+    scales: [Float; 12],
+    /// √(r/g).
+    ts: Float,
+    /// r = r1 + r2.
+    rr: Float,
+    /// r1.
+    r1: Float,
+}
+
+/// Whether `q` has a terminating decimal expansion (its reduced denominator
+/// has no prime factors but 2 and 5).
+fn terminating(q: &rug::Rational) -> bool {
+    let mut d = q.denom().clone();
+    d.remove_factor_mut(&rug::Integer::from(2));
+    d.remove_factor_mut(&rug::Integer::from(5));
+    d == 1
+}
+
 /// The one value of a one-name ladder.
 fn single(v: Vec<Verified>) -> Result<Verified> {
     v.into_iter()
@@ -651,17 +673,19 @@ impl Oracle {
         let mut cache = (0, Vec::new());
         let mut rows = ladder_table(self.digits, &TRAJECTORY_COLUMNS, times.len(), |p, run| {
             let deltas = self.deltas_at(times, p, run, true, &mut cache)?;
+            let ctx = self.row_context(p);
             let mut out = Vec::with_capacity(times.len() * TRAJECTORY_COLUMNS.len());
             for (t, (d, derr)) in times.iter().zip(deltas) {
-                out.extend(self.row_estimates(t, &d, &derr, p, floor, contact)?);
+                out.extend(self.row_estimates(t, &d, &derr, &ctx, floor, contact)?);
             }
             Ok(out)
         })?;
         for (row, t) in rows.iter_mut().zip(times) {
-            // the time is an input: print it exactly when it is a terminating decimal
-            let exact = crate::exact::rational_text(&t.coef);
-            if !t.times_pi && !exact.contains('/') {
-                row[0].text = exact;
+            // the time is an input: print it exactly when it is a terminating
+            // decimal (a denominator of 2s and 5s only; checked first, as
+            // writing out a long fraction costs more than the whole row)
+            if !t.times_pi && terminating(&t.coef) {
+                row[0].text = crate::exact::rational_text(&t.coef);
             }
         }
         Ok(rows)
@@ -873,22 +897,51 @@ impl Oracle {
         Ok(out)
     }
 
+    /// The per-run constants of the trajectory rows at precision `p`.
+    fn row_context(&self, p: u32) -> RowContext {
+        let sf = self.scale_force(p);
+        let ts = self.scale_time(p);
+        let pr = self.work.params();
+        let rr = Float::with_val(p, &pr.r());
+        let r1 = Float::with_val(p, &pr.r1);
+        let one = Float::with_val(p, 1u32);
+        let inv_ts = Float::with_val(p, &one / &ts);
+        let inv_ts2 = Float::with_val(p, &inv_ts / &ts);
+        RowContext {
+            p,
+            scales: [
+                one.clone(),
+                inv_ts,
+                inv_ts2,
+                one.clone(),
+                one,
+                rr.clone(),
+                rr.clone(),
+                rr.clone(),
+                sf.clone(),
+                sf.clone(),
+                sf.clone(),
+                sf,
+            ],
+            ts,
+            rr,
+            r1,
+        }
+    }
+
     /// The estimates of one trajectory row at time `t` from δ and its bound.
     fn row_estimates(
         &mut self,
         t: &Exact,
         d: &Float,
         derr: &Float,
-        p: u32,
+        ctx: &RowContext,
         floor: Floor,
         contact: Contact,
     ) -> Result<Vec<Estimate>> {
+        let p = ctx.p;
         let tf = t.to_float(p);
-        let sf = self.scale_force(p);
-        let ts = self.scale_time(p);
-        let pr = self.work.params().clone();
-        let rr = Float::with_val(p, &pr.r());
-        let r1 = Float::with_val(p, &pr.r1);
+        let (rr, r1) = (&ctx.rr, &ctx.r1);
         let e = self.engine(p)?;
         let st = e.dynm.state(d);
         let d2 = Float::with_val(p, d + derr);
@@ -896,8 +949,8 @@ impl Oracle {
         let vals = |st: &crate::mechanics::dynamics::State, e: &Engine| -> Vec<Float> {
             let pos = e.dynm.positions(st, &tf);
             let f = e.dynm.forces(st);
-            let x2 = Float::with_val(p, &rr * &st.s) + &pos[0];
-            let y2 = Float::with_val(p, &rr * &st.c) + &r1;
+            let x2 = Float::with_val(p, rr * &st.s) + &pos[0];
+            let y2 = Float::with_val(p, rr * &st.c) + r1;
             let phi2 = Float::with_val(p, &pos[2] + &st.theta);
             vec![
                 st.theta.clone(),
@@ -916,21 +969,7 @@ impl Oracle {
         };
         let a = vals(&st, e);
         let b = vals(&st2, e);
-        let one = Float::with_val(p, 1u32);
-        let scales = [
-            one.clone(),
-            Float::with_val(p, &one / &ts),
-            Float::with_val(p, &one / &ts) / &ts,
-            one.clone(),
-            one.clone(),
-            rr.clone(),
-            rr.clone(),
-            rr.clone(),
-            sf.clone(),
-            sf.clone(),
-            sf.clone(),
-            sf.clone(),
-        ];
+        let scales = &ctx.scales;
         // odd columns change sign in the mirror
         let odd = [
             true, true, true, true, true, true, true, false, true, false, true, false,
@@ -939,7 +978,7 @@ impl Oracle {
             value: tf.clone(),
             err: Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2),
             exact_zero: t.is_zero(),
-            scale: ts.clone(),
+            scale: ctx.ts.clone(),
         }];
         for i in 0..12 {
             let prop = Float::with_val(p, &b[i] - &a[i]).abs();
