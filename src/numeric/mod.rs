@@ -1,6 +1,9 @@
-//! Numerical building blocks on `rug::Float`: tanh-sinh and Gauss–Legendre
-//! quadrature, bracketed
-//! roots, and the precision ladder that turns two runs into verified digits.
+//! Numerical building blocks on `rug::Float`: tanh-sinh ([`quad`]) and
+//! Gauss–Legendre ([`gauss`]) quadrature, bracketed roots ([`root`]) and real
+//! polynomial roots ([`poly`]), a Taylor-series ODE integrator with dense
+//! output ([`taylor`], on the fixed-point kernel of [`fixed`]), decimal
+//! output ([`decimal`]), and the precision ladder that turns two runs into
+//! verified digits ([`verify`]).
 //!
 //! No Rust crate integrates or root-solves on MPFR numbers; these are ours and
 //! are tested against closed forms in their own unit tests.

@@ -4,6 +4,15 @@
 //! Each method runs its computation through the precision ladder
 //! ([`crate::numeric::verify::ladder`]) and returns [`Verified`] numbers.
 //!
+//! Routes: `separation()` scans N12 and refines with Illinois regula falsi
+//! (its output is part of the golden data and does not change);
+//! `separation_angle()` roots an exact polynomial in cos θ; `time_at()` uses
+//! the half-angle quadrature (tanh-sinh, then Gauss–Legendre once it pays);
+//! `trajectory()` and `theta_at_times()` one Taylor-series run per precision
+//! for all times. The oracle caches what depends only on the model and the
+//! precision (engines with their node sets, the scan bracket, θs and t_s per
+//! precision), never a requested answer.
+//!
 //! A model that falls to the left (θ0 < 0, or θ0 = 0 with θ̇0 < 0) is solved as
 //! its mirror image and the odd quantities (θ, θ̇, θ̈, φ1, φ2, x1, x2, F1, F21)
 //! change sign on the way out.
@@ -587,6 +596,13 @@ impl Oracle {
     }
 
     /// t(θ): the time from the start to the angle θ (energy quadrature).
+    ///
+    /// Method: for θ ≤ 2π/3 the integral in s = sin(θ/2), an algebraic
+    /// integrand ([`crate::mechanics::dynamics::HalfAngleTime`]); the ladder's
+    /// first run by tanh-sinh, its second by tanh-sinh too — or, once this
+    /// oracle has spent more on tanh-sinh integrals at that precision than a
+    /// Gauss–Legendre rule costs to build, by Gauss–Legendre with its a-priori
+    /// error model (two methods at two precisions). Beyond 2π/3 the θ form.
     ///
     /// Errors: θ outside [θ0, θs]; a start from rest at the top (infinite).
     pub fn time_at(&mut self, theta: &Exact) -> Result<Verified> {
