@@ -7,7 +7,11 @@ use cylroll::record::{load_cases, render, GOLDEN_DIGITS};
 use std::path::Path;
 
 fn golden() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("golden").leak()
+    Box::leak(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("golden")
+            .into_boxed_path(),
+    )
 }
 
 #[test]

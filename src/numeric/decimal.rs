@@ -34,6 +34,12 @@ pub fn round_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
     Some((neg, d, e - lead_zeros))
 }
 
+thread_local! {
+    /// The last power of ten used by [`approx_sig`]: (precision, exponent, value).
+    static POW10: std::cell::RefCell<(u32, u32, Float)> =
+        std::cell::RefCell::new((0, 0, Float::new(2)));
+}
+
 /// `x` to `digits` significant decimal digits *within one unit of the last
 /// digit* (not always correctly rounded), as [`round_sig`]'s (sign, digits,
 /// exponent): |x| scaled by a power of ten and rounded to an integer, at a
@@ -51,13 +57,20 @@ pub fn approx_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
     for _ in 0..3 {
         let k = n - e;
         let kk = u32::try_from(k.unsigned_abs()).ok()?;
-        let pow = Float::with_val(p, Float::u_pow_u(10, kk));
         let mut y = Float::with_val(p, x.abs_ref());
-        if k >= 0 {
-            y *= &pow;
-        } else {
-            y /= &pow;
-        }
+        // 10^kk at p bits, kept for the next call (a table's values share
+        // their precision and mostly their exponent)
+        POW10.with(|c| {
+            let mut c = c.borrow_mut();
+            if c.0 != p || c.1 != kk {
+                *c = (p, kk, Float::with_val(p, Float::u_pow_u(10, kk)));
+            }
+            if k >= 0 {
+                y *= &c.2;
+            } else {
+                y /= &c.2;
+            }
+        });
         let (mi, _) = y.to_integer_round(Round::Nearest)?;
         let s = mi.to_string();
         match (s.len() as i64).cmp(&n) {

@@ -12,6 +12,9 @@ use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
 use rug::Float;
 use serde_json::{json, Value};
 
+/// One candidate cell: (column index, its text, its value).
+type Cell = (usize, String, f64);
+
 use super::Case;
 
 /// Per-column statistics.
@@ -172,7 +175,7 @@ pub fn check(
         .iter()
         .position(|c| c == "t")
         .ok_or_else(|| Error::invalid("candidate", source, "needs a column named t"))?;
-    let mut data: Vec<(Exact, Vec<(usize, String, f64)>)> = Vec::new();
+    let mut data: Vec<(Exact, Vec<Cell>)> = Vec::new();
     for (row, line) in lines.enumerate() {
         let cells: Vec<&str> = line.split(',').map(|c| c.trim()).collect();
         if cells.len() != cols.len() {

@@ -146,7 +146,7 @@ pub fn render(case: &Case) -> Result<Rendered> {
     })?;
     let end = grid_end(&t_s)?;
     let times: Vec<Exact> = (0..=case.steps)
-        .map(|i| Exact::rational(Rational::from(&end * Rational::from((i, case.steps)))))
+        .map(|i| Exact::rational(&end * Rational::from((i, case.steps))))
         .collect();
     let rows = o.trajectory(&times)?;
 
