@@ -11,11 +11,10 @@ use crate::numeric::decimal::short;
 use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
 use rug::Float;
 use serde_json::{json, Value};
+use super::Case;
 
 /// One candidate cell: (column index, its text, its value).
 type Cell = (usize, String, f64);
-
-use super::Case;
 
 /// Per-column statistics.
 #[derive(Debug, Clone)]
