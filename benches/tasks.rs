@@ -8,6 +8,8 @@
 //!   per task and precision with the median *CPU* time of warm repeats (and the
 //!   cold first call), the numbers `bench/compare.sh` sets side by side with the
 //!   anchors. The machine may be shared: CPU time is the steadier figure.
+//!   The task `T3n` (run only when named) times T3 with 10, 100, 1000 and
+//!   10000 output times, for the growth of the cost with the table's size.
 //!
 //! "Warm" reuses one `Oracle` (its node caches filled by the first call), as
 //! the anchors reuse their integrator objects; "cold" is a fresh `Oracle`.
@@ -98,11 +100,19 @@ fn check(task: &str, v: &Verified, reference: &str, digits: u32) {
 }
 
 fn t3_times() -> Vec<Exact> {
+    t3_times_n(T3_POINTS)
+}
+
+/// `n` equally spaced times from 0 to T3's t_end (both included).
+fn t3_times_n(n: usize) -> Vec<Exact> {
     let tend = q(&refs().t3_tend).coef;
-    (0..T3_POINTS)
-        .map(|i| Exact::rational(&tend * Rational::from((i as i64, 999))))
+    (0..n)
+        .map(|i| Exact::rational(&tend * Rational::from((i as i64, n as i64 - 1))))
         .collect()
 }
+
+/// Table sizes of the `T3n` task (cost against the number of output times).
+const T3N_POINTS: [usize; 4] = [10, 100, 1000, 10000];
 
 // ---------------------------------------------------------------- the tasks
 
@@ -257,6 +267,27 @@ fn median(mut v: Vec<f64>) -> f64 {
     }
 }
 
+/// The `T3n` task: T3 at 30 and 100 digits with `n` output times; θ(t_end)
+/// (the last time for every n) is checked against the reference first.
+fn cpu_t3n(digits: u32, n: usize) {
+    let mut oracle = Oracle::new(&model(1, "1/10"), digits).expect("oracle");
+    let times = t3_times_n(n);
+    let th = oracle.theta_at_times(&times).expect("T3n");
+    check("T3n", &th[n - 1], &refs().t3[T3_POINTS - 1], digits);
+    let mut cpus = Vec::new();
+    let start = Instant::now();
+    while cpus.len() < 15 && (cpus.len() < 5 || start.elapsed().as_secs_f64() < 10.0) {
+        let c = cpu_now();
+        std::hint::black_box(oracle.theta_at_times(&times).expect("T3n"));
+        cpus.push(cpu_now() - c);
+    }
+    println!(
+        "{{\"tool\":\"cylroll\",\"task\":\"T3n\",\"digits\":{digits},\"points\":{n},\"cpu_median_s\":{:.6e},\"samples\":{},\"checked\":true}}",
+        median(cpus.clone()),
+        cpus.len()
+    );
+}
+
 /// Times `name` at `digits`: the cold first call (fresh oracle), a check of
 /// every value, then warm repeats (batched so each sample lasts ≥ 2 ms) until
 /// `min_runs` samples and `budget` seconds, or `max_runs` samples.
@@ -308,6 +339,15 @@ fn cpu_main() {
         Ok(s) => s.split(',').filter_map(|x| x.trim().parse().ok()).collect(),
         Err(_) => DIGITS.to_vec(),
     };
+    if args.iter().any(|a| a == "T3n") {
+        for &d in &digits {
+            if T3_DIGITS.contains(&d) {
+                for n in T3N_POINTS {
+                    cpu_t3n(d, n);
+                }
+            }
+        }
+    }
     for name in ["T1", "T2", "T2b", "T3", "T3rows"] {
         if !wanted(name) {
             continue;

@@ -5,13 +5,13 @@
 //! times (no interpolation of either side). A value fails when
 //! |candidate − oracle| > atol + rtol·|oracle| (numpy's `isclose` rule).
 
+use super::Case;
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::numeric::decimal::short;
 use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
 use rug::Float;
 use serde_json::{json, Value};
-use super::Case;
 
 /// One candidate cell: (column index, its text, its value).
 type Cell = (usize, String, f64);
