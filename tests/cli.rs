@@ -121,6 +121,44 @@ fn trajectory_csv_has_header_and_rows() {
     assert!(lines[5].starts_with("2,"), "{}", lines[5]);
 }
 
+/// A time is an input and is echoed exactly when it is a terminating decimal:
+/// 0.125 and 1.0000000000000000000000000000005 lie exactly halfway between two
+/// roundings to the requested digits, a tie no error bound could settle (the
+/// command used to stop with exit 3 there). A non-terminating time (1/3) is
+/// rounded to the requested digits like every other column.
+#[test]
+fn terminating_times_are_echoed_exactly_even_at_a_rounding_tie() {
+    for (times, digits, want) in [
+        ("0.125,1/3", "2", ["0.125", "0.33"]),
+        (
+            "1.0000000000000000000000000000005,1/3",
+            "30",
+            [
+                "1.0000000000000000000000000000005",
+                "0.333333333333333333333333333333",
+            ],
+        ),
+    ] {
+        let out = cyl()
+            .args(["trajectory", "--theta0", "0.1", "--times", times])
+            .args(["--digits", digits, "--format", "csv"])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{times}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8(out.stdout).unwrap();
+        let t: Vec<&str> = text
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').next().unwrap())
+            .collect();
+        assert_eq!(t, want, "{times}");
+    }
+}
+
 #[test]
 fn text_format_marks_verified_digits() {
     let out = cyl()

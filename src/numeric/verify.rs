@@ -36,6 +36,11 @@ pub struct Estimate {
     /// The natural magnitude of the quantity (used only to decide that a value
     /// indistinguishable from zero may be printed as 0).
     pub scale: Float,
+    /// The exact decimal text of a value known exactly (an input echoed in
+    /// the output, such as a terminating-decimal time): printed as it is,
+    /// with no rounding to decide — a rounding tie such as 0.125 at two
+    /// digits could never be settled by error bounds.
+    pub exact_text: Option<String>,
 }
 
 impl Estimate {
@@ -46,6 +51,7 @@ impl Estimate {
             err,
             exact_zero: false,
             scale,
+            exact_text: None,
         }
     }
     /// A value that is correctly rounded up to a few ulps (err = 4 ulp).
@@ -61,6 +67,7 @@ impl Estimate {
             err: Float::new(prec),
             exact_zero: true,
             scale,
+            exact_text: None,
         }
     }
 }
@@ -187,6 +194,16 @@ fn judge(
     b: &Estimate,
 ) -> std::result::Result<Verified, u32> {
     let p = b.value.prec();
+    if let Some(text) = &b.exact_text {
+        return Ok(Verified {
+            name: name.to_string(),
+            value: b.value.clone(),
+            text: text.clone(),
+            digits,
+            err_bound: Float::new(p),
+            precs,
+        });
+    }
     if a.exact_zero && b.exact_zero {
         return Ok(Verified {
             name: name.to_string(),

@@ -707,23 +707,27 @@ impl Oracle {
         let floor = self.work.floor();
         let contact = self.work.contact();
         let mut cache = (0, Vec::new());
-        let mut rows = ladder_table(self.digits, &TRAJECTORY_COLUMNS, times.len(), |p, run| {
+        // the time is an input: printed exactly when it is a terminating
+        // decimal (a denominator of 2s and 5s only; checked first, as writing
+        // out a long fraction costs more than the whole row), so that a time
+        // such as 0.125 at two digits is not a rounding tie to decide
+        let exact_t: Vec<Option<String>> = times
+            .iter()
+            .map(|t| {
+                (!t.times_pi && terminating(&t.coef)).then(|| crate::exact::rational_text(&t.coef))
+            })
+            .collect();
+        let rows = ladder_table(self.digits, &TRAJECTORY_COLUMNS, times.len(), |p, run| {
             let deltas = self.deltas_at(times, p, run, true, &mut cache)?;
             let ctx = self.row_context(p);
             let mut out = Vec::with_capacity(times.len() * TRAJECTORY_COLUMNS.len());
-            for (t, (d, derr)) in times.iter().zip(deltas) {
-                out.extend(self.row_estimates(t, &d, &derr, &ctx, floor, contact)?);
+            for ((t, (d, derr)), text) in times.iter().zip(deltas).zip(&exact_t) {
+                let mut row = self.row_estimates(t, &d, &derr, &ctx, floor, contact)?;
+                row[0].exact_text = text.clone();
+                out.extend(row);
             }
             Ok(out)
         })?;
-        for (row, t) in rows.iter_mut().zip(times) {
-            // the time is an input: print it exactly when it is a terminating
-            // decimal (a denominator of 2s and 5s only; checked first, as
-            // writing out a long fraction costs more than the whole row)
-            if !t.times_pi && terminating(&t.coef) {
-                row[0].text = crate::exact::rational_text(&t.coef);
-            }
-        }
         Ok(rows)
     }
 
@@ -1015,6 +1019,7 @@ impl Oracle {
             err: Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2),
             exact_zero: t.is_zero(),
             scale: ctx.ts.clone(),
+            exact_text: None,
         }];
         for i in 0..12 {
             let prop = Float::with_val(p, &b[i] - &a[i]).abs();
@@ -1030,6 +1035,7 @@ impl Oracle {
                 err: prop + ulps,
                 exact_zero: zero,
                 scale: scales[i].clone(),
+                exact_text: None,
             });
         }
         Ok(out)
