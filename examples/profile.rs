@@ -9,7 +9,8 @@
 //! Tasks (those of `../shared/bench`, identical solid cylinders, both rolling):
 //! `T1` t(9/10) from rest at θ0 = 1/10 on one oracle (warm), `T1cold` the same
 //! on a fresh oracle each time, `T2cold` θs for m2 = 2 from θ0 = 0 on a fresh
-//! oracle, `T3` θ at 1000 equally spaced times on one oracle. Prints the mean
+//! oracle, `T3` θ at 1000 equally spaced times on one oracle, `T3rows` all 13
+//! columns of `trajectory` at those times. Prints the mean
 //! wall time per run to stderr (use `benches/tasks.rs` for measurements).
 
 use cylroll::exact::Exact;
@@ -34,7 +35,7 @@ fn model(m2: i64, theta0: &str) -> Model {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.len() < 2 {
-        eprintln!("usage: profile T1|T1cold|T2cold|T3 DIGITS [REPEATS]");
+        eprintln!("usage: profile T1|T1cold|T2cold|T3|T3rows DIGITS [REPEATS]");
         std::process::exit(2);
     }
     let task = args[0].as_str();
@@ -62,6 +63,9 @@ fn main() {
             }
             "T3" => {
                 std::hint::black_box(oracle.theta_at_times(&times).expect("T3"));
+            }
+            "T3rows" => {
+                std::hint::black_box(oracle.trajectory(&times).expect("T3rows"));
             }
             other => {
                 eprintln!("unknown task {other}");

@@ -35,10 +35,14 @@ pub fn round_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
 }
 
 thread_local! {
-    /// The last power of ten used by [`approx_sig`]: (precision, exponent, value).
-    static POW10: std::cell::RefCell<(u32, u32, Float)> =
-        std::cell::RefCell::new((0, 0, Float::new(2)));
+    /// Recent powers of ten used by [`approx_sig`]: (precision, exponent, value).
+    /// A table row's columns have different magnitudes, so a few are kept.
+    static POW10: std::cell::RefCell<Vec<(u32, u32, Float)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
 }
+
+/// How many powers of ten [`approx_sig`] keeps.
+const POW10_KEPT: usize = 32;
 
 /// `x` to `digits` significant decimal digits *within one unit of the last
 /// digit* (not always correctly rounded), as [`round_sig`]'s (sign, digits,
@@ -58,17 +62,24 @@ pub fn approx_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
         let k = n - e;
         let kk = u32::try_from(k.unsigned_abs()).ok()?;
         let mut y = Float::with_val(p, x.abs_ref());
-        // 10^kk at p bits, kept for the next call (a table's values share
-        // their precision and mostly their exponent)
+        // 10^kk at p bits, kept for later calls (a table's values share
+        // their precision, and each column mostly its exponent)
         POW10.with(|c| {
             let mut c = c.borrow_mut();
-            if c.0 != p || c.1 != kk {
-                *c = (p, kk, Float::with_val(p, Float::u_pow_u(10, kk)));
-            }
+            let i = match c.iter().position(|e| e.0 == p && e.1 == kk) {
+                Some(i) => i,
+                None => {
+                    if c.len() == POW10_KEPT {
+                        c.remove(0);
+                    }
+                    c.push((p, kk, Float::with_val(p, Float::u_pow_u(10, kk))));
+                    c.len() - 1
+                }
+            };
             if k >= 0 {
-                y *= &c.2;
+                y *= &c[i].2;
             } else {
-                y /= &c.2;
+                y /= &c[i].2;
             }
         });
         let (mi, _) = y.to_integer_round(Round::Nearest)?;
