@@ -390,6 +390,34 @@ pub struct HalfAngleTime {
     w: [Float; 3],
 }
 
+/// √(K(c)/den) into `out`, K(c) = (q2 c + q1) c + q0 without the terms that
+/// are exactly zero (the half-angle integrands' common tail). No allocation.
+#[inline(always)]
+fn sqrt_k_over(
+    q: &[Float; 3],
+    q1_zero: bool,
+    q2_zero: bool,
+    c: &Float,
+    den: &Float,
+    out: &mut Float,
+) {
+    if q2_zero {
+        if q1_zero {
+            out.assign(&q[0]);
+        } else {
+            out.assign(&q[1] * c);
+            *out += &q[0];
+        }
+    } else {
+        out.assign(&q[2] * c);
+        *out += &q[1];
+        *out *= c;
+        *out += &q[0];
+    }
+    *out /= den;
+    out.sqrt_mut();
+}
+
 impl HalfAngleTime {
     /// The integrand of `d`'s model at `d`'s precision.
     pub fn new(d: &Dyn) -> Self {
@@ -441,21 +469,7 @@ impl HalfAngleTime {
         // c = 1 − 2 s²; K = (q2 c + q1) c + q0
         *a <<= 1;
         s.assign(1u32 - &*a);
-        if self.q2_zero {
-            if self.q1_zero {
-                out.assign(&self.q[0]);
-            } else {
-                out.assign(&self.q[1] * &*s);
-                *out += &self.q[0];
-            }
-        } else {
-            out.assign(&self.q[2] * &*s);
-            *out += &self.q[1];
-            *out *= &*s;
-            *out += &self.q[0];
-        }
-        *out /= &*b;
-        out.sqrt_mut();
+        sqrt_k_over(&self.q, self.q1_zero, self.q2_zero, s, b, out);
     }
 }
 
@@ -481,21 +495,7 @@ impl HalfAngleTime {
         *b *= &*s;
         *a <<= 1;
         s.assign(1u32 - &*a);
-        if self.q2_zero {
-            if self.q1_zero {
-                out.assign(&self.q[0]);
-            } else {
-                out.assign(&self.q[1] * &*s);
-                *out += &self.q[0];
-            }
-        } else {
-            out.assign(&self.q[2] * &*s);
-            *out += &self.q[1];
-            *out *= &*s;
-            *out += &self.q[0];
-        }
-        *out /= &*b;
-        out.sqrt_mut();
+        sqrt_k_over(&self.q, self.q1_zero, self.q2_zero, s, b, out);
         *out *= cos;
         if !self.h0_zero {
             *out *= sin;
