@@ -211,7 +211,8 @@ pub fn run(
         outputs.push(cur.clone());
         next_out += 1;
     }
-    loop {
+    // the loop ends with (stopped at a terminal event, the last state)
+    let (stopped, last) = loop {
         let stop = if next_out < times.len() && times[next_out] < *t_end {
             times[next_out].clone()
         } else {
@@ -219,15 +220,7 @@ pub fn run(
         };
         let hmax = Float::with_val(p, &stop - &t);
         if hmax.is_sign_negative() || hmax.is_zero() {
-            return Ok(Run {
-                outputs,
-                hits,
-                stopped: false,
-                last: cur,
-                max_drift,
-                projections,
-                stats: gbs.stats,
-            });
+            break (false, cur);
         }
         let f0 = f_of(&cur);
         let step = {
@@ -294,16 +287,7 @@ pub fn run(
             }
         }
         if let Some(h) = terminal {
-            let last = hits[h].at.clone();
-            return Ok(Run {
-                outputs,
-                hits,
-                stopped: true,
-                last,
-                max_drift,
-                projections,
-                stats: gbs.stats,
-            });
+            break (true, hits[h].at.clone());
         }
         // zeros of g at a step end count as crossings of the next step only
         // if the sign really changes; keep the last nonzero value
@@ -321,18 +305,19 @@ pub fn run(
                 next_out += 1;
             }
             if t == *t_end {
-                return Ok(Run {
-                    outputs,
-                    hits,
-                    stopped: false,
-                    last: cur,
-                    max_drift,
-                    projections,
-                    stats: gbs.stats,
-                });
+                break (false, cur);
             }
         }
-    }
+    };
+    Ok(Run {
+        outputs,
+        hits,
+        stopped,
+        last,
+        max_drift,
+        projections,
+        stats: gbs.stats,
+    })
 }
 
 /// dg/dt of the watched function at a sample: q̈ or q̇ exactly; for a

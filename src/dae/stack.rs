@@ -146,26 +146,7 @@ pub fn solve_stack(spec: &Spec, prec: u32, times: &[Float]) -> Result<StackSolut
     escale += Float::with_val(prec, &mr * &sys.g);
     // momentum scale: Σ m r · sqrt(g / r1)-like speeds: m r² / time scale
     let pscale = Float::with_val(prec, &mr / &ts) * &sys.rho[0];
-    let mut energy_drift = Float::new(prec);
-    let mut momentum_drift = Float::new(prec);
-    let states = run
-        .outputs
-        .iter()
-        .chain(run.hits.iter().map(|h| &h.at))
-        .chain(std::iter::once(&run.last));
-    for s in states {
-        let e = sys.energy(&s.q, &s.v);
-        let de = Float::with_val(prec, &e - &e0).abs() / &escale;
-        if de > energy_drift {
-            energy_drift = de;
-        }
-        for (a, b) in sys.momenta(&s.q, &s.v).iter().zip(&p0) {
-            let d = Float::with_val(prec, a - b).abs() / &pscale;
-            if d > momentum_drift {
-                momentum_drift = d;
-            }
-        }
-    }
+    let (energy_drift, momentum_drift) = sys.drifts(&run, &e0, &p0, &escale, &pscale);
     Ok(StackSolution {
         prec: requested,
         work_prec: prec,

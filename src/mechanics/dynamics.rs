@@ -390,17 +390,26 @@ pub struct HalfAngleTime {
     w: [Float; 3],
 }
 
-/// √(K(c)/den) into `out`, K(c) = (q2 c + q1) c + q0 without the terms that
-/// are exactly zero (the half-angle integrands' common tail). No allocation.
+/// The half-angle integrands' common tail: with `s` = sin(θ/2) and `h` = H'
+/// on entry, writes √(K(c) / ((1 − s²) H')) into `out`, c = cos θ = 1 − 2s²,
+/// K(c) = (q2 c + q1) c + q0 without the terms that are exactly zero. `s`, `h`
+/// and `a` are overwritten (scratch). No allocation.
 #[inline(always)]
 fn sqrt_k_over(
     q: &[Float; 3],
     q1_zero: bool,
     q2_zero: bool,
-    c: &Float,
-    den: &Float,
+    [s, a, h]: [&mut Float; 3],
     out: &mut Float,
 ) {
+    // (1 − s²) H'
+    a.assign(s.square_ref());
+    s.assign(1u32 - &*a);
+    *h *= &*s;
+    // c = 1 − 2 s²; K = (q2 c + q1) c + q0
+    *a <<= 1;
+    s.assign(1u32 - &*a);
+    let c = &*s;
     if q2_zero {
         if q1_zero {
             out.assign(&q[0]);
@@ -414,7 +423,7 @@ fn sqrt_k_over(
         *out *= c;
         *out += &q[0];
     }
-    *out /= den;
+    *out /= &*h;
     out.sqrt_mut();
 }
 
@@ -462,14 +471,7 @@ impl HalfAngleTime {
         if !self.h0_zero {
             *b += &self.h0r;
         }
-        // (1 − s²) H'
-        a.assign(s.square_ref());
-        s.assign(1u32 - &*a);
-        *b *= &*s;
-        // c = 1 − 2 s²; K = (q2 c + q1) c + q0
-        *a <<= 1;
-        s.assign(1u32 - &*a);
-        sqrt_k_over(&self.q, self.q1_zero, self.q2_zero, s, b, out);
+        sqrt_k_over(&self.q, self.q1_zero, self.q2_zero, [s, a, b], out);
     }
 }
 
@@ -490,12 +492,7 @@ impl HalfAngleTime {
             *b *= &*a;
             *b += &self.h0r;
         }
-        a.assign(s.square_ref());
-        s.assign(1u32 - &*a);
-        *b *= &*s;
-        *a <<= 1;
-        s.assign(1u32 - &*a);
-        sqrt_k_over(&self.q, self.q1_zero, self.q2_zero, s, b, out);
+        sqrt_k_over(&self.q, self.q1_zero, self.q2_zero, [s, a, b], out);
         *out *= cos;
         if !self.h0_zero {
             *out *= sin;

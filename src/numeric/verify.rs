@@ -293,50 +293,12 @@ pub enum Run {
 /// [`ladder`] with the run's role passed along, so that the two runs may use
 /// two different methods (e.g. tanh-sinh at p1, Gauss–Legendre at p2): the
 /// bound |v(p1) − v(p2)| + err(p2) then also compares the methods.
-pub fn ladder_runs<F>(digits: u32, names: &[&str], mut f: F) -> Result<Vec<Verified>>
+pub fn ladder_runs<F>(digits: u32, names: &[&str], f: F) -> Result<Vec<Verified>>
 where
     F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
 {
-    let mut last_fail = None;
-    for attempt in 0..MAX_ATTEMPTS {
-        let precs = precisions(digits, attempt);
-        let a = f(precs.0, Run::Low)?;
-        let b = f(precs.1, Run::High)?;
-        debug_assert_eq!(a.len(), names.len());
-        debug_assert_eq!(b.len(), names.len());
-        let mut out = Vec::with_capacity(names.len());
-        let mut failed = None;
-        for (i, name) in names.iter().enumerate() {
-            match judge(name, digits, precs, &a[i], &b[i]) {
-                Ok(v) => out.push(v),
-                Err(reached) => {
-                    let diff = Float::with_val(precs.1, &a[i].value - &b[i].value).abs();
-                    failed = Some((
-                        name.to_string(),
-                        reached,
-                        precs,
-                        to_sig(&b[i].value, 12),
-                        short(&diff),
-                        short(&b[i].err),
-                    ));
-                    break;
-                }
-            }
-        }
-        match failed {
-            None => return Ok(out),
-            Some(f) => last_fail = Some(f),
-        }
-    }
-    let (name, reached, precs, value, diff, err) = last_fail.expect("at least one attempt failed");
-    Err(Error::NotConverged {
-        quantity: name,
-        requested: digits,
-        reached: format!("{reached} digits verified at {}/{} bits", precs.0, precs.1),
-        detail: format!(
-            "value ≈ {value}, difference between precisions {diff}, method error estimate {err}"
-        ),
-    })
+    let mut rows = ladder_rows(digits, names, 1, false, f)?;
+    Ok(rows.pop().unwrap_or_default())
 }
 
 /// The precision ladder for a table: `f(prec, run)` returns the estimates of
@@ -347,10 +309,20 @@ where
 ///
 /// Errors: whatever `f` returns; [`Error::NotConverged`] naming the first
 /// quantity (and its row) that could not be verified.
-pub fn ladder_table<F>(
+pub fn ladder_table<F>(digits: u32, names: &[&str], rows: usize, f: F) -> Result<Vec<Vec<Verified>>>
+where
+    F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
+{
+    ladder_rows(digits, names, rows, true, f)
+}
+
+/// The ladder of [`ladder_table`] and [`ladder_runs`]; `label_rows`: name
+/// the row of a quantity that fails (a table) or not (a single row).
+fn ladder_rows<F>(
     digits: u32,
     names: &[&str],
     rows: usize,
+    label_rows: bool,
     mut f: F,
 ) -> Result<Vec<Vec<Verified>>>
 where
@@ -377,7 +349,11 @@ where
                     Err(reached) => {
                         let diff = Float::with_val(precs.1, &ea.value - &eb.value).abs();
                         row_failed = Some((
-                            format!("{name} (row {r})"),
+                            if label_rows {
+                                format!("{name} (row {r})")
+                            } else {
+                                name.to_string()
+                            },
                             reached,
                             precs,
                             to_sig(&eb.value, 12),
