@@ -168,15 +168,38 @@ pub fn eq62(cx: &mut Ctx) -> Result<Finding> {
     kinetic(cx, Sys::A1, app::eq62, false)
 }
 
-pub fn eq63(cx: &mut Ctx) -> Result<Finding> {
+/// A named physical quantity of a state (label, value).
+type Named = (&'static str, fn(&Sym) -> X);
+
+/// A printed conjugate momentum p = `printed(y)` of coordinate `q` in system
+/// `sys`, against ∂T/∂q̇ from the system's kinetic energy and, when given,
+/// against a named physical momentum (`also`: label and value).
+fn conjugate(
+    cx: &mut Ctx,
+    sys: Sys,
+    q: usize,
+    printed: fn(&Sym) -> X,
+    also: Option<Named>,
+) -> Result<Finding> {
+    let label = match q {
+        QX1 => "= ∂T/∂ẋ1",
+        QP1 => "= ∂T/∂φ̇1",
+        _ => "= ∂T/∂φ̇2",
+    };
     let mut f = Finding::default();
-    for (at, y, sc) in random_states(cx, Sys::A1)? {
-        let p = app::eq63(&y);
-        f.printed
-            .add("= ∂T/∂ẋ1", &at, &p, &momentum(Sys::A1, &y, QX1), &sc.mom);
-        f.printed.add("= P_x", &at, &p, &truth::px(&y), &sc.mom);
+    for (at, y, sc) in random_states(cx, sys)? {
+        let scale = if q == QX1 { &sc.mom } else { &sc.angmom };
+        let p = printed(&y);
+        f.printed.add(label, &at, &p, &momentum(sys, &y, q), scale);
+        if let Some((name, value)) = also {
+            f.printed.add(name, &at, &p, &value(&y), scale);
+        }
     }
     Ok(f)
+}
+
+pub fn eq63(cx: &mut Ctx) -> Result<Finding> {
+    conjugate(cx, Sys::A1, QX1, app::eq63, Some(("= P_x", truth::px)))
 }
 
 pub fn eq64(cx: &mut Ctx) -> Result<Finding> {
@@ -316,31 +339,11 @@ pub fn eq71(cx: &mut Ctx) -> Result<Finding> {
 }
 
 pub fn eq72(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    for (at, y, sc) in random_states(cx, Sys::A2)? {
-        f.printed.add(
-            "= ∂T/∂φ̇1",
-            &at,
-            &app::eq72(&y),
-            &momentum(Sys::A2, &y, QP1),
-            &sc.angmom,
-        );
-    }
-    Ok(f)
+    conjugate(cx, Sys::A2, QP1, app::eq72, None)
 }
 
 pub fn eq73(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    for (at, y, sc) in random_states(cx, Sys::A2)? {
-        f.printed.add(
-            "= ∂T/∂φ̇2",
-            &at,
-            &app::eq73(&y),
-            &momentum(Sys::A2, &y, QP2),
-            &sc.angmom,
-        );
-    }
-    Ok(f)
+    conjugate(cx, Sys::A2, QP2, app::eq73, None)
 }
 
 pub fn eq74(cx: &mut Ctx) -> Result<Finding> {
@@ -725,36 +728,15 @@ pub fn eq99(cx: &mut Ctx) -> Result<Finding> {
 }
 
 pub fn eq100(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    for (at, y, sc) in random_states(cx, Sys::A5)? {
-        let p = app::eq100(&y);
-        f.printed
-            .add("= ∂T/∂ẋ1", &at, &p, &momentum(Sys::A5, &y, QX1), &sc.mom);
-        f.printed.add("= P_x", &at, &p, &truth::px(&y), &sc.mom);
-    }
-    Ok(f)
+    conjugate(cx, Sys::A5, QX1, app::eq100, Some(("= P_x", truth::px)))
 }
 
 pub fn eq101(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    for (at, y, sc) in random_states(cx, Sys::A5)? {
-        let p = app::eq101(&y);
-        f.printed
-            .add("= ∂T/∂φ̇1", &at, &p, &momentum(Sys::A5, &y, QP1), &sc.angmom);
-        f.printed.add("= L1", &at, &p, &truth::l1(&y), &sc.angmom);
-    }
-    Ok(f)
+    conjugate(cx, Sys::A5, QP1, app::eq101, Some(("= L1", truth::l1)))
 }
 
 pub fn eq102(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    for (at, y, sc) in random_states(cx, Sys::A5)? {
-        let p = app::eq102(&y);
-        f.printed
-            .add("= ∂T/∂φ̇2", &at, &p, &momentum(Sys::A5, &y, QP2), &sc.angmom);
-        f.printed.add("= L2", &at, &p, &truth::l2(&y), &sc.angmom);
-    }
-    Ok(f)
+    conjugate(cx, Sys::A5, QP2, app::eq102, Some(("= L2", truth::l2)))
 }
 
 pub fn eq103(cx: &mut Ctx) -> Result<Finding> {
