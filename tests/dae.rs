@@ -20,6 +20,24 @@ fn q(s: &str) -> Rational {
     Exact::parse("q", s, false).unwrap().coef
 }
 
+/// Every row of a two-route comparison agrees to at least `digits` digits;
+/// a row without an agreement count is a value both routes print as 0.
+fn assert_routes_agree(case: &str, rep: &CaseReport, digits: u32) {
+    for r in &rep.rows {
+        if let Some(a) = r.agree {
+            assert!(
+                a >= digits,
+                "{case} {}: routes agree to {a} digits only: route 1 {} vs route 2 {}",
+                r.quantity,
+                r.route1.text,
+                r.route2.text
+            );
+        } else {
+            assert_eq!(r.route1.text, "0", "{case} {}", r.quantity);
+        }
+    }
+}
+
 fn ten_pow(prec: u32, e: i32) -> Float {
     Float::with_val(prec, 10u32).pow(e)
 }
@@ -58,20 +76,7 @@ fn routes_agree_for_every_case_at_30_digits() {
             case.name,
             rep.rows.len()
         );
-        for r in &rep.rows {
-            if let Some(a) = r.agree {
-                assert!(
-                    a >= digits,
-                    "{} {}: routes agree to {a} digits only: route 1 {} vs route 2 {}",
-                    case.name,
-                    r.quantity,
-                    r.route1.text,
-                    r.route2.text
-                );
-            } else {
-                assert_eq!(r.route1.text, "0", "{} {}", case.name, r.quantity);
-            }
-        }
+        assert_routes_agree(&case.name, &rep, digits);
         let run = &rep.run;
         for (what, v) in [
             ("constraint drift", &run.run.max_drift),
@@ -520,11 +525,7 @@ fn routes_agree_at_100_digits() {
         .filter(|c| ["roll-roll", "bobbin", "moving-slip"].contains(&c.name.as_str()))
     {
         let rep = compare_case(case, digits).unwrap();
-        for r in &rep.rows {
-            if let Some(a) = r.agree {
-                assert!(a >= digits, "{} {}: {a} digits", case.name, r.quantity);
-            }
-        }
+        assert_routes_agree(&case.name, &rep, digits);
     }
 }
 
@@ -582,18 +583,7 @@ fn massless_spins_agree_with_first_route() {
             model: m,
         };
         let rep = compare_case(&case, digits).unwrap();
-        for r in &rep.rows {
-            if let Some(a) = r.agree {
-                assert!(
-                    a >= digits,
-                    "{} {}: {a} digits: {} vs {}",
-                    case.name,
-                    r.quantity,
-                    r.route1.text,
-                    r.route2.text
-                );
-            }
-        }
+        assert_routes_agree(&case.name, &rep, digits);
     }
 }
 
