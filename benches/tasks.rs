@@ -267,6 +267,25 @@ fn median(mut v: Vec<f64>) -> f64 {
     }
 }
 
+/// CPU and wall seconds per call of `run`, each sample the mean of `batch`
+/// calls: at least 5 samples, then more until 10 s have passed or there are 15.
+fn samples(batch: usize, mut run: impl FnMut()) -> (Vec<f64>, Vec<f64>) {
+    let (min_runs, max_runs, budget) = (5usize, 15usize, 10.0f64);
+    let mut cpus = Vec::new();
+    let mut walls = Vec::new();
+    let start = Instant::now();
+    while cpus.len() < max_runs && (cpus.len() < min_runs || start.elapsed().as_secs_f64() < budget)
+    {
+        let (c, w) = (cpu_now(), Instant::now());
+        for _ in 0..batch {
+            run();
+        }
+        cpus.push((cpu_now() - c) / batch as f64);
+        walls.push(w.elapsed().as_secs_f64() / batch as f64);
+    }
+    (cpus, walls)
+}
+
 /// The `T3n` task: T3 at 30 and 100 digits with `n` output times; θ(t_end)
 /// (the last time for every n) is checked against the reference first.
 fn cpu_t3n(digits: u32, n: usize) {
@@ -274,13 +293,9 @@ fn cpu_t3n(digits: u32, n: usize) {
     let times = t3_times_n(n);
     let th = oracle.theta_at_times(&times).expect("T3n");
     check("T3n", &th[n - 1], &refs().t3[T3_POINTS - 1], digits);
-    let mut cpus = Vec::new();
-    let start = Instant::now();
-    while cpus.len() < 15 && (cpus.len() < 5 || start.elapsed().as_secs_f64() < 10.0) {
-        let c = cpu_now();
+    let (cpus, _) = samples(1, || {
         std::hint::black_box(oracle.theta_at_times(&times).expect("T3n"));
-        cpus.push(cpu_now() - c);
-    }
+    });
     println!(
         "{{\"tool\":\"cylroll\",\"task\":\"T3n\",\"digits\":{digits},\"points\":{n},\"cpu_median_s\":{:.6e},\"samples\":{},\"checked\":true}}",
         median(cpus.clone()),
@@ -302,19 +317,9 @@ fn cpu_task(name: &'static str, digits: u32) {
     task.run();
     let one = (cpu_now() - c).max(1e-7);
     let batch = ((2e-3 / one).ceil() as usize).clamp(1, 10_000);
-    let (min_runs, max_runs, budget) = (5usize, 15usize, 10.0f64);
-    let mut cpus = Vec::new();
-    let mut walls = Vec::new();
-    let start = Instant::now();
-    while cpus.len() < max_runs && (cpus.len() < min_runs || start.elapsed().as_secs_f64() < budget)
-    {
-        let (c, w) = (cpu_now(), Instant::now());
-        for _ in 0..batch {
-            std::hint::black_box(task.run());
-        }
-        cpus.push((cpu_now() - c) / batch as f64);
-        walls.push(w.elapsed().as_secs_f64() / batch as f64);
-    }
+    let (cpus, walls) = samples(batch, || {
+        std::hint::black_box(task.run());
+    });
     let short: String = value.chars().take(40).collect();
     println!(
         "{{\"tool\":\"cylroll\",\"task\":\"{name}\",\"digits\":{digits},\"cpu_median_s\":{:.6e},\

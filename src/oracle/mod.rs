@@ -218,6 +218,18 @@ impl Oracle {
         ))
     }
 
+    /// The coefficients (ascending in c = cos θ) of N12·K²/m2 at `prec` bits
+    /// ([`crate::mechanics::dynamics::N12Poly`], built once in exact
+    /// rationals; the start enters through A_H).
+    fn n12_coefficients(&mut self, prec: u32) -> Result<Vec<Float>> {
+        use crate::mechanics::dynamics::N12Poly;
+        let a_h = N12Poly::a_h(&self.engine(prec)?.dynm);
+        let poly = self
+            .n12_poly
+            .get_or_insert_with(|| N12Poly::new(&self.red, self.work.params()));
+        Ok(poly.at(&a_h, prec))
+    }
+
     /// The 96-bit scan's bracket of the first sign change of N12 (cached).
     ///
     /// The scan evaluates N12·K²/m2, the polynomial in c = cos θ of
@@ -226,16 +238,8 @@ impl Oracle {
     /// same grid and the same signs at about a fifth of the cost, which is
     /// most of a cold `time_at`.
     fn scan_bracket(&mut self) -> Result<(Float, Float)> {
-        use crate::mechanics::dynamics::N12Poly;
         if self.scan_s.is_none() {
-            if self.n12_poly.is_none() {
-                self.n12_poly = Some(N12Poly::new(&self.red, self.work.params()));
-            }
-            let a_h = N12Poly::a_h(&self.engine(SCAN_PREC)?.dynm);
-            let coef = match &self.n12_poly {
-                Some(n) => n.at(&a_h, SCAN_PREC),
-                None => Vec::new(),
-            };
+            let coef = self.n12_coefficients(SCAN_PREC)?;
             let th0 = self.work.start().theta0.to_float(SCAN_PREC);
             let hi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi) - &th0;
             let zero = Float::new(SCAN_PREC);
@@ -357,27 +361,16 @@ impl Oracle {
     ///
     /// Errors: no sign change before θ = π.
     pub fn separation_angle(&mut self) -> Result<Verified> {
-        use crate::mechanics::dynamics::N12Poly;
         use crate::numeric::poly;
         const ISO: u32 = 64;
-        if self.n12_poly.is_none() {
-            self.n12_poly = Some(N12Poly::new(&self.red, self.work.params()));
-        }
-        let coef_at = |o: &mut Oracle, p: u32| -> Result<Vec<Float>> {
-            let a_h = N12Poly::a_h(&o.engine(p)?.dynm);
-            Ok(match &o.n12_poly {
-                Some(n) => n.at(&a_h, p),
-                None => Vec::new(),
-            })
-        };
         let c0 = self.engine(ISO)?.dynm.c0.clone();
-        let coef = coef_at(self, ISO)?;
+        let coef = self.n12_coefficients(ISO)?;
         let roots = poly::sign_change_roots(&coef, &Float::with_val(ISO, -1), &c0);
         let start = roots.into_iter().rev().find(|c| *c < c0).ok_or_else(|| {
             Error::not_physical("N12 stays positive up to theta = pi: the cylinders never separate")
         })?;
         let v = ladder(self.digits, &["theta_s"], |p| {
-            let coef = coef_at(self, p + 16)?;
+            let coef = self.n12_coefficients(p + 16)?;
             let (c, eps) = poly::refine_root("theta_s", &coef, &start, p)?;
             let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
             // dθ = −dc / sin θ, sin θ = √(1 − c²) (> 0 on (0, π)); ×(1 + 2^-16)
