@@ -34,15 +34,31 @@ fn model(m2: i64, theta0: &str) -> Model {
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if args.len() < 2 {
+    const TASKS: [&str; 5] = ["T1", "T1cold", "T2cold", "T3", "T3rows"];
+    if args.len() < 2 || !TASKS.contains(&args[0].as_str()) {
         eprintln!("usage: profile T1|T1cold|T2cold|T3|T3rows DIGITS [REPEATS]");
         std::process::exit(2);
     }
-    let task = args[0].as_str();
-    let digits: u32 = args[1].parse().expect("DIGITS");
-    let repeats: usize = args.get(2).map_or(100, |s| s.parse().expect("REPEATS"));
+    let number = |i: usize, default: usize| -> usize {
+        match args.get(i).map(|s| s.parse::<usize>()) {
+            None => default,
+            Some(Ok(n)) if n >= 1 => n,
+            _ => {
+                eprintln!("profile: argument {} must be a positive integer", i + 1);
+                std::process::exit(2);
+            }
+        }
+    };
+    let (task, digits, repeats) = (args[0].as_str(), number(1, 30) as u32, number(2, 100));
+    if let Err(e) = run(task, digits, repeats) {
+        eprintln!("profile: {e}");
+        std::process::exit(e.exit_code());
+    }
+}
+
+fn run(task: &str, digits: u32, repeats: usize) -> cylroll::error::Result<()> {
     let m = model(1, "1/10");
-    let mut oracle = Oracle::new(&m, digits).expect("oracle");
+    let mut oracle = Oracle::new(&m, digits)?;
     let tend = q(T3_TEND).coef;
     let times: Vec<Exact> = (0..1000)
         .map(|i| Exact::rational(&tend * Rational::from((i as i64, 999))))
@@ -51,25 +67,21 @@ fn main() {
     for _ in 0..repeats {
         match task {
             "T1" => {
-                std::hint::black_box(oracle.time_at(&q("9/10")).expect("T1"));
+                std::hint::black_box(oracle.time_at(&q("9/10"))?);
             }
             "T1cold" => {
-                let mut o = Oracle::new(&m, digits).expect("oracle");
-                std::hint::black_box(o.time_at(&q("9/10")).expect("T1"));
+                let mut o = Oracle::new(&m, digits)?;
+                std::hint::black_box(o.time_at(&q("9/10"))?);
             }
             "T2cold" => {
-                let mut o = Oracle::new(&model(2, "0"), digits).expect("oracle");
-                std::hint::black_box(o.separation_angle().expect("T2b"));
+                let mut o = Oracle::new(&model(2, "0"), digits)?;
+                std::hint::black_box(o.separation_angle()?);
             }
             "T3" => {
-                std::hint::black_box(oracle.theta_at_times(&times).expect("T3"));
+                std::hint::black_box(oracle.theta_at_times(&times)?);
             }
-            "T3rows" => {
-                std::hint::black_box(oracle.trajectory(&times).expect("T3rows"));
-            }
-            other => {
-                eprintln!("unknown task {other}");
-                std::process::exit(2);
+            _ => {
+                std::hint::black_box(oracle.trajectory(&times)?);
             }
         }
     }
@@ -77,4 +89,5 @@ fn main() {
         "{task} at {digits} digits: {:.4} ms per run (wall, mean of {repeats})",
         start.elapsed().as_secs_f64() * 1e3 / repeats as f64
     );
+    Ok(())
 }
