@@ -107,6 +107,12 @@ def floor_ms(r):
     return {d: counts[d] * cost[d] for d in counts if d in cost}
 
 
+def print_header(cols):
+    """A markdown table's header and rule."""
+    print("| " + " | ".join(cols) + " |")
+    print("|" + "---|" * len(cols))
+
+
 def main():
     r = sys.argv[1]
     ref = json.load(open(os.path.join(r, "reference.json")))
@@ -134,9 +140,7 @@ def main():
     print("CPU time per task (median of warm repeats; C anchor: best of its repeats), and in")
     print("brackets the anchor's time over cylroll's: above 1 = cylroll faster.")
     print()
-    head = "| task | digits | cylroll | " + " | ".join(name for _, name in TOOLS) + " | T1 tanh-sinh floor |"
-    print(head)
-    print("|" + "---|" * (head.count("|") - 1))
+    print_header(["task", "digits", "cylroll"] + [name for _, name in TOOLS] + ["T1 tanh-sinh floor"])
     tasks = sorted({(t, d) for (t, d) in ours} | {(k[0], k[1]) for k in best},
                    key=lambda x: (["T1", "T2", "T2b", "T3", "T3rows"].index(x[0]), x[1]))
     for task, d in tasks:
@@ -166,9 +170,7 @@ def main():
     print("CPU of its first integral, nodes generated; Python anchors: wall time of the first call,")
     print("heyoka's including its JIT compilation), with the anchor's cold over cylroll's cold.")
     print()
-    head = "| task | digits | cylroll cold | " + " | ".join(name for _, name in TOOLS) + " |"
-    print(head)
-    print("|" + "---|" * (head.count("|") - 1))
+    print_header(["task", "digits", "cylroll cold"] + [name for _, name in TOOLS])
     for task, d in tasks:
         if task == "T3rows":
             continue
