@@ -3,7 +3,9 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use cylroll::error::{Error, Result};
 use cylroll::exact::{rational_text, Exact};
-use cylroll::input::{self, MODEL_KEYS};
+use cylroll::friction::answer::VerifiedEvent;
+use cylroll::friction::Friction;
+use cylroll::input::{self, FRICTION_KEYS, MODEL_KEYS};
 use cylroll::model::Model;
 use cylroll::numeric::verify::Verified;
 use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
@@ -166,6 +168,12 @@ pub struct Common {
     /// Common rolling rate of the conserved momentum (phi1_dot when theta_dot = 0; paper eq. 17)
     #[arg(long, allow_hyphen_values = true)]
     omega0: Option<String>,
+    /// Coulomb friction at the floor: inf (roll), a number >= 0, or S,K (static, kinetic)
+    #[arg(long, allow_hyphen_values = true)]
+    mu_floor: Option<String>,
+    /// Coulomb friction between the cylinders: inf (roll), a number >= 0, or S,K
+    #[arg(long, allow_hyphen_values = true)]
+    mu_contact: Option<String>,
     /// Significant digits to verify and print
     #[arg(long, default_value_t = 30)]
     digits: u32,
@@ -189,23 +197,43 @@ impl Common {
             "theta0" => self.theta0.clone(),
             "thetadot0" => self.thetadot0.clone(),
             "omega0" => self.omega0.clone(),
+            "mu_floor" => self.mu_floor.clone(),
+            "mu_contact" => self.mu_contact.clone(),
             _ => None,
         }
     }
 
-    /// The model from the defaults, then `--params`, then the flags.
-    pub fn model(&self) -> Result<Model> {
+    /// The key/value pairs from the defaults, then `--params`, then the flags.
+    fn pairs(&self) -> Result<input::Pairs> {
         let mut vals = input::Pairs::new();
         if let Some(path) = &self.params {
             let table = input::read_toml(path, "params")?;
             vals = input::pairs_from_toml(&table, "params", &[])?;
         }
-        for k in MODEL_KEYS {
+        for k in MODEL_KEYS.iter().chain(FRICTION_KEYS.iter()) {
             if let Some(v) = self.flag(k) {
                 vals.insert(k.to_string(), v);
             }
         }
-        input::model_from_pairs(&vals)
+        Ok(vals)
+    }
+
+    /// The model and its friction laws. With only ideal laws (`inf`, `0`)
+    /// the model is the equal ideal one and the friction `None`.
+    pub fn model_friction(&self) -> Result<(Model, Option<Friction>)> {
+        let vals = self.pairs()?;
+        let model = input::model_from_pairs(&vals)?;
+        let fr = input::friction_from_pairs(&vals)?;
+        cylroll::friction::validate(&model, &fr).or_else(|e| match e {
+            Error::NotPhysical { .. } => Ok(()),
+            e => Err(e),
+        })?;
+        let eff = cylroll::friction::effective_model(&model, &fr)?;
+        if fr.floor.is_coulomb() || fr.contact.is_coulomb() {
+            Ok((eff, Some(fr)))
+        } else {
+            Ok((eff, None))
+        }
     }
 }
 
@@ -217,6 +245,8 @@ struct Answer {
     values: Vec<Verified>,
     notes: Vec<String>,
     table: Option<(Vec<&'static str>, Vec<Vec<Verified>>)>,
+    /// With friction: the friction laws (echoed) and the event list.
+    friction: Option<(Friction, String, Vec<VerifiedEvent>)>,
 }
 
 fn json_str(s: &str) -> String {
@@ -249,6 +279,30 @@ impl Answer {
             };
             out.push_str(&format!("{:w$} = {}  {}\n", v.name, v.text, note, w = w));
         }
+        if let Some((fr, start, events)) = &self.friction {
+            out.push_str(&format!(
+                "# friction: mu_floor = {}, mu_contact = {}; start mode: {start}\n",
+                fr.floor, fr.contact
+            ));
+            for (i, e) in events.iter().enumerate() {
+                out.push_str(&format!(
+                    "event {}: {}{} at t = {} [{} digits], theta = {} [{} digits]{}\n",
+                    i + 1,
+                    e.kind.name(),
+                    e.which
+                        .map(|w| format!(" ({})", w.name()))
+                        .unwrap_or_default(),
+                    e.t.text,
+                    e.t.digits,
+                    e.theta.text,
+                    e.theta.digits,
+                    e.mode
+                        .as_ref()
+                        .map(|m| format!(" -> {m}"))
+                        .unwrap_or_default()
+                ));
+            }
+        }
         if let Some((cols, rows)) = &self.table {
             out.push_str(&cols.join("\t"));
             out.push('\n');
@@ -273,6 +327,26 @@ impl Answer {
         }
         o.insert("model".into(), m.into());
         o.insert("digits_requested".into(), self.digits.to_string().into());
+        if let Some((fr, start, events)) = &self.friction {
+            o.insert("mu_floor".into(), fr.floor.to_string().into());
+            o.insert("mu_contact".into(), fr.contact.to_string().into());
+            o.insert("start_mode".into(), start.clone().into());
+            let evs: Vec<serde_json::Value> = events
+                .iter()
+                .map(|e| {
+                    serde_json::json!({
+                        "kind": e.kind.name(),
+                        "contact": e.which.map(|w| w.name()),
+                        "mode": e.mode,
+                        "t": e.t.text,
+                        "theta": e.theta.text,
+                        "digits_verified": {"t": e.t.digits.to_string(), "theta": e.theta.digits.to_string()},
+                        "error_bounds": {"t": e.t.err_text(), "theta": e.theta.err_text()},
+                    })
+                })
+                .collect();
+            o.insert("events".into(), evs.into());
+        }
         let mut verified = serde_json::Map::new();
         let mut errs = serde_json::Map::new();
         for v in &self.values {
@@ -331,6 +405,24 @@ impl Answer {
             }
         } else {
             out.push_str("key,value,digits_verified,error_bound\n");
+            if let Some((_, _, events)) = &self.friction {
+                for (i, e) in events.iter().enumerate() {
+                    for (what, v) in [("t", &e.t), ("theta", &e.theta)] {
+                        out.push_str(&format!(
+                            "event{}_{}_{}{},{},{},{}\n",
+                            i + 1,
+                            e.kind.name(),
+                            e.which
+                                .map(|w| format!("{}_", w.name()))
+                                .unwrap_or_default(),
+                            what,
+                            v.text,
+                            v.digits,
+                            v.err_text()
+                        ));
+                    }
+                }
+            }
             for v in &self.values {
                 out.push_str(&format!(
                     "{},{},{},{}\n",
@@ -342,6 +434,28 @@ impl Answer {
             }
         }
         out
+    }
+}
+
+/// `time` and `forces` answer questions about the ideal models, where the
+/// state is a function of θ; with friction the slip history matters.
+fn no_friction(fr: &Option<Friction>) -> Result<()> {
+    match fr {
+        None => Ok(()),
+        Some(f) => Err(Error::invalid(
+            if f.floor.is_coulomb() {
+                "mu_floor"
+            } else {
+                "mu_contact"
+            },
+            if f.floor.is_coulomb() {
+                f.floor.to_string()
+            } else {
+                f.contact.to_string()
+            },
+            "time and forces answer for the ideal models (inf or 0); with finite friction the \
+             state depends on the slip history: use trajectory (times) or separation (events)",
+        )),
     }
 }
 
@@ -400,7 +514,33 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             .map(|s| (s, 0))
         }
         Command::Separation { common, mu } => {
-            let model = common.model()?;
+            let (model, fr) = common.model_friction()?;
+            if let Some(fr) = fr {
+                if let Some(m) = mu {
+                    return Err(Error::invalid(
+                        "mu",
+                        m,
+                        "is the ideal-rolling diagnostic; with --mu-floor/--mu-contact the slip \
+                         itself is computed (see the events)",
+                    ));
+                }
+                let ans = cylroll::friction::answer::separation(&model, &fr, common.digits)?;
+                let mut notes = ans.notes;
+                notes.insert(
+                    0,
+                    format!("the first impact is on the {}", ans.impact_surface),
+                );
+                let a = Answer {
+                    command: "separation",
+                    model,
+                    digits: common.digits,
+                    values: ans.values,
+                    notes,
+                    table: None,
+                    friction: Some((fr, ans.start_mode, ans.events)),
+                };
+                return Ok((a.render(common.format), 0));
+            }
             let mu = mu.map(|s| Exact::parse("mu", &s, false)).transpose()?;
             let mut o = Oracle::new(&model, common.digits)?.with_mu(mu)?;
             let sep = o.separation()?;
@@ -414,11 +554,13 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 values,
                 notes: sep.notes,
                 table: None,
+                friction: None,
             };
             (common, a)
         }
         Command::Time { common, to } => {
-            let model = common.model()?;
+            let (model, fr) = common.model_friction()?;
+            no_friction(&fr)?;
             let theta = Exact::parse("to", &to, true)?;
             let mut o = Oracle::new(&model, common.digits)?;
             let t = o.time_at(&theta)?;
@@ -429,11 +571,13 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 values: vec![t],
                 notes: vec![],
                 table: None,
+                friction: None,
             };
             (common, a)
         }
         Command::Forces { common, theta } => {
-            let model = common.model()?;
+            let (model, fr) = common.model_friction()?;
+            no_friction(&fr)?;
             let th = Exact::parse("theta", &theta, true)?;
             let mut o = Oracle::new(&model, common.digits)?;
             let values = o.forces_at(&th)?;
@@ -445,6 +589,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 values,
                 notes: vec![],
                 table: None,
+                friction: None,
             };
             (common, a)
         }
@@ -454,7 +599,6 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             t_end,
             steps,
         } => {
-            let model = common.model()?;
             let times = match (times, t_end, steps) {
                 (Some(list), _, _) => parse_list("times", &list)?,
                 (None, Some(te), Some(n)) => {
@@ -474,6 +618,40 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                     ))
                 }
             };
+            let (model, fr) = common.model_friction()?;
+            if let Some(fr) = fr {
+                let ans =
+                    cylroll::friction::answer::trajectory(&model, &fr, common.digits, &times)?;
+                let p = ans.rows.first().map_or(64, |r| r[0].value.prec());
+                let rows = ans
+                    .rows
+                    .into_iter()
+                    .zip(ans.modes)
+                    .map(|(mut r, m)| {
+                        r.push(Verified {
+                            name: "mode".into(),
+                            value: rug::Float::new(p),
+                            text: m,
+                            digits: 0,
+                            err_bound: rug::Float::new(p),
+                            precs: (p, p),
+                        });
+                        r
+                    })
+                    .collect();
+                let mut cols = cylroll::friction::COLUMNS.to_vec();
+                cols.push("mode");
+                let a = Answer {
+                    command: "trajectory",
+                    model,
+                    digits: common.digits,
+                    values: vec![],
+                    notes: vec![],
+                    table: Some((cols, rows)),
+                    friction: Some((fr, String::new(), vec![])),
+                };
+                return Ok((a.render(common.format), 0));
+            }
             let mut o = Oracle::new(&model, common.digits)?;
             let rows = o.trajectory(&times)?;
             let a = Answer {
@@ -483,6 +661,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 values: vec![],
                 notes: vec![],
                 table: Some((TRAJECTORY_COLUMNS.to_vec(), rows)),
+                friction: None,
             };
             (common, a)
         }

@@ -23,6 +23,27 @@ pub const MODEL_KEYS: [&str; 12] = [
     "omega0",
 ];
 
+/// The friction keys (`inf`, a number >= 0, or `S,K`), read by
+/// [`friction_from_pairs`].
+pub const FRICTION_KEYS: [&str; 2] = ["mu_floor", "mu_contact"];
+
+/// The friction laws of key/value pairs (`roll` limits where absent).
+///
+/// Errors: a coefficient that does not parse or is out of range.
+pub fn friction_from_pairs(vals: &Pairs) -> Result<crate::friction::Friction> {
+    use crate::friction::Law;
+    let law = |k: &str| -> Result<Law> {
+        match vals.get(k) {
+            None => Ok(Law::Roll),
+            Some(s) => Law::parse(k, s),
+        }
+    };
+    Ok(crate::friction::Friction {
+        floor: law("mu_floor")?,
+        contact: law("mu_contact")?,
+    })
+}
+
 /// Key → exact text.
 pub type Pairs = BTreeMap<String, String>;
 
@@ -35,11 +56,15 @@ pub fn pairs_from_toml(table: &toml::Table, source: &str, extra_keys: &[&str]) -
         if extra_keys.contains(&k.as_str()) {
             continue;
         }
-        if !MODEL_KEYS.contains(&k.as_str()) {
+        if !MODEL_KEYS.contains(&k.as_str()) && !FRICTION_KEYS.contains(&k.as_str()) {
             return Err(Error::invalid(
                 source,
                 k,
-                format!("unknown key; allowed keys: {}", MODEL_KEYS.join(", ")),
+                format!(
+                    "unknown key; allowed keys: {}, {}",
+                    MODEL_KEYS.join(", "),
+                    FRICTION_KEYS.join(", ")
+                ),
             ));
         }
         let s = match v {

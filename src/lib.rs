@@ -30,6 +30,7 @@ pub mod audit;
 pub mod dae;
 pub mod error;
 pub mod exact;
+pub mod friction;
 pub mod input;
 pub mod mechanics;
 pub mod model;

@@ -21,7 +21,7 @@ use crate::error::{Error, Result};
 use rug::{Assign, Float};
 
 /// What an event watches.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Watch {
     /// The multiplier of constraint row i (a constraint force).
     Multiplier(usize),
@@ -29,6 +29,9 @@ pub enum Watch {
     Rate(usize),
     /// The coordinate q_i.
     Coord(usize),
+    /// A linear combination of the above with constant coefficients (a
+    /// slip velocity Σ c_i q̇_i, a friction cone μ N − F).
+    Lin(Vec<(Watch, Float)>),
 }
 
 /// An event: a named zero crossing, terminal or not.
@@ -55,6 +58,12 @@ pub struct Sample {
     pub qdd: Vec<Float>,
     /// The multipliers (constraint forces), one per row.
     pub lambda: Vec<Float>,
+    /// Energy dissipated by sliding friction since t = 0 (an extra state
+    /// integrated alongside when the system has slipping contacts; else
+    /// carried unchanged).
+    pub work: Float,
+    /// Its rate, the sliding power Σ μk N |s| (0 without slipping contacts).
+    pub power: Float,
 }
 
 /// A located event.
@@ -133,45 +142,80 @@ struct Dae<'a> {
 impl Rhs for Dae<'_> {
     fn eval(&mut self, y: &[Float], dy: &mut [Float]) -> Result<()> {
         let nq = self.nq;
-        let (q, v) = y.split_at(nq);
-        let (dq, dv) = dy.split_at_mut(nq);
+        let (q, rest) = y.split_at(nq);
+        let v = &rest[..nq];
+        let (dq, rest) = dy.split_at_mut(nq);
         for (d, x) in dq.iter_mut().zip(v) {
             d.assign(x);
         }
-        self.sys.accel_into(q, v, dv, None)
+        if self.sys.has_slips() {
+            let (dv, dw) = rest.split_at_mut(nq);
+            let mut lambda = vec![Float::new(self.sys.prec); self.sys.rows.len()];
+            self.sys.accel_into(q, v, dv, Some(&mut lambda))?;
+            if let Some(w) = dw.first_mut() {
+                w.assign(self.sys.slip_power(q, v, &lambda));
+            }
+            Ok(())
+        } else {
+            self.sys.accel_into(q, v, &mut rest[..nq], None)
+        }
     }
 }
 
 fn sample(sys: &mut System, t: &Float, y: &[Float]) -> Result<Sample> {
     let nq = sys.nq();
-    let (q, v) = y.split_at(nq);
+    let q = &y[..nq];
+    let v = &y[nq..2 * nq];
     let acc = sys.accel(q, v)?;
+    let p = sys.prec;
+    let work = y.get(2 * nq).cloned().unwrap_or_else(|| Float::new(p));
+    let power = if sys.has_slips() {
+        sys.slip_power(q, v, &acc.lambda)
+    } else {
+        Float::new(p)
+    };
     Ok(Sample {
         t: t.clone(),
         q: q.to_vec(),
         v: v.to_vec(),
         qdd: acc.qdd,
         lambda: acc.lambda,
+        work,
+        power,
     })
 }
 
-fn watch_value(w: Watch, s: &Sample) -> Float {
+/// The value of a watched function at a sample.
+pub fn watch_value(w: &Watch, s: &Sample) -> Float {
     match w {
-        Watch::Multiplier(i) => s.lambda[i].clone(),
-        Watch::Rate(i) => s.v[i].clone(),
-        Watch::Coord(i) => s.q[i].clone(),
+        Watch::Multiplier(i) => s.lambda[*i].clone(),
+        Watch::Rate(i) => s.v[*i].clone(),
+        Watch::Coord(i) => s.q[*i].clone(),
+        Watch::Lin(terms) => {
+            let mut acc = Float::new(s.t.prec().max(s.v[0].prec()));
+            for (w, c) in terms {
+                acc += watch_value(w, s) * c;
+            }
+            acc
+        }
     }
 }
 
-fn f_of(s: &Sample) -> Vec<Float> {
+fn f_of(sys: &System, s: &Sample) -> Vec<Float> {
     let mut f = s.v.clone();
     f.extend(s.qdd.iter().cloned());
+    if sys.has_slips() {
+        f.push(s.power.clone());
+    }
     f
 }
 
-fn y_of(s: &Sample) -> Vec<Float> {
+fn y_of(sys: &System, s: &Sample) -> Vec<Float> {
     let mut y = s.q.clone();
     y.extend(s.v.iter().cloned());
+    if sys.has_slips() {
+        y.push(s.work.clone());
+    }
     y
 }
 
@@ -189,8 +233,47 @@ pub fn run(
     events: &[Event],
     opts: &Opts,
 ) -> Result<Run> {
+    let start = Start {
+        t: Float::new(opts.prec),
+        q: q0,
+        v: v0,
+        work: Float::new(opts.prec),
+        snap: Float::new(opts.prec),
+    };
+    run_from(sys, &start, times, t_end, events, opts)
+}
+
+/// Where a run starts: time, state, dissipated work so far, and the
+/// threshold below which a watched function's initial |value| counts as 0
+/// (a function that starts on its boundary, e.g. a slip velocity just after
+/// slip onset, is watched only once it has left it).
+#[derive(Debug, Clone)]
+pub struct Start<'a> {
+    /// Initial time.
+    pub t: Float,
+    /// Initial q.
+    pub q: &'a [Float],
+    /// Initial q̇.
+    pub v: &'a [Float],
+    /// Work dissipated before t.
+    pub work: Float,
+    /// Snap threshold for initial event values.
+    pub snap: Float,
+}
+
+/// [`run`] from a given start (a later mode of a motion with friction):
+/// outputs at `times` ≥ start.t, events watched from the start on.
+pub fn run_from(
+    sys: &mut System,
+    start: &Start,
+    times: &[Float],
+    t_end: &Float,
+    events: &[Event],
+    opts: &Opts,
+) -> Result<Run> {
     let p = opts.prec;
     let nq = sys.nq();
+    let q0 = start.q;
     let mut gbs = Gbs::new(
         p,
         opts.tol.clone(),
@@ -198,16 +281,31 @@ pub fn run(
         opts.kmax,
         (opts.kmax / 2).max(4),
     );
-    let mut t = Float::new(p);
-    let mut y: Vec<Float> = q0.iter().chain(v0).cloned().collect();
+    let mut t = Float::with_val(p, &start.t);
+    let mut y: Vec<Float> = start.q.iter().chain(start.v).cloned().collect();
+    if sys.has_slips() {
+        y.push(Float::with_val(p, &start.work));
+    }
+    debug_assert_eq!(y.len(), 2 * nq + usize::from(sys.has_slips()));
     let mut cur = sample(sys, &t, &y)?;
-    let mut gprev: Vec<Float> = events.iter().map(|e| watch_value(e.watch, &cur)).collect();
+    cur.work = Float::with_val(p, &start.work);
+    let mut gprev: Vec<Float> = events
+        .iter()
+        .map(|e| {
+            let g = watch_value(&e.watch, &cur);
+            if Float::with_val(p, g.abs_ref()) <= start.snap {
+                Float::new(p)
+            } else {
+                g
+            }
+        })
+        .collect();
     let mut outputs = Vec::new();
     let mut hits = Vec::new();
     let mut max_drift = Float::new(p);
     let mut projections = 0u32;
     let mut next_out = 0usize;
-    while next_out < times.len() && times[next_out].is_zero() {
+    while next_out < times.len() && times[next_out] <= t {
         outputs.push(cur.clone());
         next_out += 1;
     }
@@ -222,7 +320,7 @@ pub fn run(
         if hmax.is_sign_negative() || hmax.is_zero() {
             break (false, cur);
         }
-        let f0 = f_of(&cur);
+        let f0 = f_of(sys, &cur);
         let step = {
             let mut dae = Dae { sys, nq };
             gbs.step(&mut dae, &y, &f0, &hmax)?
@@ -236,18 +334,21 @@ pub fn run(
         let mut y1 = step.y;
         {
             let (q1, v1) = y1.split_at(nq);
-            let d = sys.drift(q1, v1, q0);
+            let d = sys.drift(q1, &v1[..nq], q0);
             if d > max_drift {
                 max_drift = d.clone();
             }
             if d > opts.project_above {
                 let (q1, v1) = y1.split_at_mut(nq);
-                sys.project(q1, v1, q0);
+                sys.project(q1, &mut v1[..nq], q0);
                 projections += 1;
             }
         }
         let next = sample(sys, &t1, &y1)?;
-        let g1: Vec<Float> = events.iter().map(|e| watch_value(e.watch, &next)).collect();
+        let g1: Vec<Float> = events
+            .iter()
+            .map(|e| watch_value(&e.watch, &next))
+            .collect();
         // events changing sign in this step
         let mut found: Vec<(Float, usize, Sample, Float)> = Vec::new();
         for (i, ev) in events.iter().enumerate() {
@@ -266,7 +367,7 @@ pub fn run(
                     &t,
                     &step.h,
                     step.column,
-                    ev.watch,
+                    &ev.watch,
                     ends,
                 )?;
                 found.push((s, i, at, err));
@@ -297,7 +398,7 @@ pub fn run(
             }
         }
         t = t1;
-        y = y_of(&next);
+        y = y_of(sys, &next);
         cur = next;
         if reached_stop {
             if next_out < times.len() && t == times[next_out] {
@@ -323,34 +424,61 @@ pub fn run(
 /// dg/dt of the watched function at a sample: q̈ or q̇ exactly; for a
 /// multiplier, a central difference of λ along the flow with step
 /// ε = 2^−(prec/3) (relative error about 2^−(2 prec/3)).
-fn rate_of(sys: &mut System, w: Watch, s: &Sample) -> Result<Float> {
+fn rate_of(sys: &mut System, w: &Watch, s: &Sample) -> Result<Float> {
     let p = sys.prec;
     match w {
-        Watch::Rate(i) => Ok(s.qdd[i].clone()),
-        Watch::Coord(i) => Ok(s.v[i].clone()),
-        Watch::Multiplier(k) => {
-            let eps = Float::with_val(p, 1u32) >> (p as i32 / 3);
-            let shifted = |sign: i32| {
-                let q: Vec<Float> =
-                    s.q.iter()
-                        .zip(&s.v)
-                        .map(|(q, v)| Float::with_val(p, q + Float::with_val(p, v * &eps) * sign))
-                        .collect();
-                let v: Vec<Float> =
-                    s.v.iter()
-                        .zip(&s.qdd)
-                        .map(|(v, a)| Float::with_val(p, v + Float::with_val(p, a * &eps) * sign))
-                        .collect();
-                (q, v)
-            };
-            let (qp, vp) = shifted(1);
-            let (qm, vm) = shifted(-1);
-            let ap = sys.accel(&qp, &vp)?;
-            let am = sys.accel(&qm, &vm)?;
-            let d = Float::with_val(p, &ap.lambda[k] - &am.lambda[k]);
-            Ok(d / Float::with_val(p, &eps * 2u32))
+        Watch::Rate(i) => Ok(s.qdd[*i].clone()),
+        Watch::Coord(i) => Ok(s.v[*i].clone()),
+        Watch::Multiplier(k) => Ok(lambda_rates(sys, s)?.swap_remove(*k)),
+        Watch::Lin(terms) => {
+            let mut acc = Float::new(p);
+            let mut lr: Option<Vec<Float>> = None;
+            for (w, c) in terms {
+                let d = match w {
+                    Watch::Multiplier(k) => {
+                        if lr.is_none() {
+                            lr = Some(lambda_rates(sys, s)?);
+                        }
+                        lr.as_ref().map_or_else(|| Float::new(p), |l| l[*k].clone())
+                    }
+                    other => rate_of(sys, other, s)?,
+                };
+                acc += d * c;
+            }
+            Ok(acc)
         }
     }
+}
+
+/// dλ/dt of every multiplier at a sample: a central difference along the
+/// flow with step ε = 2^−(prec/3) (relative error about 2^−(2 prec/3)).
+fn lambda_rates(sys: &mut System, s: &Sample) -> Result<Vec<Float>> {
+    let p = sys.prec;
+    let eps = Float::with_val(p, 1u32) >> (p as i32 / 3);
+    let shifted = |sign: i32| {
+        let q: Vec<Float> =
+            s.q.iter()
+                .zip(&s.v)
+                .map(|(q, v)| Float::with_val(p, q + Float::with_val(p, v * &eps) * sign))
+                .collect();
+        let v: Vec<Float> =
+            s.v.iter()
+                .zip(&s.qdd)
+                .map(|(v, a)| Float::with_val(p, v + Float::with_val(p, a * &eps) * sign))
+                .collect();
+        (q, v)
+    };
+    let (qp, vp) = shifted(1);
+    let (qm, vm) = shifted(-1);
+    let ap = sys.accel(&qp, &vp)?;
+    let am = sys.accel(&qm, &vm)?;
+    let two_eps = Float::with_val(p, &eps * 2u32);
+    Ok(ap
+        .lambda
+        .iter()
+        .zip(&am.lambda)
+        .map(|(a, b)| Float::with_val(p, a - b) / &two_eps)
+        .collect())
 }
 
 /// The root in (0, h) of the cubic Hermite interpolant of g with values
@@ -397,7 +525,7 @@ fn locate(
     t: &Float,
     h: &Float,
     column: usize,
-    watch: Watch,
+    watch: &Watch,
     ends: [(&Sample, &Float); 2],
 ) -> Result<(Float, Sample, Float)> {
     let p = gbs.prec;

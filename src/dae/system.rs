@@ -232,6 +232,31 @@ pub enum Row {
     Massless(usize),
 }
 
+/// A contact whose tangential velocity is a slip speed: the floor under
+/// cylinder 1, or line j between cylinders j+1 and j.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Tangent {
+    /// s1 = ẋ1 − r1 φ̇1: the velocity of cylinder 1's contact point over the floor.
+    Floor,
+    /// s = r_j θ̇_j + ρ_{j+1} ω_{j+1} + ρ_j ω_j (ω counter-clockwise): the
+    /// velocity of the upper cylinder's contact point over the lower one's,
+    /// along (cos θ_j, −sin θ_j). For two cylinders s12 = r θ̇ + r2 ψ̇2 − r1 φ̇1.
+    Line(usize),
+}
+
+/// Sliding friction at a slipping contact: the applied tangential force
+/// −μk σ N, with N the multiplier of the contact's normal row and σ = ±1 the
+/// sign of the slip speed (the force opposes the slip).
+#[derive(Debug, Clone)]
+pub struct SlipTerm {
+    /// The contact.
+    pub at: Tangent,
+    /// Index (into [`System::rows`]) of its normal row.
+    pub normal: usize,
+    /// μk σ.
+    pub mu_sigma: Float,
+}
+
 /// The solution of the KKT system at one state.
 #[derive(Debug, Clone)]
 pub struct Accel {
@@ -271,6 +296,8 @@ pub struct System {
     massless: Vec<Vec<Float>>,
     /// Cyclic directions with inertia: their momenta are conserved.
     pub cyclic: Vec<(String, Vec<Float>)>,
+    /// Sliding friction at slipping contacts (empty for the ideal models).
+    pub slips: Vec<SlipTerm>,
     ws: Workspace,
 }
 
@@ -339,6 +366,7 @@ impl System {
             rows,
             massless: Vec::new(),
             cyclic: Vec::new(),
+            slips: Vec::new(),
             ws: Workspace {
                 m: vec![Float::new(prec); nq * nq],
                 h: vec![Float::new(prec); nq],
@@ -373,6 +401,58 @@ impl System {
     /// Number of coordinates, 3n.
     pub fn nq(&self) -> usize {
         3 * self.n
+    }
+
+    /// Whether some contact slips with friction (the dissipated work is
+    /// then integrated as an extra state).
+    pub fn has_slips(&self) -> bool {
+        !self.slips.is_empty()
+    }
+
+    /// The coefficients of a contact's slip speed over q̇ at q.
+    pub fn tangent_coeffs(&self, at: Tangent, q: &[Float]) -> Vec<(usize, Float)> {
+        Self::tangent_of(&self.rho, at, q)
+    }
+
+    /// A contact's slip speed at (q, q̇).
+    pub fn slip_speed(&self, at: Tangent, q: &[Float], v: &[Float]) -> Float {
+        let mut s = Float::new(self.prec);
+        for (i, c) in self.tangent_coeffs(at, q) {
+            s += &c * &v[i];
+        }
+        s
+    }
+
+    /// The power dissipated by the slip terms, Σ μk σ N s = Σ μk N |s| ≥ 0
+    /// while every slip speed has the sign of its σ (λ: the multipliers of
+    /// the same state).
+    pub fn slip_power(&self, q: &[Float], v: &[Float], lambda: &[Float]) -> Float {
+        let p = self.prec;
+        let mut pw = Float::new(p);
+        for sl in &self.slips {
+            let s = self.slip_speed(sl.at, q, v);
+            pw += Float::with_val(p, &sl.mu_sigma * &lambda[sl.normal]) * &s;
+        }
+        pw
+    }
+
+    fn tangent_of(rho: &[Float], at: Tangent, q: &[Float]) -> Vec<(usize, Float)> {
+        let p = q[0].prec().max(rho[0].prec());
+        match at {
+            Tangent::Floor => vec![
+                (X1, Float::with_val(p, 1u32)),
+                (PHI1, Float::with_val(p, -&rho[0])),
+            ],
+            Tangent::Line(j) => {
+                let (i0, s0) = Self::spin(j);
+                let (i1, s1) = Self::spin(j + 1);
+                vec![
+                    (th(j), q[rr(j)].clone()),
+                    (i0, Float::with_val(p, &rho[j] * s0)),
+                    (i1, Float::with_val(p, &rho[j + 1] * s1)),
+                ]
+            }
+        }
     }
 
     /// Index and sign of cylinder i's counter-clockwise rate in q̇.
@@ -826,6 +906,14 @@ impl System {
                 ws.a[i * nk + nq + k].neg_assign();
             }
             ws.b[nq + k].assign(rhs);
+        }
+        // sliding friction −μk σ N along the slip direction: M q̈ − J_nᵀ N
+        // + μk σ J_tᵀ N = h, so the normal row's column gains μk σ J_t
+        for sl in &self.slips {
+            let col = nq + sl.normal;
+            for (i, c) in Self::tangent_of(&self.rho, sl.at, q) {
+                ws.a[i * nk + col] += Float::with_val(self.prec, &c * &sl.mu_sigma);
+            }
         }
         gauss(&mut ws.a, &mut ws.b, &mut ws.x, nk)
             .ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;

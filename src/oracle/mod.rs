@@ -110,7 +110,7 @@ struct RowContext {
 
 /// Whether `q` has a terminating decimal expansion (its reduced denominator
 /// has no prime factors but 2 and 5).
-fn terminating(q: &rug::Rational) -> bool {
+pub(crate) fn terminating(q: &rug::Rational) -> bool {
     let mut d = q.denom().clone();
     d.remove_factor_mut(&rug::Integer::from(2));
     d.remove_factor_mut(&rug::Integer::from(5));

@@ -41,6 +41,16 @@ pub struct Case {
 pub fn load_case(path: &Path) -> Result<Case> {
     let table = read_toml(path, "case")?;
     let pairs = pairs_from_toml(&table, "case", &["description", "steps"])?;
+    if let Some(k) = crate::input::FRICTION_KEYS
+        .iter()
+        .find(|k| pairs.contains_key(**k))
+    {
+        return Err(Error::invalid(
+            "case",
+            k,
+            "golden cases are ideal models: friction keys are not read here",
+        ));
+    }
     let model = model_from_pairs(&pairs)?;
     let description = match table.get("description") {
         Some(toml::Value::String(s)) => s.clone(),

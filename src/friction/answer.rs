@@ -1,0 +1,335 @@
+//! Verified answers with friction: the motion is computed at two working
+//! precisions (each integrating with its own tolerance 2^−(p−8)), the two
+//! event sequences (kinds, contacts, modes entered) must be identical, and
+//! every number is judged by the precision ladder
+//! ([`crate::numeric::verify`]): printed only to the digits that every
+//! value within |v(p1) − v(p2)| + err(p2) shares. The energy balance
+//! E(0) − E(t) = W(t) is checked along every run.
+
+use super::flight::Surface;
+use super::{solve, Friction, Kind, Motion, Point, Which, COLUMNS};
+use crate::error::{Error, Result};
+use crate::exact::{rational_text, Exact};
+use crate::model::Model;
+use crate::numeric::verify::{ladder_runs, ladder_table, precisions, Estimate, Verified};
+use rug::Float;
+use std::cell::RefCell;
+
+/// One event with verified time and angle.
+#[derive(Debug, Clone)]
+pub struct VerifiedEvent {
+    /// What happened.
+    pub kind: Kind,
+    /// The contact concerned (None for the impact).
+    pub which: Option<Which>,
+    /// The mode entered (`flight` after separation; None at the end).
+    pub mode: Option<String>,
+    /// Time.
+    pub t: Verified,
+    /// θ there.
+    pub theta: Verified,
+}
+
+/// The answer of `separation` with friction.
+#[derive(Debug, Clone)]
+pub struct SeparationAnswer {
+    /// The mode at t = 0 (`floor stick, contact stick` …).
+    pub start_mode: String,
+    /// The events in time order, the impact last.
+    pub events: Vec<VerifiedEvent>,
+    /// theta_s, t_s, work_s, then the impact: t_impact, x1, x2, y2 and the
+    /// velocities just before it.
+    pub values: Vec<Verified>,
+    /// What cylinder 2 hits first.
+    pub impact_surface: &'static str,
+    /// Notes (energy balance, what is outside the model).
+    pub notes: Vec<String>,
+}
+
+/// The answer of `trajectory` with friction.
+#[derive(Debug, Clone)]
+pub struct TrajectoryAnswer {
+    /// One row per time, in [`COLUMNS`] order.
+    pub rows: Vec<Vec<Verified>>,
+    /// The mode of each row (`stick/slip+`, or `flight`).
+    pub modes: Vec<String>,
+}
+
+/// Names of the separation values, in order.
+pub const SEPARATION_KEYS: [&str; 12] = [
+    "theta_s",
+    "t_s",
+    "work_s",
+    "t_impact",
+    "x1_impact",
+    "x2_impact",
+    "y2_impact",
+    "x1_dot_impact",
+    "phi1_dot_impact",
+    "x2_dot_impact",
+    "y2_dot_impact",
+    "psi2_dot_impact",
+];
+
+fn signature(m: &Motion) -> Vec<String> {
+    let mut s: Vec<String> = m
+        .events
+        .iter()
+        .map(|e| {
+            format!(
+                "{} {} -> {}",
+                e.kind.name(),
+                e.which.map_or("", |w| w.name()),
+                e.mode.map_or_else(|| "-".to_string(), |m| m.tag())
+            )
+        })
+        .collect();
+    s.push(m.start_mode.tag());
+    s.extend(m.rows.iter().map(Point::mode_tag));
+    s
+}
+
+fn one(p: u32) -> Float {
+    Float::with_val(p, 1u32)
+}
+
+/// An integrated value: its own error estimate is a few units of the
+/// integrator's tolerance (the comparison of the two precisions carries
+/// the real weight).
+fn integrated(v: &Float, scale: Float) -> Estimate {
+    let p = v.prec();
+    let err = (Float::with_val(p, v.abs_ref()) + &scale) >> (p as i32 - 24);
+    Estimate::new(v.clone(), err, scale)
+}
+
+fn event_estimates(m: &Motion, out: &mut Vec<Estimate>) {
+    for e in &m.events {
+        let p = e.at.t.prec();
+        let t_err = Float::with_val(p, &e.t_err);
+        let mut te = integrated(&e.at.t, one(p));
+        te.err += &t_err;
+        out.push(te);
+        let mut th = integrated(&e.at.theta, one(p));
+        th.err += Float::with_val(p, e.at.theta_dot.abs_ref()) * &t_err;
+        out.push(th);
+    }
+}
+
+fn check_balance(m: &Motion, digits: u32) -> Result<()> {
+    // E(0) − E(t) = W(t) to well below the printed digits
+    let p = m.energy_drift.prec();
+    let lim = Float::with_val(p, Float::u_pow_u(10, digits + 2)).recip();
+    if m.energy_drift > lim {
+        return Err(Error::NotConverged {
+            quantity: "energy balance".into(),
+            requested: digits,
+            reached: format!(
+                "|E(0) - E(t) - W(t)| reached {:.3e} of m2 g r",
+                m.energy_drift.to_f64()
+            ),
+            detail: "the integration did not keep the energy balance".into(),
+        });
+    }
+    Ok(())
+}
+
+/// Runs `solve` at both precisions of each rung, the first run's event
+/// sequence fixing the names; the second must match it.
+fn laddered<F>(
+    digits: u32,
+    first: Motion,
+    names: &[String],
+    rows: usize,
+    mut again: F,
+    est: impl Fn(&Motion) -> Vec<Estimate>,
+) -> Result<Vec<Vec<Verified>>>
+where
+    F: FnMut(u32) -> Result<Motion>,
+{
+    let sig = signature(&first);
+    let (p1, _) = precisions(digits, 0);
+    let cache = RefCell::new(Some(first));
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let f = |p: u32, _run| -> Result<Vec<Estimate>> {
+        let m = match (p == p1, cache.borrow_mut().take()) {
+            (true, Some(m)) => m,
+            _ => again(p)?,
+        };
+        if signature(&m) != sig {
+            return Err(Error::NotConverged {
+                quantity: "event sequence".into(),
+                requested: digits,
+                reached: "the two working precisions disagree on the sequence of modes".into(),
+                detail: format!(
+                    "{} bits: {}; {} bits: {}",
+                    p1,
+                    sig.join(", "),
+                    p,
+                    signature(&m).join(", ")
+                ),
+            });
+        }
+        check_balance(&m, digits)?;
+        Ok(est(&m))
+    };
+    if rows == 1 {
+        ladder_runs(digits, &refs, f).map(|r| vec![r])
+    } else {
+        ladder_table(digits, &refs, rows, f)
+    }
+}
+
+/// Separation with friction: the event list from the start to the first
+/// impact, θs and ts, the dissipated work at separation and the state just
+/// before the impact.
+///
+/// Errors: see [`solve`].
+pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<SeparationAnswer> {
+    let (p1, _) = precisions(digits, 0);
+    let horizon = |p: u32| super::default_horizon(model, p);
+    let first = solve(model, fr, p1, &[], true, &horizon(p1))?;
+    let mut names = Vec::new();
+    for (i, e) in first.events.iter().enumerate() {
+        names.push(format!("event{}_t", i + 1));
+        names.push(format!("event{}_theta", i + 1));
+        let _ = e;
+    }
+    names.extend(SEPARATION_KEYS.iter().map(|s| s.to_string()));
+    let skel: Vec<(Kind, Option<Which>, Option<String>)> = first
+        .events
+        .iter()
+        .map(|e| {
+            (
+                e.kind,
+                e.which,
+                match (e.kind, e.mode) {
+                    (Kind::Separation, _) => Some("flight".to_string()),
+                    (Kind::Impact, _) | (Kind::LiftOff, _) => None,
+                    (_, Some(m)) => Some(m.to_string()),
+                    (_, None) => Some("flight".to_string()),
+                },
+            )
+        })
+        .collect();
+    let start_mode = first.start_mode.to_string();
+    let surface = first.impact.as_ref().map_or("none", |i| i.surface.name());
+    let drift = first.energy_drift.to_f64();
+    let n_ev = first.events.len();
+    let vals = laddered(
+        digits,
+        first,
+        &names,
+        1,
+        |p| solve(model, fr, p, &[], true, &horizon(p)),
+        |m| {
+            let mut out = Vec::new();
+            event_estimates(m, &mut out);
+            let sep = m.separation.as_ref().expect("separation reached");
+            let imp = m.impact.as_ref().expect("impact reached");
+            let p = sep.t.prec();
+            out.push(integrated(&sep.theta, one(p)));
+            let ev_sep = m
+                .events
+                .iter()
+                .find(|e| e.kind == Kind::Separation)
+                .map(|e| e.t_err.clone())
+                .unwrap_or_else(|| Float::new(p));
+            let mut ts = integrated(&sep.t, one(p));
+            ts.err += &ev_sep;
+            out.push(ts);
+            out.push(integrated(&sep.work, one(p)));
+            for v in [
+                &imp.t,
+                &imp.x1,
+                &imp.x2,
+                &imp.y2,
+                &imp.vx1,
+                &imp.phi1_dot,
+                &imp.vx2,
+                &imp.vy2,
+                &imp.psi2_dot,
+            ] {
+                let mut e = integrated(v, one(p));
+                e.err += Float::with_val(p, &ev_sep) * 16u32;
+                out.push(e);
+            }
+            out
+        },
+    )?;
+    let mut vals = vals.into_iter().next().unwrap_or_default();
+    let rest = vals.split_off(2 * n_ev);
+    let mut events = Vec::new();
+    for (i, (kind, which, mode)) in skel.into_iter().enumerate() {
+        events.push(VerifiedEvent {
+            kind,
+            which,
+            mode,
+            t: vals[2 * i].clone(),
+            theta: vals[2 * i + 1].clone(),
+        });
+    }
+    let mut notes = vec![
+        format!(
+            "energy balance E(0) - E(t) = W(t) (W: work of sliding friction) held to {drift:.1e} of m2 g r along the motion"
+        ),
+        "the impact ends the model: impact laws are outside it".to_string(),
+    ];
+    if surface == Surface::Cylinder.name() {
+        notes.push("cylinder 2 touches cylinder 1 again before it reaches the floor".into());
+    }
+    Ok(SeparationAnswer {
+        start_mode,
+        events,
+        values: rest,
+        impact_surface: surface,
+        notes,
+    })
+}
+
+/// The trajectory with friction at the given times (through every mode and
+/// the free flight, up to the first impact).
+///
+/// Errors: a time after the first impact or after lift-off; see [`solve`].
+pub fn trajectory(
+    model: &Model,
+    fr: &Friction,
+    digits: u32,
+    times: &[Exact],
+) -> Result<TrajectoryAnswer> {
+    for w in times.windows(2) {
+        if w[1].to_float(256) < w[0].to_float(256) {
+            return Err(Error::invalid("times", &w[1], "must be ascending"));
+        }
+    }
+    if let Some(t) = times.iter().find(|t| t.signum() < 0) {
+        return Err(Error::invalid("times", t, "must be >= 0"));
+    }
+    let exact_t: Vec<Option<String>> = times
+        .iter()
+        .map(|t| {
+            (!t.times_pi && crate::oracle::terminating(&t.coef)).then(|| rational_text(&t.coef))
+        })
+        .collect();
+    let tf = |p: u32| -> Vec<Float> { times.iter().map(|t| t.to_float(p)).collect() };
+    let (p1, _) = precisions(digits, 0);
+    let horizon = |p: u32| super::default_horizon(model, p);
+    let run = |p: u32| solve(model, fr, p, &tf(p), false, &horizon(p));
+    let first = run(p1)?;
+    let modes: Vec<String> = first.rows.iter().map(Point::mode_tag).collect();
+    let names: Vec<String> = COLUMNS.iter().map(|s| s.to_string()).collect();
+    let rows = laddered(digits, first, &names, times.len(), run, |m| {
+        let mut out = Vec::new();
+        for (pt, text) in m.rows.iter().zip(&exact_t) {
+            let p = pt.t.prec();
+            for (i, v) in pt.columns().into_iter().enumerate() {
+                let mut e = integrated(v, one(p));
+                if i == 0 {
+                    e.exact_text = text.clone();
+                }
+                out.push(e);
+            }
+        }
+        out
+    })?;
+    Ok(TrajectoryAnswer { rows, modes })
+}
