@@ -214,6 +214,17 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
     let start_mode = first.start_mode.to_string();
     let surface = first.impact.as_ref().map_or("none", |i| i.surface.name());
     let drift = first.energy_drift.to_f64();
+    let abrupt = first.separation.as_ref().and_then(|sp| {
+        let n = sp.n12.to_f64();
+        (n.abs() > 1e-12).then(|| {
+            format!(
+                "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
+                 event no closed mode is consistent (sticking leaves the cone, sliding either \
+                 way is inconsistent) and the free motion separates, so the normal force \
+                 drops to 0 at once (a Painlevé-type continuation of the rigid-body model)"
+            )
+        })
+    });
     let n_ev = first.events.len();
     let vals = laddered(
         digits,
@@ -274,6 +285,7 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
         ),
         "the impact ends the model: impact laws are outside it".to_string(),
     ];
+    notes.extend(abrupt);
     if surface == Surface::Cylinder.name() {
         notes.push("cylinder 2 touches cylinder 1 again before it reaches the floor".into());
     }

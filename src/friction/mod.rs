@@ -567,6 +567,14 @@ fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Opti
         Ok(a) => a,
         Err(_) => return Ok(Some("its constraint system is singular".into())),
     };
+    // a second step, for slip speeds that leave 0 only at second order (at
+    // a slip onset with μs = μk the sliding force equals the sticking one,
+    // so ṡ = 0 there and the sign of s̈ decides): s(2ε) ≈ s + 2ε ṡ + ε² s̈
+    let v2: Vec<Float> = v1
+        .iter()
+        .zip(&a1.qdd)
+        .map(|(x, d)| Float::with_val(p, x + Float::with_val(p, d * &eps)))
+        .collect();
     let s1 = Sample {
         t: Float::new(p),
         q: q1.clone(),
@@ -605,7 +613,7 @@ fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Opti
                 }
             }
             (State::Slip(sg), Law::Coulomb { .. }) if sg != 0 => {
-                let s = sys.slip_speed(tangent(w), &q1, &v1);
+                let s = sys.slip_speed(tangent(w), &q1, &v2);
                 if s.is_zero() || s.is_sign_negative() != (sg < 0) {
                     return Ok(Some(format!(
                         "slipping {} at the {} would need a slip speed of that sign (it would be {:.3e})",
@@ -661,8 +669,11 @@ fn free_normal_accel(ctx: &Ctx, sys: &System, q: &[Float], v: &[Float]) -> Float
 /// The unique consistent continuation at (q, q̇): every combination of the
 /// contacts' states is tested just after the present state.
 ///
+/// Returns the mode, or None when the contact between the cylinders opening
+/// is the one consistent continuation.
+///
 /// Errors: none consistent, or more than one, with the reasons.
-fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float) -> Result<Mode> {
+fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float) -> Result<Option<Mode>> {
     let mut ok = Vec::new();
     let mut why = Vec::new();
     for f in ctx.candidates(Which::Floor) {
@@ -687,10 +698,8 @@ fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float) -> Result<Mode> {
     let theta = q[sy::th(0)].to_f64();
     let at = format!("t = {:.12}, theta = {:.12}", t.to_f64(), theta);
     match (ok.len(), opens) {
-        (1, false) => Ok(ok[0]),
-        (0, true) => Err(Error::not_physical(format!(
-            "the cylinders part at once at {at}: N12 <= 0 in every closed mode"
-        ))),
+        (1, false) => Ok(Some(ok[0])),
+        (0, true) => Ok(None),
         (0, false) => Err(Error::NotConverged {
             quantity: "mode".into(),
             requested: 0,
@@ -772,7 +781,9 @@ pub fn solve(
     };
     let e0 = sys0.energy(&q0, &v0);
     let zero = Float::new(wp);
-    let mut mode = decide(&ctx, &q0, &v0, &zero)?;
+    let mut mode = decide(&ctx, &q0, &v0, &zero)?.ok_or_else(|| {
+        Error::not_physical("the cylinders part at once: N12 <= 0 at the start in every mode")
+    })?;
     let start_mode = mode;
     let mut q = q0;
     let mut v = v0;
@@ -841,7 +852,13 @@ pub fn solve(
         let at = point(&ctx, &mut sys, mode, &hit.at);
         note_drift(&at, &mut drift);
         let name = evs[hit.event].name.clone();
-        if name == "separation" || name == "lift_off" {
+        // a change of friction state, or the contact opening
+        let next_mode = if name == "separation" || name == "lift_off" {
+            None
+        } else {
+            decide(&ctx, &hit.at.q, &hit.at.v, &hit.at.t)?
+        };
+        if next_mode.is_none() {
             let lift = name == "lift_off";
             evs_out.push(EventRec {
                 kind: if lift {
@@ -909,8 +926,7 @@ pub fn solve(
                 end: End::Impact,
             });
         }
-        // a change of friction state
-        let new = decide(&ctx, &hit.at.q, &hit.at.v, &hit.at.t)?;
+        let new = next_mode.ok_or_else(|| Error::not_physical("internal: no mode"))?;
         if new == mode {
             return Err(Error::NotConverged {
                 quantity: "mode".into(),
