@@ -648,7 +648,7 @@ fn free_normal_accel(ctx: &Ctx, sys: &System, q: &[Float], v: &[Float]) -> Float
     let r = &q[sy::rr(0)];
     let thd = &v[sy::th(0)];
     let s1 = sys.slip_speed(Tangent::Floor, q, v);
-    let snap = Float::with_val(p, ctx.ts.recip_ref()) * &ctx.base_r >> (p as i32 / 2);
+    let snap = (Float::with_val(p, ctx.ts.recip_ref()) * &ctx.base_r) >> (p as i32 / 2);
     let sticking = Float::with_val(p, s1.abs_ref()) <= snap;
     let a1x = flight::floor_accel(
         ctx.fixed,

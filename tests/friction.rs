@@ -1,0 +1,544 @@
+//! Finite Coulomb friction, held against facts nothing in cylroll computed:
+//! the independent derivation of `tests/fixtures/friction_independent.py`
+//! (Newton–Euler of each body per mode, mpmath's Taylor integrator, closed
+//! forms for a fixed lower cylinder), closed forms derived here, the ideal
+//! models as the limits μ = ∞ and μ = 0, the energy balance, and agreement
+//! of two requested precisions.
+
+use assert_cmd::Command;
+use cylroll::exact::Exact;
+use cylroll::friction::answer::{self, SeparationAnswer};
+use cylroll::friction::{self, Friction, Kind, Law};
+use cylroll::model::{Contact, Floor, Model, Params, Start};
+use rug::ops::Pow;
+use rug::{Float, Rational};
+
+const PREC: u32 = 256;
+
+fn fixture() -> toml::Table {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/fixtures/friction_independent.toml"
+    ))
+    .unwrap();
+    text.parse().unwrap()
+}
+
+fn q(s: &str) -> Rational {
+    Exact::parse("x", s, false).unwrap().coef
+}
+
+fn law(s: &str) -> Law {
+    Law::parse("mu", s).unwrap()
+}
+
+fn model(floor: Floor, k: &str) -> Model {
+    let mut p = Params::identical_solid();
+    p.k1 = q(k);
+    p.k2 = q(k);
+    Model::new(
+        p,
+        floor,
+        Contact::Roll,
+        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+    )
+    .unwrap()
+}
+
+fn f(s: &str) -> Float {
+    Float::with_val(PREC, Float::parse(s).unwrap())
+}
+
+/// |a − b| ≤ 10^−digits · max(1, |b|)
+fn close(what: &str, a: &Float, b: &str, digits: i32) {
+    let b = f(b);
+    let d = Float::with_val(PREC, a - &b).abs();
+    let scale = Float::with_val(PREC, b.abs_ref()).max(&Float::with_val(PREC, 1u32));
+    let lim = scale * Float::with_val(PREC, 10u32).pow(-digits);
+    assert!(
+        d <= lim,
+        "{what}: cylroll {} vs independent {} (difference {:.3e})",
+        a.to_string_radix(10, Some(30)),
+        b.to_string_radix(10, Some(30)),
+        d.to_f64()
+    );
+}
+
+fn value<'a>(ans: &'a SeparationAnswer, name: &str) -> &'a Float {
+    &ans.values
+        .iter()
+        .find(|v| v.name == name)
+        .unwrap_or_else(|| panic!("no {name}"))
+        .value
+}
+
+fn s<'a>(t: &'a toml::Table, k: &str) -> &'a str {
+    t.get(k)
+        .and_then(|v| v.as_str())
+        .unwrap_or_else(|| panic!("fixture key {k}"))
+}
+
+const DIGITS: u32 = 24;
+const AGREE: i32 = 22;
+
+#[test]
+fn fixed_lower_cylinder_matches_the_independent_closed_forms() {
+    let fx = fixture();
+    let mut seen = 0;
+    for (name, v) in &fx {
+        if !name.starts_with("fixed_") {
+            continue;
+        }
+        let t = v.as_table().unwrap();
+        let spec = format!("{},{}", s(t, "mu_s"), s(t, "mu_k"));
+        let fr = Friction {
+            floor: Law::Roll,
+            contact: law(&spec),
+        };
+        let ans = answer::separation(&model(Floor::Fixed, "1/2"), &fr, DIGITS).unwrap();
+        close(
+            &format!("{name} theta_s"),
+            value(&ans, "theta_s"),
+            s(t, "theta_s"),
+            AGREE,
+        );
+        close(
+            &format!("{name} t_s"),
+            value(&ans, "t_s"),
+            s(t, "t_s"),
+            AGREE,
+        );
+        close(
+            &format!("{name} work_s"),
+            value(&ans, "work_s"),
+            s(t, "energy_lost_s"),
+            AGREE,
+        );
+        for (mine, theirs) in [
+            ("t_impact", "impact_t"),
+            ("x2_impact", "impact_x2"),
+            ("x2_dot_impact", "impact_vx2"),
+            ("y2_dot_impact", "impact_vy2"),
+            ("psi2_dot_impact", "impact_psi2_dot"),
+        ] {
+            close(
+                &format!("{name} {mine}"),
+                value(&ans, mine),
+                s(t, theirs),
+                AGREE,
+            );
+        }
+        assert_eq!(ans.impact_surface, s(t, "impact_surface"), "{name}");
+        // the slip onset: an event unless the start already slips
+        let onset = ans.events.iter().find(|e| e.kind == Kind::SlipOnset);
+        if s(t, "initial_mode") == "stick" {
+            let e = onset.unwrap_or_else(|| panic!("{name}: no slip onset"));
+            close(
+                &format!("{name} theta_slip"),
+                &e.theta.value,
+                s(t, "theta_slip"),
+                AGREE,
+            );
+            close(&format!("{name} t_slip"), &e.t.value, s(t, "t_slip"), AGREE);
+        } else {
+            assert!(onset.is_none(), "{name}: slips from the start");
+        }
+        seen += 1;
+    }
+    assert_eq!(seen, 7);
+}
+
+#[test]
+fn full_system_matches_the_independent_taylor_integration() {
+    let fx = fixture();
+    for case in ["main_b1", "main_b2", "main_b3", "main_b5"] {
+        let t = fx[case].as_table().unwrap();
+        let fr = Friction {
+            floor: law(s(t, "mu_floor")),
+            contact: law(s(t, "mu_contact")),
+        };
+        let ans = answer::separation(&model(Floor::Roll, "1/2"), &fr, DIGITS).unwrap();
+        // the event list: kinds and places
+        let theirs: Vec<&toml::Table> = t["events"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|e| e.as_table().unwrap())
+            .filter(|e| s(e, "kind") != "start")
+            .collect();
+        assert_eq!(ans.events.len(), theirs.len(), "{case}: event count");
+        for (mine, th) in ans.events.iter().zip(&theirs) {
+            assert_eq!(mine.kind.name(), s(th, "kind"), "{case}");
+            close(
+                &format!("{case} {} t", s(th, "kind")),
+                &mine.t.value,
+                s(th, "t"),
+                AGREE,
+            );
+            if let Some(theta) = th.get("theta").and_then(|x| x.as_str()) {
+                close(
+                    &format!("{case} {} theta", s(th, "kind")),
+                    &mine.theta.value,
+                    theta,
+                    AGREE,
+                );
+            }
+        }
+        for (mine, theirs) in [
+            ("theta_s", "theta_s"),
+            ("t_s", "t_s"),
+            ("work_s", "energy_lost_s"),
+            ("t_impact", "impact_t"),
+            ("x1_impact", "impact_x1"),
+            ("x2_impact", "impact_x2"),
+            ("x1_dot_impact", "impact_vx1"),
+            ("x2_dot_impact", "impact_vx2"),
+            ("y2_dot_impact", "impact_vy2"),
+            ("psi2_dot_impact", "impact_psi2_dot"),
+        ] {
+            close(
+                &format!("{case} {mine}"),
+                value(&ans, mine),
+                s(t, theirs),
+                AGREE,
+            );
+        }
+    }
+}
+
+#[test]
+fn mu_10_main_case_opens_at_the_slip_onset() {
+    // At the cone (θ = 1.0369) sticking leaves the cone, sliding with the
+    // force's sign reverses at second order, sliding the other way needs
+    // N12 < 0, and the free motion separates: the contact opens at once.
+    let fx = fixture();
+    let t = fx["main_b4"].as_table().unwrap();
+    let fr = Friction {
+        floor: law("10"),
+        contact: law("10"),
+    };
+    let ans = answer::separation(&model(Floor::Roll, "1/2"), &fr, DIGITS).unwrap();
+    let kinds: Vec<Kind> = ans.events.iter().map(|e| e.kind).collect();
+    assert_eq!(kinds, [Kind::Separation, Kind::Impact]);
+    close("theta_s", value(&ans, "theta_s"), s(t, "stop_theta"), AGREE);
+    close("t_s", value(&ans, "t_s"), s(t, "stop_t"), AGREE);
+    assert!(ans
+        .notes
+        .iter()
+        .any(|n| n.contains("N12 = 1.942564e-2 > 0")));
+}
+
+/// The fixed lower cylinder, derived here: rolling from rest at θ0 gives
+/// θ̇² = 2g(cos θ0 − cos θ)/(r(1+k)), N = m g((3+k) cos θ − 2 cos θ0)/(1+k),
+/// |F| = m g k sin θ/(1+k); slip starts where k sin θ = μ((3+k) cos θ −
+/// 2 cos θ0), i.e. θ = β − asin(2μ cos θ0/R), R = √(k² + μ²(3+k)²),
+/// β = atan2(μ(3+k), k). Sliding, r θ̈ = g sin θ − μ(g cos θ − r θ̇²), so
+/// u = θ̇² obeys u' − 2μu = (2g/r)(sin θ − μ cos θ):
+/// u = e^{2μ(θ−θa)}(ua − (2g/r)G(θa)) + (2g/r)G(θ) with
+/// G(θ) = ((2μ² − 1) cos θ − 3μ sin θ)/(1 + 4μ²); separation where
+/// g cos θ = r u.
+#[test]
+fn fixed_lower_cylinder_closed_forms_to_40_digits() {
+    let p = 400;
+    let fl = |x: &str| Float::with_val(p, Float::parse(x).unwrap());
+    let (k, g, r) = (fl("0.5"), fl("1"), fl("2"));
+    let th0 = fl("0.1");
+    for mu_s in ["0.3", "1", "10"] {
+        let mu = fl(mu_s);
+        let c0 = Float::with_val(p, th0.cos_ref());
+        let kk3 = Float::with_val(p, &k + 3u32);
+        let big_r = (Float::with_val(p, k.square_ref())
+            + Float::with_val(p, Float::with_val(p, &mu * &kk3).square_ref()))
+        .sqrt();
+        let beta = Float::with_val(p, Float::with_val(p, &mu * &kk3).atan2_ref(&k));
+        let a = Float::with_val(p, &mu * &c0) * 2u32 / &big_r;
+        let th_a = beta - a.asin();
+        let ua = Float::with_val(p, &g * 2u32) * (Float::with_val(p, &c0 - th_a.clone().cos()))
+            / (Float::with_val(p, &r * (Float::with_val(p, &k + 1u32))));
+        let mu2 = Float::with_val(p, mu.square_ref());
+        let gfun = |th: &Float| -> Float {
+            let num = (Float::with_val(p, &mu2 * 2u32) - 1u32) * th.clone().cos()
+                - Float::with_val(p, &mu * 3u32) * th.clone().sin();
+            num / (Float::with_val(p, &mu2 * 4u32) + 1u32)
+        };
+        let two_g_r = Float::with_val(p, &g * 2u32) / &r;
+        let c = Float::with_val(p, &ua - Float::with_val(p, &two_g_r * gfun(&th_a)));
+        let n = |th: &Float| -> Float {
+            let e = (Float::with_val(p, &mu * 2u32) * Float::with_val(p, th - &th_a)).exp();
+            let u = Float::with_val(p, &c * &e) + Float::with_val(p, &two_g_r * gfun(th));
+            Float::with_val(p, &g * th.clone().cos()) - Float::with_val(p, &r * &u)
+        };
+        // N > 0 at the onset, < 0 at π/2: bisect
+        let (mut lo, mut hi) = (
+            th_a.clone(),
+            Float::with_val(p, rug::float::Constant::Pi) / 2u32,
+        );
+        for _ in 0..p {
+            let mid = Float::with_val(p, &lo + &hi) / 2u32;
+            if n(&mid).is_sign_positive() {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let fr = Friction {
+            floor: Law::Roll,
+            contact: law(mu_s),
+        };
+        let ans = answer::separation(&model(Floor::Fixed, "1/2"), &fr, 40).unwrap();
+        let onset = ans
+            .events
+            .iter()
+            .find(|e| e.kind == Kind::SlipOnset)
+            .unwrap();
+        assert_eq!(onset.theta.digits, 40);
+        let text = |x: &Float| x.to_string_radix(10, Some(45));
+        close(
+            &format!("mu {mu_s} theta_slip"),
+            &onset.theta.value,
+            &text(&th_a),
+            39,
+        );
+        close(
+            &format!("mu {mu_s} theta_s"),
+            value(&ans, "theta_s"),
+            &text(&lo),
+            39,
+        );
+    }
+}
+
+fn cli(args: &[&str]) -> (i32, String, String) {
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+#[test]
+fn infinite_and_zero_coefficients_are_the_ideal_models_exactly() {
+    let base = ["--theta0", "0.1", "--digits", "25", "--format", "json"];
+    for (mu, ideal) in [
+        (vec!["--mu-contact", "inf"], vec![]),
+        (vec!["--mu-contact", "0"], vec!["--contact", "slip"]),
+        (
+            vec!["--mu-floor", "0", "--mu-contact", "inf"],
+            vec!["--floor", "slip"],
+        ),
+        (
+            vec!["--mu-floor", "0,0", "--mu-contact", "0"],
+            vec!["--floor", "slip", "--contact", "slip"],
+        ),
+    ] {
+        for cmd in [
+            vec!["separation"],
+            vec!["trajectory", "--times", "1,2.5"],
+            vec!["forces", "--theta", "0.5"],
+        ] {
+            let a = cli(&[cmd.clone(), base.to_vec(), mu.clone()].concat());
+            let b = cli(&[cmd.clone(), base.to_vec(), ideal.clone()].concat());
+            assert_eq!(a.0, 0, "{cmd:?} {mu:?}: {}", a.2);
+            assert_eq!(a, b, "{cmd:?} {mu:?} against {ideal:?}");
+        }
+    }
+}
+
+#[test]
+fn large_mu_follows_the_ideal_rolling_motion_until_it_slips() {
+    // with μ = 10⁶ the contacts stick until just before θs of the ideal
+    // model; the rows before that equal the ideal trajectory (a Taylor
+    // series route) to every digit printed (GBS here)
+    let times = "0,1,2.5,4,5";
+    let args = [
+        "trajectory",
+        "--theta0",
+        "0.1",
+        "--times",
+        times,
+        "--digits",
+        "25",
+        "--format",
+        "csv",
+    ];
+    let (c1, ideal, e1) = cli(&args);
+    let (c2, fric, e2) = cli(&[&args[..], &["--mu-floor", "1e6", "--mu-contact", "1e6"]].concat());
+    assert_eq!((c1, c2), (0, 0), "{e1}{e2}");
+    let ideal: Vec<&str> = ideal.lines().skip(1).collect();
+    let fric: Vec<&str> = fric.lines().skip(1).collect();
+    assert_eq!(ideal.len(), fric.len());
+    for (a, b) in ideal.iter().zip(&fric) {
+        let b: Vec<&str> = b.split(',').collect();
+        assert_eq!(b.last(), Some(&"stick/stick"));
+        // the 13 ideal columns are the first 13 of the friction table
+        assert_eq!(a.split(',').collect::<Vec<_>>(), b[..13].to_vec());
+        // no slip, no work
+        assert_eq!(&b[13..16], &["0", "0", "0"]);
+    }
+    // and the slip onset approaches the ideal separation angle 1.0508
+    let fr = Friction {
+        floor: law("1e6"),
+        contact: law("1e6"),
+    };
+    let ans = answer::separation(&model(Floor::Roll, "1/2"), &fr, 15).unwrap();
+    let th = value(&ans, "theta_s").to_f64();
+    assert!((th - 1.050772062).abs() < 1e-6, "theta_s {th}");
+}
+
+#[test]
+fn two_precisions_agree_and_energy_balances() {
+    let fr = Friction {
+        floor: law("0.05"),
+        contact: law("0.5,0.3"),
+    };
+    let m = model(Floor::Roll, "1/2");
+    let a = answer::separation(&m, &fr, 18).unwrap();
+    let b = answer::separation(&m, &fr, 36).unwrap();
+    assert_eq!(a.events.len(), b.events.len());
+    for (x, y) in a.values.iter().zip(&b.values) {
+        assert_eq!(x.digits, 18, "{}", x.name);
+        close(
+            &x.name,
+            &x.value,
+            &y.value.to_string_radix(10, Some(40)),
+            17,
+        );
+    }
+    // the floor slips first (backwards), then the contact: four events
+    let kinds: Vec<&str> = b.events.iter().map(|e| e.kind.name()).collect();
+    assert_eq!(kinds, ["slip_onset", "slip_onset", "separation", "impact"]);
+    // the balance E(0) − E(t) = W(t), along the whole motion at one precision
+    let mo = friction::solve(&m, &fr, 200, &[], true, &friction::default_horizon(&m, 200)).unwrap();
+    assert!(
+        mo.energy_drift.to_f64() < 1e-50,
+        "{}",
+        mo.energy_drift.to_f64()
+    );
+    let sep = mo.separation.unwrap();
+    assert!(sep.work.to_f64() > 1e-3);
+}
+
+#[test]
+fn trajectory_runs_through_every_phase_to_the_impact() {
+    let (code, out, err) = cli(&[
+        "trajectory",
+        "--theta0",
+        "0.1",
+        "--mu-contact",
+        "0.3",
+        "--times",
+        "0,2,4.5,5.5,5.838375517362851571",
+        "--digits",
+        "15",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let rows: Vec<Vec<&str>> = out
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    let modes: Vec<&str> = rows.iter().map(|r| *r.last().unwrap()).collect();
+    assert_eq!(
+        modes,
+        [
+            "stick/stick",
+            "stick/stick",
+            "stick/slip+",
+            "flight",
+            "flight"
+        ]
+    );
+    // in flight the contact carries no force; just before the impact y2 = r2
+    assert_eq!(&rows[3][11..13], &["0", "0"]);
+    assert!(rows[4][8].starts_with("1.0000000000000") || rows[4][8].starts_with("0.9999999999999"));
+    // work grows while the contact slips, then stays
+    let w: Vec<f64> = rows.iter().map(|r| r[15].parse().unwrap()).collect();
+    assert!(w[0] == 0.0 && w[1] == 0.0 && w[2] > 0.0 && w[3] > w[2] && w[4] == w[3]);
+    // after the impact: refused
+    let (code, out, err) = cli(&[
+        "trajectory",
+        "--theta0",
+        "0.1",
+        "--mu-contact",
+        "0.3",
+        "--times",
+        "6",
+    ]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert!(err.contains("after the first impact"), "{err}");
+}
+
+#[test]
+fn friction_input_errors_name_the_parameter() {
+    for (args, needle) in [
+        (vec!["separation", "--mu-contact", "0.3,0.5"], "mu_contact"),
+        (vec!["separation", "--mu-contact", "-1"], "mu_contact"),
+        (vec!["separation", "--mu-contact", "abc"], "mu_contact"),
+        (
+            vec!["separation", "--floor", "fixed", "--mu-floor", "1"],
+            "mu_floor",
+        ),
+        (
+            vec!["separation", "--floor", "slip", "--mu-floor", "1"],
+            "mu_floor",
+        ),
+        (vec!["separation", "--k2", "0", "--mu-contact", "1"], "k2"),
+        (
+            vec!["time", "--to", "0.5", "--mu-contact", "1"],
+            "mu_contact",
+        ),
+        (vec!["separation", "--mu-contact", "1", "--mu", "0.3"], "mu"),
+        (vec!["separation", "--mu-contact", "1"], "top"),
+    ] {
+        let full = [
+            args.clone(),
+            if args.contains(&"--theta0") || needle == "top" {
+                vec![]
+            } else {
+                vec!["--theta0", "0.1"]
+            },
+        ]
+        .concat();
+        let (code, out, err) = cli(&full);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn separation_json_lists_the_events() {
+    let (code, out, err) = cli(&[
+        "separation",
+        "--theta0",
+        "0.1",
+        "--mu-contact",
+        "0.3",
+        "--digits",
+        "20",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let ev = v["events"].as_array().unwrap();
+    assert_eq!(ev[0]["kind"], "slip_onset");
+    assert_eq!(ev[0]["contact"], "contact");
+    assert_eq!(ev[0]["mode"], "floor stick, contact slip+");
+    assert_eq!(ev[0]["theta"], "0.58421602292944410419");
+    assert_eq!(ev[0]["digits_verified"]["theta"], "20");
+    assert_eq!(ev[1]["kind"], "separation");
+    assert_eq!(ev[2]["kind"], "impact");
+    assert_eq!(v["theta_s"], "0.91209156568472325388");
+    assert_eq!(v["mu_contact"], "0.3");
+    assert_eq!(v["start_mode"], "floor stick, contact stick");
+}
