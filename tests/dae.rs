@@ -545,6 +545,12 @@ fn golden_data_is_reproduced_by_route_2() {
     for f in &files {
         let text = std::fs::read_to_string(f).unwrap();
         let g = golden::check_golden(&text, 0).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+        if text.contains("\"schema\": \"cylroll-golden-friction/1\"") {
+            // friction cases are computed by route 2 itself (tests/friction.rs
+            // holds them against an independent derivation)
+            assert_eq!(g.checked, 0);
+            continue;
+        }
         assert!(
             g.failures.is_empty(),
             "{}: {:?}",

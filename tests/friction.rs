@@ -542,3 +542,129 @@ fn separation_json_lists_the_events() {
     assert_eq!(v["mu_contact"], "0.3");
     assert_eq!(v["start_mode"], "floor stick, contact stick");
 }
+
+fn golden(name: &str) -> serde_json::Value {
+    let p = format!("{}/golden/data/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap()
+}
+
+#[test]
+fn golden_friction_files_agree_with_the_independent_derivation() {
+    let fx = fixture();
+    for (file, case) in [("main_mu_0_3", "main_b2"), ("main_mu_1", "main_b3")] {
+        let g = golden(file);
+        let t = fx[case].as_table().unwrap();
+        let sc = |k: &str| f(g["scalars"][k].as_str().unwrap());
+        for (mine, theirs) in [
+            ("theta_s", "theta_s"),
+            ("t_s", "t_s"),
+            ("work_s", "energy_lost_s"),
+            ("t_impact", "impact_t"),
+            ("x1_impact", "impact_x1"),
+            ("x2_impact", "impact_x2"),
+            ("x2_dot_impact", "impact_vx2"),
+            ("y2_dot_impact", "impact_vy2"),
+            ("psi2_dot_impact", "impact_psi2_dot"),
+        ] {
+            close(&format!("{file} {mine}"), &sc(mine), s(t, theirs), 24);
+        }
+        let theirs: Vec<&toml::Table> = t["events"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|e| e.as_table().unwrap())
+            .filter(|e| s(e, "kind") != "start")
+            .collect();
+        let mine = g["events"].as_array().unwrap();
+        assert_eq!(mine.len(), theirs.len(), "{file}");
+        for (m, th) in mine.iter().zip(&theirs) {
+            assert_eq!(m["kind"], s(th, "kind"));
+            close(
+                &format!("{file} event t"),
+                &f(m["t"].as_str().unwrap()),
+                s(th, "t"),
+                24,
+            );
+        }
+    }
+    let g = golden("main_mu_10");
+    let t = fx["main_b4"].as_table().unwrap();
+    close(
+        "main_mu_10 theta_s",
+        &f(g["scalars"]["theta_s"].as_str().unwrap()),
+        s(t, "stop_theta"),
+        24,
+    );
+}
+
+#[test]
+fn check_judges_an_engine_through_slip_and_flight() {
+    // a candidate made of the golden rows (rounded to 17 digits) passes at
+    // rtol 1e-12; one value off by 1e-6 in the slip phase fails there
+    let g = golden("main_mu_0_3");
+    let cols: Vec<&str> = g["columns"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_str().unwrap())
+        .collect();
+    let pick = ["t", "theta", "theta_dot", "x1", "F21", "N12", "s12", "work"];
+    let mut csv = pick.join(",") + "\n";
+    let mut bad = csv.clone();
+    let mut bad_row = 0;
+    for (i, r) in g["rows"].as_array().unwrap().iter().enumerate() {
+        let r = r.as_array().unwrap();
+        let mode = r[cols.len() - 1].as_str().unwrap();
+        let cells: Vec<String> = pick
+            .iter()
+            .map(|c| {
+                let v = r[cols.iter().position(|x| x == c).unwrap()]
+                    .as_str()
+                    .unwrap();
+                if *c == "t" {
+                    v.to_string()
+                } else {
+                    format!("{:.17e}", v.parse::<f64>().unwrap())
+                }
+            })
+            .collect();
+        csv.push_str(&(cells.join(",") + "\n"));
+        let mut cells = cells;
+        if mode == "stick/slip+" && bad_row == 0 {
+            bad_row = i + 1;
+            let s12: f64 = cells[6].parse().unwrap();
+            cells[6] = format!("{:.17e}", s12 + 1e-6);
+        }
+        bad.push_str(&(cells.join(",") + "\n"));
+    }
+    assert!(bad_row > 0);
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("good.csv");
+    let badp = dir.path().join("bad.csv");
+    std::fs::write(&good, csv).unwrap();
+    std::fs::write(&badp, bad).unwrap();
+    let golden_dir = concat!(env!("CARGO_MANIFEST_DIR"), "/golden");
+    let run = |p: &std::path::Path| {
+        cli(&[
+            "check",
+            p.to_str().unwrap(),
+            "--case",
+            "main_mu_0_3",
+            "--rtol",
+            "1e-12",
+            "--atol",
+            "1e-14",
+            "--golden",
+            golden_dir,
+            "--format",
+            "json",
+        ])
+    };
+    let (code, out, err) = run(&good);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = run(&badp);
+    assert_eq!(code, 1, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["first_failure"]["column"], "s12", "{out}");
+    assert_eq!(v["first_failure"]["row"], bad_row.to_string(), "{out}");
+}

@@ -68,6 +68,10 @@ fn golden_files_hold_independent_facts() {
     // every file: digits, schema, rows as long as the columns, t strictly increasing
     for case in load_cases(golden()).unwrap() {
         let d = scalars(&case.name);
+        if case.friction.is_some() {
+            friction_file_facts(&case.name, &d, case.steps);
+            continue;
+        }
         assert_eq!(d["schema"], "cylroll-golden/1");
         assert_eq!(d["digits"], GOLDEN_DIGITS.to_string());
         let ncol = d["columns"].as_array().unwrap().len();
@@ -87,4 +91,52 @@ fn golden_files_hold_independent_facts() {
         let ts: f64 = d["scalars"]["t_s"].as_str().unwrap().parse().unwrap();
         assert!(last <= ts);
     }
+}
+
+/// A friction file: rows through every phase, the normal forces positive
+/// while in contact and N12 = 0 in flight, the mode `flight` exactly after
+/// t_s, the dissipated work never decreasing, the grid ending before the
+/// impact, the event times increasing.
+fn friction_file_facts(name: &str, d: &serde_json::Value, steps: u32) {
+    assert_eq!(d["schema"], "cylroll-golden-friction/1");
+    assert_eq!(d["digits"], GOLDEN_DIGITS.to_string());
+    let cols: Vec<&str> = d["columns"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_str().unwrap())
+        .collect();
+    let at = |c: &str| cols.iter().position(|x| *x == c).unwrap();
+    let num = |v: &serde_json::Value| -> f64 { v.as_str().unwrap().parse().unwrap() };
+    let ts = num(&d["scalars"]["t_s"]);
+    let ti = num(&d["scalars"]["t_impact"]);
+    let rows = d["rows"].as_array().unwrap();
+    assert_eq!(rows.len() as u32, steps + 1);
+    let (mut last_t, mut last_w) = (-1.0, 0.0);
+    for r in rows {
+        let r = r.as_array().unwrap();
+        assert_eq!(r.len(), cols.len());
+        let t = num(&r[0]);
+        assert!(t > last_t && t <= ti, "{name}: t = {t}");
+        let mode = r[at("mode")].as_str().unwrap();
+        assert_eq!(mode == "flight", t > ts, "{name}: t = {t} mode {mode}");
+        let n12 = num(&r[at("N12")]);
+        if t > ts {
+            assert_eq!(n12, 0.0);
+        } else {
+            assert!(n12 > 0.0, "{name}: t = {t}");
+        }
+        assert!(num(&r[at("N1")]) > 0.0);
+        let w = num(&r[at("work")]);
+        assert!(w >= last_w, "{name}: work falls at t = {t}");
+        (last_t, last_w) = (t, w);
+    }
+    let ev = d["events"].as_array().unwrap();
+    let mut last = 0.0;
+    for e in ev {
+        let t = num(&e["t"]);
+        assert!(t >= last, "{name}");
+        last = t;
+    }
+    assert_eq!(ev.last().unwrap()["kind"], "impact");
 }

@@ -9,6 +9,7 @@ pub mod check;
 
 use crate::error::{Error, Result};
 use crate::exact::{rational_text, Exact};
+use crate::friction::Friction;
 use crate::input::{model_from_pairs, pairs_from_toml, read_toml};
 use crate::model::Model;
 use crate::numeric::verify::Verified;
@@ -30,8 +31,12 @@ pub struct Case {
     pub name: String,
     /// One line of prose.
     pub description: String,
-    /// The validated model.
+    /// The validated model (with friction: the ideal base, contacts rolling
+    /// where a coefficient is given).
     pub model: Model,
+    /// Finite Coulomb friction (`mu_floor`, `mu_contact` in the case file),
+    /// if any contact has it.
+    pub friction: Option<Friction>,
     /// Intervals of the time grid.
     pub steps: u32,
 }
@@ -41,17 +46,11 @@ pub struct Case {
 pub fn load_case(path: &Path) -> Result<Case> {
     let table = read_toml(path, "case")?;
     let pairs = pairs_from_toml(&table, "case", &["description", "steps"])?;
-    if let Some(k) = crate::input::FRICTION_KEYS
-        .iter()
-        .find(|k| pairs.contains_key(**k))
-    {
-        return Err(Error::invalid(
-            "case",
-            k,
-            "golden cases are ideal models: friction keys are not read here",
-        ));
-    }
     let model = model_from_pairs(&pairs)?;
+    let fr = crate::input::friction_from_pairs(&pairs)?;
+    crate::friction::validate(&model, &fr)?;
+    let model = crate::friction::effective_model(&model, &fr)?;
+    let friction = (fr.floor.is_coulomb() || fr.contact.is_coulomb()).then_some(fr);
     let description = match table.get("description") {
         Some(toml::Value::String(s)) => s.clone(),
         _ => String::new(),
@@ -76,6 +75,7 @@ pub fn load_case(path: &Path) -> Result<Case> {
         name,
         description,
         model,
+        friction,
         steps,
     })
 }
@@ -146,6 +146,9 @@ fn grid_end(t_s: &Verified) -> Result<Rational> {
 
 /// Renders a case (deterministic).
 pub fn render(case: &Case) -> Result<Rendered> {
+    if let Some(fr) = &case.friction {
+        return render_friction(case, fr);
+    }
     let mut o = Oracle::new(&case.model, GOLDEN_DIGITS)?;
     let sep = o.separation()?;
     let t_s = sep.t_s.clone().ok_or_else(|| {
@@ -205,6 +208,105 @@ pub fn render(case: &Case) -> Result<Rendered> {
     csv.push('\n');
     for r in &rows {
         let line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
+        csv.push_str(&line.join(","));
+        csv.push('\n');
+    }
+    Ok(Rendered { json, csv })
+}
+
+/// The format tag of golden files with friction.
+pub const SCHEMA_FRICTION: &str = "cylroll-golden-friction/1";
+
+/// Renders a case with friction: the event list, the scalars of the
+/// separation and the first impact, and the rows of every phase on a grid
+/// from 0 to the impact time rounded down to 3 significant digits.
+fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
+    let sep = crate::friction::answer::separation(&case.model, fr, GOLDEN_DIGITS)?;
+    let t_imp = sep
+        .values
+        .iter()
+        .find(|v| v.name == "t_impact")
+        .ok_or_else(|| Error::not_physical("no impact"))?;
+    let end = grid_end(t_imp)?;
+    let times: Vec<Exact> = (0..=case.steps)
+        .map(|i| Exact::rational(&end * Rational::from((i, case.steps))))
+        .collect();
+    let traj = crate::friction::answer::trajectory(&case.model, fr, GOLDEN_DIGITS, &times)?;
+    let mut model = Map::new();
+    for (k, v) in case.model.echo() {
+        model.insert(k.into(), v.into());
+    }
+    model.insert("mu_floor".into(), fr.floor.to_string().into());
+    model.insert("mu_contact".into(), fr.contact.to_string().into());
+    let mut scalars = Map::new();
+    let mut bounds = Map::new();
+    for v in &sep.values {
+        scalars.insert(v.name.clone(), v.text.clone().into());
+        bounds.insert(v.name.clone(), v.err_text().into());
+    }
+    let events: Vec<Value> = sep
+        .events
+        .iter()
+        .map(|e| {
+            json!({
+                "kind": e.kind.name(),
+                "contact": e.which.map(|w| w.name()),
+                "mode": e.mode,
+                "t": e.t.text,
+                "theta": e.theta.text,
+            })
+        })
+        .collect();
+    let mut columns: Vec<&str> = crate::friction::COLUMNS.to_vec();
+    columns.push("mode");
+    let rows_json: Vec<Value> = traj
+        .rows
+        .iter()
+        .zip(&traj.modes)
+        .map(|(r, m)| {
+            let mut a: Vec<Value> = r.iter().map(|v| Value::from(v.text.clone())).collect();
+            a.push(Value::from(m.clone()));
+            Value::Array(a)
+        })
+        .collect();
+    let mut notes = sep.notes.clone();
+    notes.insert(
+        0,
+        format!("the first impact is on the {}", sep.impact_surface),
+    );
+    let doc = json!({
+        "schema": SCHEMA_FRICTION,
+        "case": case.name,
+        "description": case.description,
+        "model": model,
+        "digits": GOLDEN_DIGITS.to_string(),
+        "provenance": {
+            "program": format!("cylroll {}", env!("CARGO_PKG_VERSION")),
+            "method": "modes of the Coulomb contacts integrated by Gragg-Bulirsch-Stoer extrapolation of the \
+                       Lagrange-multiplier equations, events located on the integration, every continuation \
+                       tested for consistency, free flight in closed form; every value verified at two \
+                       working precisions with identical event sequences and the energy balance",
+        },
+        "grid": {
+            "t_end": rational_text(&end),
+            "steps": case.steps.to_string(),
+            "note": "t_i = i t_end / steps; t_end is the first impact's time rounded down to 3 significant digits",
+        },
+        "start_mode": sep.start_mode,
+        "events": events,
+        "scalars": scalars,
+        "scalar_error_bounds": bounds,
+        "notes": notes,
+        "columns": columns,
+        "rows": rows_json,
+    });
+    let json =
+        serde_json::to_string_pretty(&doc).map_err(|e| Error::not_physical(e.to_string()))? + "\n";
+    let mut csv = columns.join(",");
+    csv.push('\n');
+    for (r, m) in traj.rows.iter().zip(&traj.modes) {
+        let mut line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
+        line.push(m);
         csv.push_str(&line.join(","));
         csv.push('\n');
     }
