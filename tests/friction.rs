@@ -668,3 +668,21 @@ fn check_judges_an_engine_through_slip_and_flight() {
     assert_eq!(v["first_failure"]["column"], "s12", "{out}");
     assert_eq!(v["first_failure"]["row"], bad_row.to_string(), "{out}");
 }
+
+#[test]
+fn two_independent_integrators_agree_on_every_built_in_case() {
+    // GBS extrapolation against Gauss–Legendre collocation at the working
+    // precision of 16 digits (about 31 decimal digits of arithmetic)
+    for (name, model, fr) in answer::verify_cases() {
+        let rows = answer::cross_check(&model, &fr, 16).unwrap();
+        assert!(rows.len() >= 8, "{name}");
+        for r in rows {
+            assert!(
+                r.digits >= 28.0,
+                "{name} {}: {:.1} digits",
+                r.name,
+                r.digits
+            );
+        }
+    }
+}

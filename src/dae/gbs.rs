@@ -354,3 +354,63 @@ mod tests {
         }
     }
 }
+
+/// A one-step integrator with error control, as the event-locating driver
+/// ([`super::solve`]) uses it: accepted steps, and re-integration from a
+/// step's start over a given length to locate an event inside it.
+pub trait Stepper {
+    /// Working precision (bits).
+    fn prec(&self) -> u32;
+    /// The local tolerance.
+    fn tol(&self) -> &Float;
+    /// Work done.
+    fn stats(&self) -> Stats;
+    /// One accepted step from y0 (f0 = f(y0)), no longer than `hmax`.
+    fn step<R: Rhs>(
+        &mut self,
+        rhs: &mut R,
+        y0: &[Float],
+        f0: &[Float],
+        hmax: &Float,
+    ) -> Result<Step>;
+    /// The method of the accepted step `column` over exactly `h` from y0.
+    fn fixed_step<R: Rhs>(
+        &mut self,
+        rhs: &mut R,
+        y0: &[Float],
+        f0: &[Float],
+        h: &Float,
+        column: usize,
+    ) -> Result<Vec<Float>>;
+}
+
+impl Stepper for Gbs {
+    fn prec(&self) -> u32 {
+        self.prec
+    }
+    fn tol(&self) -> &Float {
+        &self.tol
+    }
+    fn stats(&self) -> Stats {
+        self.stats.clone()
+    }
+    fn step<R: Rhs>(
+        &mut self,
+        rhs: &mut R,
+        y0: &[Float],
+        f0: &[Float],
+        hmax: &Float,
+    ) -> Result<Step> {
+        Gbs::step(self, rhs, y0, f0, hmax)
+    }
+    fn fixed_step<R: Rhs>(
+        &mut self,
+        rhs: &mut R,
+        y0: &[Float],
+        f0: &[Float],
+        h: &Float,
+        column: usize,
+    ) -> Result<Vec<Float>> {
+        Gbs::fixed_step(self, rhs, y0, f0, h, column)
+    }
+}

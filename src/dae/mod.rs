@@ -36,6 +36,7 @@
 //! of agreeing digits), [`stack_report`] (footnote 3: n ≥ 2 cylinders),
 //! [`two_cylinder`] (route 2 for a [`Model`] at one precision).
 
+pub mod collocation;
 pub mod gbs;
 pub mod golden;
 pub mod solve;

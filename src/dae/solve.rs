@@ -15,7 +15,7 @@
 //! interpolant of g, safeguarded by the bracket) to a correction below the
 //! integration tolerance.
 
-use super::gbs::{Gbs, Rhs, Stats};
+use super::gbs::{Gbs, Rhs, Stats, Stepper};
 use super::system::System;
 use crate::error::{Error, Result};
 use rug::{Assign, Float};
@@ -271,16 +271,30 @@ pub fn run_from(
     events: &[Event],
     opts: &Opts,
 ) -> Result<Run> {
-    let p = opts.prec;
-    let nq = sys.nq();
-    let q0 = start.q;
     let mut gbs = Gbs::new(
-        p,
+        opts.prec,
         opts.tol.clone(),
         opts.h0.clone(),
         opts.kmax,
         (opts.kmax / 2).max(4),
     );
+    run_with(sys, start, times, t_end, events, opts, &mut gbs)
+}
+
+/// [`run_from`] with a given integrator (GBS, or the Gauss–Legendre
+/// collocation of [`super::collocation`] as an independent second one).
+pub fn run_with<I: Stepper>(
+    sys: &mut System,
+    start: &Start,
+    times: &[Float],
+    t_end: &Float,
+    events: &[Event],
+    opts: &Opts,
+    gbs: &mut I,
+) -> Result<Run> {
+    let p = opts.prec;
+    let nq = sys.nq();
+    let q0 = start.q;
     let mut t = Float::with_val(p, &start.t);
     let mut y: Vec<Float> = start.q.iter().chain(start.v).cloned().collect();
     if sys.has_slips() {
@@ -359,17 +373,8 @@ pub fn run_from(
             }
             if b.is_zero() || a.is_sign_negative() != b.is_sign_negative() {
                 let ends = [(&cur, a), (&next, b)];
-                let (s, at, err) = locate(
-                    sys,
-                    &mut gbs,
-                    &y,
-                    &f0,
-                    &t,
-                    &step.h,
-                    step.column,
-                    &ev.watch,
-                    ends,
-                )?;
+                let (s, at, err) =
+                    locate(sys, gbs, &y, &f0, &t, &step.h, step.column, &ev.watch, ends)?;
                 found.push((s, i, at, err));
             }
         }
@@ -417,7 +422,7 @@ pub fn run_from(
         last,
         max_drift,
         projections,
-        stats: gbs.stats,
+        stats: gbs.stats(),
     })
 }
 
@@ -517,9 +522,9 @@ fn hermite_root(h: f64, g0: f64, d0: f64, g1: f64, d1: f64) -> f64 {
 /// [`rate_of`]) safeguarded by the bracket, until the correction is below
 /// (|t| + 1)·tol/16. Returns (s, the state there, the error estimate).
 #[allow(clippy::too_many_arguments)]
-fn locate(
+fn locate<I: Stepper>(
     sys: &mut System,
-    gbs: &mut Gbs,
+    gbs: &mut I,
     y0: &[Float],
     f0: &[Float],
     t: &Float,
@@ -528,9 +533,9 @@ fn locate(
     watch: &Watch,
     ends: [(&Sample, &Float); 2],
 ) -> Result<(Float, Sample, Float)> {
-    let p = gbs.prec;
+    let p = gbs.prec();
     let nq = sys.nq();
-    let eval = |sys: &mut System, gbs: &mut Gbs, s: &Float| -> Result<(Float, Sample)> {
+    let eval = |sys: &mut System, gbs: &mut I, s: &Float| -> Result<(Float, Sample)> {
         let y = {
             let mut dae = Dae { sys, nq };
             gbs.fixed_step(&mut dae, y0, f0, s, column)?
@@ -541,7 +546,7 @@ fn locate(
     };
     let (s0, ga) = ends[0];
     let (s1, gb) = ends[1];
-    let tol = Float::with_val(p, Float::with_val(p, t + h).abs() + 1u32) * &gbs.tol / 16u32;
+    let tol = Float::with_val(p, Float::with_val(p, t + h).abs() + 1u32) * gbs.tol() / 16u32;
     // bracket [a, b] with g(a) of the sign of ga
     let neg_a = ga.is_sign_negative();
     let mut a = Float::new(p);

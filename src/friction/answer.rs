@@ -345,3 +345,115 @@ pub fn trajectory(
     })?;
     Ok(TrajectoryAnswer { rows, modes })
 }
+
+/// One quantity computed by both integrators.
+#[derive(Debug, Clone)]
+pub struct CrossCheck {
+    /// Quantity (`event2_t`, `theta_s`, …).
+    pub name: String,
+    /// By Gragg–Bulirsch–Stoer extrapolation.
+    pub gbs: Float,
+    /// By Gauss–Legendre collocation.
+    pub collocation: Float,
+    /// Significant digits on which they agree (relative to max(|v|, 1)).
+    pub digits: f64,
+}
+
+/// The two integrators on the same motion at the working precision of
+/// `digits`: the event sequences must be identical; every event time and
+/// angle and every separation and impact value is compared.
+///
+/// Errors: from either run; different event sequences.
+pub fn cross_check(model: &Model, fr: &Friction, digits: u32) -> Result<Vec<CrossCheck>> {
+    let (_, p2) = precisions(digits, 0);
+    let h = super::default_horizon(model, p2);
+    let a = super::solve_with(model, fr, p2, &[], true, &h, super::Method::Gbs)?;
+    let b = super::solve_with(model, fr, p2, &[], true, &h, super::Method::Collocation)?;
+    if signature(&a) != signature(&b) {
+        return Err(Error::NotConverged {
+            quantity: "event sequence".into(),
+            requested: digits,
+            reached: "the two integrators disagree on the sequence of modes".into(),
+            detail: format!(
+                "{} / {}",
+                signature(&a).join(", "),
+                signature(&b).join(", ")
+            ),
+        });
+    }
+    let vals = |m: &Motion| -> Vec<(String, Float)> {
+        let mut out = Vec::new();
+        for (i, e) in m.events.iter().enumerate() {
+            out.push((format!("event{}_t", i + 1), e.at.t.clone()));
+            out.push((format!("event{}_theta", i + 1), e.at.theta.clone()));
+        }
+        if let (Some(s), Some(i)) = (&m.separation, &m.impact) {
+            out.push(("work_s".into(), s.work.clone()));
+            out.push(("theta_dot_s".into(), s.theta_dot.clone()));
+            out.push(("x1_impact".into(), i.x1.clone()));
+            out.push(("x2_impact".into(), i.x2.clone()));
+            out.push(("x2_dot_impact".into(), i.vx2.clone()));
+            out.push(("psi2_dot_impact".into(), i.psi2_dot.clone()));
+        }
+        out
+    };
+    Ok(vals(&a)
+        .into_iter()
+        .zip(vals(&b))
+        .map(|((name, x), (_, y))| {
+            let d = Float::with_val(p2, &x - &y).abs();
+            let sc = Float::with_val(p2, x.abs_ref()).max(&Float::with_val(p2, 1u32));
+            let r = (d / sc).to_f64();
+            let digits = if r == 0.0 {
+                f64::from(p2) * 0.301
+            } else {
+                -r.log10()
+            };
+            CrossCheck {
+                name,
+                gbs: x,
+                collocation: y,
+                digits,
+            }
+        })
+        .collect())
+}
+
+/// The built-in friction cases of `cylroll verify`: the main case from
+/// θ0 = 1/10 at μ = 0.3, 1 and 10 at both contacts, the floor slipping
+/// first, static above kinetic, a heavy upper cylinder whose floor sticks
+/// again, a fixed lower cylinder.
+pub fn verify_cases() -> Vec<(String, Model, Friction)> {
+    use crate::model::{Contact, Floor, Params, Start};
+    let th0 = Exact::rational(rug::Rational::from((1, 10)));
+    let main = Model::paper_default(th0.clone());
+    let law = |s: &str| super::Law::parse("mu", s).expect("built-in coefficient");
+    let both = |f: &str, c: &str| Friction {
+        floor: law(f),
+        contact: law(c),
+    };
+    let mut heavy = Params::identical_solid();
+    heavy.m2 = rug::Rational::from(3);
+    let heavy = Model::new(heavy, Floor::Roll, Contact::Roll, Start::rest(th0.clone()))
+        .expect("built-in model");
+    let fixed = Model::new(
+        Params::identical_solid(),
+        Floor::Fixed,
+        Contact::Roll,
+        Start::rest(th0),
+    )
+    .expect("built-in model");
+    vec![
+        ("main_mu_0_3".into(), main.clone(), both("0.3", "0.3")),
+        ("main_mu_1".into(), main.clone(), both("1", "1")),
+        ("main_mu_10".into(), main.clone(), both("10", "10")),
+        ("main_floor_slips".into(), main.clone(), both("0.05", "0.3")),
+        (
+            "main_static_kinetic".into(),
+            main,
+            both("0.5,0.3", "0.5,0.3"),
+        ),
+        ("heavy_upper_restick".into(), heavy, both("0.2", "0.4")),
+        ("fixed_mu_0_3".into(), fixed, both("inf", "0.3")),
+    ]
+}

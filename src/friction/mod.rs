@@ -733,6 +733,15 @@ pub fn default_horizon(model: &Model, prec: u32) -> Float {
     time_scale(&sm, prec) * 200u32
 }
 
+/// The integrator of the modes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// Gragg–Bulirsch–Stoer extrapolation (the default).
+    Gbs,
+    /// Gauss–Legendre collocation, the independent second integrator.
+    Collocation,
+}
+
 /// Solves the motion at working precision `prec` from t = 0, sampling at
 /// `times` (ascending, ≥ 0) and going on to the first impact after
 /// separation when `to_impact`, else stopping at the last time.
@@ -748,6 +757,21 @@ pub fn solve(
     times: &[Float],
     to_impact: bool,
     horizon: &Float,
+) -> Result<Motion> {
+    solve_with(model, fr, prec, times, to_impact, horizon, Method::Gbs)
+}
+
+/// [`solve`] with a chosen integrator.
+///
+/// Errors: see [`solve`].
+pub fn solve_with(
+    model: &Model,
+    fr: &Friction,
+    prec: u32,
+    times: &[Float],
+    to_impact: bool,
+    horizon: &Float,
+    method: Method,
 ) -> Result<Motion> {
     validate(model, fr)?;
     let eff = effective_model(model, fr)?;
@@ -819,7 +843,29 @@ pub fn solve(
             work: work.clone(),
             snap: snap.clone(),
         };
-        let run = solve::run_from(&mut sys, &start, &times[next..], &t_end, &evs, &ctx.opts)?;
+        let run = match method {
+            Method::Gbs => {
+                solve::run_from(&mut sys, &start, &times[next..], &t_end, &evs, &ctx.opts)?
+            }
+            Method::Collocation => {
+                let stages = (wp as usize / 12).clamp(4, 24);
+                let mut co = crate::dae::collocation::Collocation::new(
+                    wp,
+                    ctx.opts.tol.clone(),
+                    ctx.opts.h0.clone(),
+                    stages,
+                );
+                solve::run_with(
+                    &mut sys,
+                    &start,
+                    &times[next..],
+                    &t_end,
+                    &evs,
+                    &ctx.opts,
+                    &mut co,
+                )?
+            }
+        };
         for s in &run.outputs {
             let pt = point(&ctx, &mut sys, mode, s);
             note_drift(&pt, &mut drift);
