@@ -113,8 +113,8 @@ impl Collocation {
             for i in 0..s {
                 for (m, y) in yi.iter_mut().enumerate() {
                     let mut acc = Float::new(p);
-                    for j in 0..s {
-                        acc += &self.a[i][j] * &k[j][m];
+                    for (aij, kj) in self.a[i].iter().zip(&k) {
+                        acc += aij * &kj[m];
                     }
                     y.assign(&acc * h);
                     *y += &y0[m];
@@ -138,8 +138,8 @@ impl Collocation {
                 let mut y1 = y0.to_vec();
                 for (m, y) in y1.iter_mut().enumerate() {
                     let mut acc = Float::new(p);
-                    for j in 0..s {
-                        acc += &self.b[j] * &k[j][m];
+                    for (bj, kj) in self.b.iter().zip(&k) {
+                        acc += bj * &kj[m];
                     }
                     *y += acc * h;
                 }

@@ -317,44 +317,6 @@ impl Gbs {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// y'' = −y as a first-order system: y = (cos t, −sin t).
-    struct Osc;
-    impl Rhs for Osc {
-        fn eval(&mut self, y: &[Float], dy: &mut [Float]) -> Result<()> {
-            dy[0].assign(&y[1]);
-            dy[1].assign(-&y[0]);
-            Ok(())
-        }
-    }
-
-    #[test]
-    fn harmonic_oscillator_to_many_digits() {
-        for (prec, tol_bits) in [(128u32, 110i32), (400, 380)] {
-            let tol = Float::with_val(prec, 1u32) >> tol_bits;
-            let mut g = Gbs::new(prec, tol, Float::with_val(prec, 0.1), 60, 8);
-            let mut y = vec![Float::with_val(prec, 1u32), Float::new(prec)];
-            let mut t = Float::new(prec);
-            let end = Float::with_val(prec, 10u32);
-            let mut f = vec![Float::new(prec), Float::new(prec)];
-            while t < end {
-                Osc.eval(&y, &mut f).unwrap();
-                let hmax = Float::with_val(prec, &end - &t);
-                let s = g.step(&mut Osc, &y, &f, &hmax).unwrap();
-                t += &s.h;
-                y = s.y;
-            }
-            let exact = Float::with_val(prec, end.cos_ref());
-            let err = Float::with_val(prec, &y[0] - &exact).abs();
-            let bound = Float::with_val(prec, 1u32) >> (tol_bits - 12);
-            assert!(err < bound, "prec {prec}: err {err:e}");
-        }
-    }
-}
-
 /// A one-step integrator with error control, as the event-locating driver
 /// ([`super::solve`]) uses it: accepted steps, and re-integration from a
 /// step's start over a given length to locate an event inside it.
@@ -412,5 +374,43 @@ impl Stepper for Gbs {
         column: usize,
     ) -> Result<Vec<Float>> {
         Gbs::fixed_step(self, rhs, y0, f0, h, column)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// y'' = −y as a first-order system: y = (cos t, −sin t).
+    struct Osc;
+    impl Rhs for Osc {
+        fn eval(&mut self, y: &[Float], dy: &mut [Float]) -> Result<()> {
+            dy[0].assign(&y[1]);
+            dy[1].assign(-&y[0]);
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn harmonic_oscillator_to_many_digits() {
+        for (prec, tol_bits) in [(128u32, 110i32), (400, 380)] {
+            let tol = Float::with_val(prec, 1u32) >> tol_bits;
+            let mut g = Gbs::new(prec, tol, Float::with_val(prec, 0.1), 60, 8);
+            let mut y = vec![Float::with_val(prec, 1u32), Float::new(prec)];
+            let mut t = Float::new(prec);
+            let end = Float::with_val(prec, 10u32);
+            let mut f = vec![Float::new(prec), Float::new(prec)];
+            while t < end {
+                Osc.eval(&y, &mut f).unwrap();
+                let hmax = Float::with_val(prec, &end - &t);
+                let s = g.step(&mut Osc, &y, &f, &hmax).unwrap();
+                t += &s.h;
+                y = s.y;
+            }
+            let exact = Float::with_val(prec, end.cos_ref());
+            let err = Float::with_val(prec, &y[0] - &exact).abs();
+            let bound = Float::with_val(prec, 1u32) >> (tol_bits - 12);
+            assert!(err < bound, "prec {prec}: err {err:e}");
+        }
     }
 }
