@@ -231,6 +231,9 @@ pub struct Motion {
     pub energy_drift: Float,
     /// How it ended.
     pub end: End,
+    /// Integrator work over all modes: (accepted steps, evaluations of the
+    /// equations of motion).
+    pub work_done: (u64, u64),
 }
 
 /// Checks that the laws fit the model: friction coefficients belong to a
@@ -833,6 +836,7 @@ pub fn solve_with(
             *drift = d;
         }
     };
+    let mut work_done = (0u64, 0u64);
     for _ in 0..MAX_MODES {
         let mut sys = ctx.system(mode)?;
         let evs = events(&ctx, &sys, mode);
@@ -866,6 +870,8 @@ pub fn solve_with(
                 )?
             }
         };
+        work_done.0 += run.stats.steps;
+        work_done.1 += run.stats.evals;
         for s in &run.outputs {
             let pt = point(&ctx, &mut sys, mode, s);
             note_drift(&pt, &mut drift);
@@ -889,6 +895,7 @@ pub fn solve_with(
                 impact: None,
                 energy_drift: drift,
                 end: End::LastTime,
+                work_done,
             });
         }
         let hit = run
@@ -934,6 +941,7 @@ pub fn solve_with(
                     impact: None,
                     energy_drift: drift,
                     end: End::LiftOff,
+                    work_done,
                 });
             }
             let fli = flight::Flight::new(&ctx, &sys, mode, &hit.at, &at)?;
@@ -970,6 +978,7 @@ pub fn solve_with(
                 impact: Some(fli.impact),
                 energy_drift: drift,
                 end: End::Impact,
+                work_done,
             });
         }
         let new = next_mode.ok_or_else(|| Error::not_physical("internal: no mode"))?;
