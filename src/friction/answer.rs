@@ -219,9 +219,9 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
         (n.abs() > 1e-12).then(|| {
             format!(
                 "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
-                 event no closed mode is consistent (sticking leaves the cone, sliding either \
-                 way is inconsistent) and the free motion separates, so the normal force \
-                 drops to 0 at once (a Painlevé-type continuation of the rigid-body model)"
+                 event no mode with the contact closed is consistent and the free motion \
+                 separates, so the normal force drops to 0 at once (the rigid-body model's \
+                 one consistent continuation)"
             )
         })
     });

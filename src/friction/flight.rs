@@ -156,6 +156,9 @@ impl Flight {
         let vy2 = -(Float::with_val(p, &r * &sn) * thd);
         // cylinder 1 alone on the floor
         let s1 = f(&at.s1);
+        // a floor whose slip ends at the separation itself rolls on
+        let tiny = Float::with_val(p, Float::with_val(p, &g * &r).sqrt()) >> (p as i32 / 2);
+        let sticking = mode.floor == State::Stick || Float::with_val(p, s1.abs_ref()) <= tiny;
         let mut a1 = floor_accel(
             ctx.fixed,
             &ctx.laws.floor,
@@ -163,7 +166,7 @@ impl Flight {
             sys,
             q,
             v,
-            mode.floor == State::Stick,
+            sticking,
         );
         let mut al1 = Float::new(p);
         let mut tau_stick = None;
@@ -213,7 +216,7 @@ impl Flight {
             psi2: f(&q[sy::psi(0)]),
             w2: f(&v[sy::psi(0)]),
             work: f(&s.work),
-            mode_floor: mode.floor,
+            mode_floor: if sticking { State::Stick } else { mode.floor },
             impact: Impact {
                 surface: Surface::Floor,
                 t: Float::new(p),

@@ -24,6 +24,7 @@
 
 pub mod data;
 pub mod figures;
+pub mod friction;
 pub mod page;
 pub mod plot;
 pub mod tables;
@@ -58,6 +59,10 @@ pub struct Config {
     pub heat_k2_steps: usize,
     /// Significant digits of the parameter-plane table.
     pub plane_table_digits: u32,
+    /// Points per decade of μ in the friction map (0.01 to 100).
+    pub friction_per_decade: usize,
+    /// Points per decade of each coefficient in the (μ_floor, μ_contact) map.
+    pub friction_plane_per_decade: usize,
     /// Worker threads (the result does not depend on it).
     pub threads: usize,
     /// Show progress bars (only when stderr is a terminal).
@@ -79,6 +84,8 @@ impl Config {
             heat_per_decade: 12,
             heat_k2_steps: 24,
             plane_table_digits: 15,
+            friction_per_decade: 8,
+            friction_plane_per_decade: 3,
             threads: default_threads(),
             progress: false,
         }
@@ -98,6 +105,8 @@ impl Config {
             heat_per_decade: 1,
             heat_k2_steps: 4,
             plane_table_digits: 12,
+            friction_per_decade: 1,
+            friction_plane_per_decade: 1,
             threads: default_threads(),
             progress: false,
         }
@@ -201,7 +210,10 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     let (pb, show) = progress_bar(cfg);
     let data = data::compute(cfg, &pb, show)?;
     pb.set_message("drawing");
-    let figs = figures::figures(&data, cfg);
+    pb.set_message("friction");
+    let fdata = friction::compute(cfg);
+    let mut figs = figures::figures(&data, cfg);
+    figs.extend(friction::figures(&fdata));
     let tabs = tables::tables(&data, cfg)?;
     let mut svgs = Vec::with_capacity(figs.len());
     for f in &figs {
@@ -237,6 +249,11 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
         blocks.push(Block::Table(t));
     }
     for f in figs.iter().filter(|f| f.file.starts_with("plane_")) {
+        blocks.push(Block::Figure(f.clone()));
+    }
+    blocks.push(Block::Heading("Finite Coulomb friction".into()));
+    blocks.push(Block::Table(friction::table(&fdata)));
+    for f in figs.iter().filter(|f| f.file.starts_with("friction_")) {
         blocks.push(Block::Figure(f.clone()));
     }
     blocks.push(Block::Heading("Notes and data".into()));

@@ -1,0 +1,477 @@
+//! The report's section on finite Coulomb friction: the main case's motion
+//! through its phases, its events at three coefficients, and maps of the
+//! slip-onset and separation angles over the coefficients, meeting the ideal
+//! models at both ends.
+
+use super::data::{log_grid, text_f64};
+use super::page::Table;
+use super::plot::{viridis, Cell, ColorBar, Dash, Figure, Marker, Panel, Scale, Series, PALETTE};
+use super::Config;
+use crate::error::Result;
+use crate::exact::Exact;
+use crate::friction::answer::{self, SeparationAnswer};
+use crate::friction::{Friction, Kind, Law, COLUMNS};
+use crate::model::{Contact, Floor, Model, Params, Start};
+use crate::oracle::Oracle;
+
+/// θ0 of the friction section (the main case's start).
+const THETA0: &str = "1/10";
+
+/// What the section computes.
+pub struct FrictionData {
+    /// (μ text, the separation answer) for the event table.
+    pub cases: Vec<(String, Result<SeparationAnswer>)>,
+    /// The main case at μ = 0.3: rows in [`COLUMNS`] order (f64) and modes.
+    pub traj: Result<(Vec<Vec<f64>>, Vec<String>, SeparationAnswer)>,
+    /// (μ, first slip onset θ, θs, the contact opened at the cone) at equal
+    /// coefficients on both contacts.
+    pub map: Vec<(f64, Option<f64>, f64, bool)>,
+    /// Points of the map that had no unique continuation (μ, reason).
+    pub map_failed: Vec<(f64, String)>,
+    /// θs over (μ_floor, μ_contact): grid values and rows of θs (None: failed).
+    pub plane: (Vec<f64>, Vec<Vec<Option<f64>>>),
+    /// θs of the ideal models from θ0: roll/roll, slip/slip, roll/slip.
+    pub ideal: [f64; 3],
+}
+
+fn main_model() -> Model {
+    Model::new(
+        Params::identical_solid(),
+        Floor::Roll,
+        Contact::Roll,
+        Start::rest(Exact::parse("theta0", THETA0, false).expect("theta0")),
+    )
+    .expect("main model")
+}
+
+fn both(mu_floor: &str, mu_contact: &str) -> Result<Friction> {
+    Ok(Friction {
+        floor: Law::parse("mu_floor", mu_floor)?,
+        contact: Law::parse("mu_contact", mu_contact)?,
+    })
+}
+
+fn value(a: &SeparationAnswer, name: &str) -> f64 {
+    a.values
+        .iter()
+        .find(|v| v.name == name)
+        .map_or(f64::NAN, |v| v.value.to_f64())
+}
+
+fn ideal_theta_s(floor: Floor, contact: Contact, digits: u32) -> f64 {
+    let m = Model::new(
+        Params::identical_solid(),
+        floor,
+        contact,
+        Start::rest(Exact::parse("theta0", THETA0, false).expect("theta0")),
+    )
+    .expect("ideal model");
+    Oracle::new(&m, digits)
+        .and_then(|mut o| o.separation())
+        .map_or(f64::NAN, |s| s.theta_s.value.to_f64())
+}
+
+/// Computes the section's data.
+pub fn compute(cfg: &Config) -> FrictionData {
+    let model = main_model();
+    let cases: Vec<(String, Result<SeparationAnswer>)> = ["0.3", "1", "10"]
+        .iter()
+        .map(|mu| {
+            (
+                mu.to_string(),
+                both(mu, mu).and_then(|fr| answer::separation(&model, &fr, cfg.digits)),
+            )
+        })
+        .collect();
+    let traj = (|| {
+        let fr = both("0.3", "0.3")?;
+        let sep = answer::separation(&model, &fr, cfg.plot_digits)?;
+        let t_imp = value(&sep, "t_impact");
+        // the grid ends at the impact time rounded down to 3 decimals
+        let end = rug::Rational::from(((t_imp * 1000.0).floor() as i64, 1000));
+        let n = cfg.time_points.max(4) as i64;
+        let times: Vec<Exact> = (0..=n)
+            .map(|i| Exact::rational(&end * rug::Rational::from((i, n))))
+            .collect();
+        let tr = answer::trajectory(&model, &fr, cfg.plot_digits, &times)?;
+        let rows = tr
+            .rows
+            .iter()
+            .map(|r| r.iter().map(|v| v.value.to_f64()).collect())
+            .collect();
+        Ok((rows, tr.modes, sep))
+    })();
+    let mut map = Vec::new();
+    let mut map_failed = Vec::new();
+    for mu in log_grid(-2, 2, cfg.friction_per_decade) {
+        let x = text_f64(&mu);
+        match both(&mu, &mu).and_then(|fr| answer::separation(&model, &fr, cfg.plot_digits)) {
+            Ok(a) => {
+                let onset = a
+                    .events
+                    .iter()
+                    .find(|e| e.kind == Kind::SlipOnset)
+                    .map(|e| e.theta.value.to_f64());
+                let opened = a.notes.iter().any(|n| n.contains("opens while N12"));
+                map.push((x, onset, value(&a, "theta_s"), opened));
+            }
+            Err(e) => map_failed.push((x, e.to_string())),
+        }
+    }
+    let grid = log_grid(-2, 2, cfg.friction_plane_per_decade);
+    let gx: Vec<f64> = grid.iter().map(|g| text_f64(g)).collect();
+    let plane_rows: Vec<Vec<Option<f64>>> = grid
+        .iter()
+        .map(|mc| {
+            grid.iter()
+                .map(|mf| {
+                    both(mf, mc)
+                        .and_then(|fr| answer::separation(&model, &fr, cfg.plot_digits))
+                        .ok()
+                        .map(|a| value(&a, "theta_s"))
+                })
+                .collect()
+        })
+        .collect();
+    FrictionData {
+        cases,
+        traj,
+        map,
+        map_failed,
+        plane: (gx, plane_rows),
+        ideal: [
+            ideal_theta_s(Floor::Roll, Contact::Roll, cfg.plot_digits),
+            ideal_theta_s(Floor::Slip, Contact::Slip, cfg.plot_digits),
+            ideal_theta_s(Floor::Roll, Contact::Slip, cfg.plot_digits),
+        ],
+    }
+}
+
+/// The event table of the main case at μ = 0.3, 1, 10.
+pub fn table(d: &FrictionData) -> Table {
+    let mut rows = Vec::new();
+    for (mu, a) in &d.cases {
+        match a {
+            Ok(a) => {
+                for e in &a.events {
+                    rows.push(vec![
+                        format!("={mu}"),
+                        e.kind.name().replace('_', " "),
+                        e.which.map_or("–", |w| w.name()).to_string(),
+                        format!("={}", e.t.text),
+                        format!("={}", e.theta.text),
+                        e.mode.clone().unwrap_or_else(|| "end of the model".into()),
+                    ]);
+                }
+            }
+            Err(e) => rows.push(vec![
+                format!("={mu}"),
+                format!("not computed: {e}"),
+                String::new(),
+                String::new(),
+                String::new(),
+                String::new(),
+            ]),
+        }
+    }
+    Table {
+        id: "friction-events".into(),
+        title: "Events of the main case with Coulomb friction".into(),
+        intro: format!(
+            "The main case (identical solid cylinders, from rest at θ0 = {THETA0}) with the same coefficient μ \
+             (static = kinetic) at the floor and between the cylinders. Every time and angle is printed with \
+             its verified digits. The floor never slips in these three cases; at μ = 10 no sliding continuation \
+             is consistent when the contact reaches its cone, and the cylinders part there with N12 > 0 just \
+             before (project README, \"Friction\")."
+        ),
+        header: vec![
+            "μ".into(),
+            "event".into(),
+            "contact".into(),
+            "t".into(),
+            "θ [rad]".into(),
+            "mode entered".into(),
+        ],
+        rows,
+    }
+}
+
+const SLIP_SHADE: (u8, u8, u8) = (253, 232, 206);
+const FLIGHT_SHADE: (u8, u8, u8) = (214, 232, 248);
+
+/// Shading of the phases over a panel's y range: slipping (any contact)
+/// and flight.
+fn phases(rows: &[Vec<f64>], modes: &[String], y: (f64, f64)) -> Vec<Cell> {
+    let mut cells = Vec::new();
+    let mut i = 0;
+    while i + 1 < rows.len() {
+        let m = &modes[i + 1];
+        let color = if m == "flight" {
+            Some(FLIGHT_SHADE)
+        } else if m.contains("slip") {
+            Some(SLIP_SHADE)
+        } else {
+            None
+        };
+        if let Some(color) = color {
+            cells.push(Cell {
+                lo: (rows[i][0], y.0),
+                hi: (rows[i + 1][0], y.1),
+                color,
+            });
+        }
+        i += 1;
+    }
+    cells
+}
+
+fn range(series: &[&[(f64, f64)]]) -> (f64, f64) {
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    for s in series {
+        for &(_, y) in *s {
+            lo = lo.min(y);
+            hi = hi.max(y);
+        }
+    }
+    let pad = 0.06 * (hi - lo).max(1e-9);
+    (lo - pad, hi + pad)
+}
+
+fn col(rows: &[Vec<f64>], c: &str) -> Vec<(f64, f64)> {
+    let i = COLUMNS.iter().position(|x| *x == c).unwrap_or(0);
+    rows.iter().map(|r| (r[0], r[i])).collect()
+}
+
+/// The section's figures.
+pub fn figures(d: &FrictionData) -> Vec<Figure> {
+    let mut figs = Vec::new();
+    if let Ok((rows, modes, sep)) = &d.traj {
+        let ev: Vec<(f64, f64, &str)> = sep
+            .events
+            .iter()
+            .map(|e| (e.t.value.to_f64(), e.theta.value.to_f64(), e.kind.name()))
+            .collect();
+        let th = col(rows, "theta");
+        let n12 = col(rows, "N12");
+        let f21 = col(rows, "F21");
+        let cone: Vec<(f64, f64)> = n12.iter().map(|&(t, n)| (t, 0.3 * n)).collect();
+        let ncone: Vec<(f64, f64)> = cone.iter().map(|&(t, c)| (t, -c)).collect();
+        let s12 = col(rows, "s12");
+        let s1 = col(rows, "s1");
+        let work = col(rows, "work");
+        let mut p1 = Panel::new("θ(t), events marked", "t  [τ]", "θ  [rad]");
+        p1.yrange = Some(range(&[&th]));
+        p1.cells = phases(rows, modes, p1.yrange.unwrap_or((0.0, 1.0)));
+        p1.series.push(Series::new("θ", PALETTE[0], th.clone()));
+        p1.markers = ev
+            .iter()
+            .map(|&(t, theta, _)| Marker {
+                at: (t, theta),
+                color: PALETTE[6],
+            })
+            .collect();
+        p1.marker_label = Some("events: slip onset,\nseparation, impact".into());
+        let mut p2 = Panel::new(
+            "Forces between the cylinders and the cone ±μ N12",
+            "t  [τ]",
+            "force  [m1 g]",
+        );
+        p2.yrange = Some(range(&[&n12, &f21, &ncone]));
+        p2.cells = phases(rows, modes, p2.yrange.unwrap_or((0.0, 1.0)));
+        p2.series.push(Series::new("N12", PALETTE[2], n12));
+        p2.series.push(Series::new("F21", PALETTE[1], f21));
+        p2.series
+            .push(Series::new("±μ N12 (the cone)", PALETTE[6], cone).dashed(Dash::Dotted));
+        p2.series
+            .push(Series::new("", PALETTE[6], ncone).dashed(Dash::Dotted));
+        let mut p3 = Panel::new("Slip speeds", "t  [τ]", "slip speed  [√(r1 g)]");
+        p3.yrange = Some(range(&[&s12, &s1]));
+        p3.cells = phases(rows, modes, p3.yrange.unwrap_or((0.0, 1.0)));
+        p3.series
+            .push(Series::new("s12 (contact)", PALETTE[3], s12));
+        p3.series
+            .push(Series::new("s1 (floor)", PALETTE[4], s1).dashed(Dash::Dashed));
+        let mut p4 = Panel::new(
+            "Energy dissipated by friction W(t) = E(0) − E(t)",
+            "t  [τ]",
+            "W  [m1 g r1]",
+        );
+        p4.yrange = Some(range(&[&work]));
+        p4.cells = phases(rows, modes, p4.yrange.unwrap_or((0.0, 1.0)));
+        p4.series.push(Series::new("W", PALETTE[5], work));
+        let evtext: Vec<String> = ev
+            .iter()
+            .map(|(t, th, k)| format!("{} at t = {t:.4}, θ = {th:.4}", k.replace('_', " ")))
+            .collect();
+        figs.push(Figure {
+            file: "friction_main.svg".into(),
+            title: format!(
+                "The main case with μ = 0.3 at both contacts, from rest at θ0 = {THETA0}"
+            ),
+            size: (1400, 900),
+            grid: (2, 2),
+            panels: vec![p1, p2, p3, p4],
+            strip: 210,
+            colorbar: None,
+            caption: format!(
+                "Unshaded: both contacts roll; orange: the contact between the cylinders slips (s12 > 0, \
+                 F21 = −μ N12 on the cone); blue: free flight after separation, to the first impact (cylinder 2 \
+                 on the floor). Events: {}. The floor never slips (s1 = 0). In flight F21 = N12 = 0 and W stays \
+                 constant. Every point is an oracle value verified to the plotted digits.",
+                evtext.join("; ")
+            ),
+        });
+    }
+    if !d.map.is_empty() {
+        let onset: Vec<(f64, f64)> = d.map.iter().filter_map(|m| m.1.map(|o| (m.0, o))).collect();
+        let ths: Vec<(f64, f64)> = d.map.iter().map(|m| (m.0, m.2)).collect();
+        let (x0, x1) = (0.01, 100.0);
+        let mut p = Panel::new(
+            "Slip onset and separation against the friction coefficient",
+            "μ (both contacts, log scale)",
+            "θ  [rad]",
+        );
+        p.xscale = Scale::Log;
+        p.xrange = Some((x0, x1));
+        p.series
+            .push(Series::new("θs with friction", PALETTE[0], ths));
+        p.series.push(
+            Series::new("first slip onset (either contact)", PALETTE[1], onset)
+                .dashed(Dash::Dashed),
+        );
+        p.series.push(
+            Series::new(
+                "θs rolling (μ = ∞)",
+                PALETTE[6],
+                vec![(x0, d.ideal[0]), (x1, d.ideal[0])],
+            )
+            .dashed(Dash::Dotted),
+        );
+        p.series.push(
+            Series::new(
+                "θs frictionless (μ = 0)",
+                PALETTE[2],
+                vec![(x0, d.ideal[1]), (x1, d.ideal[1])],
+            )
+            .dashed(Dash::Dotted),
+        );
+        p.markers = d
+            .map
+            .iter()
+            .filter(|m| m.3)
+            .map(|m| Marker {
+                at: (m.0, m.2),
+                color: PALETTE[3],
+            })
+            .collect();
+        if !p.markers.is_empty() {
+            p.marker_label = Some("the contact opens\nat its cone".into());
+        }
+        let failed = if d.map_failed.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " Not computed (no unique continuation of the rigid-body model): μ = {}.",
+                d.map_failed
+                    .iter()
+                    .map(|(m, _)| format!("{m:.3}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        };
+        figs.push(Figure {
+            file: "friction_map.svg".into(),
+            title: format!("The main case from θ0 = {THETA0}: where slip starts and where the cylinders part"),
+            size: (1200, 700),
+            grid: (1, 1),
+            panels: vec![p],
+            strip: 250,
+            colorbar: None,
+            caption: format!(
+                "The same coefficient at both contacts, {} values from 0.01 to 100. As μ → ∞ the slip onset \
+                 and θs approach the rolling model's θs = {:.6}; as μ → 0 slip starts at once and θs approaches \
+                 the frictionless model's {:.6}. Marked: the contact opens at an event while N12 > 0, because no \
+                 mode with the contact closed is consistent there — for large μ when the contact reaches its \
+                 cone close to θs, and elsewhere when the floor's slip stops and the floor's force jumps.{failed}",
+                d.map.len() + d.map_failed.len(),
+                d.ideal[0],
+                d.ideal[1]
+            ),
+        });
+    }
+    let (gx, rows) = &d.plane;
+    if !gx.is_empty() {
+        let vals: Vec<f64> = rows.iter().flatten().flatten().copied().collect();
+        let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = vals.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let lg: Vec<f64> = gx.iter().map(|x| x.log10()).collect();
+        let half = |i: usize| -> (f64, f64) {
+            let a = if i == 0 {
+                lg[0] - (lg[1] - lg[0]) / 2.0
+            } else {
+                (lg[i - 1] + lg[i]) / 2.0
+            };
+            let b = if i + 1 == lg.len() {
+                lg[i] + (lg[i] - lg[i - 1]) / 2.0
+            } else {
+                (lg[i] + lg[i + 1]) / 2.0
+            };
+            (a, b)
+        };
+        let mut p = Panel::new(
+            "θs over the two coefficients",
+            "log10 μ_floor",
+            "log10 μ_contact",
+        );
+        for (j, row) in rows.iter().enumerate() {
+            for (i, v) in row.iter().enumerate() {
+                let (x0, x1) = half(i);
+                let (y0, y1) = half(j);
+                let color = match v {
+                    Some(v) => viridis((v - lo) / (hi - lo).max(1e-12)),
+                    None => (200, 200, 200),
+                };
+                p.cells.push(Cell {
+                    lo: (x0, y0),
+                    hi: (x1, y1),
+                    color,
+                });
+            }
+        }
+        p.xrange = Some((half(0).0, half(lg.len() - 1).1));
+        p.yrange = p.xrange;
+        let missing = rows.iter().flatten().filter(|v| v.is_none()).count();
+        figs.push(Figure {
+            file: "friction_plane.svg".into(),
+            title: format!("Separation angle of the main case over (μ_floor, μ_contact), from θ0 = {THETA0}"),
+            size: (1000, 820),
+            grid: (1, 1),
+            panels: vec![p],
+            strip: 130,
+            colorbar: Some(ColorBar {
+                label: "θs [rad]".into(),
+                range: (lo, hi),
+                marks: vec![d.ideal[0], d.ideal[2]],
+            }),
+            caption: format!(
+                "θs (colour) on a {n} × {n} grid of coefficients from 0.01 to 100 (static = kinetic). The marks \
+                 on the colour bar are the ideal models' θs: both rolling ({:.4}, approached towards the \
+                 top-right corner) and a rolling floor under a frictionless contact ({:.4}, the bottom-right \
+                 corner).{}",
+                d.ideal[0],
+                d.ideal[2],
+                if missing > 0 {
+                    format!(
+                        " Grey: {missing} point{} with no unique continuation of the rigid-body model.",
+                        if missing == 1 { "" } else { "s" }
+                    )
+                } else {
+                    String::new()
+                },
+                n = gx.len()
+            ),
+        });
+    }
+    figs
+}
