@@ -10,3 +10,4 @@ PY="${PYTHON:-python3}"
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$ROOT/target}"
 (cd "$ROOT" && cargo build --release --quiet)
 "$PY" "$HERE/experiments.py" "$CARGO_TARGET_DIR/release/cylroll"
+"$PY" "$HERE/friction.py" "$CARGO_TARGET_DIR/release/cylroll"
