@@ -113,6 +113,10 @@ fn token() -> impl Strategy<Value = String> {
         Just("--theta".to_string()),
         Just("--times".to_string()),
         Just("--mu".to_string()),
+        Just("--mu-floor".to_string()),
+        Just("--mu-contact".to_string()),
+        Just("0.3,0.1".to_string()),
+        Just("0.1,0.3".to_string()),
         Just("--params".to_string()),
         Just("0".to_string()),
         Just("-1".to_string()),
@@ -154,5 +158,65 @@ proptest! {
             prop_assert!(out.stdout.is_empty(), "partial output on error: {sub} {args:?}");
             prop_assert!(!err.trim().is_empty());
         }
+    }
+}
+
+prop_compose! {
+    fn any_friction_model()(
+        m1 in 1i64..40, m2 in 1i64..40, r1 in 2i64..30, r2 in 2i64..30,
+        k1 in 1i64..20, k2 in 1i64..20,
+        th0 in 3i64..40, mf in 0usize..6, mc in 0usize..6, ks in any::<bool>(),
+    ) -> (Model, cylroll::friction::Friction) {
+        use cylroll::friction::{Friction, Law};
+        let params = Params {
+            m1: rat(m1, 10), m2: rat(m2, 10), r1: rat(r1, 10), r2: rat(r2, 10),
+            k1: rat(k1, 10), k2: rat(k2, 10), g: rat(1, 1),
+        };
+        let mus = ["0.05", "0.2", "0.5", "1", "3", "inf"];
+        let law = |i: usize| {
+            let t = if ks && mus[i] != "inf" { format!("{0},{0}", mus[i]) } else { mus[i].to_string() };
+            Law::parse("mu", &t).unwrap()
+        };
+        let model = Model::new(params, Floor::Roll, Contact::Roll, Start::rest(Exact::rational(rat(th0, 100))))
+            .expect("valid by construction");
+        (model, Friction { floor: law(mf), contact: law(mc) })
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, .. ProptestConfig::default() })]
+
+    /// Over random models with Coulomb friction: events in time order, the
+    /// dissipated work never decreasing from event to event, the energy
+    /// balance kept, separation after the start and the impact after
+    /// separation; an undecidable mode (exit 3) or a start that parts at
+    /// once are refusals, not numbers.
+    #[test]
+    fn invariants_of_the_motion_with_friction(mf in any_friction_model()) {
+        use cylroll::friction::{self, Kind};
+        let (model, fr) = mf;
+        let h = friction::default_horizon(&model, 120);
+        let m = match friction::solve(&model, &fr, 120, &[], true, &h) {
+            Ok(m) => m,
+            Err(Error::NotConverged { quantity, .. }) if quantity == "mode" || quantity == "separation" => return Ok(()),
+            Err(Error::NotPhysical { .. }) => return Ok(()),
+            Err(e) => panic!("{e}: {} {fr:?}", model.describe()),
+        };
+        prop_assert!(m.energy_drift.to_f64() < 1e-25, "{}", m.energy_drift.to_f64());
+        let mut t = 0.0f64;
+        let mut w = 0.0f64;
+        for e in &m.events {
+            let te = e.at.t.to_f64();
+            prop_assert!(te >= t, "events out of order");
+            t = te;
+            let we = e.at.work.to_f64();
+            prop_assert!(we >= w - 1e-30, "work decreases");
+            w = we;
+        }
+        prop_assert_eq!(m.events.last().map(|e| e.kind), Some(Kind::Impact));
+        let sep = m.separation.as_ref().unwrap();
+        prop_assert!(sep.theta.to_f64() > model.start().theta0.to_f64());
+        prop_assert!(sep.n12.to_f64() >= -1e-20);
+        prop_assert!(m.impact.as_ref().unwrap().t > sep.t);
     }
 }
