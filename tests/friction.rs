@@ -772,3 +772,43 @@ fn trajectory_rows_in_the_slip_phase_and_in_flight_match_the_independent_state()
         }
     }
 }
+
+#[test]
+fn a_landing_before_separation_ends_the_model_with_an_explanation() {
+    // a small lower cylinder under a large upper one: cylinder 2 reaches the
+    // floor (y2 = r2) while still touching cylinder 1
+    let base = [
+        "--theta0",
+        "0.3",
+        "--r1",
+        "0.2",
+        "--r2",
+        "2",
+        "--mu-floor",
+        "0.3",
+        "--mu-contact",
+        "0.3",
+    ];
+    let (code, out, err) = cli(&[&["separation"][..], &base[..]].concat());
+    assert_eq!(code, 2, "{out}{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains("reaches the floor") && err.contains("2.4133630"),
+        "{err}"
+    );
+    // rows before the landing are computed; after it, refused
+    let (code, out, err) = cli(&[
+        &["trajectory", "--times", "1,2.4", "--digits", "12"][..],
+        &base[..],
+    ]
+    .concat());
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        out.lines().filter(|l| !l.starts_with('#')).count(),
+        3,
+        "{out}"
+    );
+    let (code, _, err) = cli(&[&["trajectory", "--times", "2.5"][..], &base[..]].concat());
+    assert_eq!(code, 2);
+    assert!(err.contains("after the first impact"), "{err}");
+}

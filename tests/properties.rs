@@ -214,9 +214,14 @@ proptest! {
             w = we;
         }
         prop_assert_eq!(m.events.last().map(|e| e.kind), Some(Kind::Impact));
-        let sep = m.separation.as_ref().unwrap();
+        let imp = m.impact.as_ref().unwrap();
+        let Some(sep) = m.separation.as_ref() else {
+            // cylinder 2 landed on the floor while still on cylinder 1
+            prop_assert!((imp.y2.to_f64() - model.params().r2.to_f64()).abs() < 1e-12);
+            return Ok(());
+        };
         prop_assert!(sep.theta.to_f64() > model.start().theta0.to_f64());
         prop_assert!(sep.n12.to_f64() >= -1e-20);
-        prop_assert!(m.impact.as_ref().unwrap().t > sep.t);
+        prop_assert!(imp.t > sep.t);
     }
 }

@@ -32,6 +32,16 @@ pub enum Watch {
     /// A linear combination of the above with constant coefficients (a
     /// slip velocity Σ c_i q̇_i, a friction cone μ N − F).
     Lin(Vec<(Watch, Float)>),
+    /// offset + r cos q_th: a height above the floor of a point at distance
+    /// r along the line of centres θ = q_th (e.g. cylinder 2's lowest point).
+    Height {
+        /// Index of θ.
+        th: usize,
+        /// r.
+        r: Float,
+        /// offset.
+        offset: Float,
+    },
 }
 
 /// An event: a named zero crossing, terminal or not.
@@ -197,6 +207,10 @@ pub fn watch_value(w: &Watch, s: &Sample) -> Float {
                 acc += watch_value(w, s) * c;
             }
             acc
+        }
+        Watch::Height { th, r, offset } => {
+            let c = Float::with_val(s.q[*th].prec(), s.q[*th].cos_ref());
+            c * r + offset
         }
     }
 }
@@ -434,6 +448,10 @@ fn rate_of(sys: &mut System, w: &Watch, s: &Sample) -> Result<Float> {
     match w {
         Watch::Rate(i) => Ok(s.qdd[*i].clone()),
         Watch::Coord(i) => Ok(s.v[*i].clone()),
+        Watch::Height { th, r, .. } => {
+            let sn = Float::with_val(p, s.q[*th].sin_ref());
+            Ok(-(sn * r * &s.v[*th]))
+        }
         Watch::Multiplier(k) => Ok(lambda_rates(sys, s)?.swap_remove(*k)),
         Watch::Lin(terms) => {
             let mut acc = Float::new(p);

@@ -188,6 +188,16 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
     let (p1, _) = precisions(digits, 0);
     let horizon = |p: u32| super::default_horizon(model, p);
     let first = solve(model, fr, p1, &[], true, &horizon(p1))?;
+    if first.separation.is_none() {
+        let (t, x2) = first
+            .impact
+            .as_ref()
+            .map_or((f64::NAN, f64::NAN), |i| (i.t.to_f64(), i.x2.to_f64()));
+        return Err(Error::not_physical(format!(
+            "the cylinders do not part: cylinder 2 reaches the floor at t = {t:.12} (x2 = {x2:.12}) \
+             while still touching cylinder 1, an impact the model does not continue through"
+        )));
+    }
     let mut names = Vec::new();
     for (i, e) in first.events.iter().enumerate() {
         names.push(format!("event{}_t", i + 1));

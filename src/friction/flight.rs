@@ -67,6 +67,31 @@ pub struct Impact {
     pub psi2_dot: Float,
 }
 
+impl Impact {
+    /// Cylinder 2 landing on the floor while still touching cylinder 1 (the
+    /// state `s` of a closed mode, `at` its columns).
+    pub(super) fn in_contact(sys: &System, s: &Sample, at: &Point) -> Impact {
+        let p = sys.prec;
+        let th = &s.q[sy::th(0)];
+        let (sn, cs) = th.clone().sin_cos(Float::new(p));
+        let r = &s.q[sy::rr(0)];
+        let thd = &s.v[sy::th(0)];
+        let vx1 = Float::with_val(p, &s.v[sy::X1]);
+        Impact {
+            surface: Surface::Floor,
+            t: at.t.clone(),
+            x1: at.x1.clone(),
+            x2: at.x2.clone(),
+            y2: at.y2.clone(),
+            vx2: Float::with_val(p, r * &cs) * thd + &vx1,
+            vx1,
+            phi1_dot: Float::with_val(p, &s.v[sy::PHI1]),
+            vy2: -(Float::with_val(p, r * &sn) * thd),
+            psi2_dot: Float::with_val(p, &s.v[sy::psi(0)]),
+        }
+    }
+}
+
 /// The acceleration ẍ1 of cylinder 1 alone on its floor at (q, q̇).
 pub(super) fn floor_accel(
     fixed: bool,

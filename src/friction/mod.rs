@@ -496,6 +496,17 @@ fn events(ctx: &Ctx, sys: &System, mode: Mode) -> Vec<Event> {
             });
         }
     }
+    // cylinder 2 reaching the floor while still on cylinder 1: y2 − r2 =
+    // r1 + r cos θ − r2 = 0
+    ev.push(Event {
+        name: "floor_impact".into(),
+        watch: Watch::Height {
+            th: sy::th(0),
+            r: Float::with_val(p, &sys.rho[0] + &sys.rho[1]),
+            offset: Float::with_val(p, &sys.rho[0] - &sys.rho[1]),
+        },
+        terminal: true,
+    });
     for (w, st) in [(Which::Floor, mode.floor), (Which::Contact, mode.contact)] {
         if !ctx.law(w).is_coulomb() || (w == Which::Floor && ctx.fixed) {
             continue;
@@ -905,6 +916,34 @@ pub fn solve_with(
         let at = point(&ctx, &mut sys, mode, &hit.at);
         note_drift(&at, &mut drift);
         let name = evs[hit.event].name.clone();
+        if name == "floor_impact" {
+            // cylinder 2 lands on the floor before the cylinders part
+            evs_out.push(EventRec {
+                kind: Kind::Impact,
+                which: None,
+                mode: None,
+                at: at.clone(),
+                t_err: hit.t_err.clone(),
+            });
+            if next < times.len() {
+                return Err(Error::not_physical(format!(
+                    "t = {:.6} is after the first impact at t = {:.12}, where cylinder 2 reaches \
+                     the floor while still on cylinder 1 (impact laws are outside the model)",
+                    times[next].to_f64(),
+                    at.t.to_f64()
+                )));
+            }
+            return Ok(Motion {
+                start_mode,
+                events: evs_out,
+                rows,
+                separation: None,
+                impact: Some(flight::Impact::in_contact(&sys, &hit.at, &at)),
+                energy_drift: drift,
+                end: End::Impact,
+                work_done,
+            });
+        }
         // a change of friction state, or the contact opening
         let next_mode = if name == "separation" || name == "lift_off" {
             None
