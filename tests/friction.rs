@@ -548,44 +548,52 @@ fn golden(name: &str) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap()
 }
 
+/// A golden file's scalars (pairs of golden and fixture keys) and its event
+/// list against a case of the independent fixture, to `digits`.
+fn golden_vs_fixture(file: &str, case: &str, keys: &[(&str, &str)], digits: i32) {
+    let fx = fixture();
+    let g = golden(file);
+    let t = fx[case].as_table().unwrap();
+    for (mine, theirs) in keys {
+        let v = f(g["scalars"][*mine].as_str().unwrap());
+        close(&format!("{file} {mine}"), &v, s(t, theirs), digits);
+    }
+    let theirs: Vec<&toml::Table> = t["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e.as_table().unwrap())
+        .filter(|e| s(e, "kind") != "start")
+        .collect();
+    let mine = g["events"].as_array().unwrap();
+    assert_eq!(mine.len(), theirs.len(), "{file}: {mine:?}");
+    for (m, th) in mine.iter().zip(&theirs) {
+        assert_eq!(m["kind"], s(th, "kind"), "{file}");
+        if m["kind"] != "impact" {
+            assert_eq!(m["contact"], s(th, "contact"), "{file}");
+        }
+        let what = format!("{file} {} t", s(th, "kind"));
+        close(&what, &f(m["t"].as_str().unwrap()), s(th, "t"), digits);
+    }
+}
+
+const IMPACT_KEYS: [(&str, &str); 9] = [
+    ("theta_s", "theta_s"),
+    ("t_s", "t_s"),
+    ("work_s", "energy_lost_s"),
+    ("t_impact", "impact_t"),
+    ("x1_impact", "impact_x1"),
+    ("x2_impact", "impact_x2"),
+    ("x2_dot_impact", "impact_vx2"),
+    ("y2_dot_impact", "impact_vy2"),
+    ("psi2_dot_impact", "impact_psi2_dot"),
+];
+
 #[test]
 fn golden_friction_files_agree_with_the_independent_derivation() {
     let fx = fixture();
     for (file, case) in [("main_mu_0_3", "main_b2"), ("main_mu_1", "main_b3")] {
-        let g = golden(file);
-        let t = fx[case].as_table().unwrap();
-        let sc = |k: &str| f(g["scalars"][k].as_str().unwrap());
-        for (mine, theirs) in [
-            ("theta_s", "theta_s"),
-            ("t_s", "t_s"),
-            ("work_s", "energy_lost_s"),
-            ("t_impact", "impact_t"),
-            ("x1_impact", "impact_x1"),
-            ("x2_impact", "impact_x2"),
-            ("x2_dot_impact", "impact_vx2"),
-            ("y2_dot_impact", "impact_vy2"),
-            ("psi2_dot_impact", "impact_psi2_dot"),
-        ] {
-            close(&format!("{file} {mine}"), &sc(mine), s(t, theirs), 24);
-        }
-        let theirs: Vec<&toml::Table> = t["events"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|e| e.as_table().unwrap())
-            .filter(|e| s(e, "kind") != "start")
-            .collect();
-        let mine = g["events"].as_array().unwrap();
-        assert_eq!(mine.len(), theirs.len(), "{file}");
-        for (m, th) in mine.iter().zip(&theirs) {
-            assert_eq!(m["kind"], s(th, "kind"));
-            close(
-                &format!("{file} event t"),
-                &f(m["t"].as_str().unwrap()),
-                s(th, "t"),
-                24,
-            );
-        }
+        golden_vs_fixture(file, case, &IMPACT_KEYS, 24);
     }
     let g = golden("main_mu_10");
     let t = fx["main_b4"].as_table().unwrap();
@@ -691,54 +699,16 @@ fn two_independent_integrators_agree_on_every_built_in_case() {
 fn golden_cases_with_floor_slip_restick_and_flight_match_the_independent_derivation() {
     // section C of the fixture: the floor slipping first, a re-stick of the
     // floor, a floor slip ending in flight, static above kinetic
-    let fx = fixture();
+    let mut keys = IMPACT_KEYS.to_vec();
+    keys.push(("x1_dot_impact", "impact_vx1"));
+    keys.push(("phi1_dot_impact", "impact_phi1_dot"));
     for case in [
         "main_floor_slips",
         "heavy_upper_restick",
         "unequal_friction",
         "main_static_kinetic",
     ] {
-        let g = golden(case);
-        let t = fx[case].as_table().unwrap();
-        let sc = |k: &str| f(g["scalars"][k].as_str().unwrap());
-        for (mine, theirs) in [
-            ("theta_s", "theta_s"),
-            ("t_s", "t_s"),
-            ("work_s", "energy_lost_s"),
-            ("t_impact", "impact_t"),
-            ("x1_impact", "impact_x1"),
-            ("x2_impact", "impact_x2"),
-            ("x1_dot_impact", "impact_vx1"),
-            ("phi1_dot_impact", "impact_phi1_dot"),
-            ("x2_dot_impact", "impact_vx2"),
-            ("y2_dot_impact", "impact_vy2"),
-            ("psi2_dot_impact", "impact_psi2_dot"),
-        ] {
-            close(&format!("{case} {mine}"), &sc(mine), s(t, theirs), 24);
-        }
-        let theirs: Vec<&toml::Table> = t["events"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|e| e.as_table().unwrap())
-            .filter(|e| s(e, "kind") != "start")
-            .collect();
-        let mine = g["events"].as_array().unwrap();
-        assert_eq!(mine.len(), theirs.len(), "{case}: {mine:?}");
-        for (m, th) in mine.iter().zip(&theirs) {
-            assert_eq!(m["kind"], s(th, "kind"), "{case}");
-            assert_eq!(
-                m["contact"].as_str().unwrap_or("floor"),
-                s(th, "contact"),
-                "{case}"
-            );
-            close(
-                &format!("{case} {} t", s(th, "kind")),
-                &f(m["t"].as_str().unwrap()),
-                s(th, "t"),
-                24,
-            );
-        }
+        golden_vs_fixture(case, case, &keys, 24);
     }
 }
 

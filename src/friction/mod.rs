@@ -827,8 +827,16 @@ pub fn solve_with(
     let mut v = v0;
     let mut t = Float::new(wp);
     let mut work = Float::new(wp);
-    let mut evs_out: Vec<EventRec> = Vec::new();
-    let mut rows: Vec<Point> = Vec::new();
+    let mut out = Motion {
+        start_mode,
+        events: Vec::new(),
+        rows: Vec::new(),
+        separation: None,
+        impact: None,
+        energy_drift: Float::new(wp),
+        end: End::LastTime,
+        work_done: (0, 0),
+    };
     let mut next = 0usize;
     let t_last = times.last().cloned();
     let t_end = if to_impact {
@@ -839,7 +847,6 @@ pub fn solve_with(
             .map_or_else(|| Float::new(wp), |x| Float::with_val(wp, x))
     };
     let snap = Float::with_val(wp, &ctx.escale / &ctx.ts) >> (wp as i32 / 2);
-    let mut drift = Float::new(wp);
     let note_drift = |pt: &Point, drift: &mut Float| {
         let d = Float::with_val(wp, &pt.energy + &pt.work) - &e0;
         let d = d.abs() / &ctx.escale;
@@ -847,7 +854,6 @@ pub fn solve_with(
             *drift = d;
         }
     };
-    let mut work_done = (0u64, 0u64);
     for _ in 0..MAX_MODES {
         let mut sys = ctx.system(mode)?;
         let evs = events(&ctx, &sys, mode);
@@ -881,44 +887,36 @@ pub fn solve_with(
                 )?
             }
         };
-        work_done.0 += run.stats.steps;
-        work_done.1 += run.stats.evals;
+        out.work_done.0 += run.stats.steps;
+        out.work_done.1 += run.stats.evals;
         for s in &run.outputs {
             let pt = point(&ctx, &mut sys, mode, s);
-            note_drift(&pt, &mut drift);
-            rows.push(pt);
+            note_drift(&pt, &mut out.energy_drift);
+            out.rows.push(pt);
         }
         next += run.outputs.len();
         if !run.stopped {
             let end_pt = point(&ctx, &mut sys, mode, &run.last);
-            note_drift(&end_pt, &mut drift);
+            note_drift(&end_pt, &mut out.energy_drift);
             if to_impact {
                 return Err(Error::not_physical(format!(
                     "the cylinders do not part before t = {:.6} (the horizon searched)",
                     t_end.to_f64()
                 )));
             }
-            return Ok(Motion {
-                start_mode,
-                events: evs_out,
-                rows,
-                separation: None,
-                impact: None,
-                energy_drift: drift,
-                end: End::LastTime,
-                work_done,
-            });
+            out.end = End::LastTime;
+            return Ok(out);
         }
         let hit = run
             .hits
             .last()
             .ok_or_else(|| Error::not_physical("internal: a stop without an event"))?;
         let at = point(&ctx, &mut sys, mode, &hit.at);
-        note_drift(&at, &mut drift);
+        note_drift(&at, &mut out.energy_drift);
         let name = evs[hit.event].name.clone();
         if name == "floor_impact" {
             // cylinder 2 lands on the floor before the cylinders part
-            evs_out.push(EventRec {
+            out.events.push(EventRec {
                 kind: Kind::Impact,
                 which: None,
                 mode: None,
@@ -933,16 +931,9 @@ pub fn solve_with(
                     at.t.to_f64()
                 )));
             }
-            return Ok(Motion {
-                start_mode,
-                events: evs_out,
-                rows,
-                separation: None,
-                impact: Some(flight::Impact::in_contact(&sys, &hit.at, &at)),
-                energy_drift: drift,
-                end: End::Impact,
-                work_done,
-            });
+            out.impact = Some(flight::Impact::in_contact(&sys, &hit.at, &at));
+            out.end = End::Impact;
+            return Ok(out);
         }
         // a change of friction state, or the contact opening
         let next_mode = if name == "separation" || name == "lift_off" {
@@ -952,7 +943,7 @@ pub fn solve_with(
         };
         if next_mode.is_none() {
             let lift = name == "lift_off";
-            evs_out.push(EventRec {
+            out.events.push(EventRec {
                 kind: if lift {
                     Kind::LiftOff
                 } else {
@@ -972,20 +963,12 @@ pub fn solve_with(
                         at.t.to_f64()
                     )));
                 }
-                return Ok(Motion {
-                    start_mode,
-                    events: evs_out,
-                    rows,
-                    separation: None,
-                    impact: None,
-                    energy_drift: drift,
-                    end: End::LiftOff,
-                    work_done,
-                });
+                out.end = End::LiftOff;
+                return Ok(out);
             }
             let fli = flight::Flight::new(&ctx, &sys, mode, &hit.at, &at)?;
             for e in fli.events() {
-                evs_out.push(e);
+                out.events.push(e);
             }
             for tt in &times[next..] {
                 if *tt > fli.impact.t {
@@ -997,28 +980,22 @@ pub fn solve_with(
                     )));
                 }
                 let pt = fli.point(tt);
-                note_drift(&pt, &mut drift);
-                rows.push(pt);
+                note_drift(&pt, &mut out.energy_drift);
+                out.rows.push(pt);
             }
             let imp_pt = fli.point(&fli.impact.t);
-            note_drift(&imp_pt, &mut drift);
-            evs_out.push(EventRec {
+            note_drift(&imp_pt, &mut out.energy_drift);
+            out.events.push(EventRec {
                 kind: Kind::Impact,
                 which: None,
                 mode: None,
                 at: imp_pt,
                 t_err: Float::new(wp),
             });
-            return Ok(Motion {
-                start_mode,
-                events: evs_out,
-                rows,
-                separation: Some(at),
-                impact: Some(fli.impact),
-                energy_drift: drift,
-                end: End::Impact,
-                work_done,
-            });
+            out.separation = Some(at);
+            out.impact = Some(fli.impact);
+            out.end = End::Impact;
+            return Ok(out);
         }
         let new = next_mode.ok_or_else(|| Error::not_physical("internal: no mode"))?;
         if new == mode {
@@ -1046,7 +1023,7 @@ pub fn solve_with(
                 (State::Slip(_), State::Stick) => Kind::Stick,
                 (State::Slip(_), State::Slip(_)) => Kind::SlipReversal,
             };
-            evs_out.push(EventRec {
+            out.events.push(EventRec {
                 kind,
                 which: Some(w),
                 mode: Some(new),
