@@ -223,7 +223,7 @@ impl Common {
     pub fn model_friction(&self) -> Result<(Model, Option<Friction>)> {
         let vals = self.pairs()?;
         let model = input::model_from_pairs(&vals)?;
-        let fr = input::friction_from_pairs(&vals)?;
+        let fr = input::friction_for(&vals, &model)?;
         cylroll::friction::validate(&model, &fr).or_else(|e| match e {
             Error::NotPhysical { .. } => Ok(()),
             e => Err(e),
@@ -606,6 +606,9 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                         return Err(Error::invalid("steps", n, "must be between 1 and 100000"));
                     }
                     let te = Exact::parse("t-end", &te, false)?;
+                    if te.signum() <= 0 {
+                        return Err(Error::invalid("t-end", &te, "must be > 0"));
+                    }
                     (0..=n)
                         .map(|i| Exact::rational(&te.coef * Rational::from((i, n))))
                         .collect()

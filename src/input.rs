@@ -44,6 +44,42 @@ pub fn friction_from_pairs(vals: &Pairs) -> Result<crate::friction::Friction> {
     })
 }
 
+/// [`friction_from_pairs`] checked against the model's contacts: a
+/// coefficient given for a fixed floor, or `inf` (rolling) given for a
+/// contact the model declares frictionless, contradicts the model.
+///
+/// Errors: as [`friction_from_pairs`], and those contradictions.
+pub fn friction_for(vals: &Pairs, model: &Model) -> Result<crate::friction::Friction> {
+    use crate::friction::Law;
+    let fr = friction_from_pairs(vals)?;
+    if let Some(v) = vals.get("mu_floor") {
+        if model.floor() == Floor::Fixed {
+            return Err(Error::invalid(
+                "mu_floor",
+                v,
+                "a fixed floor (cylinder 1 held) has no floor contact: drop mu_floor",
+            ));
+        }
+        if model.floor() == Floor::Slip && fr.floor == Law::Roll {
+            return Err(Error::invalid(
+                "mu_floor",
+                v,
+                "inf is a rolling floor, which contradicts floor = slip",
+            ));
+        }
+    }
+    if let Some(v) = vals.get("mu_contact") {
+        if model.contact() == Contact::Slip && fr.contact == Law::Roll {
+            return Err(Error::invalid(
+                "mu_contact",
+                v,
+                "inf is a rolling contact, which contradicts contact = slip",
+            ));
+        }
+    }
+    Ok(fr)
+}
+
 /// Key → exact text.
 pub type Pairs = BTreeMap<String, String>;
 

@@ -782,3 +782,151 @@ fn a_landing_before_separation_ends_the_model_with_an_explanation() {
     assert_eq!(code, 2);
     assert!(err.contains("after the first impact"), "{err}");
 }
+
+#[test]
+fn hostile_inputs_found_once_stay_fixed() {
+    // duplicate times (a panic once): each row is given
+    let (code, out, err) = cli(&[
+        "trajectory",
+        "--theta0",
+        "0.1",
+        "--mu-contact",
+        "0.3",
+        "--times",
+        "1,1,2,2",
+        "--format",
+        "csv",
+        "--digits",
+        "10",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let rows: Vec<&str> = out.lines().skip(1).collect();
+    assert_eq!(rows.len(), 4);
+    assert_eq!(rows[0], rows[1]);
+    // digits out of range, inf against slip, a negative grid end, a time after the impact
+    for (args, needle) in [
+        (
+            vec![
+                "separation",
+                "--theta0",
+                "0.1",
+                "--mu-contact",
+                "0.3",
+                "--digits",
+                "0",
+            ],
+            "digits",
+        ),
+        (
+            vec![
+                "separation",
+                "--theta0",
+                "0.1",
+                "--mu-contact",
+                "0.3",
+                "--digits",
+                "2001",
+            ],
+            "digits",
+        ),
+        (
+            vec![
+                "separation",
+                "--theta0",
+                "0.1",
+                "--contact",
+                "slip",
+                "--mu-contact",
+                "inf",
+            ],
+            "mu_contact",
+        ),
+        (
+            vec![
+                "separation",
+                "--theta0",
+                "0.1",
+                "--floor",
+                "slip",
+                "--mu-floor",
+                "inf",
+            ],
+            "mu_floor",
+        ),
+        (
+            vec![
+                "separation",
+                "--theta0",
+                "0.1",
+                "--floor",
+                "fixed",
+                "--mu-floor",
+                "inf",
+            ],
+            "mu_floor",
+        ),
+        (
+            vec![
+                "trajectory",
+                "--theta0",
+                "0.1",
+                "--mu-contact",
+                "0.3",
+                "--t-end",
+                "-5",
+                "--steps",
+                "5",
+            ],
+            "t-end",
+        ),
+        (
+            vec![
+                "trajectory",
+                "--theta0",
+                "0.1",
+                "--mu-contact",
+                "0.3",
+                "--times",
+                "6",
+            ],
+            "times",
+        ),
+    ] {
+        let (code, out, err) = cli(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(
+            out.is_empty() && err.lines().count() == 1 && err.contains(needle),
+            "{args:?}: {err}"
+        );
+    }
+    // a large inertia separates late: beyond 200 sqrt(r/g), within the horizon
+    let (code, out, err) = cli(&[
+        "separation",
+        "--theta0",
+        "0.1",
+        "--k1",
+        "1e5",
+        "--k2",
+        "1e5",
+        "--mu-contact",
+        "0.3",
+        "--digits",
+        "8",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("t_s             = 558.2894"), "{out}");
+    // static above kinetic at both contacts: the floor at rest keeps sticking
+    let (code, out, err) = cli(&[
+        "separation",
+        "--theta0",
+        "0.1",
+        "--mu-floor",
+        "0.3,0.1",
+        "--mu-contact",
+        "0.3,0.25",
+        "--digits",
+        "8",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("-> floor stick, contact slip+"), "{out}");
+}

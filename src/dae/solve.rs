@@ -122,6 +122,13 @@ pub struct Opts {
     pub kmax: usize,
     /// Drift above which the state is projected back onto the manifold.
     pub project_above: Float,
+    /// Longest step allowed (None: only the output times limit it). A cap
+    /// keeps the error control honest where the solution is tiny and grows
+    /// (a start very near the top), since the tolerance is partly absolute.
+    pub hcap: Option<Float>,
+    /// Most accepted steps before giving up (a motion the integrator cannot
+    /// follow, e.g. a stiff extreme of the parameters).
+    pub max_steps: u64,
 }
 
 impl Opts {
@@ -140,6 +147,8 @@ impl Opts {
             h0: Float::with_val(work, time_scale / 8u32),
             kmax,
             project_above: Float::with_val(work, 1u32) >> (prec as i32 + 8),
+            hcap: None,
+            max_steps: 1_000_000,
         }
     }
 }
@@ -344,16 +353,31 @@ pub fn run_with<I: Stepper>(
         } else {
             t_end.clone()
         };
-        let hmax = Float::with_val(p, &stop - &t);
+        let mut hmax = Float::with_val(p, &stop - &t);
         if hmax.is_sign_negative() || hmax.is_zero() {
             break (false, cur);
+        }
+        let mut capped = false;
+        if let Some(cap) = &opts.hcap {
+            if hmax > *cap {
+                hmax.assign(cap);
+                capped = true;
+            }
+        }
+        if gbs.stats().steps >= opts.max_steps {
+            return Err(Error::NotConverged {
+                quantity: "integration".into(),
+                requested: 0,
+                reached: format!("{} steps to t = {:.6e}", opts.max_steps, t.to_f64()),
+                detail: "the integrator cannot follow this motion (extreme parameters?)".into(),
+            });
         }
         let f0 = f_of(sys, &cur);
         let step = {
             let mut dae = Dae { sys, nq };
             gbs.step(&mut dae, &y, &f0, &hmax)?
         };
-        let reached_stop = step.h == hmax;
+        let reached_stop = step.h == hmax && !capped;
         let t1 = if reached_stop {
             stop.clone()
         } else {
@@ -420,7 +444,8 @@ pub fn run_with<I: Stepper>(
         y = y_of(sys, &next);
         cur = next;
         if reached_stop {
-            if next_out < times.len() && t == times[next_out] {
+            // every output at this time (a time may be asked twice)
+            while next_out < times.len() && t == times[next_out] {
                 outputs.push(cur.clone());
                 next_out += 1;
             }

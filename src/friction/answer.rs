@@ -71,6 +71,18 @@ pub const SEPARATION_KEYS: [&str; 12] = [
     "psi2_dot_impact",
 ];
 
+fn check_digits(digits: u32) -> Result<()> {
+    let max = crate::oracle::MAX_DIGITS;
+    if digits == 0 || digits > max {
+        return Err(Error::invalid(
+            "digits",
+            digits,
+            format!("must be between 1 and {max}"),
+        ));
+    }
+    Ok(())
+}
+
 fn signature(m: &Motion) -> Vec<String> {
     let mut s: Vec<String> = m
         .events
@@ -185,6 +197,7 @@ where
 ///
 /// Errors: see [`solve`].
 pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<SeparationAnswer> {
+    check_digits(digits)?;
     let (p1, _) = precisions(digits, 0);
     let horizon = |p: u32| super::default_horizon(model, p);
     let first = solve(model, fr, p1, &[], true, &horizon(p1))?;
@@ -318,6 +331,7 @@ pub fn trajectory(
     digits: u32,
     times: &[Exact],
 ) -> Result<TrajectoryAnswer> {
+    check_digits(digits)?;
     for w in times.windows(2) {
         if w[1].to_float(256) < w[0].to_float(256) {
             return Err(Error::invalid("times", &w[1], "must be ascending"));

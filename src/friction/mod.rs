@@ -614,6 +614,16 @@ fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Opti
         }
         match (st, ctx.law(w)) {
             (State::Stick, Law::Coulomb { .. }) => {
+                // a contact can stick only where it does not slide
+                let s0 = sys.slip_speed(tangent(w), q, v);
+                let vscale = Float::with_val(p, &ctx.base_r / &ctx.ts);
+                if Float::with_val(p, s0.abs_ref()) > (vscale >> (p as i32 / 2)) {
+                    return Ok(Some(format!(
+                        "the {} slides (slip speed {:.3e}): it cannot stick",
+                        w.name(),
+                        s0.to_f64()
+                    )));
+                }
                 let n = lam(&sys, &s1, normal_row(w));
                 let f = tangential(ctx, &sys, mode, w, &s1);
                 let mu = ctx.mu_s[w as usize].clone().unwrap_or_default_float(p);
@@ -711,6 +721,21 @@ fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float) -> Result<Option<Mode>
     let opens = rdd.is_sign_positive() && !rdd.is_zero();
     let theta = q[sy::th(0)].to_f64();
     let at = format!("t = {:.12}, theta = {:.12}", t.to_f64(), theta);
+    // Coulomb's law: a contact at rest relative to its partner sticks if the
+    // force that holds it is within μs N; sliding from rest is the
+    // continuation only where sticking is not (this settles the choice
+    // between sticking and kinetic sliding when μk < μs)
+    if ok.len() > 1 && !opens {
+        for w in [Which::Floor, Which::Contact] {
+            let st = |m: &Mode| match w {
+                Which::Floor => m.floor,
+                Which::Contact => m.contact,
+            };
+            if ok.iter().any(|m| st(m) == State::Stick) {
+                ok.retain(|m| st(m) == State::Stick);
+            }
+        }
+    }
     match (ok.len(), opens) {
         (1, false) => Ok(Some(ok[0])),
         (0, true) => Ok(None),
@@ -738,13 +763,46 @@ fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float) -> Result<Option<Mode>
     }
 }
 
+/// A requested time after the end of the model (`what` ended it at `end`).
+fn after_end(t: &Float, end: &Float, what: &str) -> Error {
+    Error::invalid(
+        "times",
+        t.to_string_radix(10, Some(17)),
+        format!(
+            "must not be after {what} at t = {} (the model ends there)",
+            end.to_string_radix(10, Some(17))
+        ),
+    )
+}
+
 /// Most mode changes followed before giving up (a Zeno cascade).
 pub const MAX_MODES: usize = 64;
 
-/// Default horizon: 200 sqrt(r/g).
+/// Default horizon: four times the separation time of the same model with
+/// both contacts rolling (friction makes the cylinders part earlier) plus
+/// 50 sqrt(r/g); 200 sqrt(r/g) if that time is not finite.
 pub fn default_horizon(model: &Model, prec: u32) -> Float {
     let sm = StackModel::from_model(model);
-    time_scale(&sm, prec) * 200u32
+    let ts = time_scale(&sm, prec);
+    let floor = if model.floor() == Floor::Fixed {
+        Floor::Fixed
+    } else {
+        Floor::Roll
+    };
+    let rolling = Model::new(
+        model.params().clone(),
+        floor,
+        Contact::Roll,
+        model.start().clone(),
+    );
+    let t_roll = rolling
+        .and_then(|m| crate::oracle::Oracle::new(&m, 12)?.separation())
+        .ok()
+        .and_then(|s| s.t_s.map(|t| t.value));
+    match t_roll {
+        Some(t) => Float::with_val(prec, &t * 4u32) + ts * 50u32,
+        None => ts * 200u32,
+    }
 }
 
 /// The integrator of the modes.
@@ -792,7 +850,8 @@ pub fn solve_with(
     let laws = laws(model, fr);
     let base = StackModel::from_model(&eff);
     let ts = time_scale(&base, prec);
-    let opts = Opts::for_prec(prec, TOL_GUARD, &ts);
+    let mut opts = Opts::for_prec(prec, TOL_GUARD, &ts);
+    opts.hcap = Some(Float::with_val(opts.prec, &ts * 2u32));
     let wp = opts.prec;
     let mut sys0 = System::new(&base, wp)?;
     let (q0, v0) = sys0.initial_state(&base)?;
@@ -899,10 +958,15 @@ pub fn solve_with(
             let end_pt = point(&ctx, &mut sys, mode, &run.last);
             note_drift(&end_pt, &mut out.energy_drift);
             if to_impact {
-                return Err(Error::not_physical(format!(
-                    "the cylinders do not part before t = {:.6} (the horizon searched)",
-                    t_end.to_f64()
-                )));
+                return Err(Error::NotConverged {
+                    quantity: "separation".into(),
+                    requested: 0,
+                    reached: format!(
+                        "no separation before t = {:.6} (the horizon searched)",
+                        t_end.to_f64()
+                    ),
+                    detail: "the horizon is four times the rolling model's separation time".into(),
+                });
             }
             out.end = End::LastTime;
             return Ok(out);
@@ -924,12 +988,11 @@ pub fn solve_with(
                 t_err: hit.t_err.clone(),
             });
             if next < times.len() {
-                return Err(Error::not_physical(format!(
-                    "t = {:.6} is after the first impact at t = {:.12}, where cylinder 2 reaches \
-                     the floor while still on cylinder 1 (impact laws are outside the model)",
-                    times[next].to_f64(),
-                    at.t.to_f64()
-                )));
+                return Err(after_end(
+                    &times[next],
+                    &at.t,
+                    "the first impact (cylinder 2 reaches the floor while still on cylinder 1)",
+                ));
             }
             out.impact = Some(flight::Impact::in_contact(&sys, &hit.at, &at));
             out.end = End::Impact;
@@ -956,12 +1019,7 @@ pub fn solve_with(
             });
             if lift {
                 if next < times.len() {
-                    return Err(Error::not_physical(format!(
-                        "t = {:.6} is after cylinder 1 leaves the floor at t = {:.12} \
-                         (the motion after lift-off is outside the model)",
-                        times[next].to_f64(),
-                        at.t.to_f64()
-                    )));
+                    return Err(after_end(&times[next], &at.t, "the lift-off of cylinder 1"));
                 }
                 out.end = End::LiftOff;
                 return Ok(out);
@@ -972,12 +1030,7 @@ pub fn solve_with(
             }
             for tt in &times[next..] {
                 if *tt > fli.impact.t {
-                    return Err(Error::not_physical(format!(
-                        "t = {:.6} is after the first impact at t = {:.12} \
-                         (impact laws are outside the model)",
-                        tt.to_f64(),
-                        fli.impact.t.to_f64()
-                    )));
+                    return Err(after_end(tt, &fli.impact.t, "the first impact"));
                 }
                 let pt = fli.point(tt);
                 note_drift(&pt, &mut out.energy_drift);

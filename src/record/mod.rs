@@ -47,7 +47,7 @@ pub fn load_case(path: &Path) -> Result<Case> {
     let table = read_toml(path, "case")?;
     let pairs = pairs_from_toml(&table, "case", &["description", "steps"])?;
     let model = model_from_pairs(&pairs)?;
-    let fr = crate::input::friction_from_pairs(&pairs)?;
+    let fr = crate::input::friction_for(&pairs, &model)?;
     crate::friction::validate(&model, &fr)?;
     let model = crate::friction::effective_model(&model, &fr)?;
     let friction = (fr.floor.is_coulomb() || fr.contact.is_coulomb()).then_some(fr);
