@@ -281,8 +281,14 @@ impl Answer {
         }
         if let Some((fr, start, events)) = &self.friction {
             out.push_str(&format!(
-                "# friction: mu_floor = {}, mu_contact = {}; start mode: {start}\n",
-                fr.floor, fr.contact
+                "# friction: mu_floor = {}, mu_contact = {}{}\n",
+                fr.floor,
+                fr.contact,
+                if start.is_empty() {
+                    String::new()
+                } else {
+                    format!("; start mode: {start}")
+                }
             ));
             for (i, e) in events.iter().enumerate() {
                 out.push_str(&format!(
@@ -330,7 +336,9 @@ impl Answer {
         if let Some((fr, start, events)) = &self.friction {
             o.insert("mu_floor".into(), fr.floor.to_string().into());
             o.insert("mu_contact".into(), fr.contact.to_string().into());
-            o.insert("start_mode".into(), start.clone().into());
+            if !start.is_empty() {
+                o.insert("start_mode".into(), start.clone().into());
+            }
             let evs: Vec<serde_json::Value> = events
                 .iter()
                 .map(|e| {
@@ -437,28 +445,6 @@ impl Answer {
     }
 }
 
-/// `time` and `forces` answer questions about the ideal models, where the
-/// state is a function of θ; with friction the slip history matters.
-fn no_friction(fr: &Option<Friction>) -> Result<()> {
-    match fr {
-        None => Ok(()),
-        Some(f) => Err(Error::invalid(
-            if f.floor.is_coulomb() {
-                "mu_floor"
-            } else {
-                "mu_contact"
-            },
-            if f.floor.is_coulomb() {
-                f.floor.to_string()
-            } else {
-                f.contact.to_string()
-            },
-            "time and forces answer for the ideal models (inf or 0); with finite friction the \
-             state depends on the slip history: use trajectory (times) or separation (events)",
-        )),
-    }
-}
-
 fn parse_list(name: &str, s: &str) -> Result<Vec<Exact>> {
     s.split(',').map(|t| Exact::parse(name, t, false)).collect()
 }
@@ -560,8 +546,21 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
         }
         Command::Time { common, to } => {
             let (model, fr) = common.model_friction()?;
-            no_friction(&fr)?;
             let theta = Exact::parse("to", &to, true)?;
+            if let Some(fr) = fr {
+                let (t, mode) =
+                    cylroll::friction::answer::time_at(&model, &fr, common.digits, &theta)?;
+                let a = Answer {
+                    command: "time",
+                    model,
+                    digits: common.digits,
+                    values: vec![t],
+                    notes: vec![format!("mode at theta: {mode}")],
+                    table: None,
+                    friction: Some((fr, String::new(), vec![])),
+                };
+                return Ok((a.render(common.format), 0));
+            }
             let mut o = Oracle::new(&model, common.digits)?;
             let t = o.time_at(&theta)?;
             let a = Answer {
@@ -577,8 +576,23 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
         }
         Command::Forces { common, theta } => {
             let (model, fr) = common.model_friction()?;
-            no_friction(&fr)?;
             let th = Exact::parse("theta", &theta, true)?;
+            if let Some(fr) = fr {
+                let (values, mode) =
+                    cylroll::friction::answer::forces_at(&model, &fr, common.digits, &th)?;
+                let a = Answer {
+                    command: "forces",
+                    model,
+                    digits: common.digits,
+                    values,
+                    notes: vec![format!(
+                        "the state where theta first reaches {theta}; mode there: {mode}"
+                    )],
+                    table: None,
+                    friction: Some((fr, String::new(), vec![])),
+                };
+                return Ok((a.render(common.format), 0));
+            }
             let mut o = Oracle::new(&model, common.digits)?;
             let values = o.forces_at(&th)?;
             debug_assert_eq!(values.len(), FORCE_KEYS.len());

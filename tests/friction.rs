@@ -491,9 +491,10 @@ fn friction_input_errors_name_the_parameter() {
             "mu_floor",
         ),
         (vec!["separation", "--k2", "0", "--mu-contact", "1"], "k2"),
+        (vec!["time", "--to", "0.05", "--mu-contact", "1"], "to"),
         (
-            vec!["time", "--to", "0.5", "--mu-contact", "1"],
-            "mu_contact",
+            vec!["forces", "--theta", "1.2", "--mu-contact", "1"],
+            "theta",
         ),
         (vec!["separation", "--mu-contact", "1", "--mu", "0.3"], "mu"),
         (vec!["separation", "--mu-contact", "1"], "top"),
@@ -929,4 +930,32 @@ fn hostile_inputs_found_once_stay_fixed() {
     ]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("-> floor stick, contact slip+"), "{out}");
+}
+
+#[test]
+fn time_and_forces_with_friction_meet_the_independent_state() {
+    // θ at t = 4.5 of the main case at μ = 0.3 (fixture section D): the time
+    // to reach it is 4.5, and the forces there are the state's
+    let fx = fixture();
+    let st = fx["state_main_b2_t_4_5"].as_table().unwrap();
+    let m = model(Floor::Roll, "1/2");
+    let fr = Friction {
+        floor: law("0.3"),
+        contact: law("0.3"),
+    };
+    let th = Exact::parse("theta", s(st, "theta"), false).unwrap();
+    let (t, mode) = answer::time_at(&m, &fr, 20, &th).unwrap();
+    assert_eq!(mode, "floor stick, contact slip+");
+    close("t at theta(4.5)", &t.value, "4.5", 20);
+    let (vals, _) = answer::forces_at(&m, &fr, 20, &th).unwrap();
+    for v in &vals {
+        let key = match v.name.as_str() {
+            "mu_floor" | "mu_contact" => continue,
+            k => k,
+        };
+        close(&format!("forces {key}"), &v.value, s(st, key), 20);
+    }
+    // on the cone: |F21|/N12 = μ while the contact slips
+    let mu = vals.iter().find(|v| v.name == "mu_contact").unwrap();
+    assert_eq!(mu.text, "0.30000000000000000000");
 }

@@ -32,6 +32,13 @@ pub enum Watch {
     /// A linear combination of the above with constant coefficients (a
     /// slip velocity Σ c_i q̇_i, a friction cone μ N − F).
     Lin(Vec<(Watch, Float)>),
+    /// q_i − value: a coordinate reaching a given value.
+    Reach {
+        /// Index of the coordinate.
+        i: usize,
+        /// The value.
+        value: Float,
+    },
     /// offset + r cos q_th: a height above the floor of a point at distance
     /// r along the line of centres θ = q_th (e.g. cylinder 2's lowest point).
     Height {
@@ -221,6 +228,7 @@ pub fn watch_value(w: &Watch, s: &Sample) -> Float {
             let c = Float::with_val(s.q[*th].prec(), s.q[*th].cos_ref());
             c * r + offset
         }
+        Watch::Reach { i, value } => Float::with_val(s.q[*i].prec(), &s.q[*i] - value),
     }
 }
 
@@ -472,7 +480,7 @@ fn rate_of(sys: &mut System, w: &Watch, s: &Sample) -> Result<Float> {
     let p = sys.prec;
     match w {
         Watch::Rate(i) => Ok(s.qdd[*i].clone()),
-        Watch::Coord(i) => Ok(s.v[*i].clone()),
+        Watch::Coord(i) | Watch::Reach { i, .. } => Ok(s.v[*i].clone()),
         Watch::Height { th, r, .. } => {
             let sn = Float::with_val(p, s.q[*th].sin_ref());
             Ok(-(sn * r * &s.v[*th]))

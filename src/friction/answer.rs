@@ -481,3 +481,110 @@ pub fn verify_cases() -> Vec<(String, Model, Friction)> {
         ("fixed_mu_0_3".into(), fixed, both("inf", "0.3")),
     ]
 }
+
+/// The keys of [`forces_at`]: those of the ideal `forces` (F1, N1, F21,
+/// N12, θ̇, θ̈, |F1|/N1, |F21|/N12) and the slip speeds and dissipated work.
+pub const FORCE_KEYS_FRICTION: [&str; 11] = [
+    "F1",
+    "N1",
+    "F21",
+    "N12",
+    "theta_dot",
+    "theta_ddot",
+    "mu_floor",
+    "mu_contact",
+    "s1",
+    "s12",
+    "work",
+];
+
+fn at_angle(
+    model: &Model,
+    fr: &Friction,
+    digits: u32,
+    theta: &Exact,
+    name: &str,
+    keys: &[&str],
+    est: impl Fn(&Point) -> Vec<Estimate>,
+) -> Result<(Vec<Verified>, String)> {
+    check_digits(digits)?;
+    let (p1, _) = precisions(digits, 0);
+    let first = super::solve_to_angle(model, fr, p1, theta, name)?;
+    let mode = first.target.as_ref().map_or_else(String::new, |t| {
+        t.mode.map_or_else(String::new, |m| m.to_string())
+    });
+    let names: Vec<String> = keys.iter().map(|k| k.to_string()).collect();
+    let rows = laddered(
+        digits,
+        first,
+        &names,
+        1,
+        |p| super::solve_to_angle(model, fr, p, theta, name),
+        |m| m.target.as_ref().map_or_else(Vec::new, &est),
+    )?;
+    Ok((rows.into_iter().next().unwrap_or_default(), mode))
+}
+
+/// The time at which θ first reaches `theta`, with friction.
+///
+/// Errors: an angle behind the start or beyond the end of the contact
+/// (`to`); see [`super::solve`].
+pub fn time_at(
+    model: &Model,
+    fr: &Friction,
+    digits: u32,
+    theta: &Exact,
+) -> Result<(Verified, String)> {
+    let (mut v, mode) = at_angle(model, fr, digits, theta, "to", &["t"], |pt| {
+        let p = pt.t.prec();
+        // the time of a located event: the bracket enters through the ladder
+        vec![integrated(&pt.t, one(p))]
+    })?;
+    Ok((v.remove(0), mode))
+}
+
+/// The forces, rates, friction ratios, slip speeds and dissipated work
+/// where θ first reaches `theta`, with friction; and the mode there.
+///
+/// Errors: as [`time_at`] (parameter `theta`).
+pub fn forces_at(
+    model: &Model,
+    fr: &Friction,
+    digits: u32,
+    theta: &Exact,
+) -> Result<(Vec<Verified>, String)> {
+    at_angle(
+        model,
+        fr,
+        digits,
+        theta,
+        "theta",
+        &FORCE_KEYS_FRICTION,
+        |pt| {
+            let p = pt.t.prec();
+            let ratio = |f: &Float, n: &Float| {
+                if n.is_zero() {
+                    Float::new(p)
+                } else {
+                    Float::with_val(p, f.abs_ref()) / n
+                }
+            };
+            [
+                pt.f1.clone(),
+                pt.n1.clone(),
+                pt.f21.clone(),
+                pt.n12.clone(),
+                pt.theta_dot.clone(),
+                pt.theta_ddot.clone(),
+                ratio(&pt.f1, &pt.n1),
+                ratio(&pt.f21, &pt.n12),
+                pt.s1.clone(),
+                pt.s12.clone(),
+                pt.work.clone(),
+            ]
+            .iter()
+            .map(|v| integrated(v, one(p)))
+            .collect()
+        },
+    )
+}

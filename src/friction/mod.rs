@@ -43,6 +43,7 @@ use crate::dae::solve::{self, Event, Opts, Sample, Start, Watch};
 use crate::dae::system::{self as sy, Row, SlipTerm, StackModel, System, Tangent};
 use crate::dae::{time_scale, TOL_GUARD};
 use crate::error::{Error, Result};
+use crate::exact::Exact;
 use crate::model::{Contact, Floor, Model};
 use rug::{Float, Rational};
 
@@ -211,6 +212,8 @@ pub enum End {
     Impact,
     /// At lift-off of cylinder 1 (outside the model).
     LiftOff,
+    /// Where θ reached the target angle.
+    Target,
 }
 
 /// The motion at one working precision.
@@ -234,6 +237,8 @@ pub struct Motion {
     /// Integrator work over all modes: (accepted steps, evaluations of the
     /// equations of motion).
     pub work_done: (u64, u64),
+    /// The state where θ first reached the target angle of [`solve_to_angle`].
+    pub target: Option<Point>,
 }
 
 /// Checks that the laws fit the model: friction coefficients belong to a
@@ -845,6 +850,56 @@ pub fn solve_with(
     horizon: &Float,
     method: Method,
 ) -> Result<Motion> {
+    solve_full(model, fr, prec, times, to_impact, horizon, method, None)
+}
+
+/// The motion up to the first time θ reaches `theta` (an angle beyond θ0 in
+/// the direction of the motion, before separation); `name` is the
+/// parameter named in errors. The state there is [`Motion::target`].
+///
+/// Errors: an angle behind the start, or not reached before the cylinders
+/// part ([`Error::InvalidParameter`]); see [`solve`].
+pub fn solve_to_angle(
+    model: &Model,
+    fr: &Friction,
+    prec: u32,
+    theta: &Exact,
+    name: &str,
+) -> Result<Motion> {
+    let h = default_horizon(model, prec);
+    let th0 = model.start().theta0.clone();
+    let dir = model.direction();
+    let d = theta.to_float(prec + 64) - th0.to_float(prec + 64);
+    if d.cmp0().map(|o| o as i32 * dir.signum()) == Some(-1) {
+        return Err(Error::invalid(
+            name,
+            theta,
+            "must lie beyond theta0 in the direction of the motion",
+        ));
+    }
+    solve_full(
+        model,
+        fr,
+        prec,
+        &[],
+        true,
+        &h,
+        Method::Gbs,
+        Some((theta.to_float(prec), name, d.is_zero(), theta.to_string())),
+    )
+}
+
+#[allow(clippy::too_many_arguments)]
+fn solve_full(
+    model: &Model,
+    fr: &Friction,
+    prec: u32,
+    times: &[Float],
+    to_impact: bool,
+    horizon: &Float,
+    method: Method,
+    target: Option<(Float, &str, bool, String)>,
+) -> Result<Motion> {
     validate(model, fr)?;
     let eff = effective_model(model, fr)?;
     let laws = laws(model, fr);
@@ -895,6 +950,7 @@ pub fn solve_with(
         energy_drift: Float::new(wp),
         end: End::LastTime,
         work_done: (0, 0),
+        target: None,
     };
     let mut next = 0usize;
     let t_last = times.last().cloned();
@@ -915,7 +971,32 @@ pub fn solve_with(
     };
     for _ in 0..MAX_MODES {
         let mut sys = ctx.system(mode)?;
-        let evs = events(&ctx, &sys, mode);
+        let mut evs = events(&ctx, &sys, mode);
+        if let Some((th, _, at_start, _)) = &target {
+            if *at_start {
+                let acc = sys.accel(&q, &v)?;
+                let smp = Sample {
+                    t: t.clone(),
+                    q: q.clone(),
+                    v: v.clone(),
+                    qdd: acc.qdd,
+                    lambda: acc.lambda,
+                    work: work.clone(),
+                    power: Float::new(wp),
+                };
+                out.target = Some(point(&ctx, &mut sys, mode, &smp));
+                out.end = End::Target;
+                return Ok(out);
+            }
+            evs.push(Event {
+                name: "target".into(),
+                watch: Watch::Reach {
+                    i: sy::th(0),
+                    value: Float::with_val(wp, th),
+                },
+                terminal: true,
+            });
+        }
         let start = Start {
             t: t.clone(),
             q: &q,
@@ -978,6 +1059,29 @@ pub fn solve_with(
         let at = point(&ctx, &mut sys, mode, &hit.at);
         note_drift(&at, &mut out.energy_drift);
         let name = evs[hit.event].name.clone();
+        if name == "target" {
+            out.target = Some(at);
+            out.end = End::Target;
+            return Ok(out);
+        }
+        if let (Some((_, pname, _, text)), true) = (
+            &target,
+            matches!(name.as_str(), "separation" | "lift_off" | "floor_impact"),
+        ) {
+            return Err(Error::invalid(
+                pname,
+                text,
+                format!(
+                    "must be reached while the contacts hold: the motion's {} is at theta = {}",
+                    match name.as_str() {
+                        "separation" => "separation",
+                        "lift_off" => "lift-off",
+                        _ => "landing on the floor",
+                    },
+                    at.theta.to_string_radix(10, Some(17))
+                ),
+            ));
+        }
         if name == "floor_impact" {
             // cylinder 2 lands on the floor before the cylinders part
             out.events.push(EventRec {
@@ -1005,6 +1109,16 @@ pub fn solve_with(
             decide(&ctx, &hit.at.q, &hit.at.v, &hit.at.t)?
         };
         if next_mode.is_none() {
+            if let Some((_, pname, _, text)) = &target {
+                return Err(Error::invalid(
+                    pname,
+                    text,
+                    format!(
+                        "must be reached while the contacts hold: the cylinders part at theta = {}",
+                        at.theta.to_string_radix(10, Some(17))
+                    ),
+                ));
+            }
             let lift = name == "lift_off";
             out.events.push(EventRec {
                 kind: if lift {
