@@ -959,3 +959,54 @@ fn time_and_forces_with_friction_meet_the_independent_state() {
     let mu = vals.iter().find(|v| v.name == "mu_contact").unwrap();
     assert_eq!(mu.text, "0.30000000000000000000");
 }
+
+#[test]
+fn units_only_rescale_the_motion() {
+    // m, r and g set only the units: angles and the order of events are the
+    // same, times scale by sqrt(r/g), work by m g r
+    let fr = Friction {
+        floor: law("0.2"),
+        contact: law("0.4"),
+    };
+    let unit = answer::separation(&model(Floor::Roll, "1/2"), &fr, 18).unwrap();
+    let mut p = Params::identical_solid();
+    p.m1 = q("2.5");
+    p.m2 = q("2.5");
+    p.r1 = q("0.05");
+    p.r2 = q("0.05");
+    p.g = q("9.81");
+    let si = Model::new(
+        p,
+        Floor::Roll,
+        Contact::Roll,
+        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+    )
+    .unwrap();
+    let b = answer::separation(&si, &fr, 18).unwrap();
+    // sqrt((r1 + r2)/g) against sqrt(2/1) of the unit model
+    let r_over_g = Float::with_val(PREC, q("0.1")) / Float::with_val(PREC, q("9.81"));
+    let tscale = Float::with_val(PREC, r_over_g.sqrt()) / Float::with_val(PREC, 2u32).sqrt();
+    assert_eq!(unit.events.len(), b.events.len());
+    for (x, y) in unit.events.iter().zip(&b.events) {
+        assert_eq!(x.kind, y.kind);
+        assert_eq!(x.mode, y.mode);
+        close(
+            "event theta",
+            &y.theta.value,
+            &x.theta.value.to_string_radix(10, Some(30)),
+            16,
+        );
+        let t = Float::with_val(PREC, &x.t.value * &tscale);
+        close("event t", &y.t.value, &t.to_string_radix(10, Some(30)), 16);
+    }
+    let escale = Float::with_val(PREC, q("2.5"))
+        * Float::with_val(PREC, q("9.81"))
+        * Float::with_val(PREC, q("0.05"));
+    let w = Float::with_val(PREC, value(&unit, "work_s") * &escale);
+    close(
+        "work",
+        value(&b, "work_s"),
+        &w.to_string_radix(10, Some(30)),
+        16,
+    );
+}
