@@ -27,7 +27,6 @@ pub struct Collocation {
     tol: Float,
     h: Float,
     s: usize,
-    c: Vec<Float>,
     b: Vec<Float>,
     a: Vec<Vec<Float>>,
     stats: Stats,
@@ -84,7 +83,6 @@ impl Collocation {
             tol,
             h: h0,
             s,
-            c,
             b,
             a,
             stats: Stats::default(),
@@ -107,7 +105,6 @@ impl Collocation {
         let mut knew = vec![vec![Float::new(p); n]; s];
         let mut yi = vec![Float::new(p); n];
         let lim = Float::with_val(p, &self.tol >> 8u32);
-        let _ = &self.c;
         for _ in 0..80 {
             let mut worst = Float::new(p);
             for i in 0..s {

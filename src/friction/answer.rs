@@ -212,10 +212,9 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
         )));
     }
     let mut names = Vec::new();
-    for (i, e) in first.events.iter().enumerate() {
-        names.push(format!("event{}_t", i + 1));
-        names.push(format!("event{}_theta", i + 1));
-        let _ = e;
+    for i in 1..=first.events.len() {
+        names.push(format!("event{i}_t"));
+        names.push(format!("event{i}_theta"));
     }
     names.extend(SEPARATION_KEYS.iter().map(|s| s.to_string()));
     let skel: Vec<(Kind, Option<Which>, Option<String>)> = first

@@ -310,7 +310,6 @@ impl Flight {
     /// The first τ in (0, τ_floor) at which the surfaces touch again.
     fn recontact(&self, r: &Float, tau_floor: &Float, ctx: &Ctx) -> Result<Option<Float>> {
         let p = self.p;
-        let rsq = Float::with_val(p, r.square_ref());
         // first piece: Δ = Δ0 + Δ1 τ + Δ2 τ², d = |Δ|² − r² with d(0) = ḋ(0) = 0
         let (x1, vx1, _, _) = self.body1(&Float::new(p));
         let d0 = (
@@ -336,7 +335,6 @@ impl Flight {
         if Float::with_val(p, a3.abs_ref()) <= Float::with_val(p, &tiny / &ctx.ts) {
             a3 = Float::new(p);
         }
-        let _ = rsq;
         let end1 = match &self.tau_stick {
             Some(ts) if ts < tau_floor => ts.clone(),
             _ => tau_floor.clone(),

@@ -631,7 +631,9 @@ fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Opti
                 }
                 let n = lam(&sys, &s1, normal_row(w));
                 let f = tangential(ctx, &sys, mode, w, &s1);
-                let mu = ctx.mu_s[w as usize].clone().unwrap_or_default_float(p);
+                let mu = ctx.mu_s[w as usize]
+                    .clone()
+                    .unwrap_or_else(|| Float::new(p));
                 let room = Float::with_val(p, &mu * &n) - Float::with_val(p, f.abs_ref());
                 if room.is_sign_negative() {
                     return Ok(Some(format!(
@@ -656,15 +658,6 @@ fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Opti
         }
     }
     Ok(None)
-}
-
-trait OrZero {
-    fn unwrap_or_default_float(self, p: u32) -> Float;
-}
-impl OrZero for Option<Float> {
-    fn unwrap_or_default_float(self, p: u32) -> Float {
-        self.unwrap_or_else(|| Float::new(p))
-    }
 }
 
 /// The relative normal acceleration r̈ of the centres if the contact
