@@ -1010,3 +1010,42 @@ fn units_only_rescale_the_motion() {
         16,
     );
 }
+
+#[test]
+fn few_digits_and_extreme_units_take_the_same_decisions() {
+    // the zero tests of the mode decision and the flight scale with the
+    // integration's tolerance (√tol), not with the working precision: at few
+    // digits a residual of the event location must not flip a decision
+    let m = model(Floor::Roll, "1/2");
+    for mu in ["0.1", "0.3", "1", "3"] {
+        let fr = Friction {
+            floor: law(mu),
+            contact: law(mu),
+        };
+        let fine = answer::separation(&m, &fr, 30).unwrap();
+        for d in [4, 6, 9, 12] {
+            let a = answer::separation(&m, &fr, d).unwrap();
+            assert_eq!(a.events.len(), fine.events.len(), "mu {mu}, {d} digits");
+            close(
+                &format!("mu {mu} theta_s at {d} digits"),
+                value(&fine, "theta_s"),
+                &value(&a, "theta_s").to_string_radix(10, Some(30)),
+                d as i32 - 1,
+            );
+        }
+    }
+    // g = 1e14 only changes the time unit
+    let (code, out, err) = cli(&[
+        "separation",
+        "--theta0",
+        "0.1",
+        "--mu-contact",
+        "0.3",
+        "--g",
+        "1e14",
+        "--digits",
+        "12",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("theta_s         = 0.912091565685"), "{out}");
+}

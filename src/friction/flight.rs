@@ -182,7 +182,7 @@ impl Flight {
         // cylinder 1 alone on the floor
         let s1 = f(&at.s1);
         // a floor whose slip ends at the separation itself rolls on
-        let tiny = Float::with_val(p, Float::with_val(p, &g * &r).sqrt()) >> (p as i32 / 2);
+        let tiny = Float::with_val(p, Float::with_val(p, &g * &r).sqrt()) * &ctx.rel_tiny;
         let sticking = mode.floor == State::Stick || Float::with_val(p, s1.abs_ref()) <= tiny;
         let mut a1 = floor_accel(
             ctx.fixed,
@@ -328,7 +328,7 @@ impl Flight {
         let mut a3 = dot(&d1, &d2) * 2u32;
         let a4 = dot(&d2, &d2);
         let scale = Float::with_val(p, &self.g * r);
-        let tiny = Float::with_val(p, &scale >> (p as i32 / 2));
+        let tiny = Float::with_val(p, &scale * &ctx.rel_tiny);
         if Float::with_val(p, a2.abs_ref()) <= tiny {
             a2 = Float::new(p);
         }

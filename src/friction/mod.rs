@@ -342,6 +342,11 @@ struct Ctx {
     escale: Float,
     /// r = r1 + r2.
     base_r: Float,
+    /// √tol: the relative size below which a quantity that vanishes in
+    /// exact arithmetic (a slip speed at rest, N12 at separation, …) is
+    /// taken as 0 — the integration and the event location leave errors
+    /// of order tol, far below it, and no genuine value comes that close.
+    rel_tiny: Float,
     mu_s: [Option<Float>; 2],
     mu_k: [Float; 2],
 }
@@ -622,7 +627,7 @@ fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Opti
                 // a contact can stick only where it does not slide
                 let s0 = sys.slip_speed(tangent(w), q, v);
                 let vscale = Float::with_val(p, &ctx.base_r / &ctx.ts);
-                if Float::with_val(p, s0.abs_ref()) > (vscale >> (p as i32 / 2)) {
+                if Float::with_val(p, s0.abs_ref()) > vscale * &ctx.rel_tiny {
                     return Ok(Some(format!(
                         "the {} slides (slip speed {:.3e}): it cannot stick",
                         w.name(),
@@ -670,7 +675,7 @@ fn free_normal_accel(ctx: &Ctx, sys: &System, q: &[Float], v: &[Float]) -> Float
     let r = &q[sy::rr(0)];
     let thd = &v[sy::th(0)];
     let s1 = sys.slip_speed(Tangent::Floor, q, v);
-    let snap = (Float::with_val(p, ctx.ts.recip_ref()) * &ctx.base_r) >> (p as i32 / 2);
+    let snap = Float::with_val(p, ctx.ts.recip_ref()) * &ctx.base_r * &ctx.rel_tiny;
     let sticking = Float::with_val(p, s1.abs_ref()) <= snap;
     let a1x = flight::floor_accel(
         ctx.fixed,
@@ -912,6 +917,7 @@ fn solve_full(
     });
     let mu_k = [&laws.floor, &laws.contact]
         .map(|l| l.kinetic().map_or_else(|| Float::new(wp), |k| fl(&k)));
+    let rel_tiny = Float::with_val(wp, opts.tol.sqrt_ref());
     let ctx = Ctx {
         base,
         laws,
@@ -921,6 +927,7 @@ fn solve_full(
         ts: Float::with_val(wp, &ts),
         escale,
         base_r: fl(&pm.r()),
+        rel_tiny,
         mu_s,
         mu_k,
     };
@@ -954,7 +961,7 @@ fn solve_full(
             .clone()
             .map_or_else(|| Float::new(wp), |x| Float::with_val(wp, x))
     };
-    let snap = Float::with_val(wp, &ctx.escale / &ctx.ts) >> (wp as i32 / 2);
+    let snap = Float::with_val(wp, &ctx.escale / &ctx.ts) * &ctx.rel_tiny;
     let note_drift = |pt: &Point, drift: &mut Float| {
         let d = Float::with_val(wp, &pt.energy + &pt.work) - &e0;
         let d = d.abs() / &ctx.escale;
