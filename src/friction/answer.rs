@@ -153,7 +153,7 @@ fn laddered<F>(
     names: &[String],
     rows: usize,
     mut again: F,
-    est: impl Fn(&Motion) -> Vec<Estimate>,
+    est: impl Fn(&Motion) -> Result<Vec<Estimate>>,
 ) -> Result<Vec<Vec<Verified>>>
 where
     F: FnMut(u32) -> Result<Motion>,
@@ -182,7 +182,7 @@ where
             });
         }
         check_balance(&m, digits)?;
-        Ok(est(&m))
+        est(&m)
     };
     if rows == 1 {
         ladder_runs(digits, &refs, f).map(|r| vec![r])
@@ -257,8 +257,11 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
         |m| {
             let mut out = Vec::new();
             event_estimates(m, &mut out);
-            let sep = m.separation.as_ref().expect("separation reached");
-            let imp = m.impact.as_ref().expect("impact reached");
+            let (Some(sep), Some(imp)) = (m.separation.as_ref(), m.impact.as_ref()) else {
+                return Err(Error::not_physical(
+                    "the cylinders do not part: cylinder 2 reaches the floor while still on cylinder 1",
+                ));
+            };
             let p = sep.t.prec();
             out.push(integrated(&sep.theta, one(p)));
             let ev_sep = m
@@ -286,7 +289,7 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
                 e.err += Float::with_val(p, &ev_sep) * 16u32;
                 out.push(e);
             }
-            out
+            Ok(out)
         },
     )?;
     let mut vals = vals.into_iter().next().unwrap_or_default();
@@ -364,7 +367,7 @@ pub fn trajectory(
                 out.push(e);
             }
         }
-        out
+        Ok(out)
     })?;
     Ok(TrajectoryAnswer { rows, modes })
 }
@@ -519,7 +522,12 @@ fn at_angle(
         &names,
         1,
         |p| super::solve_to_angle(model, fr, p, theta, name),
-        |m| m.target.as_ref().map_or_else(Vec::new, &est),
+        |m| {
+            m.target
+                .as_ref()
+                .map(&est)
+                .ok_or_else(|| Error::not_physical("internal: the angle was not reached"))
+        },
     )?;
     Ok((rows.into_iter().next().unwrap_or_default(), mode))
 }

@@ -883,8 +883,36 @@ pub fn solve_to_angle(
         true,
         &h,
         Method::Gbs,
-        Some((theta.to_float(prec), name, d.is_zero(), theta.to_string())),
+        Some(Target {
+            theta: theta.to_float(prec),
+            name,
+            text: theta.to_string(),
+            at_start: d.is_zero(),
+        }),
     )
+}
+
+/// An angle to stop at ([`solve_to_angle`]).
+struct Target<'a> {
+    theta: Float,
+    /// The parameter named in errors, and the angle as given.
+    name: &'a str,
+    text: String,
+    /// The angle is θ0 itself.
+    at_start: bool,
+}
+
+impl Target<'_> {
+    fn not_reached(&self, what: &str, at: &Float) -> Error {
+        Error::invalid(
+            self.name,
+            &self.text,
+            format!(
+                "must be reached while the contacts hold: {what} at theta = {}",
+                at.to_string_radix(10, Some(17))
+            ),
+        )
+    }
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -896,7 +924,7 @@ fn solve_full(
     to_impact: bool,
     horizon: &Float,
     method: Method,
-    target: Option<(Float, &str, bool, String)>,
+    target: Option<Target>,
 ) -> Result<Motion> {
     validate(model, fr)?;
     let eff = effective_model(model, fr)?;
@@ -972,8 +1000,8 @@ fn solve_full(
     for _ in 0..MAX_MODES {
         let mut sys = ctx.system(mode)?;
         let mut evs = events(&ctx, &sys, mode);
-        if let Some((th, _, at_start, _)) = &target {
-            if *at_start {
+        if let Some(tg) = &target {
+            if tg.at_start {
                 let acc = sys.accel(&q, &v)?;
                 let smp = Sample {
                     t: t.clone(),
@@ -992,7 +1020,7 @@ fn solve_full(
                 name: "target".into(),
                 watch: Watch::Reach {
                     i: sy::th(0),
-                    value: Float::with_val(wp, th),
+                    value: Float::with_val(wp, &tg.theta),
                 },
                 terminal: true,
             });
@@ -1064,23 +1092,16 @@ fn solve_full(
             out.end = End::Target;
             return Ok(out);
         }
-        if let (Some((_, pname, _, text)), true) = (
-            &target,
-            matches!(name.as_str(), "separation" | "lift_off" | "floor_impact"),
-        ) {
-            return Err(Error::invalid(
-                pname,
-                text,
-                format!(
-                    "must be reached while the contacts hold: the motion's {} is at theta = {}",
-                    match name.as_str() {
-                        "separation" => "separation",
-                        "lift_off" => "lift-off",
-                        _ => "landing on the floor",
-                    },
-                    at.theta.to_string_radix(10, Some(17))
-                ),
-            ));
+        if let Some(tg) = &target {
+            let what = match name.as_str() {
+                "separation" => Some("the cylinders part"),
+                "lift_off" => Some("cylinder 1 lifts off"),
+                "floor_impact" => Some("cylinder 2 lands on the floor"),
+                _ => None,
+            };
+            if let Some(what) = what {
+                return Err(tg.not_reached(what, &at.theta));
+            }
         }
         if name == "floor_impact" {
             // cylinder 2 lands on the floor before the cylinders part
@@ -1109,15 +1130,8 @@ fn solve_full(
             decide(&ctx, &hit.at.q, &hit.at.v, &hit.at.t)?
         };
         if next_mode.is_none() {
-            if let Some((_, pname, _, text)) = &target {
-                return Err(Error::invalid(
-                    pname,
-                    text,
-                    format!(
-                        "must be reached while the contacts hold: the cylinders part at theta = {}",
-                        at.theta.to_string_radix(10, Some(17))
-                    ),
-                ));
+            if let Some(tg) = &target {
+                return Err(tg.not_reached("the cylinders part", &at.theta));
             }
             let lift = name == "lift_off";
             out.events.push(EventRec {
