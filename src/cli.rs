@@ -656,7 +656,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                         r
                     })
                     .collect();
-                let mut cols = cylroll::friction::COLUMNS.to_vec();
+                let mut cols = cylroll::friction::columns();
                 cols.push("mode");
                 let a = Answer {
                     command: "trajectory",

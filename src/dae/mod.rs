@@ -177,7 +177,8 @@ fn row_value(sys: &System, s: &Sample, row: Row) -> Float {
         .unwrap_or_else(|| Float::new(sys.prec))
 }
 
-fn two_state(sys: &System, s: &Sample) -> TwoState {
+/// The columns of a two-cylinder sample (the multipliers as forces).
+pub(crate) fn two_state(sys: &System, s: &Sample) -> TwoState {
     let p = sys.prec;
     let q = &s.q;
     let th = &q[system::th(0)];

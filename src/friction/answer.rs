@@ -7,7 +7,7 @@
 //! E(0) − E(t) = W(t) is checked along every run.
 
 use super::flight::Surface;
-use super::{solve, Friction, Kind, Motion, Point, Which, COLUMNS};
+use super::{columns, solve, Friction, Kind, Motion, Point, Which};
 use crate::error::{Error, Result};
 use crate::exact::{rational_text, Exact};
 use crate::model::Model;
@@ -49,7 +49,7 @@ pub struct SeparationAnswer {
 /// The answer of `trajectory` with friction.
 #[derive(Debug, Clone)]
 pub struct TrajectoryAnswer {
-    /// One row per time, in [`COLUMNS`] order.
+    /// One row per time, in [`columns`] order.
     pub rows: Vec<Vec<Verified>>,
     /// The mode of each row (`stick/slip+`, or `flight`).
     pub modes: Vec<String>,
@@ -354,13 +354,13 @@ pub fn trajectory(
     let run = |p: u32| solve(model, fr, p, &tf(p), false, &horizon(p));
     let first = run(p1)?;
     let modes: Vec<String> = first.rows.iter().map(Point::mode_tag).collect();
-    let names: Vec<String> = COLUMNS.iter().map(|s| s.to_string()).collect();
+    let names: Vec<String> = columns().iter().map(|s| s.to_string()).collect();
     let rows = laddered(digits, first, &names, times.len(), run, |m| {
         let mut out = Vec::new();
         for (pt, text) in m.rows.iter().zip(&exact_t) {
             let p = pt.t.prec();
             for (i, v) in pt.columns().into_iter().enumerate() {
-                let mut e = integrated(v, one(p));
+                let mut e = integrated(&v, one(p));
                 if i == 0 {
                     e.exact_text = text.clone();
                 }
@@ -484,21 +484,17 @@ pub fn verify_cases() -> Vec<(String, Model, Friction)> {
     ]
 }
 
-/// The keys of [`forces_at`]: those of the ideal `forces` (F1, N1, F21,
-/// N12, θ̇, θ̈, |F1|/N1, |F21|/N12) and the slip speeds and dissipated work.
-pub const FORCE_KEYS_FRICTION: [&str; 11] = [
-    "F1",
-    "N1",
-    "F21",
-    "N12",
-    "theta_dot",
-    "theta_ddot",
-    "mu_floor",
-    "mu_contact",
-    "s1",
-    "s12",
-    "work",
-];
+/// The keys of [`forces_at`]: those of the ideal `forces`
+/// ([`crate::oracle::FORCE_KEYS`]: F1, N1, F21, N12, θ̇, θ̈, |F1|/N1,
+/// |F21|/N12), then the slip speeds and the dissipated work
+/// ([`super::EXTRA_COLUMNS`]).
+pub fn force_keys() -> Vec<&'static str> {
+    crate::oracle::FORCE_KEYS
+        .iter()
+        .chain(&super::EXTRA_COLUMNS)
+        .copied()
+        .collect()
+}
 
 fn at_angle(
     model: &Model,
@@ -560,38 +556,30 @@ pub fn forces_at(
     digits: u32,
     theta: &Exact,
 ) -> Result<(Vec<Verified>, String)> {
-    at_angle(
-        model,
-        fr,
-        digits,
-        theta,
-        "theta",
-        &FORCE_KEYS_FRICTION,
-        |pt| {
-            let p = pt.t.prec();
-            let ratio = |f: &Float, n: &Float| {
-                if n.is_zero() {
-                    Float::new(p)
-                } else {
-                    Float::with_val(p, f.abs_ref()) / n
-                }
-            };
-            [
-                pt.f1.clone(),
-                pt.n1.clone(),
-                pt.f21.clone(),
-                pt.n12.clone(),
-                pt.theta_dot.clone(),
-                pt.theta_ddot.clone(),
-                ratio(&pt.f1, &pt.n1),
-                ratio(&pt.f21, &pt.n12),
-                pt.s1.clone(),
-                pt.s12.clone(),
-                pt.work.clone(),
-            ]
-            .iter()
-            .map(|v| integrated(v, one(p)))
-            .collect()
-        },
-    )
+    at_angle(model, fr, digits, theta, "theta", &force_keys(), |pt| {
+        let p = pt.t.prec();
+        let ratio = |f: &Float, n: &Float| {
+            if n.is_zero() {
+                Float::new(p)
+            } else {
+                Float::with_val(p, f.abs_ref()) / n
+            }
+        };
+        [
+            pt.f1.clone(),
+            pt.n1.clone(),
+            pt.f21.clone(),
+            pt.n12.clone(),
+            pt.theta_dot.clone(),
+            pt.theta_ddot.clone(),
+            ratio(&pt.f1, &pt.n1),
+            ratio(&pt.f21, &pt.n12),
+            pt.s1.clone(),
+            pt.s12.clone(),
+            pt.work.clone(),
+        ]
+        .iter()
+        .map(|v| integrated(v, one(p)))
+        .collect()
+    })
 }

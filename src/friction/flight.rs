@@ -20,6 +20,7 @@
 use super::{Ctx, EventRec, Kind, Law, Mode, Point, State, Which};
 use crate::dae::solve::Sample;
 use crate::dae::system::{self as sy, System};
+use crate::dae::TwoState;
 use crate::error::{Error, Result};
 use rug::Float;
 
@@ -499,19 +500,21 @@ impl Flight {
         energy += Float::with_val(p, &self.m1 * &self.r1) * &self.g;
         energy += Float::with_val(p, &self.m2 * &y2) * &self.g;
         Point {
-            t: Float::with_val(p, t),
-            theta,
-            theta_dot,
-            theta_ddot,
-            phi1,
-            phi2,
-            x1,
-            x2,
-            y2,
-            f1,
-            n1,
-            f21: Float::new(p),
-            n12: Float::new(p),
+            state: TwoState {
+                t: Float::with_val(p, t),
+                theta,
+                theta_dot,
+                theta_ddot,
+                phi1,
+                phi2,
+                x1,
+                x2,
+                y2,
+                f1,
+                n1,
+                f21: Float::new(p),
+                n12: Float::new(p),
+            },
             s1,
             s12: Float::new(p),
             work,

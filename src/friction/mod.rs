@@ -41,7 +41,7 @@ pub use law::{Friction, Law, Mode, State};
 
 use crate::dae::solve::{self, Event, Opts, Sample, Start, Watch};
 use crate::dae::system::{self as sy, Row, SlipTerm, StackModel, System, Tangent};
-use crate::dae::{time_scale, TOL_GUARD};
+use crate::dae::{time_scale, TwoState, TOL_GUARD};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::model::{Contact, Floor, Model};
@@ -98,35 +98,15 @@ impl Kind {
     }
 }
 
-/// Every column of the motion at one time.
+/// Every column of the motion at one time: the columns of the ideal
+/// models ([`TwoState`], reached through `Deref`: `point.theta`), the slip
+/// speeds and the dissipated work.
 #[derive(Debug, Clone)]
 pub struct Point {
-    /// t.
-    pub t: Float,
-    /// θ (in flight: the direction of the line of centres).
-    pub theta: Float,
-    /// θ̇.
-    pub theta_dot: Float,
-    /// θ̈.
-    pub theta_ddot: Float,
-    /// φ1 (clockwise).
-    pub phi1: Float,
-    /// φ2 (the paper's angle: φ2 − θ is cylinder 2's counter-clockwise rotation).
-    pub phi2: Float,
-    /// x1.
-    pub x1: Float,
-    /// x2.
-    pub x2: Float,
-    /// y2.
-    pub y2: Float,
-    /// F1.
-    pub f1: Float,
-    /// N1.
-    pub n1: Float,
-    /// F21 (0 in flight).
-    pub f21: Float,
-    /// N12 (0 in flight).
-    pub n12: Float,
+    /// t, θ (in flight: the direction of the line of centres), its rates,
+    /// the angles, positions and the forces F1, N1, F21, N12 (the contact's
+    /// are 0 in flight).
+    pub state: TwoState,
     /// Floor slip speed s1.
     pub s1: Float,
     /// Contact slip speed s12 (0 in flight, where there is no contact).
@@ -139,47 +119,33 @@ pub struct Point {
     pub mode: Option<Mode>,
 }
 
-/// The column names of [`Point::columns`].
-pub const COLUMNS: [&str; 16] = [
-    "t",
-    "theta",
-    "theta_dot",
-    "theta_ddot",
-    "phi1",
-    "phi2",
-    "x1",
-    "x2",
-    "y2",
-    "F1",
-    "N1",
-    "F21",
-    "N12",
-    "s1",
-    "s12",
-    "work",
-];
+impl std::ops::Deref for Point {
+    type Target = TwoState;
+    fn deref(&self) -> &TwoState {
+        &self.state
+    }
+}
+
+/// The columns a motion with friction adds to those of the ideal models
+/// ([`crate::oracle::TRAJECTORY_COLUMNS`]).
+pub const EXTRA_COLUMNS: [&str; 3] = ["s1", "s12", "work"];
+
+/// The column names of [`Point::columns`]: the ideal models' columns, then
+/// [`EXTRA_COLUMNS`].
+pub fn columns() -> Vec<&'static str> {
+    crate::oracle::TRAJECTORY_COLUMNS
+        .iter()
+        .chain(&EXTRA_COLUMNS)
+        .copied()
+        .collect()
+}
 
 impl Point {
-    /// The values in [`COLUMNS`] order.
-    pub fn columns(&self) -> [&Float; 16] {
-        [
-            &self.t,
-            &self.theta,
-            &self.theta_dot,
-            &self.theta_ddot,
-            &self.phi1,
-            &self.phi2,
-            &self.x1,
-            &self.x2,
-            &self.y2,
-            &self.f1,
-            &self.n1,
-            &self.f21,
-            &self.n12,
-            &self.s1,
-            &self.s12,
-            &self.work,
-        ]
+    /// The values in [`columns`] order.
+    pub fn columns(&self) -> Vec<Float> {
+        let mut v = self.state.columns().to_vec();
+        v.extend([self.s1.clone(), self.s12.clone(), self.work.clone()]);
+        v
     }
 
     /// The mode's tag, or `flight`.
@@ -453,25 +419,12 @@ fn tangential(ctx: &Ctx, sys: &System, mode: Mode, w: Which, s: &Sample) -> Floa
 
 fn point(ctx: &Ctx, sys: &mut System, mode: Mode, s: &Sample) -> Point {
     let p = sys.prec;
-    let q = &s.q;
-    let th = &q[sy::th(0)];
-    let r = &q[sy::rr(0)];
-    let (sn, cs) = th.clone().sin_cos(Float::new(p));
-    let energy = sys.energy(&s.q, &s.v);
+    let mut state = crate::dae::two_state(sys, s);
+    // a slipping contact's force is an applied force, not a multiplier
+    state.f1 = tangential(ctx, sys, mode, Which::Floor, s);
+    state.f21 = tangential(ctx, sys, mode, Which::Contact, s);
     Point {
-        t: s.t.clone(),
-        theta: th.clone(),
-        theta_dot: s.v[sy::th(0)].clone(),
-        theta_ddot: s.qdd[sy::th(0)].clone(),
-        phi1: q[sy::PHI1].clone(),
-        phi2: Float::with_val(p, &q[sy::psi(0)] + th),
-        x1: q[sy::X1].clone(),
-        x2: Float::with_val(p, r * &sn) + &q[sy::X1],
-        y2: Float::with_val(p, r * &cs) + &q[sy::Y1],
-        f1: tangential(ctx, sys, mode, Which::Floor, s),
-        n1: lam(sys, s, Row::FloorNormal),
-        f21: tangential(ctx, sys, mode, Which::Contact, s),
-        n12: lam(sys, s, Row::Normal(0)),
+        state,
         s1: if ctx.fixed {
             Float::new(p)
         } else {
@@ -479,7 +432,7 @@ fn point(ctx: &Ctx, sys: &mut System, mode: Mode, s: &Sample) -> Point {
         },
         s12: sys.slip_speed(Tangent::Line(0), &s.q, &s.v),
         work: s.work.clone(),
-        energy,
+        energy: sys.energy(&s.q, &s.v),
         mode: Some(mode),
     }
 }

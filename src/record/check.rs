@@ -154,10 +154,10 @@ pub fn check(
         .split(',')
         .map(|c| c.trim().trim_matches('"').to_string())
         .collect();
-    let known: &[&str] = if case.friction.is_some() {
-        &crate::friction::COLUMNS
+    let known: Vec<&str> = if case.friction.is_some() {
+        crate::friction::columns()
     } else {
-        &TRAJECTORY_COLUMNS
+        TRAJECTORY_COLUMNS.to_vec()
     };
     let mut idx = Vec::new();
     for c in &cols {

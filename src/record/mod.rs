@@ -257,7 +257,7 @@ fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
             })
         })
         .collect();
-    let mut columns: Vec<&str> = crate::friction::COLUMNS.to_vec();
+    let mut columns: Vec<&str> = crate::friction::columns();
     columns.push("mode");
     let rows_json: Vec<Value> = traj
         .rows

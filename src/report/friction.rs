@@ -10,7 +10,7 @@ use super::Config;
 use crate::error::Result;
 use crate::exact::Exact;
 use crate::friction::answer::{self, SeparationAnswer};
-use crate::friction::{Friction, Kind, Law, COLUMNS};
+use crate::friction::{columns, Friction, Kind, Law};
 use crate::model::{Contact, Floor, Model, Params, Start};
 use crate::oracle::Oracle;
 
@@ -21,7 +21,7 @@ const THETA0: &str = "1/10";
 pub struct FrictionData {
     /// (μ text, the separation answer) for the event table.
     pub cases: Vec<(String, Result<SeparationAnswer>)>,
-    /// The main case at μ = 0.3: rows in [`COLUMNS`] order (f64) and modes.
+    /// The main case at μ = 0.3: rows in [`columns`] order (f64) and modes.
     pub traj: Result<(Vec<Vec<f64>>, Vec<String>, SeparationAnswer)>,
     /// (μ, first slip onset θ, θs, the contact opened at the cone) at equal
     /// coefficients on both contacts.
@@ -239,7 +239,7 @@ fn range(series: &[&[(f64, f64)]]) -> (f64, f64) {
 }
 
 fn col(rows: &[Vec<f64>], c: &str) -> Vec<(f64, f64)> {
-    let i = COLUMNS.iter().position(|x| *x == c).unwrap_or(0);
+    let i = columns().iter().position(|x| *x == c).unwrap_or(0);
     rows.iter().map(|r| (r[0], r[i])).collect()
 }
 
