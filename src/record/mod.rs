@@ -163,19 +163,12 @@ pub fn render(case: &Case) -> Result<Rendered> {
         .collect();
     let rows = o.trajectory(&times)?;
 
-    let mut model = Map::new();
-    for (k, v) in case.model.echo() {
-        model.insert(k.into(), v.into());
-    }
-    let mut scalars = Map::new();
-    let mut bounds = Map::new();
-    for v in std::iter::once(&sep.theta_s)
-        .chain(sep.t_s.iter())
-        .chain(sep.extra.iter())
-    {
-        scalars.insert(v.name.clone(), v.text.clone().into());
-        bounds.insert(v.name.clone(), v.err_text().into());
-    }
+    let model = model_map(&case.model);
+    let (scalars, bounds) = scalar_maps(
+        std::iter::once(&sep.theta_s)
+            .chain(sep.t_s.iter())
+            .chain(sep.extra.iter()),
+    );
     let rows_json: Vec<Value> = rows
         .iter()
         .map(|r| Value::Array(r.iter().map(|v| Value::from(v.text.clone())).collect()))
@@ -204,14 +197,45 @@ pub fn render(case: &Case) -> Result<Rendered> {
     });
     let json =
         serde_json::to_string_pretty(&doc).map_err(|e| Error::not_physical(e.to_string()))? + "\n";
-    let mut csv = TRAJECTORY_COLUMNS.join(",");
+    let csv = csv_text(
+        &TRAJECTORY_COLUMNS,
+        rows.iter()
+            .map(|r| r.iter().map(|v| v.text.as_str()).collect()),
+    );
+    Ok(Rendered { json, csv })
+}
+
+/// The model's keys and exact values, in the echo order.
+fn model_map(model: &Model) -> Map<String, Value> {
+    let mut m = Map::new();
+    for (k, v) in model.echo() {
+        m.insert(k.into(), v.into());
+    }
+    m
+}
+
+/// The `scalars` and `scalar_error_bounds` objects of verified values.
+fn scalar_maps<'a>(
+    values: impl IntoIterator<Item = &'a Verified>,
+) -> (Map<String, Value>, Map<String, Value>) {
+    let mut scalars = Map::new();
+    let mut bounds = Map::new();
+    for v in values {
+        scalars.insert(v.name.clone(), v.text.clone().into());
+        bounds.insert(v.name.clone(), v.err_text().into());
+    }
+    (scalars, bounds)
+}
+
+/// A CSV with a header row.
+fn csv_text<'a>(columns: &[&str], rows: impl Iterator<Item = Vec<&'a str>>) -> String {
+    let mut csv = columns.join(",");
     csv.push('\n');
-    for r in &rows {
-        let line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
+    for line in rows {
         csv.push_str(&line.join(","));
         csv.push('\n');
     }
-    Ok(Rendered { json, csv })
+    csv
 }
 
 /// The format tag of golden files with friction.
@@ -232,18 +256,10 @@ fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
         .map(|i| Exact::rational(&end * Rational::from((i, case.steps))))
         .collect();
     let traj = crate::friction::answer::trajectory(&case.model, fr, GOLDEN_DIGITS, &times)?;
-    let mut model = Map::new();
-    for (k, v) in case.model.echo() {
-        model.insert(k.into(), v.into());
-    }
+    let mut model = model_map(&case.model);
     model.insert("mu_floor".into(), fr.floor.to_string().into());
     model.insert("mu_contact".into(), fr.contact.to_string().into());
-    let mut scalars = Map::new();
-    let mut bounds = Map::new();
-    for v in &sep.values {
-        scalars.insert(v.name.clone(), v.text.clone().into());
-        bounds.insert(v.name.clone(), v.err_text().into());
-    }
+    let (scalars, bounds) = scalar_maps(&sep.values);
     let events: Vec<Value> = sep
         .events
         .iter()
@@ -302,14 +318,14 @@ fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
     });
     let json =
         serde_json::to_string_pretty(&doc).map_err(|e| Error::not_physical(e.to_string()))? + "\n";
-    let mut csv = columns.join(",");
-    csv.push('\n');
-    for (r, m) in traj.rows.iter().zip(&traj.modes) {
-        let mut line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
-        line.push(m);
-        csv.push_str(&line.join(","));
-        csv.push('\n');
-    }
+    let csv = csv_text(
+        &columns,
+        traj.rows.iter().zip(&traj.modes).map(|(r, m)| {
+            let mut line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
+            line.push(m);
+            line
+        }),
+    );
     Ok(Rendered { json, csv })
 }
 
