@@ -1026,3 +1026,55 @@ fn few_digits_and_extreme_units_take_the_same_decisions() {
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("theta_s         = 0.912091565685"), "{out}");
 }
+
+#[test]
+fn a_lower_cylinder_without_inertia_is_refused_only_where_its_spin_would_be_free() {
+    // k1 = 0 on a rolling floor: the spin goes with x1, which has mass; both
+    // integrators agree on the motion
+    let mut p = Params::identical_solid();
+    p.k1 = q("0");
+    let m = Model::new(
+        p.clone(),
+        Floor::Roll,
+        Contact::Roll,
+        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+    )
+    .unwrap();
+    let fr = Friction {
+        floor: Law::Roll,
+        contact: law("0.3"),
+    };
+    for r in answer::cross_check(&m, &fr, 16).unwrap() {
+        assert!(r.digits >= 28.0, "{}: {:.1}", r.name, r.digits);
+    }
+    // held still, cylinder 1's inertia does not enter: the fixture's value
+    let fixed = Model::new(
+        p,
+        Floor::Fixed,
+        Contact::Roll,
+        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+    )
+    .unwrap();
+    let a = answer::separation(&fixed, &fr, DIGITS).unwrap();
+    let fx = fixture();
+    close(
+        "fixed k1 = 0 theta_s",
+        value(&a, "theta_s"),
+        s(fx["fixed_mu_0_3"].as_table().unwrap(), "theta_s"),
+        AGREE,
+    );
+    // a floor that can slide would leave the spin free: refused
+    let (code, _, err) = cli(&[
+        "separation",
+        "--theta0",
+        "0.1",
+        "--k1",
+        "0",
+        "--mu-floor",
+        "0.3",
+        "--mu-contact",
+        "0.3",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("k1"), "{err}");
+}

@@ -207,12 +207,28 @@ pub struct Motion {
     pub target: Option<Point>,
 }
 
+/// Checks that the laws fit the model ([`check_laws`]) and that the motion
+/// has a finite time scale (not from rest exactly at the top).
+///
+/// Errors: [`Error::InvalidParameter`] naming the parameter;
+/// [`Error::NotPhysical`] for a start from rest at the top.
+pub fn validate(model: &Model, fr: &Friction) -> Result<()> {
+    check_laws(model, fr)?;
+    if model.starts_at_equilibrium() {
+        return Err(Error::not_physical(
+            "the motion starts from rest exactly at the unstable top: every time is infinite",
+        ));
+    }
+    Ok(())
+}
+
 /// Checks that the laws fit the model: friction coefficients belong to a
 /// rolling base (`--floor roll`, `--contact roll`), a fixed floor has no
-/// floor law, and a body whose contact slips with friction has inertia.
+/// floor law, and a spin that sliding friction turns has inertia (k2 > 0
+/// under a frictional contact; k1 > 0 where the floor can slide too).
 ///
 /// Errors: [`Error::InvalidParameter`] naming the parameter.
-pub fn validate(model: &Model, fr: &Friction) -> Result<()> {
+pub fn check_laws(model: &Model, fr: &Friction) -> Result<()> {
     if model.floor() == Floor::Fixed && fr.floor != Law::Roll {
         return Err(Error::invalid(
             "mu_floor",
@@ -236,7 +252,9 @@ pub fn validate(model: &Model, fr: &Friction) -> Result<()> {
     }
     let p = model.params();
     let kinetic = |l: &Law| l.kinetic().is_some_and(|k| k > 0);
-    if p.k1 == 0 && (kinetic(&fr.floor) || kinetic(&fr.contact)) {
+    // cylinder 1's spin is free of the floor only where the floor can slide
+    let floor_slides = fr.floor != Law::Roll && model.floor() != Floor::Fixed;
+    if p.k1 == 0 && floor_slides && (kinetic(&fr.floor) || kinetic(&fr.contact)) {
         return Err(Error::invalid(
             "k1",
             "0",
@@ -248,11 +266,6 @@ pub fn validate(model: &Model, fr: &Friction) -> Result<()> {
             "k2",
             "0",
             "must be > 0 with finite friction (a spin without inertia cannot slide under friction)",
-        ));
-    }
-    if model.starts_at_equilibrium() {
-        return Err(Error::not_physical(
-            "the motion starts from rest exactly at the unstable top: every time is infinite",
         ));
     }
     Ok(())

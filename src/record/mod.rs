@@ -48,7 +48,7 @@ pub fn load_case(path: &Path) -> Result<Case> {
     let pairs = pairs_from_toml(&table, "case", &["description", "steps"])?;
     let model = model_from_pairs(&pairs)?;
     let fr = crate::input::friction_for(&pairs, &model)?;
-    crate::friction::validate(&model, &fr)?;
+    crate::friction::check_laws(&model, &fr)?;
     let model = crate::friction::effective_model(&model, &fr)?;
     let friction = (fr.floor.is_coulomb() || fr.contact.is_coulomb()).then_some(fr);
     let description = match table.get("description") {
