@@ -49,7 +49,7 @@ pub enum Command {
         #[arg(long, allow_hyphen_values = true)]
         theta: String,
     },
-    /// Rows t, theta, theta_dot, phi1, phi2, x1, x2, y2, F1, N1, F21, N12 at given times
+    /// Rows t, theta, theta_dot, theta_ddot, phi1, phi2, x1, x2, y2, F1, N1, F21, N12 (with friction also s1, s12, work, mode) at given times
     Trajectory {
         #[command(flatten)]
         common: Common,
@@ -59,8 +59,8 @@ pub enum Command {
         /// Last time of an equally spaced grid (with --steps)
         #[arg(long, allow_hyphen_values = true, requires = "steps")]
         t_end: Option<String>,
-        /// Number of intervals of the grid 0, t_end/N, ..., t_end
-        #[arg(long, requires = "t_end")]
+        /// Number of intervals of the grid 0, t_end/N, ..., t_end (1 to 100000)
+        #[arg(long, requires = "t_end", allow_hyphen_values = true, value_parser = steps_arg)]
         steps: Option<u32>,
     },
     /// Render every golden case (golden/cases/*.toml) into golden/data/<case>.json and .csv
@@ -76,19 +76,22 @@ pub enum Command {
         /// The golden case it simulates (a file stem of golden/cases)
         #[arg(long)]
         case: String,
-        /// Relative tolerance
-        #[arg(long, default_value_t = 1e-8)]
+        /// Relative tolerance (>= 0)
+        #[arg(long, default_value_t = 1e-8, allow_hyphen_values = true, value_parser = tol_arg)]
         rtol: f64,
-        /// Absolute tolerance
-        #[arg(long, default_value_t = 1e-10)]
+        /// Absolute tolerance (>= 0)
+        #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true, value_parser = tol_arg)]
         atol: f64,
-        /// Significant digits of the oracle values compared against
-        #[arg(long, default_value_t = 20)]
+        /// Significant digits of the oracle values compared against, 1 to 2000
+        #[arg(long, default_value_t = 20, allow_hyphen_values = true, value_parser = digits_arg)]
         digits: u32,
-        /// The golden directory
+        /// Largest number of data rows accepted (the candidate is read in chunks, in bounded memory)
+        #[arg(long, default_value_t = 1_000_000, allow_hyphen_values = true, value_parser = rows_arg)]
+        max_rows: usize,
+        /// The golden directory (case files in its cases/ folder)
         #[arg(long, default_value = "golden")]
         golden: std::path::PathBuf,
-        /// Output format (text or json)
+        /// Output format: text (a table), json or csv (one row per column)
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
     },
@@ -112,15 +115,18 @@ pub enum Command {
     },
     /// Run the second, independent route (time integration with Lagrange multipliers) against the first
     Verify {
-        /// Significant digits to compare
-        #[arg(long, default_value_t = 30)]
+        /// Significant digits to compare, 1 to 2000
+        #[arg(long, default_value_t = 30, allow_hyphen_values = true, value_parser = digits_arg)]
         digits: u32,
         /// A stack of n cylinders instead (see README, "Stacks")
         #[arg(long)]
         stack: Option<String>,
-        /// Output format
+        /// Output format (a stack: text or json)
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
+        /// Print the wall-clock time of each case to standard error
+        #[arg(long)]
+        timings: bool,
     },
 }
 
@@ -143,29 +149,34 @@ pub struct Common {
     /// Contact between the cylinders: roll | slip
     #[arg(long)]
     contact: Option<String>,
+    /// Mass of the lower cylinder 1, > 0 [default: 1]
     #[arg(long, allow_hyphen_values = true)]
     m1: Option<String>,
+    /// Mass of the upper cylinder 2, > 0 [default: 1]
     #[arg(long, allow_hyphen_values = true)]
     m2: Option<String>,
+    /// Radius of cylinder 1, > 0 [default: 1]
     #[arg(long, allow_hyphen_values = true)]
     r1: Option<String>,
+    /// Radius of cylinder 2, > 0 [default: 1]
     #[arg(long, allow_hyphen_values = true)]
     r2: Option<String>,
-    /// I1 = k1 m1 r1^2
+    /// I1 = k1 m1 r1^2; k1 >= 0 (1/2 solid, 1 thin shell, > 1 a bobbin) [default: 1/2]
     #[arg(long, allow_hyphen_values = true)]
     k1: Option<String>,
-    /// I2 = k2 m2 r2^2
+    /// I2 = k2 m2 r2^2; k2 >= 0 [default: 1/2]
     #[arg(long, allow_hyphen_values = true)]
     k2: Option<String>,
+    /// Gravitational acceleration, > 0 [default: 1]
     #[arg(long, allow_hyphen_values = true)]
     g: Option<String>,
-    /// Initial angle of the line of centres, clockwise from vertical (radians)
+    /// Initial angle of the line of centres, clockwise from vertical (radians) [default: 0]
     #[arg(long, allow_hyphen_values = true)]
     theta0: Option<String>,
-    /// Initial angular velocity of the line of centres
+    /// Initial angular velocity of the line of centres [default: 0]
     #[arg(long, allow_hyphen_values = true)]
     thetadot0: Option<String>,
-    /// Common rolling rate of the conserved momentum (phi1_dot when theta_dot = 0; paper eq. 17)
+    /// Common rolling rate of the conserved momentum (phi1_dot when theta_dot = 0; paper eq. 17) [default: 0]
     #[arg(long, allow_hyphen_values = true)]
     omega0: Option<String>,
     /// Coulomb friction at the floor: inf (roll), a number >= 0, or S,K (static, kinetic)
@@ -174,12 +185,43 @@ pub struct Common {
     /// Coulomb friction between the cylinders: inf (roll), a number >= 0, or S,K
     #[arg(long, allow_hyphen_values = true)]
     mu_contact: Option<String>,
-    /// Significant digits to verify and print
-    #[arg(long, default_value_t = 30)]
+    /// Significant digits to verify and print, 1 to 2000
+    #[arg(long, default_value_t = 30, allow_hyphen_values = true, value_parser = digits_arg)]
     digits: u32,
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
+}
+
+/// `--digits`: an integer 1..=MAX_DIGITS (a message clap prints on one line).
+fn digits_arg(s: &str) -> std::result::Result<u32, String> {
+    int_arg(s, 1, cylroll::oracle::MAX_DIGITS as u64).map(|v| v as u32)
+}
+
+/// An integer flag within `lo..=hi`.
+fn int_arg(s: &str, lo: u64, hi: u64) -> std::result::Result<u64, String> {
+    match s.trim().parse::<u64>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(format!("must be an integer between {lo} and {hi}")),
+    }
+}
+
+/// `--steps`: 1..=100000 intervals.
+fn steps_arg(s: &str) -> std::result::Result<u32, String> {
+    int_arg(s, 1, 100_000).map(|v| v as u32)
+}
+
+/// `--max-rows`: 1..=10^8 rows.
+fn rows_arg(s: &str) -> std::result::Result<usize, String> {
+    int_arg(s, 1, 100_000_000).map(|v| v as usize)
+}
+
+/// A tolerance: a finite number >= 0.
+fn tol_arg(s: &str) -> std::result::Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
+        _ => Err("must be a finite number >= 0 (e.g. 1e-8)".into()),
+    }
 }
 
 impl Common {
@@ -208,7 +250,7 @@ impl Common {
         let mut vals = input::Pairs::new();
         if let Some(path) = &self.params {
             let table = input::read_toml(path, "params")?;
-            vals = input::pairs_from_toml(&table, "params", &[])?;
+            vals = input::pairs_from_toml(&table, "params", &input::CASE_KEYS)?;
         }
         for k in MODEL_KEYS.iter().chain(FRICTION_KEYS.iter()) {
             if let Some(v) = self.flag(k) {
@@ -253,11 +295,15 @@ fn json_str(s: &str) -> String {
 }
 
 impl Answer {
-    fn render(&self, format: Format) -> String {
+    fn render(mut self, format: Format) -> String {
+        // a finding is stated once, however many routes reached it
+        let mut seen = std::collections::HashSet::new();
+        self.notes.retain(|n| seen.insert(n.clone()));
+        let this = &self;
         match format {
-            Format::Text => self.text(),
-            Format::Json => self.json(),
-            Format::Csv => self.csv(),
+            Format::Text => this.text(),
+            Format::Json => this.json(),
+            Format::Csv => this.csv(),
         }
     }
 
@@ -316,6 +362,9 @@ impl Answer {
                 out.push_str(&line.join("\t"));
                 out.push('\n');
             }
+            for z in zero_cells(cols, rows) {
+                out.push_str(&format!("note: {z}\n"));
+            }
         }
         for n in &self.notes {
             out.push_str(&format!("note: {n}\n"));
@@ -369,22 +418,52 @@ impl Answer {
                     .collect::<Vec<_>>()
                     .into(),
             );
-            let mut min_digits = self.digits;
+            // per column: the fewest digits verified in any row and the
+            // largest error bound; a cell printed 0 is 0 only to within an
+            // absolute bound, which its row states under "zero_within"
+            let mut col_digits: Vec<Option<u32>> = vec![None; cols.len()];
+            let mut col_err: Vec<Option<rug::Float>> = vec![None; cols.len()];
             let rows_json: Vec<serde_json::Value> = rows
                 .iter()
                 .map(|r| {
                     let mut row = serde_json::Map::new();
-                    for v in r {
-                        if v.digits > 0 {
-                            min_digits = min_digits.min(v.digits);
-                        }
+                    let mut zeros = serde_json::Map::new();
+                    for (j, v) in r.iter().enumerate() {
                         row.insert(v.name.clone(), v.text.clone().into());
+                        if v.name == "mode" {
+                            continue;
+                        }
+                        if v.digits > 0 {
+                            col_digits[j] =
+                                Some(col_digits[j].map_or(v.digits, |d| d.min(v.digits)));
+                        } else if v.text == "0" && !v.err_bound.is_zero() {
+                            zeros.insert(v.name.clone(), v.err_text().into());
+                        }
+                        if col_err[j].as_ref().is_none_or(|e| v.err_bound > *e) {
+                            col_err[j] = Some(v.err_bound.clone());
+                        }
+                    }
+                    if !zeros.is_empty() {
+                        row.insert("zero_within".into(), zeros.into());
                     }
                     row.into()
                 })
                 .collect();
             o.insert("rows".into(), rows_json.into());
-            verified.insert("rows".into(), min_digits.to_string().into());
+            for (j, c) in cols.iter().enumerate() {
+                if *c == "mode" {
+                    continue;
+                }
+                verified.insert(
+                    c.to_string(),
+                    col_digits[j]
+                        .map_or("0".to_string(), |d| d.to_string())
+                        .into(),
+                );
+                if let Some(e) = &col_err[j] {
+                    errs.insert(c.to_string(), cylroll::numeric::decimal::short(e).into());
+                }
+            }
         }
         o.insert("digits_verified".into(), verified.into());
         o.insert("error_bounds".into(), errs.into());
@@ -439,9 +518,40 @@ impl Answer {
                     v.err_text()
                 ));
             }
+            // the notes are findings too (e.g. "t_s is infinite"): one row
+            // each, the text quoted as CSV requires
+            for n in &self.notes {
+                out.push_str(&format!("note,\"{}\",,\n", n.replace('"', "\"\"")));
+            }
         }
         out
     }
+}
+
+/// Per column, the cells printed 0 that are 0 only to within an absolute
+/// bound: one sentence per such column, naming the largest bound.
+fn zero_cells(cols: &[&str], rows: &[Vec<Verified>]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (j, c) in cols.iter().enumerate() {
+        let mut n = 0;
+        let mut worst: Option<&rug::Float> = None;
+        for r in rows {
+            let v = &r[j];
+            if v.name != "mode" && v.text == "0" && !v.err_bound.is_zero() {
+                n += 1;
+                if worst.is_none_or(|w| v.err_bound > *w) {
+                    worst = Some(&v.err_bound);
+                }
+            }
+        }
+        if let Some(w) = worst {
+            out.push(format!(
+                "{n} value(s) of {c} printed 0 are zero only to within an absolute bound, |{c}| <= {}",
+                cylroll::numeric::decimal::short(w)
+            ));
+        }
+    }
+    out
 }
 
 fn parse_list(name: &str, s: &str) -> Result<Vec<Exact>> {
@@ -458,26 +568,31 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             rtol,
             atol,
             digits,
+            max_rows,
             golden,
             format,
         } => {
-            let text = std::fs::read_to_string(&candidate).map_err(|e| Error::Io {
-                path: candidate.display().to_string(),
-                what: e.to_string(),
-            })?;
             let case = cylroll::record::find_case(&golden, &case)?;
-            let rep = cylroll::record::check::check(
-                &text,
-                &candidate.display().to_string(),
-                &case,
+            let source = candidate.display().to_string();
+            let file = std::fs::File::open(&candidate).map_err(|e| {
+                Error::invalid("candidate", &source, format!("cannot be read: {e}"))
+            })?;
+            let lim = cylroll::record::check::Limits {
                 rtol,
                 atol,
                 digits,
+                max_rows,
+            };
+            let rep = cylroll::record::check::check_reader(
+                std::io::BufReader::new(file),
+                &source,
+                &case,
+                &lim,
             )?;
-            let out = if format == Format::Json {
-                rep.json()
-            } else {
-                rep.text()
+            let out = match format {
+                Format::Json => rep.json(),
+                Format::Csv => rep.csv(),
+                Format::Text => rep.text(),
             };
             return Ok((out, if rep.passed() { 0 } else { 1 }));
         }
@@ -491,12 +606,29 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             digits,
             stack,
             format,
+            timings,
         } => {
-            return match stack {
-                Some(spec) => cylroll::dae::stack_report(&spec, digits, format == Format::Json),
-                None => cylroll::dae::verify_report(digits),
+            if let Some(spec) = stack {
+                if format == Format::Csv {
+                    return Err(Error::invalid(
+                        "format",
+                        "csv",
+                        "verify --stack prints text or json",
+                    ));
+                }
+                return cylroll::dae::stack_report(&spec, digits, format == Format::Json)
+                    .map(|s| (s, 0));
             }
-            .map(|s| (s, 0))
+            let rep = cylroll::dae::verify_report(digits)?;
+            if timings {
+                eprint!("{}", rep.timings());
+            }
+            let out = match format {
+                Format::Text => rep.text(),
+                Format::Json => rep.json(),
+                Format::Csv => rep.csv(),
+            };
+            return Ok((out, 0));
         }
         Command::Separation { common, mu } => {
             let (model, fr) = common.model_friction()?;
@@ -691,22 +823,61 @@ pub fn main_with(args: Vec<String>) -> i32 {
     let cli = match Cli::try_parse_from(args) {
         Ok(c) => c,
         Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
-            let _ = e.print();
-            return code;
+            if !e.use_stderr() {
+                // --help, --version
+                let _ = e.print();
+                return 0;
+            }
+            eprintln!("error: {}", one_line(&e.render().to_string()));
+            return 2;
         }
     };
     match run(cli) {
         Ok((out, code)) => {
             let mut so = std::io::stdout().lock();
-            if so.write_all(out.as_bytes()).is_err() {
+            if let Err(e) = so.write_all(out.as_bytes()).and_then(|_| so.flush()) {
+                eprintln!("error: cannot write standard output: {e}");
                 return 4;
             }
             code
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            eprintln!("error: {}", one_line(&e.to_string()));
             e.exit_code()
         }
     }
+}
+
+/// A message on one line: clap's multi-line errors (tip, usage) joined, the
+/// usage block dropped, long given values shortened.
+fn one_line(msg: &str) -> String {
+    let mut parts: Vec<String> = Vec::new();
+    for line in msg.lines() {
+        let l = line.trim();
+        if l.starts_with("Usage:") || l.starts_with("For more information") {
+            break;
+        }
+        if !l.is_empty() {
+            parts.push(l.trim_start_matches("tip: ").to_string());
+        }
+    }
+    let mut s = String::new();
+    for p in &parts {
+        if !s.is_empty() {
+            s.push_str(if s.ends_with(':') { " " } else { "; " });
+        }
+        s.push_str(p);
+    }
+    if let Some(rest) = s.strip_prefix("error: ") {
+        s = rest.to_string();
+    }
+    // a value clap echoes is not shortened by the library: cut the line
+    const MAX: usize = 400;
+    if s.chars().count() > MAX {
+        s = s.chars().take(MAX).collect::<String>() + "...";
+    }
+    if msg.contains("For more information") {
+        s.push_str(" (see --help)");
+    }
+    s
 }

@@ -55,10 +55,12 @@ impl Error {
     }
 
     /// Shorthand for [`Error::InvalidParameter`].
+    ///
+    /// A long value is shortened for the message (its start, its length).
     pub fn invalid(name: &str, value: impl ToString, allowed: impl ToString) -> Self {
         Error::InvalidParameter {
             name: name.to_string(),
-            value: value.to_string(),
+            value: shorten(&value.to_string()),
             allowed: allowed.to_string(),
         }
     }
@@ -69,6 +71,20 @@ impl Error {
             what: what.to_string(),
         }
     }
+}
+
+/// Longest echo of a given value in a message, in characters.
+pub const ECHO_MAX: usize = 60;
+
+/// `text` cut to [`ECHO_MAX`] characters with its length noted, so that a
+/// message stays one readable line whatever was given.
+pub fn shorten(text: &str) -> String {
+    let n = text.chars().count();
+    if n <= ECHO_MAX {
+        return text.to_string();
+    }
+    let head: String = text.chars().take(ECHO_MAX - 20).collect();
+    format!("{head}... ({n} characters)")
 }
 
 /// Result alias used throughout the crate.

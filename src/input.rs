@@ -80,6 +80,11 @@ pub fn friction_for(vals: &Pairs, model: &Model) -> Result<crate::friction::Fric
     Ok(fr)
 }
 
+/// Keys of a golden case file besides the model's; a `--params` file may
+/// carry them (so that every golden case is also a parameter file) and they
+/// are ignored there.
+pub const CASE_KEYS: [&str; 2] = ["description", "steps"];
+
 /// Key → exact text.
 pub type Pairs = BTreeMap<String, String>;
 
@@ -106,23 +111,73 @@ pub fn pairs_from_toml(table: &toml::Table, source: &str, extra_keys: &[&str]) -
         let s = match v {
             toml::Value::String(s) => s.clone(),
             toml::Value::Integer(i) => i.to_string(),
-            other => return Err(Error::invalid(
-                k,
-                other,
-                "write non-integer values as strings (e.g. m1 = \"0.3\") so they are read exactly",
-            )),
+            toml::Value::Float(f) => {
+                return Err(Error::invalid(
+                    k,
+                    f,
+                    format!(
+                        "a TOML float is binary and would not be read exactly: \
+                         write it as a string ({k} = \"{f}\") or an integer"
+                    ),
+                ))
+            }
+            other => {
+                return Err(Error::invalid(
+                    k,
+                    other,
+                    format!(
+                        "expected an exact number as a string ({k} = \"0.3\") or an integer, \
+                         not a TOML {}",
+                        other.type_str()
+                    ),
+                ))
+            }
         };
         vals.insert(k.clone(), s);
     }
     Ok(vals)
 }
 
+/// Largest parameter or case file read, in bytes.
+pub const MAX_TOML_BYTES: u64 = 1 << 20;
+
+/// The text of the input file `path`, given as parameter `what`: at most
+/// `max_bytes` bytes (a larger file, or an endless one such as `/dev/zero`,
+/// is refused without reading further), UTF-8, a leading byte-order mark
+/// removed.
+///
+/// Errors: [`Error::InvalidParameter`] naming `what` when the file cannot be
+/// opened or read, is too large or is not UTF-8.
+pub fn read_input(path: &std::path::Path, what: &str, max_bytes: u64) -> Result<String> {
+    use std::io::Read;
+    let fail = |why: String| Error::invalid(what, path.display(), why);
+    let file = std::fs::File::open(path).map_err(|e| fail(format!("cannot be read: {e}")))?;
+    let mut bytes = Vec::new();
+    file.take(max_bytes + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| fail(format!("cannot be read: {e}")))?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(fail(format!(
+            "is larger than the {max_bytes} bytes allowed"
+        )));
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        fail(format!(
+            "is not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    Ok(strip_bom(&text).to_string())
+}
+
+/// `text` without a leading UTF-8 byte-order mark.
+pub fn strip_bom(text: &str) -> &str {
+    text.strip_prefix('\u{feff}').unwrap_or(text)
+}
+
 /// Parses TOML text read from `path` into a table.
 pub fn read_toml(path: &std::path::Path, what: &str) -> Result<toml::Table> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
-        path: path.display().to_string(),
-        what: e.to_string(),
-    })?;
+    let text = read_input(path, what, MAX_TOML_BYTES)?;
     text.parse().map_err(|e: toml::de::Error| {
         Error::invalid(
             what,

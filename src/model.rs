@@ -36,7 +36,8 @@ pub enum Contact {
 impl FromStr for Floor {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
-        match s {
+        // keywords, like numbers, ignore surrounding whitespace and case
+        match s.trim().to_ascii_lowercase().as_str() {
             "roll" => Ok(Floor::Roll),
             "slip" => Ok(Floor::Slip),
             "fixed" => Ok(Floor::Fixed),
@@ -48,7 +49,7 @@ impl FromStr for Floor {
 impl FromStr for Contact {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
-        match s {
+        match s.trim().to_ascii_lowercase().as_str() {
             "roll" => Ok(Contact::Roll),
             "slip" => Ok(Contact::Slip),
             _ => Err(Error::invalid("contact", s, "expected roll or slip")),

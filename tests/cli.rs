@@ -255,7 +255,7 @@ fn params_file_is_read_exactly_and_validated() {
     std::fs::write(&bad, "k2 = 0.4\n").unwrap();
     fails(
         &["separation", "--params", bad.to_str().unwrap()],
-        "strings",
+        "write it as a string",
     );
     std::fs::write(&bad, "mass = \"1\"\n").unwrap();
     fails(

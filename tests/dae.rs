@@ -97,7 +97,22 @@ fn routes_agree_for_every_case_at_30_digits() {
 /// The table of `cylroll verify`: one section per case, a summary line.
 #[test]
 fn verify_report_table() {
-    let text = verify_report(12).unwrap();
+    let rep = verify_report(12).unwrap();
+    let text = rep.text();
+    // deterministic: no wall-clock time in the report (only in timings())
+    assert!(!text.contains(" s (route 1"), "{text}");
+    assert!(rep.timings().contains("route 2"));
+    // every format it accepts: JSON parses, CSV has one row per quantity
+    let v: serde_json::Value = serde_json::from_str(&rep.json()).unwrap();
+    assert_eq!(v["command"], "verify");
+    let n_rows: usize = v["sections"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["rows"].as_array().unwrap().len())
+        .sum();
+    assert_eq!(rep.csv().lines().count(), n_rows + 1);
+    assert!(rep.csv().starts_with("kind,case,quantity,agree,value\n"));
     assert!(text.contains("## roll-roll:"), "{text}");
     assert!(text.contains("## bobbin:"), "{text}");
     assert!(text.contains("theta_s"), "{text}");

@@ -57,7 +57,7 @@ use system::{Row, StackModel, System};
 /// Runs both routes on the built-in case set and returns the agreement table.
 ///
 /// Errors: a route that cannot verify `digits` digits of some quantity.
-pub fn verify_report(digits: u32) -> Result<String> {
+pub fn verify_report(digits: u32) -> Result<verify::VerifyReport> {
     verify::report(digits)
 }
 

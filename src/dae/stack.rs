@@ -169,6 +169,20 @@ fn signature(s: &StackSolution) -> (Option<String>, Vec<usize>) {
     )
 }
 
+/// An event signature in words: which contact opens, which bodies turn.
+fn signature_text(sig: &(Option<String>, Vec<usize>)) -> String {
+    let open = match &sig.0 {
+        Some(w) => format!("contact {w} opens"),
+        None => "no contact opens".to_string(),
+    };
+    if sig.1.is_empty() {
+        format!("{open}, no turning point")
+    } else {
+        let t: Vec<String> = sig.1.iter().map(|j| format!("theta{}", j + 1)).collect();
+        format!("{open}, turning points of {}", t.join(", "))
+    }
+}
+
 fn describe(sm: &StackModel, tmax: &Option<Rational>) -> Vec<(String, String)> {
     let join = |v: &[Rational]| v.iter().map(rational_text).collect::<Vec<_>>().join(",");
     vec![
@@ -257,7 +271,11 @@ pub fn report(spec: &Spec, digits: u32, json: bool) -> Result<String> {
                 quantity: "event sequence".into(),
                 requested: digits,
                 reached: format!("differs at {p} bits from the {SCAN_PREC}-bit scan"),
-                detail: format!("{:?} vs {:?}", signature(&s), sig),
+                detail: format!(
+                    "{} at {p} bits, {} in the scan",
+                    signature_text(&signature(&s)),
+                    signature_text(&sig)
+                ),
             });
         }
         let ts = time_scale(sm, p);

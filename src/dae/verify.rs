@@ -311,8 +311,200 @@ pub fn compare_case(case: &VerifyCase, digits: u32) -> Result<CaseReport> {
     })
 }
 
-/// The text of `cylroll verify --digits N`.
-pub fn report(digits: u32) -> Result<String> {
+/// One compared quantity of [`VerifyReport`].
+#[derive(Debug, Clone)]
+pub struct VerifyRow {
+    /// Quantity (e.g. `theta_s`, `t1 N12`, `event2_t`).
+    pub quantity: String,
+    /// Agreeing leading digits (`None`: both print as 0).
+    pub agree: Option<u32>,
+    /// The value printed (route 1, or the digits on which the integrators agree).
+    pub value: String,
+}
+
+/// One case of [`VerifyReport`].
+#[derive(Debug, Clone)]
+pub struct VerifySection {
+    /// `routes` (route 1 against route 2) or `friction` (GBS against collocation).
+    pub kind: &'static str,
+    /// Case name.
+    pub name: String,
+    /// The model (and friction laws) in words.
+    pub description: String,
+    /// The compared quantities.
+    pub rows: Vec<VerifyRow>,
+    /// Route 2's run statistics (routes sections).
+    pub route2: Option<String>,
+    /// Seconds spent in route 1 and route 2 (not part of the deterministic output).
+    pub seconds: Option<(f64, f64)>,
+}
+
+/// What `cylroll verify` found: deterministic (timings apart, which only
+/// [`VerifyReport::timings`] gives).
+#[derive(Debug, Clone)]
+pub struct VerifyReport {
+    /// Significant digits requested from each route.
+    pub digits: u32,
+    /// The cases.
+    pub sections: Vec<VerifySection>,
+    /// One line per golden data file recomputed by route 2.
+    pub golden: Vec<String>,
+    /// The least agreement and where.
+    pub worst: Option<(u32, String)>,
+    /// Number of compared quantities.
+    pub count: usize,
+    /// Number of ideal-model cases.
+    pub cases: usize,
+}
+
+impl VerifyReport {
+    fn summary(&self) -> String {
+        match &self.worst {
+            Some((a, what)) => format!(
+                "{} quantities in {} cases; the routes agree to at least {a} digits (least: {what})",
+                self.count, self.cases
+            ),
+            None => "nothing compared".to_string(),
+        }
+    }
+
+    /// The wall-clock time of each ideal case, one line each (for standard error).
+    pub fn timings(&self) -> String {
+        let mut s = String::new();
+        for sec in &self.sections {
+            if let Some((a, b)) = sec.seconds {
+                s.push_str(&format!(
+                    "{}: route 1 {a:.2} s, route 2 {b:.2} s\n",
+                    sec.name
+                ));
+            }
+        }
+        s
+    }
+
+    /// The plain-text report.
+    pub fn text(&self) -> String {
+        let digits = self.digits;
+        let mut out = String::new();
+        out.push_str(
+            "# cylroll verify: route 1 (Routh reduction + energy quadrature) against route 2\n",
+        );
+        out.push_str("# (time integration of the Lagrange-multiplier equations, appendix A.5, by GBS extrapolation)\n");
+        out.push_str(&format!(
+            "# {digits} significant digits requested from each route (each verified at two precisions);\n\
+             # agree = leading significant digits on which the two routes' values agree, floor(-log10(|v2 - v1|/|v1|))\n\
+             # (both values carry guard digits beyond the {digits} verified, so agree may exceed {digits}; 0=0: both print as 0);\n\
+             # t1, t2, t3 are the sample times 0.25, 0.6, 0.9 t_s (rounded to 3 decimals)\n"
+        ));
+        let mut friction_header = false;
+        for sec in &self.sections {
+            if sec.kind == "friction" && !friction_header {
+                friction_header = true;
+                out.push_str(
+                    "\n# Friction: the modes integrated by GBS extrapolation against Gauss-Legendre collocation\n\
+                     # (an implicit Runge-Kutta method, independent of GBS), both at the higher working precision\n\
+                     # of the requested digits; the event sequences must be identical; agree as above\n",
+                );
+            }
+            out.push_str(&format!("\n## {}: {}\n", sec.name, sec.description));
+            let w = if sec.kind == "friction" {
+                16
+            } else {
+                sec.rows
+                    .iter()
+                    .map(|r| r.quantity.len())
+                    .max()
+                    .unwrap_or(8)
+                    .max(8)
+            };
+            if sec.kind == "routes" {
+                out.push_str(&format!(
+                    "{:w$}  agree  value (route 1)\n",
+                    "quantity",
+                    w = w
+                ));
+            }
+            for r in &sec.rows {
+                let ag = match r.agree {
+                    None => "0=0".to_string(),
+                    Some(a) => a.to_string(),
+                };
+                out.push_str(&format!(
+                    "{:w$}  {:>5}  {}\n",
+                    r.quantity,
+                    ag,
+                    r.value,
+                    w = w
+                ));
+            }
+            if let Some(l) = &sec.route2 {
+                out.push_str(&format!("route 2: {l}\n"));
+            }
+        }
+        if !self.golden.is_empty() {
+            out.push_str("\n## golden/data: every number recomputed by route 2 (at the file's digits + 40 bits)\n");
+            for l in &self.golden {
+                out.push_str(l);
+                out.push('\n');
+            }
+        }
+        out.push_str(&format!("\n# summary: {}\n", self.summary()));
+        out
+    }
+
+    /// The report as one JSON object (numbers as decimal strings).
+    pub fn json(&self) -> String {
+        let sections: Vec<serde_json::Value> = self
+            .sections
+            .iter()
+            .map(|s| {
+                serde_json::json!({
+                    "kind": s.kind,
+                    "case": s.name,
+                    "model": s.description,
+                    "rows": s.rows.iter().map(|r| serde_json::json!({
+                        "quantity": r.quantity,
+                        "agree": r.agree.map(|a| a.to_string()),
+                        "value": r.value,
+                    })).collect::<Vec<_>>(),
+                    "route2": s.route2,
+                })
+            })
+            .collect();
+        let v = serde_json::json!({
+            "command": "verify",
+            "digits_requested": self.digits.to_string(),
+            "sections": sections,
+            "golden": self.golden,
+            "least_agreement": self.worst.as_ref().map(|w| w.0.to_string()),
+            "least_agreement_at": self.worst.as_ref().map(|w| w.1.clone()),
+            "summary": self.summary(),
+        });
+        serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
+    }
+
+    /// One CSV row per compared quantity.
+    pub fn csv(&self) -> String {
+        let mut out = String::from("kind,case,quantity,agree,value\n");
+        for s in &self.sections {
+            for r in &s.rows {
+                out.push_str(&format!(
+                    "{},{},{},{},{}\n",
+                    s.kind,
+                    s.name,
+                    r.quantity,
+                    r.agree.map_or("0=0".to_string(), |a| a.to_string()),
+                    r.value
+                ));
+            }
+        }
+        out
+    }
+}
+
+/// `cylroll verify --digits N`: both routes on [`cases`], the friction
+/// integrators on their cases, and the golden data recomputed by route 2.
+pub fn report(digits: u32) -> Result<VerifyReport> {
     if digits == 0 || digits > crate::oracle::MAX_DIGITS {
         return Err(Error::invalid(
             "digits",
@@ -320,99 +512,79 @@ pub fn report(digits: u32) -> Result<String> {
             format!("must be between 1 and {}", crate::oracle::MAX_DIGITS),
         ));
     }
-    let mut out = String::new();
-    out.push_str(
-        "# cylroll verify: route 1 (Routh reduction + energy quadrature) against route 2\n",
-    );
-    out.push_str("# (time integration of the Lagrange-multiplier equations, appendix A.5, by GBS extrapolation)\n");
-    out.push_str(&format!(
-        "# {digits} significant digits requested from each route (each verified at two precisions);\n\
-         # agree = leading significant digits on which the two routes' values agree, floor(-log10(|v2 - v1|/|v1|))\n\
-         # (both values carry guard digits beyond the {digits} verified, so agree may exceed {digits}; 0=0: both print as 0);\n\
-         # t1, t2, t3 are the sample times 0.25, 0.6, 0.9 t_s (rounded to 3 decimals)\n"
-    ));
+    let mut sections = Vec::new();
     let mut worst: Option<(u32, String)> = None;
     let mut count = 0usize;
     let all = cases();
     for case in &all {
         let rep = compare_case(case, digits)?;
-        out.push_str(&format!("\n## {}: {}\n", case.name, case.model.describe()));
-        let w = rep
-            .rows
-            .iter()
-            .map(|r| r.quantity.len())
-            .max()
-            .unwrap_or(8)
-            .max(8);
-        out.push_str(&format!(
-            "{:w$}  agree  value (route 1)\n",
-            "quantity",
-            w = w
-        ));
+        let mut rows = Vec::new();
         for r in &rep.rows {
-            let ag = match r.agree {
-                None => "0=0".to_string(),
-                Some(a) => a.to_string(),
-            };
-            out.push_str(&format!(
-                "{:w$}  {:>5}  {}\n",
-                r.quantity,
-                ag,
-                r.route1.text,
-                w = w
-            ));
             count += 1;
             if let Some(a) = r.agree {
                 if worst.as_ref().is_none_or(|(b, _)| a < *b) {
                     worst = Some((a, format!("{} {}", case.name, r.quantity)));
                 }
             }
+            rows.push(VerifyRow {
+                quantity: r.quantity.clone(),
+                agree: r.agree,
+                value: r.route1.text.clone(),
+            });
         }
         let st = &rep.run.run.stats;
-        out.push_str(&format!(
-            "route 2: constraint drift {}, energy change {}, momentum change {}; {} steps ({} rejected), {} evaluations, column <= {}; {:.2} s (route 1 {:.2} s)\n",
-            short(&rep.run.run.max_drift),
-            short(&rep.run.energy_drift),
-            short(&rep.run.momentum_drift),
-            st.steps,
-            st.rejected,
-            st.evals,
-            st.max_column,
-            rep.seconds.1,
-            rep.seconds.0
-        ));
+        sections.push(VerifySection {
+            kind: "routes",
+            name: case.name.clone(),
+            description: case.model.describe(),
+            rows,
+            route2: Some(format!(
+                "constraint drift {}, energy change {}, momentum change {}; {} steps ({} rejected), {} evaluations, column <= {}",
+                short(&rep.run.run.max_drift),
+                short(&rep.run.energy_drift),
+                short(&rep.run.momentum_drift),
+                st.steps,
+                st.rejected,
+                st.evals,
+                st.max_column,
+            )),
+            seconds: Some(rep.seconds),
+        });
     }
-    out.push_str(
-        "\n# Friction: the modes integrated by GBS extrapolation against Gauss-Legendre collocation\n\
-         # (an implicit Runge-Kutta method, independent of GBS), both at the higher working precision\n\
-         # of the requested digits; the event sequences must be identical; agree as above\n",
-    );
     for (name, model, fr) in crate::friction::answer::verify_cases() {
         let rows = crate::friction::answer::cross_check(&model, &fr, digits)?;
-        out.push_str(&format!(
-            "\n## {name}: {}, mu_floor = {}, mu_contact = {}\n",
-            model.describe(),
-            fr.floor,
-            fr.contact
-        ));
+        let mut out = Vec::new();
         for r in &rows {
             let a = r.digits.floor().max(0.0) as u32;
-            out.push_str(&format!(
-                "{:16}  {:>5}  {}\n",
-                r.name,
-                a,
-                if r.gbs.clone().abs() < Float::with_val(64, 10u32).pow(-(digits as i32)) {
-                    "0".to_string()
-                } else {
-                    // only the digits on which the two integrators agree
-                    crate::numeric::decimal::to_sig(&r.gbs, digits.min(a.max(1)))
-                }
-            ));
+            let value = if r.gbs.clone().abs() < Float::with_val(64, 10u32).pow(-(digits as i32)) {
+                "0".to_string()
+            } else {
+                // only the digits on which the two integrators agree
+                crate::numeric::decimal::to_sig(&r.gbs, digits.min(a.max(1)))
+            };
             count += 1;
             if worst.as_ref().is_none_or(|(b, _)| a < *b) {
                 worst = Some((a, format!("{name} {}", r.name)));
             }
+            out.push(VerifyRow {
+                quantity: r.name.clone(),
+                agree: Some(a),
+                value,
+            });
         }
+        sections.push(VerifySection {
+            kind: "friction",
+            name: name.clone(),
+            description: format!(
+                "{}, mu_floor = {}, mu_contact = {}",
+                model.describe(),
+                fr.floor,
+                fr.contact
+            ),
+            rows: out,
+            route2: None,
+            seconds: None,
+        });
     }
     let golden = std::path::Path::new("golden/data");
     let mut golden_lines = Vec::new();
@@ -455,19 +627,12 @@ pub fn report(digits: u32) -> Result<String> {
             });
         }
     }
-    if !golden_lines.is_empty() {
-        out.push_str("\n## golden/data: every number recomputed by route 2 (at the file's digits + 40 bits)\n");
-        for l in &golden_lines {
-            out.push_str(l);
-            out.push('\n');
-        }
-    }
-    match worst {
-        Some((a, what)) => out.push_str(&format!(
-            "\n# summary: {count} quantities in {} cases; the routes agree to at least {a} digits (least: {what})\n",
-            all.len()
-        )),
-        None => out.push_str("\n# summary: nothing compared\n"),
-    }
-    Ok(out)
+    Ok(VerifyReport {
+        digits,
+        sections,
+        golden: golden_lines,
+        worst,
+        count,
+        cases: all.len(),
+    })
 }

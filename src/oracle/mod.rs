@@ -660,7 +660,10 @@ impl Oracle {
                 ),
             ];
             let ratio = |fr: &Float, n: &Float| Float::with_val(p, fr.abs_ref()) / n;
-            out.push(if floor == Floor::Roll {
+            // |F1|/N1 wherever F1 is a reaction: a rolling floor, and a held
+            // cylinder 1 (the coefficient a floor would need to hold it by
+            // friction); 0 on a frictionless floor, where F1 = 0
+            out.push(if floor != Floor::Slip {
                 Estimate::rounded(ratio(&f.f1, &f.n1), one.clone())
             } else {
                 Estimate::zero(p, one.clone())

@@ -45,7 +45,7 @@ pub struct Case {
 /// model keys of `--params`.
 pub fn load_case(path: &Path) -> Result<Case> {
     let table = read_toml(path, "case")?;
-    let pairs = pairs_from_toml(&table, "case", &["description", "steps"])?;
+    let pairs = pairs_from_toml(&table, "case", &crate::input::CASE_KEYS)?;
     let model = model_from_pairs(&pairs)?;
     let fr = crate::input::friction_for(&pairs, &model)?;
     crate::friction::check_laws(&model, &fr)?;
@@ -95,17 +95,51 @@ pub fn load_cases(golden_dir: &Path) -> Result<Vec<Case>> {
     paths.iter().map(|p| load_case(p)).collect()
 }
 
+/// The names (file stems) of the cases in `golden_dir/cases`, sorted.
+pub fn case_names(golden_dir: &Path) -> Result<Vec<String>> {
+    let dir = golden_dir.join("cases");
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .map_err(|e| Error::Io {
+            path: dir.display().to_string(),
+            what: e.to_string(),
+        })?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .filter_map(|p| p.file_stem().and_then(|s| s.to_str()).map(String::from))
+        .collect();
+    names.sort();
+    Ok(names)
+}
+
 /// A case by name from `golden_dir/cases/NAME.toml`.
 pub fn find_case(golden_dir: &Path, name: &str) -> Result<Case> {
-    let path = golden_dir.join("cases").join(format!("{name}.toml"));
-    if !path.exists() {
-        let known: Vec<String> = load_cases(golden_dir)
-            .map(|cs| cs.into_iter().map(|c| c.name).collect())
-            .unwrap_or_default();
+    let dir = golden_dir.join("cases");
+    let path = dir.join(format!("{name}.toml"));
+    if !dir.is_dir() {
         return Err(Error::invalid(
             "case",
             name,
-            format!("unknown case; known: {}", known.join(", ")),
+            format!(
+                "no case directory {} here (cases are looked for in <golden>/cases; \
+                 run from the repository or give --golden DIR)",
+                dir.display()
+            ),
+        ));
+    }
+    if !path.exists() {
+        let known: Vec<String> = case_names(golden_dir).unwrap_or_default();
+        return Err(Error::invalid(
+            "case",
+            name,
+            format!(
+                "unknown case in {}; known: {}",
+                dir.display(),
+                if known.is_empty() {
+                    "none".to_string()
+                } else {
+                    known.join(", ")
+                }
+            ),
         ));
     }
     load_case(&path)

@@ -1,0 +1,319 @@
+//! Regression tests of the second hardening round: the error contract (one
+//! line naming the parameter, what was given, what is allowed), bounded
+//! input, formats that are honoured, and the newcomer's paths.
+
+use assert_cmd::Command;
+
+fn cyl() -> Command {
+    let mut c = Command::cargo_bin("cylroll").unwrap();
+    c.current_dir(env!("CARGO_MANIFEST_DIR"));
+    c
+}
+
+/// Runs `args`, expects exit `code`, no standard output, and one line on
+/// standard error containing every needle.
+fn one_line_error(args: &[&str], code: i32, needles: &[&str]) {
+    let out = cyl().args(args).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(code), "{args:?}: {err}");
+    assert!(out.stdout.is_empty(), "{args:?}: partial output");
+    assert_eq!(err.lines().count(), 1, "{args:?}: not one line: {err}");
+    assert!(err.starts_with("error: "), "{args:?}: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: {err} lacks {n:?}");
+    }
+}
+
+#[test]
+fn command_line_errors_are_one_line_with_the_allowed_range() {
+    one_line_error(
+        &["separation", "--digits", "-5"],
+        2,
+        &["--digits", "-5", "between 1 and 2000"],
+    );
+    one_line_error(
+        &["separation", "--digits", "1e3"],
+        2,
+        &["--digits", "1e3", "between 1 and 2000"],
+    );
+    one_line_error(
+        &["check", "x.csv", "--case", "main_roll_roll", "--rtol", "-1"],
+        2,
+        &["--rtol", "-1", ">= 0"],
+    );
+    one_line_error(
+        &["trajectory", "--t-end", "1", "--steps", "-3"],
+        2,
+        &["--steps", "-3", "between 1 and 100000"],
+    );
+    one_line_error(
+        &["trajectory", "--t-end", "-1", "--steps", "3"],
+        2,
+        &["t-end", "-1", "> 0"],
+    );
+    one_line_error(&["separation", "--foo"], 2, &["--foo", "--help"]);
+    one_line_error(&["time"], 2, &["--to"]);
+    // a 5 KB value is echoed shortened
+    let long = "-1e-5000";
+    let out = cyl().args(["separation", "--k2", long]).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(err.len() < 300, "{} bytes: {err}", err.len());
+    assert!(err.contains("k2") && err.contains("characters"), "{err}");
+}
+
+#[test]
+fn input_files_are_bounded_and_named() {
+    one_line_error(
+        &["separation", "--params", "/dev/zero"],
+        2,
+        &["params", "/dev/zero", "bytes allowed"],
+    );
+    one_line_error(
+        &["separation", "--params", "/no/such/file.toml"],
+        2,
+        &["params", "/no/such/file.toml", "cannot be read"],
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("p.toml");
+    std::fs::write(&f, "m1 = true\n").unwrap();
+    one_line_error(
+        &["separation", "--params", f.to_str().unwrap()],
+        2,
+        &["m1", "not a TOML boolean", "string"],
+    );
+}
+
+#[test]
+fn a_byte_order_mark_and_spaces_around_keywords_are_accepted() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("p.toml");
+    std::fs::write(&f, "\u{feff}floor = \" fixed \"\nk2 = \"2/5\"\n").unwrap();
+    let out = cyl()
+        .args([
+            "separation",
+            "--params",
+            f.to_str().unwrap(),
+            "--digits",
+            "10",
+        ])
+        .args(["--contact", " roll"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // fixed lower cylinder: cos θs = 2/(3 + k2) = 10/17
+    assert!(text.contains("= 0.9419214013"), "{text}");
+    let csv = dir.path().join("c.csv");
+    std::fs::write(&csv, "\u{feff}t,theta\n0,0.05\n").unwrap();
+    let out = cyl()
+        .args(["check", csv.to_str().unwrap(), "--case", "main_roll_roll"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn every_golden_case_is_also_a_params_file() {
+    for name in ["main_roll_roll", "main_mu_0_3"] {
+        let path = format!("golden/cases/{name}.toml");
+        let out = cyl()
+            .args(["separation", "--params", &path, "--digits", "8"])
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+}
+
+#[test]
+fn a_failed_write_says_what_failed() {
+    let f = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cylroll"))
+        .args(["separation", "--digits", "5"])
+        .stdout(f)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(4));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("cannot write standard output"), "{err}");
+}
+
+#[test]
+fn check_outside_the_repository_says_where_cases_are_looked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .current_dir(dir.path())
+        .args(["check", "x.csv", "--case", "main_roll_roll"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("cases") && err.contains("--golden"), "{err}");
+}
+
+fn check_csv(csv: &str, extra: &[&str]) -> std::process::Output {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    std::fs::write(&path, csv).unwrap();
+    cyl()
+        .args(["check", path.to_str().unwrap(), "--case", "main_roll_roll"])
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn check_refuses_nothing_to_compare_and_names_the_deciding_bound() {
+    let out = check_csv("t\n0\n1\n", &[]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("nothing to compare"));
+    // the oracle's phi1 at t = 0 is exactly 0: a candidate 1e-9 there is
+    // judged by atol (1e-10) and fails; the relative error is undefined
+    let out = check_csv("t,phi1\n0,1e-9\n", &["--format", "json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["first_failure"]["bound"], "atol");
+    assert_eq!(v["columns"][0]["max_rel"], serde_json::Value::Null);
+    // and the CSV format is CSV
+    let out = check_csv("t,phi1\n0,0\n", &["--format", "csv"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let mut lines = text.lines();
+    assert!(lines.next().unwrap().starts_with("column,max_abs,"));
+    assert!(
+        lines.next().unwrap().starts_with("phi1,0.000e0,0,-,"),
+        "{text}"
+    );
+}
+
+#[test]
+fn check_enforces_its_row_limit() {
+    let mut csv = String::from("t,theta\n");
+    for _ in 0..11 {
+        csv.push_str("0,0.05\n");
+    }
+    let out = check_csv(&csv, &["--max-rows", "10"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("more than 10 data rows"));
+}
+
+#[test]
+fn check_streams_in_chunks_and_agrees_across_chunk_boundaries() {
+    // more rows than one chunk: every row is the oracle's own value at
+    // t = 0 (θ0 = 1/20 from rest), so every row must pass and be counted
+    let n = cylroll::record::check::CHUNK_ROWS + 3;
+    let mut csv = String::from("t,theta,theta_dot\n");
+    for _ in 0..n {
+        csv.push_str("0,0.05,0\n");
+    }
+    let out = check_csv(&csv, &["--format", "json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["rows"], n.to_string());
+    // a failure in the second chunk is found at its row
+    let mut csv = String::from("t,theta\n");
+    for i in 0..n {
+        csv.push_str(if i == n - 2 { "0,0.06\n" } else { "0,0.05\n" });
+    }
+    let out = check_csv(&csv, &["--format", "json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["first_failure"]["row"], (n - 1).to_string());
+}
+
+#[test]
+fn trajectory_json_gives_digits_and_bounds_per_column_and_marks_zeros() {
+    let out = cyl()
+        .args(["trajectory", "--times", "0,1e-30,1", "--theta0", "1/10"])
+        .args(["--digits", "10", "--format", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for c in v["columns"].as_array().unwrap() {
+        let c = c.as_str().unwrap();
+        assert_eq!(v["digits_verified"][c], "10", "{c}");
+        assert!(v["error_bounds"][c].is_string(), "{c}");
+    }
+    assert!(v["digits_verified"]["rows"].is_null());
+    // θ̇(1e-30) ≈ 3.5e-32 prints 0 at 10 digits: an absolute bound, stated
+    let z = &v["rows"][1]["zero_within"];
+    let b: f64 = z["theta_dot"].as_str().unwrap().parse().unwrap();
+    assert!(b > 3.5e-32 && b < 1e-10, "{b}");
+    assert!(z["phi1"].is_string());
+    // at t = 0 the zeros are exact (from rest): nothing to state
+    assert!(v["rows"][0]["zero_within"].is_null());
+}
+
+#[test]
+fn mu_floor_of_a_held_cylinder_is_its_force_ratio() {
+    let out = cyl()
+        .args([
+            "forces", "--floor", "fixed", "--theta", "1/2", "--digits", "12",
+        ])
+        .args(["--format", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let get = |k: &str| -> f64 { v[k].as_str().unwrap().parse().unwrap() };
+    assert!(get("F1") != 0.0);
+    let ratio = get("F1").abs() / get("N1");
+    assert!((get("mu_floor") - ratio).abs() < 1e-11 * ratio, "{v}");
+}
+
+#[test]
+fn separation_notes_are_stated_once_and_kept_in_csv() {
+    for args in [
+        vec!["separation", "--theta0", "1e-20"],
+        vec!["separation", "--theta0", "1e-20", "--floor", "slip"],
+        vec!["separation"],
+    ] {
+        let out = cyl().args(&args).output().unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        let notes: Vec<&str> = text.lines().filter(|l| l.starts_with("note:")).collect();
+        let mut uniq = notes.clone();
+        uniq.sort();
+        uniq.dedup();
+        assert_eq!(notes.len(), uniq.len(), "{args:?}: {text}");
+    }
+    let out = cyl()
+        .args(["separation", "--format", "csv", "--digits", "8"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("note,\"t_s is infinite"), "{text}");
+}
+
+#[test]
+fn verify_refuses_csv_for_a_stack() {
+    one_line_error(
+        &["verify", "--stack", "3", "--format", "csv"],
+        2,
+        &["format", "csv", "text or json"],
+    );
+}
