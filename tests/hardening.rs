@@ -317,3 +317,118 @@ fn verify_refuses_csv_for_a_stack() {
         &["format", "csv", "text or json"],
     );
 }
+
+mod file_sets {
+    use cylroll::record::fileset::{recover, temp_name, write_set, JOURNAL};
+    use std::path::PathBuf;
+
+    fn files(tag: &str) -> Vec<(PathBuf, Vec<u8>)> {
+        vec![
+            (PathBuf::from("a.json"), format!("{tag} a").into_bytes()),
+            (PathBuf::from("a.csv"), format!("{tag} csv").into_bytes()),
+            (
+                PathBuf::from("figures/f.svg"),
+                format!("{tag} svg").into_bytes(),
+            ),
+        ]
+    }
+
+    fn read(dir: &std::path::Path, rel: &str) -> String {
+        std::fs::read_to_string(dir.join(rel)).unwrap()
+    }
+
+    #[test]
+    fn a_set_is_written_whole() {
+        let dir = tempfile::tempdir().unwrap();
+        write_set(dir.path(), &files("old")).unwrap();
+        write_set(dir.path(), &files("new")).unwrap();
+        for rel in ["a.json", "a.csv", "figures/f.svg"] {
+            assert!(read(dir.path(), rel).starts_with("new"), "{rel}");
+        }
+        assert!(!dir.path().join(JOURNAL).exists());
+        // nothing hidden left behind
+        let hidden: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .filter_map(|e| e.ok())
+            .filter(|e| e.file_name().to_string_lossy().starts_with('.'))
+            .collect();
+        assert!(hidden.is_empty(), "{hidden:?}");
+    }
+
+    /// A kill after the journal was written, with one rename done: the
+    /// next run completes the new set.
+    #[test]
+    fn a_switch_killed_between_two_renames_is_completed() {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        write_set(d, &files("old")).unwrap();
+        let dead = 4_000_000_000u32; // above any pid_max: no such process
+        let mut journal = String::new();
+        for (rel, bytes) in files("new") {
+            let tmp = temp_name(&d.join(&rel), dead);
+            std::fs::write(&tmp, bytes).unwrap();
+            journal.push_str(&format!(
+                "{}\t{}\n",
+                tmp.strip_prefix(d).unwrap().display(),
+                rel.display()
+            ));
+        }
+        std::fs::write(d.join(JOURNAL), journal).unwrap();
+        // the first rename happened, then the kill
+        std::fs::rename(temp_name(&d.join("a.json"), dead), d.join("a.json")).unwrap();
+        assert!(read(d, "a.json").starts_with("new") && read(d, "a.csv").starts_with("old"));
+        recover(d).unwrap();
+        for rel in ["a.json", "a.csv", "figures/f.svg"] {
+            assert!(read(d, rel).starts_with("new"), "{rel}");
+        }
+        assert!(!d.join(JOURNAL).exists());
+    }
+
+    /// A kill before the journal: the old set stays, the stale
+    /// temporaries of the dead process are removed.
+    #[test]
+    fn a_switch_killed_before_its_journal_leaves_the_old_set() {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        write_set(d, &files("old")).unwrap();
+        let dead = 4_000_000_001u32;
+        for (rel, bytes) in files("new") {
+            std::fs::write(temp_name(&d.join(&rel), dead), bytes).unwrap();
+        }
+        // a temporary of a running process (this one) is left alone
+        let live = temp_name(&d.join("b.json"), std::process::id());
+        std::fs::write(&live, "writing").unwrap();
+        recover(d).unwrap();
+        for rel in ["a.json", "a.csv", "figures/f.svg"] {
+            assert!(read(d, rel).starts_with("old"), "{rel}");
+            assert!(!temp_name(&d.join(rel), dead).exists(), "{rel}");
+        }
+        assert!(live.exists());
+    }
+}
+
+#[test]
+fn golden_cleans_stale_temporaries() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(dir.path().join("cases")).unwrap();
+    std::fs::create_dir_all(dir.path().join("data")).unwrap();
+    std::fs::write(
+        dir.path().join("cases/a.toml"),
+        "theta0 = \"1/10\"\nsteps = 2\n",
+    )
+    .unwrap();
+    let stale = dir.path().join("data/.a.csv.tmp4000000002");
+    std::fs::write(&stale, "half").unwrap();
+    let out = cyl()
+        .args(["golden", "--dir", dir.path().to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(!stale.exists());
+    assert!(dir.path().join("data/a.csv").exists());
+}

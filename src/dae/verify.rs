@@ -589,6 +589,8 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
     let golden = std::path::Path::new("golden/data");
     let mut golden_lines = Vec::new();
     if golden.is_dir() {
+        // finish an interrupted update first: the set is whole or old, never mixed
+        crate::record::fileset::recover(golden)?;
         let mut files: Vec<_> = std::fs::read_dir(golden)
             .map_err(|e| Error::Io {
                 path: golden.display().to_string(),

@@ -6,6 +6,7 @@
 //! order, no timestamps or paths. Files are written atomically.
 
 pub mod check;
+pub mod fileset;
 
 use crate::error::{Error, Result};
 use crate::exact::{rational_text, Exact};
@@ -363,29 +364,7 @@ fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
     Ok(Rendered { json, csv })
 }
 
-/// Writes `bytes` to `path` atomically: a temporary file in the same
-/// directory, then a rename, so readers see the old or the new file, never a
-/// partial one.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    use std::io::Write;
-    let io = |e: std::io::Error| Error::Write {
-        path: path.display().to_string(),
-        what: e.to_string(),
-    };
-    let dir = path.parent().unwrap_or_else(|| Path::new("."));
-    std::fs::create_dir_all(dir).map_err(io)?;
-    let file_name = path.file_name().and_then(|n| n.to_str()).unwrap_or("out");
-    let tmp = dir.join(format!(".{file_name}.tmp{}", std::process::id()));
-    {
-        let mut f = std::fs::File::create(&tmp).map_err(io)?;
-        f.write_all(bytes).map_err(io)?;
-        f.sync_all().map_err(io)?;
-    }
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io(e)
-    })
-}
+pub use fileset::write_atomic;
 
 /// Renders every case of `golden_dir/cases` into `golden_dir/data`. All cases
 /// are computed before anything is written, so a failure writes nothing.
@@ -397,10 +376,13 @@ pub fn write_all(golden_dir: &Path) -> Result<String> {
     }
     let data = golden_dir.join("data");
     let mut summary = String::new();
-    for (name, r) in &out {
-        write_atomic(&data.join(format!("{name}.json")), r.json.as_bytes())?;
-        write_atomic(&data.join(format!("{name}.csv")), r.csv.as_bytes())?;
+    let mut files = Vec::new();
+    for (name, r) in out {
         summary.push_str(&format!("{name}: data/{name}.json, data/{name}.csv\n"));
+        files.push((PathBuf::from(format!("{name}.json")), r.json.into_bytes()));
+        files.push((PathBuf::from(format!("{name}.csv")), r.csv.into_bytes()));
     }
+    // the data change as one set (see fileset): never a new json beside an old csv
+    fileset::write_set(&data, &files)?;
     Ok(summary)
 }

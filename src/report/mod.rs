@@ -29,7 +29,7 @@ pub mod page;
 pub mod plot;
 pub mod tables;
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
 use std::path::Path;
@@ -134,15 +134,6 @@ pub fn run(reports_dir: &Path, progress: bool) -> Result<String> {
     cfg.progress = progress;
     run_with(reports_dir, &cfg)
 }
-
-fn io_err(path: &Path, e: std::io::Error) -> Error {
-    Error::Write {
-        path: path.display().to_string(),
-        what: e.to_string(),
-    }
-}
-
-use crate::record::write_atomic;
 
 /// A progress bar that draws nothing until [`show_progress`] is called (so
 /// that it never shows an empty 0/0 bar), and never unless asked for and
@@ -282,15 +273,20 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     let md = page::markdown(TITLE, &intro, &blocks);
     let html = page::html(TITLE, &intro, &blocks);
 
-    let figdir = dir.join("figures");
-    std::fs::create_dir_all(&figdir).map_err(|e| io_err(&figdir, e))?;
-    for (name, svg) in &svgs {
-        write_atomic(&figdir.join(name), svg.as_bytes())?;
+    // the page, its tables and its figures change as one set
+    let mut files: Vec<(std::path::PathBuf, Vec<u8>)> = svgs
+        .iter()
+        .map(|(name, svg)| (Path::new("figures").join(name), svg.as_bytes().to_vec()))
+        .collect();
+    for (name, text) in [
+        ("separation.csv", &tabs.separation_csv),
+        ("plane.csv", &tabs.plane_csv),
+        ("README.md", &md),
+        ("index.html", &html),
+    ] {
+        files.push((name.into(), text.as_bytes().to_vec()));
     }
-    write_atomic(&dir.join("separation.csv"), tabs.separation_csv.as_bytes())?;
-    write_atomic(&dir.join("plane.csv"), tabs.plane_csv.as_bytes())?;
-    write_atomic(&dir.join("README.md"), md.as_bytes())?;
-    write_atomic(&dir.join("index.html"), html.as_bytes())?;
+    crate::record::fileset::write_set(dir, &files)?;
     pb.finish_and_clear();
 
     let mut out = format!(
