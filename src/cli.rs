@@ -317,7 +317,9 @@ impl Answer {
         out.push_str(&format!("# {} significant digits requested; each value below is verified to the digits printed\n", self.digits));
         let w = self.values.iter().map(|v| v.name.len()).max().unwrap_or(0);
         for v in &self.values {
-            let note = if v.digits == 0 {
+            let note = if v.text.starts_with(">=") {
+                "[a lower bound: the normal force is 0 to within its error bound]".to_string()
+            } else if v.digits == 0 {
                 format!("[indistinguishable from 0: |x| <= {}]", v.err_text())
             } else {
                 format!("[{} digits; |err| <= {}]", v.digits, v.err_text())
@@ -727,12 +729,24 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             let mut o = Oracle::new(&model, common.digits)?;
             let values = o.forces_at(&th)?;
             debug_assert_eq!(values.len(), FORCE_KEYS.len());
+            let notes = values
+                .iter()
+                .filter(|v| v.text.starts_with(">="))
+                .map(|v| {
+                    format!(
+                        "{} has no finite verified value here: the normal force is 0 to within its \
+                         error bound (theta is theta_s to the accuracy of the computation), so only \
+                         the lower bound |F|/bound(N) is given",
+                        v.name
+                    )
+                })
+                .collect();
             let a = Answer {
                 command: "forces",
                 model,
                 digits: common.digits,
                 values,
-                notes: vec![],
+                notes,
                 table: None,
                 friction: None,
             };

@@ -752,7 +752,9 @@ fn a_landing_before_separation_ends_the_model_with_an_explanation() {
     .concat());
     assert_eq!(code, 0, "{err}");
     assert_eq!(
-        out.lines().filter(|l| !l.starts_with('#')).count(),
+        out.lines()
+            .filter(|l| !l.starts_with('#') && !l.starts_with("note:"))
+            .count(),
         3,
         "{out}"
     );

@@ -432,3 +432,123 @@ fn golden_cleans_stale_temporaries() {
     assert!(!stale.exists());
     assert!(dir.path().join("data/a.csv").exists());
 }
+
+mod near_separation_and_the_top {
+    use cylroll::exact::Exact;
+    use cylroll::model::Model;
+    use cylroll::oracle::Oracle;
+    use rug::Float;
+
+    /// π/3 to 70 digits (θs of identical solid cylinders from rest at the top).
+    const PI_3: &str = "1.0471975511965977461542144610931676280657231331250352736583148641026";
+
+    fn oracle(theta0: &str, digits: u32) -> Oracle {
+        let m = Model::paper_default(Exact::parse("theta0", theta0, false).unwrap());
+        Oracle::new(&m, digits).unwrap()
+    }
+
+    fn force<'a>(
+        v: &'a [cylroll::numeric::verify::Verified],
+        k: &str,
+    ) -> &'a cylroll::numeric::verify::Verified {
+        v.iter().find(|x| x.name == k).unwrap()
+    }
+
+    /// A point before θs is inside the motion whatever the digits asked; θs
+    /// itself is answered (N12 = 0 to within an absolute bound, the friction
+    /// the contact needs only bounded below); a point after it is refused.
+    #[test]
+    fn angles_at_and_near_separation_are_decided_whatever_the_digits() {
+        // π/3 ∓ 1e-40 (the 70-digit text of π/3 is within 1e-69 of it)
+        let pi3 = Exact::parse("theta", PI_3, false).unwrap();
+        let eps = Exact::parse("e", "1e-40", false).unwrap();
+        let before = Exact::rational(rug::Rational::from(&pi3.coef - &eps.coef));
+        let after = Exact::rational(rug::Rational::from(&pi3.coef + &eps.coef));
+        let exact = Exact::parse("theta", "pi/3", true).unwrap();
+        for digits in [10, 20, 30, 50] {
+            let mut o = oracle("0", digits);
+            for (th, at) in [(&before, false), (&exact, true)] {
+                let v = o.forces_at(th).unwrap_or_else(|e| panic!("{digits}: {e}"));
+                let n12 = force(&v, "N12");
+                let mu = force(&v, "mu_contact");
+                if at || digits <= 38 {
+                    // 0 to within an absolute bound far below the scale m g
+                    assert_eq!(n12.text, "0", "{digits}");
+                    assert!(n12.err_bound > 0 && n12.err_bound < Float::with_val(64, 1e-9));
+                    assert!(mu.text.starts_with(">="), "{digits}: {}", mu.text);
+                } else {
+                    // N12 ≈ N12'(θs)·1e-40 > 0, with the digits its bound keeps
+                    // (it is ~1e-40 of its scale: 40 digits cancel)
+                    assert!(n12.digits >= 1 && n12.value > 0, "{digits}: {}", n12.text);
+                    let want = Float::with_val(64, 1.395263150541e-40);
+                    let rel = (Float::with_val(64, &n12.value - &want) / &want).abs();
+                    assert!(rel < 1e-11, "{}", n12.text);
+                    assert!(mu.digits >= 1 && mu.digits <= n12.digits, "{}", mu.text);
+                }
+                // F21 at θs = −1/(3√3) (the main case's closed form)
+                let f21 = force(&v, "F21").value.to_f64();
+                assert!((f21 + 1.0 / (3.0 * 3f64.sqrt())).abs() < 1e-15, "{f21}");
+            }
+            let e = o.forces_at(&after).unwrap_err().to_string();
+            assert!(e.contains("after separation"), "{digits}: {e}");
+        }
+    }
+
+    /// Just before θs, the time from θ0 = 1/10 is answered at every digits.
+    #[test]
+    fn times_just_before_separation_are_answered() {
+        let mut hi = oracle("1/10", 60);
+        let ts = hi.separation_angle().unwrap();
+        let th_s = Exact::parse("theta", &ts.text, false).unwrap();
+        let eps = Exact::parse("e", "1e-40", false).unwrap();
+        let before = Exact::rational(rug::Rational::from(&th_s.coef - &eps.coef));
+        let mut last: Option<f64> = None;
+        for digits in [10, 20, 30, 50] {
+            let mut o = oracle("1/10", digits);
+            let t = o
+                .time_at(&before)
+                .unwrap_or_else(|e| panic!("{digits}: {e}"));
+            let tv = t.value.to_f64();
+            if let Some(l) = last {
+                assert!((tv - l).abs() < 1e-9 * l);
+            }
+            last = Some(tv);
+        }
+    }
+
+    fn t_s(theta0: &str, digits: u32) -> Float {
+        oracle(theta0, digits)
+            .separation()
+            .unwrap()
+            .t_s
+            .unwrap()
+            .value
+    }
+
+    /// Near the top θ̈ = λ²θ with λ² = (g/r)/K(1) = (1/2)/(17/12) = 6/17 for
+    /// identical solid cylinders (the paper's eq. 23 at c = 1), so
+    /// t_s(θ0) = ln(C/θ0)/λ + O(θ0²): a factor 10^k in θ0 adds
+    /// k ln 10 √(17/6) to t_s, exactly up to O(θ0²).
+    #[test]
+    fn separation_time_from_very_near_the_top_grows_as_ln_theta0() {
+        let p = 256;
+        let per_decade = Float::with_val(p, 17) / 6u32;
+        let per_decade = per_decade.sqrt() * Float::with_val(p, 10).ln();
+        let start = std::time::Instant::now();
+        let a = t_s("1e-100", 30);
+        let b = t_s("1e-200", 30);
+        let d = Float::with_val(p, &b - &a);
+        let want = Float::with_val(p, &per_decade * 100u32);
+        let rel = (Float::with_val(p, &d - &want).abs() / &want).to_f64();
+        assert!(rel < 1e-27, "{d} vs {want}");
+        // the slow quadrature took 20 s here and failed; the split is fast
+        assert!(start.elapsed().as_secs() < 10);
+        // across the switch between the two quadratures (θ0 = 1e-12 is
+        // integrated whole, 1e-13 split): O(θ0²) = 1e-24 apart
+        let a = t_s("1e-12", 30);
+        let b = t_s("1e-13", 30);
+        let d = Float::with_val(p, &b - &a);
+        let rel = (Float::with_val(p, &d - &per_decade).abs() / &per_decade).to_f64();
+        assert!(rel < 1e-20, "{d} vs {per_decade}");
+    }
+}

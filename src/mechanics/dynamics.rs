@@ -449,6 +449,11 @@ impl HalfAngleTime {
         }
     }
 
+    /// Whether the start is from rest (θ̇0 = 0).
+    pub fn from_rest(&self) -> bool {
+        self.h0_zero
+    }
+
     /// σ = sin(θ/2) − sin(θ0/2) = 2 cos(θ0/2 + δ/4) sin(δ/4) for θ = θ0 + δ
     /// (no cancellation for small δ).
     pub fn sigma_of(&self, delta: &Float) -> Float {
@@ -472,6 +477,103 @@ impl HalfAngleTime {
             *b += &self.h0r;
         }
         sqrt_k_over(&self.q, self.q1_zero, self.q2_zero, [s, a, b], out);
+    }
+}
+
+/// The half-angle time integral from rest near the top, split so that the
+/// logarithm in ln θ0 is exact.
+///
+/// From rest (θ̇0 = 0) the half-angle integrand is F(s)/√(σ(σ + 2s0)) with
+/// F(s) = √(K(c)/(1 − s²)), s = s0 + σ: for θ0 → 0 its near-singularity at
+/// σ = −2s0 comes within 2s0 of the interval and t grows like ln(1/θ0),
+/// which no quadrature of the whole integrand resolves (θ0 = 1e-200). With
+/// u = s², F² = Kc(u)/(1 − u) is rational in u and
+/// F(s) − F(s0) = (u − u0)·M(u)/((1 − u)(1 − u0)(F(s) + F(s0))),
+/// M(u) = (1 − u0)(a1 + a2(u + u0)) + Kc(u0), Kc(u) = a0 + a1 u + a2 u²,
+/// and u − u0 = σ(σ + 2s0). So
+///
+/// ∫_0^Δσ F/√(σ(σ+2s0)) dσ = 2 F(s0) asinh(√(Δσ/(2s0)))
+///     + ∫_0^Δσ √(σ(σ+2s0)) M(u)/((1 − u)(1 − u0)(F(s) + F(s0))) dσ,
+///
+/// the first term in closed form, the second bounded and smooth on the
+/// scale of the interval (its non-smooth part near σ ~ s0 weighs ~ s0²).
+#[derive(Debug, Clone)]
+pub struct TinyStart {
+    s0: Float,
+    u0: Float,
+    /// Kc coefficients a0, a1, a2.
+    a: [Float; 3],
+    /// F(s0).
+    pub f0: Float,
+    /// (1 − u0)·... constant parts of M: M(u) = m0 + m1 u.
+    m: [Float; 2],
+    w: [Float; 3],
+}
+
+impl TinyStart {
+    /// The split of `half`'s integral (from rest).
+    pub fn new(half: &HalfAngleTime) -> Self {
+        let p = half.s0.prec();
+        let q = &half.q;
+        let a0 = Float::with_val(p, &q[0] + &q[1]) + &q[2];
+        let a1 = -(Float::with_val(p, &q[1] * 2u32) + Float::with_val(p, &q[2] * 4u32));
+        let a2 = Float::with_val(p, &q[2] * 4u32);
+        let s0 = half.s0.clone();
+        let u0 = Float::with_val(p, s0.square_ref());
+        let kc0 = Float::with_val(p, &a2 * &u0) + &a1;
+        let kc0 = Float::with_val(p, kc0 * &u0) + &a0;
+        let one_m_u0 = Float::with_val(p, 1u32 - &u0);
+        let f0 = Float::with_val(p, &kc0 / &one_m_u0).sqrt();
+        // M(u) = (1 − u0)(a1 + a2 u0) + Kc(u0) + (1 − u0) a2 · u
+        let m1 = Float::with_val(p, &one_m_u0 * &a2);
+        let m0 = Float::with_val(p, &a2 * &u0) + &a1;
+        let m0 = Float::with_val(p, m0 * &one_m_u0) + &kc0;
+        TinyStart {
+            s0,
+            u0,
+            a: [a0, a1, a2],
+            f0,
+            m: [m0, m1],
+            w: std::array::from_fn(|_| Float::new(p)),
+        }
+    }
+
+    /// 2 F(s0) asinh(√(Δσ/(2 s0))): the closed-form part.
+    pub fn log_part(&self, dsig: &Float) -> Float {
+        let p = self.s0.prec();
+        let x = Float::with_val(p, dsig / &self.s0) / 2u32;
+        let v = x.sqrt().asinh();
+        Float::with_val(p, &self.f0 * v) * 2u32
+    }
+
+    /// The regular integrand at σ.
+    pub fn eval(&mut self, sigma: &Float, out: &mut Float) {
+        let [s, u, t] = &mut self.w;
+        s.assign(&self.s0 + sigma);
+        u.assign(s.square_ref());
+        // F(s) = √(Kc(u)/(1 − u))
+        t.assign(&self.a[2] * &*u);
+        *t += &self.a[1];
+        *t *= &*u;
+        *t += &self.a[0];
+        s.assign(1u32 - &*u);
+        *t /= &*s;
+        t.sqrt_mut();
+        *t += &self.f0;
+        // (1 − u)(1 − u0)(F + F0)
+        *t *= &*s;
+        s.assign(1u32 - &self.u0);
+        *t *= &*s;
+        // M(u)
+        out.assign(&self.m[1] * &*u);
+        *out += &self.m[0];
+        *out /= &*t;
+        // √(σ(σ + 2 s0))
+        s.assign(&self.s0 * 2u32);
+        *s += sigma;
+        *s *= sigma;
+        s.sqrt_mut();
+        *out *= &*s;
     }
 }
 

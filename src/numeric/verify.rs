@@ -267,6 +267,64 @@ fn judge(
     }
 }
 
+/// A verified number from a value and an absolute error bound that are
+/// already established (e.g. a ratio of two verified numbers, with the
+/// relative bounds added): the most significant digits, up to `digits`, that
+/// every number within the bound shares.
+///
+/// Errors: [`Error::NotConverged`] when not even one digit is shared.
+pub fn verified_from(name: &str, value: Float, err: Float, digits: u32) -> Result<Verified> {
+    let p = value.prec();
+    let est = Estimate::new(value, err, Float::with_val(p, 1u32));
+    (1..=digits)
+        .rev()
+        .find_map(|d| judge(name, d, (p, p), &est, &est).ok())
+        .ok_or_else(|| Error::NotConverged {
+            quantity: name.to_string(),
+            requested: digits,
+            reached: "0 digits verified".into(),
+            detail: format!(
+                "value ≈ {}, error bound {}",
+                to_sig(&est.value, 12),
+                short(&est.err)
+            ),
+        })
+}
+
+/// A tiny value (|v| far below its natural scale, e.g. N12 just before θs)
+/// whose absolute error is within scale·10^−digits but whose relative digits
+/// fall short after the last rung: it is answered with the significant
+/// digits its bound does verify (fewer than asked, and said so by
+/// [`Verified::digits`]) instead of failing the whole answer. Only at the
+/// last rung (`last`), so that a value that more precision would verify in
+/// full is never cut short.
+fn absolute_fallback(
+    last: bool,
+    name: &str,
+    digits: u32,
+    precs: (u32, u32),
+    a: &Estimate,
+    b: &Estimate,
+) -> Option<Verified> {
+    if !last || !b.value.is_finite() || b.value.is_zero() {
+        return None;
+    }
+    let p = b.value.prec();
+    let mut bound = Float::with_val(p, &a.value - &b.value);
+    bound.abs_mut();
+    bound += &b.err;
+    let tiny = Float::with_val(
+        p,
+        &b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
+    );
+    if !bound.is_finite() || bound > tiny {
+        return None;
+    }
+    (1..digits)
+        .rev()
+        .find_map(|d| judge(name, d, precs, a, b).ok())
+}
+
 /// Runs `f` at two precisions (climbing the ladder if needed) and verifies
 /// each of its outputs, named by `names`, to `digits` significant digits.
 ///
@@ -344,7 +402,10 @@ where
             let mut row_failed = None;
             for (i, name) in names.iter().enumerate() {
                 let (ea, eb) = (&a[r * w + i], &b[r * w + i]);
-                match judge(name, digits, precs, ea, eb) {
+                let last = attempt + 1 == MAX_ATTEMPTS;
+                match judge(name, digits, precs, ea, eb)
+                    .or_else(|r| absolute_fallback(last, name, digits, precs, ea, eb).ok_or(r))
+                {
                     Ok(v) => out.push(v),
                     Err(reached) => {
                         let diff = Float::with_val(precs.1, &ea.value - &eb.value).abs();

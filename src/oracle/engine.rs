@@ -2,7 +2,7 @@
 //! rule with its node cache.
 
 use crate::error::Result;
-use crate::mechanics::dynamics::{Dyn, HalfAngleTime, Scratch};
+use crate::mechanics::dynamics::{Dyn, HalfAngleTime, Scratch, TinyStart};
 use crate::mechanics::{Reduced, PHI1};
 use crate::model::Model;
 use crate::numeric::gauss::{self, GaussLegendre, HalfPiRule};
@@ -24,6 +24,9 @@ pub(super) struct Engine {
     half_limit: Float,
     /// Gauss–Legendre rules on [0, π/2] built so far, by number of points.
     gl: HashMap<usize, HalfPiRule>,
+    /// The split integral of a start from rest very near the top (built on
+    /// first use).
+    tiny: Option<TinyStart>,
     /// Multiplications spent on tanh-sinh integrals that a Gauss–Legendre
     /// rule could have done (decides when building a rule pays off).
     ts_work: f64,
@@ -56,6 +59,7 @@ impl Engine {
             half,
             half_limit,
             gl: HashMap::new(),
+            tiny: None,
             ts_work: 0.0,
         })
     }
@@ -69,6 +73,9 @@ impl Engine {
         let p = self.prec();
         if delta.is_zero() {
             return (Float::new(p), Float::new(p));
+        }
+        if let Some(r) = self.time_tiny(delta) {
+            return r;
         }
         let d = Float::with_val(p, delta);
         let dynm = &self.dynm;
@@ -99,6 +106,9 @@ impl Engine {
         if *delta > self.half_limit {
             let (v, e) = self.time(delta);
             return (v, e, Rule::TanhSinhTheta);
+        }
+        if let Some((v, e)) = self.time_tiny(delta) {
+            return (v, e, Rule::TanhSinh);
         }
         let sigma = self.half.sigma_of(delta);
         if high {
@@ -134,6 +144,35 @@ impl Engine {
         let ulps = Float::with_val(p, v.abs_ref()) >> (p as i32 - 4);
         e += ulps;
         (v, e, Rule::TanhSinh)
+    }
+
+    /// t(δ) for a start from rest within 2^−40 (relative to σ) of the top, by
+    /// [`TinyStart`]: the ln θ0 part in closed form, the rest by tanh-sinh;
+    /// `None` where it does not apply (θ̇0 ≠ 0, θ0 not tiny, θ > 2π/3).
+    fn time_tiny(&mut self, delta: &Float) -> Option<(Float, Float)> {
+        if !self.half.from_rest() || *delta > self.half_limit {
+            return None;
+        }
+        let p = self.prec();
+        let sigma = self.half.sigma_of(delta);
+        if Float::with_val(p, &self.half.s0 << 41u32) >= sigma {
+            return None;
+        }
+        let tiny = self.tiny.get_or_insert_with(|| TinyStart::new(&self.half));
+        let log_part = tiny.log_part(&sigma);
+        let r =
+            self.ts_half
+                .integrate_with(&sigma, p.saturating_sub(10), Stop::Geometric, |x, out| {
+                    tiny.eval(x, out)
+                });
+        let (reg, mut e) = Self::quad_answer(p, r);
+        let mut v = Float::with_val(p, &log_part + &reg);
+        v *= &self.half.factor;
+        e *= &self.half.factor;
+        // the roundings of σ, asinh, the factor and the sum
+        let ulps = Float::with_val(p, v.abs_ref()) >> (p as i32 - 6);
+        e += ulps;
+        Some((v, e))
     }
 
     /// Gauss–Legendre with `n` points on the half-angle form in u.

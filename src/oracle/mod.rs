@@ -598,14 +598,34 @@ impl Oracle {
                 format!("{range} (it is before the start)"),
             ));
         }
-        if d > ds {
-            return Err(Error::invalid(
-                param,
-                theta,
-                format!("{range} (it is after separation)"),
-            ));
+        // Before or after separation, decided whatever the digits asked: θ is
+        // compared with the bracket [δs − ε, δs + ε] of the root of N12 (and
+        // the rounding of θ − θ0), at doubling precision until the bracket
+        // lies on one side. A θ that stays inside the bracket up to 8p bits
+        // (at least 1024) is θs itself to that accuracy, where the forces
+        // are defined (N12 = 0): it is answered, not refused.
+        let cap = (8 * p).clamp(1024, 1 << 15);
+        let mut q = p;
+        loop {
+            let (ds, err) = self.delta_s(q)?;
+            let dq = Float::with_val(q, w.to_float(q) - th0.to_float(q));
+            let ulp = Float::with_val(q, dq.abs_ref()) >> (q as i32 - 4);
+            let margin = Float::with_val(q, &err + &ulp);
+            if Float::with_val(q, &dq + &margin) < ds {
+                return Ok(d);
+            }
+            if Float::with_val(q, &dq - &margin) > ds {
+                return Err(Error::invalid(
+                    param,
+                    theta,
+                    format!("{range} (it is after separation)"),
+                ));
+            }
+            if q >= cap {
+                return Ok(d);
+            }
+            q = (2 * q).min(cap);
         }
-        Ok(d)
     }
 
     /// t(θ): the time from the start to the angle θ (energy quadrature).
@@ -637,7 +657,7 @@ impl Oracle {
     pub fn forces_at(&mut self, theta: &Exact) -> Result<Vec<Verified>> {
         let floor = self.work.floor();
         let contact = self.work.contact();
-        ladder(self.digits, &FORCE_KEYS, |p| {
+        let mut out = ladder(self.digits, &FORCE_KEYS[..6], |p| {
             let d = self.delta_of("theta", theta, p)?;
             let sf = self.scale_force(p);
             let ts = self.scale_time(p);
@@ -645,7 +665,7 @@ impl Oracle {
             let st = e.dynm.state(&d);
             let f = e.dynm.forces(&st);
             let one = Float::with_val(p, 1u32);
-            let mut out = vec![
+            Ok(vec![
                 self.force_est(f.f1.clone(), &sf, floor == Floor::Slip, true),
                 Estimate::rounded(f.n1.clone(), sf.clone()),
                 self.force_est(f.f21.clone(), &sf, contact == Contact::Slip, true),
@@ -658,23 +678,66 @@ impl Oracle {
                     self.odd(st.thetaddot.clone()),
                     Float::with_val(p, one.clone() / &ts) / &ts,
                 ),
-            ];
-            let ratio = |fr: &Float, n: &Float| Float::with_val(p, fr.abs_ref()) / n;
-            // |F1|/N1 wherever F1 is a reaction: a rolling floor, and a held
-            // cylinder 1 (the coefficient a floor would need to hold it by
-            // friction); 0 on a frictionless floor, where F1 = 0
-            out.push(if floor != Floor::Slip {
-                Estimate::rounded(ratio(&f.f1, &f.n1), one.clone())
+            ])
+        })?;
+        // The friction each contact needs, |F|/N, wherever F is a reaction
+        // (a rolling floor, a held cylinder 1: the coefficient a floor would
+        // need to hold it by friction; a rolling contact); 0 where the contact
+        // is frictionless (F = 0). Where N is 0 to within its bound (at θs,
+        // N12 = 0) the ratio has no finite verified value: it is given as the
+        // lower bound |F|/bound(N), marked ">=".
+        for (key, fi, ni, applies) in [
+            ("mu_floor", 0usize, 1usize, floor != Floor::Slip),
+            ("mu_contact", 2, 3, contact == Contact::Roll),
+        ] {
+            let (fv, nv) = (&out[fi], &out[ni]);
+            let v = if !applies {
+                ladder(self.digits, &[key], |p| {
+                    Ok(vec![Estimate::zero(p, Float::with_val(p, 1u32))])
+                })?
+                .remove(0)
+            } else if nv.digits == 0 && fv.digits > 0 {
+                let p = fv.value.prec();
+                let lower = Float::with_val(p, fv.value.abs_ref()) / &nv.err_bound;
+                Verified {
+                    name: key.to_string(),
+                    text: format!(">={}", crate::numeric::decimal::short(&lower)),
+                    value: lower,
+                    digits: 0,
+                    err_bound: Float::with_val(p, f64::INFINITY),
+                    precs: fv.precs,
+                }
             } else {
-                Estimate::zero(p, one.clone())
-            });
-            out.push(if contact == Contact::Roll {
-                Estimate::rounded(ratio(&f.f21, &f.n12), one.clone())
-            } else {
-                Estimate::zero(p, one.clone())
-            });
-            Ok(out)
-        })
+                // |F|/N from the verified F and N: relative bounds add, and
+                // the ratio keeps the digits they support (no more than N12
+                // keeps just before θs)
+                let p = fv.value.prec().max(nv.value.prec());
+                let ratio = Float::with_val(p, fv.value.abs_ref()) / &nv.value;
+                let fa = Float::with_val(p, fv.value.abs_ref());
+                let na = Float::with_val(p, nv.value.abs_ref());
+                let rel = Float::with_val(p, &fv.err_bound / &fa)
+                    + Float::with_val(p, &nv.err_bound / &na);
+                let ra = Float::with_val(p, ratio.abs_ref());
+                let ulps = Float::with_val(p, &ra >> (p as i32 - 4));
+                let err = Float::with_val(p, &rel * &ra) + ulps;
+                let dg = if fv.digits == 0 { 0 } else { self.digits };
+                if dg == 0 {
+                    // F is 0 to within its bound: so is the ratio
+                    Verified {
+                        name: key.to_string(),
+                        text: "0".into(),
+                        value: Float::new(p),
+                        digits: 0,
+                        err_bound: Float::with_val(p, &fv.err_bound / &nv.value),
+                        precs: fv.precs,
+                    }
+                } else {
+                    crate::numeric::verify::verified_from(key, ratio, err, dg)?
+                }
+            };
+            out.push(v);
+        }
+        Ok(out)
     }
 
     fn force_est(&self, v: Float, scale: &Float, exact_zero: bool, odd: bool) -> Estimate {
