@@ -49,6 +49,12 @@ fn value(v: &Verified) -> Value {
     )
 }
 
+/// A model's exact echo (key, text) and its friction laws (floor, contact).
+type Echo = (Vec<(&'static str, String)>, Option<(String, String)>);
+
+/// A trajectory: the column names, one row of values per time, the modes.
+type Table = (Vec<&'static str>, Vec<Vec<Value>>, Option<Vec<String>>);
+
 fn values(vs: &[Verified]) -> Vec<Value> {
     vs.iter().map(value).collect()
 }
@@ -202,10 +208,7 @@ fn spec(vals: &Pairs) -> cylroll::Result<(Model, Option<Friction>)> {
 /// Validates a model; returns its exact echo (key, text) in the library's
 /// order and the friction laws as text (`None` without finite friction).
 #[pyfunction]
-fn validate(
-    py: Python<'_>,
-    pairs: Pairs,
-) -> PyResult<(Vec<(&'static str, String)>, Option<(String, String)>)> {
+fn validate(py: Python<'_>, pairs: Pairs) -> PyResult<Echo> {
     direct(py, || {
         let (model, fr) = spec(&pairs)?;
         Ok((
@@ -410,12 +413,7 @@ fn forces(
 /// `trajectory`: the column names, one row of values per time, and with
 /// friction the mode of each row.
 #[pyfunction]
-fn trajectory(
-    py: Python<'_>,
-    pairs: Pairs,
-    digits: u32,
-    times: Vec<String>,
-) -> PyResult<(Vec<&'static str>, Vec<Vec<Value>>, Option<Vec<String>>)> {
+fn trajectory(py: Python<'_>, pairs: Pairs, digits: u32, times: Vec<String>) -> PyResult<Table> {
     detached(py, move || {
         let (model, fr) = spec(&pairs)?;
         let times: Vec<Exact> = times
