@@ -4,8 +4,8 @@ into the package).
 >>> import cylroll
 >>> "mujoco_main" in cylroll.golden.names()
 True
->>> cylroll.golden.case("mujoco_main").params["theta0"]
-'1/10'
+>>> cylroll.golden.case("mujoco_main") == cylroll.Model(theta0="1/10")
+True
 """
 
 from __future__ import annotations
