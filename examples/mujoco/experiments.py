@@ -1,15 +1,21 @@
 #!/usr/bin/env python3
 """Run the MuJoCo simulations, judge them with cylroll, and write reports/engines.md.
 
-usage: experiments.py CYLROLL_BINARY [--report-only]
+usage: experiments.py [--report-only]
 (run from anywhere; paths are relative to this file; --report-only reuses out/)
+
+The oracle is the cylroll Python package (pip install ./python): its answers and the
+judgements (cylroll.check) come back as objects, with no subprocess and no text to parse.
 """
 import json
 import math
 import os
-import subprocess
 import sys
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ProcessPoolExecutor
+
+import cylroll
+
+import sim as engine
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -39,39 +45,49 @@ VARIANTS = [
 ]
 
 
-def sh(args, **kw):
-    return subprocess.run(args, check=False, capture_output=True, text=True, **kw)
+#: the oracle's model of the case (golden/cases/mujoco_main.toml)
+MODEL = cylroll.golden.case(CASE)
 
 
 def sim(name, dt, extra, forces=False):
+    """One simulation (in a worker process), its files written to out/."""
     base = os.path.join(OUT, f"{name}_dt{dt}")
-    args = [sys.executable, os.path.join(HERE, "sim.py"), "--dt", dt, "--csv", base + ".csv",
-            "--json", base + ".json"] + extra
+    files = dict(csv=base + ".csv", json=base + ".json")
     if forces:
-        args += ["--forces-csv", base + "_forces.csv", "--xml", base + ".xml"]
-    r = sh(args)
-    if r.returncode != 0:
-        raise SystemExit(f"sim.py failed for {name} dt={dt}:\n{r.stderr}")
+        files.update(forces_csv=base + "_forces.csv", xml=base + ".xml")
+    engine.simulate(engine.settings(extra, dt=float(dt), **files))
     return base
 
 
-def check(cylroll, csv):
-    r = sh([cylroll, "check", csv, "--case", CASE, "--rtol", RTOL, "--atol", ATOL,
-            "--format", "json"], cwd=ROOT)
-    if r.returncode not in (0, 1):
-        raise SystemExit(f"cylroll check failed on {csv}:\n{r.stderr}")
-    out = json.loads(r.stdout)
-    out["exit_code"] = r.returncode
+def e3(x):
+    """x as the command line writes it (Rust's {:.3e}: 2.732e-4)."""
+    m, ex = f"{x:.3e}".split("e")
+    return f"{m}e{int(ex)}"
+
+
+def report_dict(rep):
+    """A cylroll.CheckReport as the command line's `check --format json` object."""
+    ff = rep.first_failure
+    return {
+        "case": rep.case, "passed": rep.passed, "rows": str(rep.rows),
+        "rtol": RTOL, "atol": ATOL, "oracle_digits": str(rep.digits),
+        "columns": [{"column": c.name, "max_abs": e3(c.max_abs), "max_abs_t": c.max_abs_t,
+                     "max_rel": e3(c.max_rel), "max_rel_t": c.max_rel_t,
+                     "failures": str(c.failures)} for c in rep.columns],
+        "first_failure": None if ff is None else {
+            "row": str(ff.row), "t": ff.t, "column": ff.column, "candidate": ff.candidate,
+            "oracle": ff.oracle},
+        "exit_code": 0 if rep.passed else 1,
+    }
+
+
+def check(csv):
+    """cylroll.check of an engine CSV against the case; the judgement is kept next to it."""
+    rep = cylroll.check(csv, CASE, rtol=float(RTOL), atol=float(ATOL))
+    out = report_dict(rep)
     with open(csv.replace(".csv", "_check.json"), "w") as f:
         json.dump(out, f, indent=1)
     return out
-
-
-def oracle(cylroll, *args):
-    r = sh([cylroll, *args, "--theta0", "1/10", "--format", "json", "--digits", "12"])
-    if r.returncode != 0:
-        raise SystemExit(f"cylroll {' '.join(args)} failed:\n{r.stderr}")
-    return json.loads(r.stdout)
 
 
 def load(base):
@@ -93,7 +109,6 @@ def f6(x):
 
 
 def main():
-    cylroll = os.path.abspath(sys.argv[1])
     os.makedirs(OUT, exist_ok=True)
     jobs = []
     for dt in DTS:
@@ -103,19 +118,20 @@ def main():
     for mu in MUS:
         if mu != "10":
             jobs.append((f"mu{mu}", "1e-4", ["--mu", mu], False))
-    if "--report-only" not in sys.argv[2:]:
-        with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as ex:
-            list(ex.map(lambda j: sim(*j), jobs))
+    if "--report-only" not in sys.argv[1:]:
+        with ProcessPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as ex:
+            list(ex.map(sim, *zip(*jobs)))
 
-    sep = oracle(cylroll, "separation")
-    slip = {mu: oracle(cylroll, "separation", "--mu", mu)["theta_slip_contact"] for mu in MUS}
-    t_slip = {mu: oracle(cylroll, "time", "--to", slip[mu])["t"] for mu in MUS}
+    # the oracle, 12 digits: Value objects (str() is the verified digits, float() a float)
+    sep = MODEL.separation(digits=12)
+    slip = {mu: MODEL.separation(digits=12, mu=mu)["theta_slip_contact"] for mu in MUS}
+    t_slip = {mu: MODEL.time(slip[mu].text, digits=12) for mu in MUS}
     theta_s, t_s = float(sep["theta_s"]), float(sep["t_s"])
     main_runs = {dt: load(os.path.join(OUT, f"main_dt{dt}")) for dt in DTS}
-    chk = {dt: check(cylroll, os.path.join(OUT, f"main_dt{dt}.csv")) for dt in DTS}
-    chkf = {dt: check(cylroll, os.path.join(OUT, f"main_dt{dt}_forces.csv")) for dt in DTS}
+    chk = {dt: check(os.path.join(OUT, f"main_dt{dt}.csv")) for dt in DTS}
+    chkf = {dt: check(os.path.join(OUT, f"main_dt{dt}_forces.csv")) for dt in DTS}
     var = {(n, dt): load(os.path.join(OUT, f"{n}_dt{dt}")) for n, _, _ in VARIANTS for dt in DTS}
-    varchk = {(n, dt): check(cylroll, os.path.join(OUT, f"{n}_dt{dt}.csv"))
+    varchk = {(n, dt): check(os.path.join(OUT, f"{n}_dt{dt}.csv"))
               for n, _, _ in VARIANTS for dt in DTS}
     mus = {mu: (main_runs["1e-4"] if mu == "10" else load(os.path.join(OUT, f"mu{mu}_dt1e-4")))
            for mu in MUS}
@@ -143,7 +159,7 @@ def main():
       f"{c4['theta']['max_abs']} (dt = 1e-4): first order in dt, and almost exactly the "
       "half-step lead ½·dt·θ̇ of the semi-implicit Euler integrator (below). θ̇ is off by "
       f"{c3['theta_dot']['max_abs']} and {c4['theta_dot']['max_abs']} (second order). "
-      f"`cylroll check` at "
+      f"`cylroll.check` at "
       f"rtol {RTOL}, atol {ATOL}: dt = 1e-3 "
       f"{'passes' if chk['1e-3']['passed'] else 'fails'}, dt = 1e-4 "
       f"{'passes' if chk['1e-4']['passed'] else 'fails'}.")
@@ -212,8 +228,8 @@ def main():
       "force before the surfaces are 1e-3 apart for good. Slip onset: the first state in which "
       f"|F21| ≥ 0.999·μ·N12 (the friction force reaches MuJoCo's cone).\n")
 
-    w(f"## θ(t) and the other columns: `cylroll check --case {CASE} --rtol {RTOL} "
-      f"--atol {ATOL}`\n")
+    w(f"## θ(t) and the other columns: `cylroll.check(csv, \"{CASE}\", rtol={RTOL}, "
+      f"atol={ATOL})`\n")
     for dt in DTS:
         c = chk[dt]
         w(f"**dt = {dt}** ({c['rows']} rows, exit code {c['exit_code']}, "
@@ -258,10 +274,10 @@ def main():
     w("")
 
     w("## Separation angle and time\n")
-    w(f"Oracle (`cylroll separation --theta0 1/10`): θs = {sep['theta_s']}, t_s = "
+    w(f"Oracle (`cylroll.golden.case(\"{CASE}\").separation(digits=12)`): θs = {sep['theta_s']}, t_s = "
       f"{sep['t_s']}, F21 at separation = {sep['F21_at_s']}. Because F21 stays finite while "
       "N12 → 0, rolling up to θs needs unbounded friction: with any finite μ the upper "
-      "cylinder slips first (`cylroll separation --mu MU` gives the angle) and then slides "
+      "cylinder slips first (`separation(mu=MU)` gives the angle) and then slides "
       "until it leaves, a phase the oracle does not model. So the engine is compared on "
       "where its friction saturates (against the oracle's slip angle); where the cylinders "
       "part is shown next to it and θs.\n")
@@ -320,7 +336,7 @@ def main():
 
     w("## What it takes: the settings that fail\n")
     w("Each row changes the named settings of the setup above. `θ err` is the largest |Δθ| that "
-      f"`cylroll check` reports up to t = {a0['t_csv']} (or up to where the run's rows stop); "
+      f"`cylroll.check` reports up to t = {a0['t_csv']} (or up to where the run's rows stop); "
       "`events` counts the openings and closings of the cylinder–cylinder contact in that "
       "window (1 = it only forms at the start); `parted at` is the engine's separation θ "
       "(the oracle's slip angle for μ = 10 is "
@@ -384,16 +400,17 @@ def main():
       f"main case: θ(t) to {c4['theta']['max_abs']} and the slip angle for a given μ to "
       f"{e(max(dmu), 0)} at dt = 1e-4, with errors that fall tenfold with the step (the integrator is first "
       "order). Its separation is not the oracle's θs but comes after the slip angle that "
-      "`cylroll separation --mu` predicts, because no finite friction holds the rolling to "
+      "`separation(mu=...)` predicts, because no finite friction holds the rolling to "
       "θs. Getting there took capsules instead of cylinders (MuJoCo's cylinder–cylinder "
       "contacts failed in one of the two runs and chattered with libccd), an elliptic cone "
       "with noslip, and a soft impedance (d = 0.5 at the minimal time constant); MuJoCo's defaults and stiffer impedances give "
       "visibly wrong motion (θ̇ off by 1e-2 or more, chattering contacts, separation near "
       "0.96 instead of 1.04, or with the defaults contacts sinking by 0.14 and θ off by "
-      "3e-2), and `cylroll check` flags them.\n")
-    w("Reproduce: `examples/mujoco/run.sh` (installs `mujoco` with pip if missing, builds "
-      "cylroll, runs everything above and rewrites this file; a few minutes). It is not part "
-      "of `cargo test` or CI.")
+      "3e-2), and `cylroll.check` flags them.\n")
+    w("Reproduce: `examples/mujoco/run.sh` (installs `mujoco` and the cylroll Python package "
+      "with pip, runs everything above and rewrites this file; a few minutes). It is not part "
+      "of `cargo test` or CI; the pytest example `examples/mujoco/test_mujoco.py` is, when "
+      "mujoco is installed.")
     os.makedirs(os.path.dirname(REPORT), exist_ok=True)
     with open(REPORT, "w") as f:
         f.write("\n".join(L) + "\n")

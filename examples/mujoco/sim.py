@@ -19,6 +19,7 @@ velocities, penetrations, contact geometry, chatter, slip onset, separation).
 import argparse
 import json
 import math
+import sys
 
 import mujoco
 import numpy as np
@@ -305,7 +306,7 @@ def fmt_t(t, dt):
     return repr(round(t, max(0, -math.floor(math.log10(dt))) + 3))
 
 
-def main():
+def parser():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--dt", type=float, default=1e-3, help="time step")
     ap.add_argument("--theta0", type=float, default=0.1)
@@ -333,35 +334,70 @@ def main():
                     help="surface gap taken as apart for good")
     ap.add_argument("--slip-threshold", type=float, default=1e-4,
                     help="|slip velocity| at contact 1-2 taken as the onset of slipping")
-    ap.add_argument("--csv", required=True)
+    ap.add_argument("--csv", default=None)
     ap.add_argument("--forces-csv", default=None)
-    ap.add_argument("--json", required=True)
+    ap.add_argument("--json", default=None)
     ap.add_argument("--xml", default=None)
     ap.add_argument("--mujoco-defaults", action="store_true",
                     help="MuJoCo's default contact settings instead (solref 0.02 1, solimp "
                          "0.9 0.95 0.001 0.5 2, pyramidal cone, no noslip, no preload)")
-    a = ap.parse_args()
+    return ap
+
+
+def settings(args=(), **overrides):
+    """The settings namespace: sim.py's defaults (the report's main setup), then the
+    command-line style ``args`` (e.g. ``["--geom", "cylinder"]``), then ``overrides``
+    by attribute name (``dt=1e-4``, ``mu=0.3``, ``t_csv=4.9``)."""
+    a = parser().parse_args([str(x) for x in args])
+    for k, v in overrides.items():
+        if not hasattr(a, k):
+            raise TypeError(f"unknown setting {k!r}")
+        setattr(a, k, v)
     if a.mujoco_defaults:
         a.solref, a.solimp, a.cone, a.noslip, a.preload = (
             "0.02 1", "0.9 0.95 0.001 0.5 2", "pyramidal", 0, False)
+    return a
 
+
+KINEMATICS = ("theta", "theta_dot", "x1", "x2", "y2", "phi1")
+FORCES = ("F1", "N1", "F21", "N12")
+
+
+def table(rows, dt, columns=KINEMATICS):
+    """The rows as {"t": array, column: array, ...}, what cylroll.check takes; the times
+    are the engine's own, rounded to the resolution of its step (as in the CSV files)."""
+    out = {"t": np.array([float(fmt_t(s["t"], dt)) for s in rows])}
+    out.update({k: np.array([s[k] for s in rows]) for k in columns})
+    return out
+
+
+def simulate(a):
+    """Runs the simulation of settings ``a`` and writes the files it names (``a.csv``,
+    ``a.forces_csv``, ``a.json``, ``a.xml``); returns (rows, diagnostics)."""
     sim, rows, out = run(a)
     if a.xml:
         with open(a.xml, "w") as f:
             f.write(sim.xml)
-    with open(a.csv, "w") as f:
-        f.write("t,theta,theta_dot,x1,x2,y2,phi1\n")
-        for s in rows:
-            f.write(",".join([fmt_t(s["t"], a.dt)] + [repr(s[k]) for k in
-                             ("theta", "theta_dot", "x1", "x2", "y2", "phi1")]) + "\n")
+    if a.csv:
+        with open(a.csv, "w") as f:
+            f.write("t," + ",".join(KINEMATICS) + "\n")
+            for s in rows:
+                f.write(",".join([fmt_t(s["t"], a.dt)] + [repr(s[k]) for k in KINEMATICS])
+                        + "\n")
     if a.forces_csv:
         with open(a.forces_csv, "w") as f:
-            f.write("t,F1,N1,F21,N12\n")
+            f.write("t," + ",".join(FORCES) + "\n")
             for s in rows:
-                f.write(",".join([fmt_t(s["t"], a.dt)] + [repr(s[k]) for k in
-                                 ("F1", "N1", "F21", "N12")]) + "\n")
-    with open(a.json, "w") as f:
-        json.dump(out, f, indent=1)
+                f.write(",".join([fmt_t(s["t"], a.dt)] + [repr(s[k]) for k in FORCES]) + "\n")
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump(out, f, indent=1)
+    return rows, out
+
+
+def main():
+    a = settings(sys.argv[1:])
+    rows, out = simulate(a)
     brief = {k: out[k] for k in ("preload", "t_last_row", "separation", "chatter_onset",
                                  "slip_onset", "cone_onset", "phi1dot_zero")}
     brief["diag"] = {k: v for k, v in out["diag"].items() if k != "normal_glitches"}

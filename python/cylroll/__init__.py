@@ -1,0 +1,57 @@
+"""cylroll: a reference oracle for a cylinder rolling on a rolling cylinder.
+
+Every number is computed to a requested number of significant digits and
+returned with only the digits that were verified (two working precisions and
+the method's own error estimate; see the repository's README, "Precision and
+what is verified").
+
+>>> import cylroll
+>>> sep = cylroll.Model().separation()       # identical solid cylinders from rest at the top
+>>> sep.theta_s.text                          # π/3
+'1.04719755119659774615421446109'
+>>> m = cylroll.Model(theta0="1/10", mu_floor="0.3", mu_contact="0.3")
+>>> [e.kind for e in m.separation(digits=12).events]
+['slip_onset', 'separation', 'impact']
+
+The pieces:
+
+- :class:`Model` — exact parameters and the questions :meth:`Model.separation`,
+  :meth:`Model.time`, :meth:`Model.forces`, :meth:`Model.trajectory`;
+- :class:`Value`, :class:`Separation`, :class:`Event`, :class:`Forces`,
+  :class:`Trajectory` — the answers (exact decimal text, NumPy arrays);
+- :func:`check` / :func:`cylroll.testing.assert_matches_oracle` — judge
+  another program's table;
+- :mod:`cylroll.golden` — the curated cases by name;
+- the exceptions :class:`InvalidParameterError` and :class:`NotPhysicalError`
+  (both ``ValueError``), :class:`VerificationError`, :class:`InputFileError`,
+  :class:`InternalError`, all :class:`CylrollError`.
+
+Computations release the GIL and run on a worker thread; Ctrl-C
+(``KeyboardInterrupt``) returns at once, but the interrupted computation
+finishes in the background (the library has no cancellation point) and its
+answer is dropped.
+"""
+
+from . import _cylroll
+from ._check import CheckReport, ColumnStats, FirstFailure, check
+from ._errors import (CylrollError, InputFileError, InternalError, InvalidParameterError,
+                      NotPhysicalError, VerificationError)
+from ._model import FRICTION_KEYS, MAX_DIGITS, MODEL_KEYS, Model
+from ._results import Event, Forces, Separation, Trajectory, Value
+from . import golden, testing
+
+__version__ = "0.1.0"
+
+#: The columns of a trajectory of the ideal models, in order.
+TRAJECTORY_COLUMNS = tuple(_cylroll.TRAJECTORY_COLUMNS)
+#: The columns of a trajectory with friction (the ideal ones, then s1, s12, work).
+FRICTION_COLUMNS = tuple(_cylroll.FRICTION_COLUMNS)
+
+__all__ = [
+    "Model", "Value", "Separation", "Event", "Forces", "Trajectory",
+    "check", "CheckReport", "ColumnStats", "FirstFailure",
+    "CylrollError", "InvalidParameterError", "NotPhysicalError", "VerificationError",
+    "InputFileError", "InternalError",
+    "golden", "testing",
+    "MODEL_KEYS", "FRICTION_KEYS", "TRAJECTORY_COLUMNS", "FRICTION_COLUMNS", "MAX_DIGITS",
+]

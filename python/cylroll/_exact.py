@@ -1,0 +1,98 @@
+"""Exact inputs: Python numbers to the exact decimal text the library reads."""
+
+from __future__ import annotations
+
+import math
+import numbers
+from decimal import Decimal
+from fractions import Fraction
+from typing import Any, Union
+
+from ._errors import InvalidParameterError
+
+#: What a parameter may be: exact text (``"0.3"``, ``"1/3"``, ``"1e-3"``;
+#: angles also ``"pi/6"``), an ``int``, a ``Fraction`` or a ``Decimal``; a
+#: ``float`` only where it is explicitly allowed.
+Number = Union[str, int, Fraction, Decimal, float]
+
+
+def _invalid(name: str, value: Any, allowed: str) -> InvalidParameterError:
+    exc = InvalidParameterError(f"invalid {name} = {str(value)!r}: {allowed}")
+    exc._set_fields("invalid_parameter", {"name": name, "value": str(value), "allowed": allowed})
+    return exc
+
+
+def _fraction_text(q: Fraction) -> str:
+    return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+
+
+def exact_text(name: str, x: Any, allow_float: bool = False) -> str:
+    """The exact text of ``x`` for parameter ``name``.
+
+    ``str`` passes as it is (the library parses it exactly), ``int``,
+    ``Fraction`` and ``Decimal`` are written out exactly. A ``float`` (also a
+    NumPy float) is refused unless ``allow_float``: then it is taken as the
+    binary number it is (``0.1`` becomes 3602879701896397/36028797018963968,
+    not 1/10). ``bool`` is refused.
+    """
+    if isinstance(x, str):
+        return x
+    if isinstance(x, bool):
+        raise TypeError(f"{name}: expected a number, got a bool")
+    if isinstance(x, Fraction):
+        return _fraction_text(x)
+    if isinstance(x, Decimal):
+        if not x.is_finite():
+            raise _invalid(name, x, "must be a finite number")
+        sign, digits, exp = x.as_tuple()
+        if isinstance(exp, int) and -60 <= exp <= 60:
+            return format(x, "f")
+        return _fraction_text(Fraction(x))
+    if isinstance(x, numbers.Integral):
+        return str(int(x))
+    if isinstance(x, (float, numbers.Real)):
+        if not allow_float:
+            raise TypeError(
+                f"{name}: a float ({x!r}) is not exact; pass a str such as {repr(str(x))}, "
+                "an int, a Fraction or a Decimal, or allow_float=True to take the float's "
+                "exact binary value"
+            )
+        f = float(x)
+        if not math.isfinite(f):
+            raise _invalid(name, x, "must be a finite number")
+        return _fraction_text(Fraction(f))
+    raise TypeError(
+        f"{name}: expected str, int, Fraction or Decimal (or float with allow_float=True), "
+        f"got {type(x).__name__}"
+    )
+
+
+def time_text(name: str, x: Any) -> str:
+    """The exact text of a time or an angle: exact types as in
+    :func:`exact_text`; a float by its shortest round-trip decimal
+    (``repr``: ``0.05`` is 5/100), the way an engine's times are written to a
+    CSV file."""
+    if isinstance(x, str) or isinstance(x, (Fraction, Decimal)) or (
+        isinstance(x, numbers.Integral) and not isinstance(x, bool)
+    ):
+        return exact_text(name, x)
+    if isinstance(x, bool):
+        raise TypeError(f"{name}: expected a number, got a bool")
+    if isinstance(x, numbers.Real):
+        f = float(x)
+        if not math.isfinite(f):
+            raise _invalid(name, x, "must be a finite number")
+        return repr(f)
+    raise TypeError(f"{name}: expected a number, got {type(x).__name__}")
+
+
+def mu_text(name: str, x: Any, allow_float: bool = False) -> str:
+    """A friction coefficient: ``"inf"`` (rolling), a number >= 0 (static =
+    kinetic), ``"S,K"`` or a pair ``(S, K)`` (static S >= kinetic K)."""
+    if isinstance(x, (tuple, list)):
+        if len(x) != 2:
+            raise _invalid(name, x, "a pair (static, kinetic) has two numbers")
+        return ",".join(exact_text(name, v, allow_float) for v in x)
+    if isinstance(x, float) and math.isinf(x) and x > 0:
+        return "inf"
+    return exact_text(name, x, allow_float)

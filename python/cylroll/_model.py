@@ -1,0 +1,323 @@
+"""The model: parameters, contact models, start and friction, all exact."""
+
+from __future__ import annotations
+
+import os
+from fractions import Fraction
+from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
+
+from . import _cylroll
+from ._exact import Number, _invalid, exact_text, mu_text, time_text
+from ._results import Forces, Separation, Trajectory, Value
+
+#: The model keys, in the library's order.
+MODEL_KEYS: Tuple[str, ...] = tuple(_cylroll.MODEL_KEYS)
+#: The friction keys.
+FRICTION_KEYS: Tuple[str, ...] = tuple(_cylroll.FRICTION_KEYS)
+#: Largest number of significant digits accepted.
+MAX_DIGITS: int = _cylroll.MAX_DIGITS
+
+Mu = Union[Number, Tuple[Number, Number], None]
+
+
+def _digits(digits: Any) -> int:
+    if isinstance(digits, bool) or not isinstance(digits, int):
+        raise TypeError(f"digits: expected an int, got {type(digits).__name__}")
+    if not 1 <= digits <= MAX_DIGITS:
+        raise _invalid("digits", digits, f"must be between 1 and {MAX_DIGITS}")
+    return digits
+
+
+class Model:
+    """A cylinder (2) on a cylinder (1) on the floor, with exact parameters.
+
+    Every number is read exactly: pass text (``"0.3"`` is 3/10, ``"1/3"``,
+    ``"1e-3"``; angles may be ``"pi/6"``, ``"2*pi/3"``), an ``int``, a
+    ``fractions.Fraction`` or a ``decimal.Decimal``. A ``float`` is refused
+    (``TypeError``) unless ``allow_float=True``, and then it is taken as the
+    binary number it is: ``0.1`` is 3602879701896397/36028797018963968, not
+    1/10.
+
+    The model is validated at once; bad input raises
+    :class:`cylroll.InvalidParameterError` (a ``ValueError``) naming the
+    parameter and its allowed range. A model is immutable; :meth:`replace`
+    returns a changed copy.
+
+    Parameters (the defaults are the paper's main case: identical solid
+    cylinders, m = r = g = 1, k = 1/2, both contacts rolling, from rest at
+    the top, θ0 = 0):
+
+    floor
+        ``"roll"`` (no slip), ``"slip"`` (frictionless) or ``"fixed"``
+        (cylinder 1 held still).
+    contact
+        between the cylinders: ``"roll"`` or ``"slip"``.
+    m1, m2, r1, r2
+        masses and radii (> 0).
+    k1, k2
+        inertia factors, I = k m r² (>= 0; k > 1 is a bobbin).
+    g
+        gravity (> 0).
+    theta0
+        the line of centres at the start, clockwise from vertical, |θ0| < π/2.
+    thetadot0
+        its rate at the start (θ0·θ̇0 >= 0: the motion runs away from the top).
+    omega0
+        the common rolling rate fixing the conserved momenta: the value φ̇1
+        takes whenever θ̇ = 0 (0 for a fixed floor).
+    mu_floor, mu_contact
+        finite Coulomb friction at the floor and between the cylinders:
+        a number >= 0 (static = kinetic), ``"S,K"`` or a pair ``(S, K)``
+        (static S >= kinetic K), ``"inf"`` (exactly ``roll``) or 0 (exactly
+        ``slip``). ``None`` (the default): the ideal contact of ``floor`` /
+        ``contact``. A coefficient applies to a rolling base.
+    allow_float
+        accept ``float`` parameters as their exact binary values.
+
+    The questions: :meth:`separation`, :meth:`time`, :meth:`forces`,
+    :meth:`trajectory`. Each takes ``digits`` (significant digits, 1 to
+    2000, default 30) and returns values with only verified digits.
+
+    >>> import cylroll
+    >>> cylroll.Model().separation().theta_s.text     # π/3
+    '1.04719755119659774615421446109'
+    """
+
+    __slots__ = ("_pairs", "_echo", "_friction")
+
+    def __init__(
+        self,
+        *,
+        floor: str = "roll",
+        contact: str = "roll",
+        m1: Number = 1,
+        m2: Number = 1,
+        r1: Number = 1,
+        r2: Number = 1,
+        k1: Number = "1/2",
+        k2: Number = "1/2",
+        g: Number = 1,
+        theta0: Number = 0,
+        thetadot0: Number = 0,
+        omega0: Number = 0,
+        mu_floor: Mu = None,
+        mu_contact: Mu = None,
+        allow_float: bool = False,
+    ) -> None:
+        if not isinstance(floor, str):
+            raise TypeError("floor: expected 'roll', 'slip' or 'fixed'")
+        if not isinstance(contact, str):
+            raise TypeError("contact: expected 'roll' or 'slip'")
+        nums = dict(m1=m1, m2=m2, r1=r1, r2=r2, k1=k1, k2=k2, g=g, theta0=theta0,
+                    thetadot0=thetadot0, omega0=omega0)
+        pairs: Dict[str, str] = {"floor": floor, "contact": contact}
+        for k, v in nums.items():
+            pairs[k] = exact_text(k, v, allow_float)
+        if mu_floor is not None:
+            pairs["mu_floor"] = mu_text("mu_floor", mu_floor, allow_float)
+        if mu_contact is not None:
+            pairs["mu_contact"] = mu_text("mu_contact", mu_contact, allow_float)
+        self._init(pairs)
+
+    def _init(self, pairs: Dict[str, str]) -> None:
+        echo, friction = _cylroll.validate(pairs)
+        object.__setattr__(self, "_pairs", dict(pairs))
+        object.__setattr__(self, "_echo", dict(echo))
+        object.__setattr__(self, "_friction", friction)
+
+    @classmethod
+    def _from_pairs(cls, pairs: Dict[str, str]) -> "Model":
+        m = cls.__new__(cls)
+        m._init(pairs)
+        return m
+
+    @classmethod
+    def from_toml(cls, path: Union[str, "os.PathLike[str]"]) -> "Model":
+        """A model from a ``--params`` TOML file: the keys of the constructor
+        (``floor``, ``m1``, …, ``mu_floor``, ``mu_contact``), values as strings
+        or integers (TOML floats are binary and refused). Missing keys take
+        the defaults."""
+        return cls._from_pairs(_cylroll.read_toml(os.fspath(path)))
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("Model is immutable; use model.replace(...)")
+
+    def replace(self, *, allow_float: bool = False, **changes: Any) -> "Model":
+        """A copy with some parameters changed (the constructor's keywords;
+        ``mu_floor=None`` removes a coefficient)."""
+        pairs = dict(self._pairs)
+        for k, v in changes.items():
+            if k in ("floor", "contact"):
+                pairs[k] = v
+            elif k in FRICTION_KEYS:
+                if v is None:
+                    pairs.pop(k, None)
+                else:
+                    pairs[k] = mu_text(k, v, allow_float)
+            elif k in MODEL_KEYS:
+                pairs[k] = exact_text(k, v, allow_float)
+            else:
+                raise TypeError(f"replace() got an unexpected keyword argument {k!r}")
+        return Model._from_pairs(pairs)
+
+    # --- what the model is
+
+    @property
+    def params(self) -> Dict[str, str]:
+        """The model as exact text, in the library's order (``floor``,
+        ``contact``, ``m1`` … ``omega0``): rationals in lowest terms,
+        angles as multiples of π where given so."""
+        return dict(self._echo)
+
+    @property
+    def friction(self) -> Optional[Dict[str, str]]:
+        """The Coulomb laws ``{"mu_floor": …, "mu_contact": …}`` (``"inf"``
+        for a rolling contact, ``"S,K"`` for static ≠ kinetic), or ``None``
+        when no contact has finite friction (the ideal models)."""
+        if self._friction is None:
+            return None
+        return {"mu_floor": self._friction[0], "mu_contact": self._friction[1]}
+
+    def to_dict(self) -> Dict[str, str]:
+        """The keys this model was built from (a ``--params`` file's keys)."""
+        return dict(self._pairs)
+
+    def __repr__(self) -> str:
+        items = [f"{k}={v!r}" for k, v in self._echo.items()]
+        if self._friction is not None:
+            items += [f"mu_floor={self._friction[0]!r}", f"mu_contact={self._friction[1]!r}"]
+        return "Model(" + ", ".join(items) + ")"
+
+    def _key(self) -> Tuple[Any, ...]:
+        return (tuple(self._echo.items()), self._friction)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Model) and self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+    def __reduce__(self) -> Any:
+        return (Model._from_pairs, (dict(self._pairs),))
+
+    # --- the questions
+
+    def separation(self, digits: int = 30, *, mu: Optional[Number] = None) -> Separation:
+        """Where and when the cylinders part.
+
+        Ideal contacts: ``theta_s`` (where N12 first vanishes), ``t_s`` (None
+        for a start from rest exactly at the top, where every time is
+        infinite; θs is then the limit θ0 → 0+), and the findings of the
+        command line (``theta_phi1dot_zero``, ``theta_phi1_zero``,
+        ``F21_at_s``, ``theta_N1_zero``; with ``mu``, the ideal-rolling
+        diagnostic, ``theta_slip_floor`` / ``theta_slip_contact``: where
+        rolling would first need more friction than μ).
+
+        With finite friction (``mu_floor`` / ``mu_contact``): ``theta_s``,
+        ``t_s``, ``work_s`` (energy dissipated up to separation), the first
+        impact (``t_impact``, ``x1_impact``, … ``psi2_dot_impact``), the
+        start mode and the event list (:attr:`Separation.events`).
+
+        Raises :class:`InvalidParameterError`, :class:`NotPhysicalError`
+        (e.g. cylinders that never part), :class:`VerificationError`.
+        """
+        mu_t = None if mu is None else exact_text("mu", mu)
+        d = _cylroll.separation(self._pairs, _digits(digits), mu_t)
+        return Separation._build(self, digits, d)
+
+    def time(self, theta: Number, digits: int = 30) -> Value:
+        """t(θ): the time from the start until θ first reaches ``theta``
+        (an exact angle: ``"pi/4"``, ``"0.9"``, a Fraction, …; a float is read
+        as the decimal it prints as). The angle must lie between θ0 and the
+        separation (with friction: while the contacts hold).
+
+        Raises :class:`InvalidParameterError` (an angle outside the motion),
+        :class:`NotPhysicalError` (a start from rest exactly at the top:
+        infinite), :class:`VerificationError`.
+        """
+        v, mode = _cylroll.time(self._pairs, _digits(digits), time_text("theta", theta))
+        return Value._from(v, mode)
+
+    def forces(self, theta: Number, digits: int = 30) -> Forces:
+        """The state where θ first reaches ``theta``: ``F1``, ``N1``, ``F21``,
+        ``N12``, ``theta_dot``, ``theta_ddot``, ``mu_floor`` = \\|F1\\|/N1,
+        ``mu_contact`` = \\|F21\\|/N12, and with friction ``s1``, ``s12``
+        (slip speeds) and ``work`` (energy dissipated), with the mode there
+        (:attr:`Forces.mode`)."""
+        vals, mode = _cylroll.forces(self._pairs, _digits(digits), time_text("theta", theta))
+        return Forces._build(self, digits, vals, mode)
+
+    def trajectory(
+        self,
+        times: Optional[Iterable[Number]] = None,
+        digits: int = 30,
+        *,
+        t_end: Optional[Number] = None,
+        steps: Optional[int] = None,
+    ) -> Trajectory:
+        """The motion at the given times (ascending, >= 0): one row per time
+        with the columns ``t, theta, theta_dot, theta_ddot, phi1, phi2, x1,
+        x2, y2, F1, N1, F21, N12`` (with friction also ``s1, s12, work`` and a
+        mode per row; through every phase up to the first impact).
+
+        ``times`` may be exact numbers or floats (a float is read as the
+        decimal it prints as: ``np.linspace(0, 5, 101)`` gives 0.05, 0.1, …
+        exactly), or give ``t_end`` and ``steps`` for the exact grid
+        t_i = i·t_end/steps, i = 0 … steps.
+
+        Raises :class:`InvalidParameterError` (a time after separation — with
+        friction after the impact —, a negative time),
+        :class:`NotPhysicalError` (a start from rest exactly at the top),
+        :class:`VerificationError`.
+        """
+        if times is None:
+            if t_end is None or steps is None:
+                raise TypeError("trajectory() needs times, or t_end and steps")
+            if isinstance(steps, bool) or not isinstance(steps, int) or not 1 <= steps <= 100_000:
+                raise _invalid("steps", steps, "must be between 1 and 100000")
+            te = exact_text("t_end", t_end)
+            if _to_fraction(te) <= 0:
+                raise _invalid("t_end", te, "must be > 0")
+            texts = [_grid_point(te, i, steps) for i in range(steps + 1)]
+        else:
+            if t_end is not None or steps is not None:
+                raise TypeError("give times, or t_end and steps, not both")
+            if isinstance(times, (str, bytes)):
+                raise TypeError("times: expected a sequence of numbers, got a string")
+            texts = [time_text("times", t) for t in times]
+        cols, rows, modes = _cylroll.trajectory(self._pairs, _digits(digits), texts)
+        return Trajectory._build(self, digits, cols, rows, modes)
+
+
+def _grid_point(t_end: str, i: int, steps: int) -> str:
+    """i·t_end/steps as exact text (a terminating decimal where it is one, so
+    that the time column echoes it exactly)."""
+    q = _to_fraction(t_end) * Fraction(i, steps)
+    d = q.denominator
+    for p in (2, 5):
+        while d % p == 0:
+            d //= p
+    if d == 1:
+        # terminating: write it out as a decimal
+        n, den = q.numerator, q.denominator
+        k = 0
+        while den != 1 and 10**k % den != 0:
+            k += 1
+        scaled = n * (10**k // den)
+        s = str(abs(scaled)).rjust(k + 1, "0")
+        txt = s[:-k] + "." + s[-k:] if k else s
+        return ("-" if scaled < 0 else "") + txt
+    return f"{q.numerator}/{q.denominator}"
+
+
+def _to_fraction(text: str) -> Fraction:
+    t = text.strip().lower()
+    if "pi" in t:
+        raise _invalid("t_end", text, "expected an exact number such as 0.25, 1/3 or 1e-3")
+    try:
+        if "/" in t:
+            a, b = t.split("/", 1)
+            return Fraction(a) / Fraction(b)
+        return Fraction(t)
+    except (ValueError, ZeroDivisionError):
+        raise _invalid("t_end", text, "expected an exact number such as 0.25, 1/3 or 1e-3") from None

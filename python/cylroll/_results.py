@@ -1,0 +1,358 @@
+"""Result types: verified values, the separation answer with its events, the
+forces at an angle, and trajectory tables."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from typing import (TYPE_CHECKING, Any, Dict, Iterator, List, Mapping, Optional, Sequence,
+                    Tuple)
+
+import numpy as np
+
+if TYPE_CHECKING:  # pragma: no cover
+    import pandas
+
+    from ._model import Model
+
+#: A value as the native module returns it: (name, text, digits, err, err_text).
+_Raw = Tuple[str, str, int, float, str]
+
+
+class Value:
+    """A verified number.
+
+    ``text`` holds exactly the verified significant digits (``digits`` of
+    them; a value printed as ``"0"`` has ``digits == 0``: it is zero to the
+    accuracy asked for); ``err`` is the estimated bound on the absolute error
+    of the value the digits were rounded from (``err_text`` the same, short).
+
+    ``float(v)`` is the float nearest ``text``; ``v.decimal()`` the exact
+    ``decimal.Decimal`` of ``text``. ``str(v)`` is ``text``.
+    """
+
+    __slots__ = ("name", "text", "digits", "err", "err_text", "mode")
+
+    name: str
+    text: str
+    digits: int
+    err: float
+    err_text: str
+    mode: Optional[str]
+
+    def __init__(self, name: str, text: str, digits: int, err: float, err_text: str = "",
+                 mode: Optional[str] = None) -> None:
+        self.name = name
+        self.text = text
+        self.digits = digits
+        self.err = err
+        self.err_text = err_text or f"{err:.1e}"
+        #: with friction, for :meth:`Model.time`: the mode where the angle is reached
+        self.mode = mode
+
+    @classmethod
+    def _from(cls, raw: _Raw, mode: Optional[str] = None) -> "Value":
+        return cls(raw[0], raw[1], raw[2], raw[3], raw[4], mode)
+
+    def decimal(self) -> Decimal:
+        """The verified digits as an exact ``decimal.Decimal``."""
+        return Decimal(self.text)
+
+    def __float__(self) -> float:
+        return float(self.text)
+
+    def __str__(self) -> str:
+        return self.text
+
+    def __repr__(self) -> str:
+        extra = f", mode={self.mode!r}" if self.mode is not None else ""
+        return (f"Value({self.name!r}, {self.text!r}, digits={self.digits}, "
+                f"err={self.err_text}{extra})")
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Value):
+            return NotImplemented
+        return (self.name, self.text, self.digits) == (other.name, other.text, other.digits)
+
+    def __hash__(self) -> int:
+        return hash((self.name, self.text, self.digits))
+
+
+def _table(values: Sequence[Value]) -> List[str]:
+    w = max((len(v.name) for v in values), default=0)
+    wt = max((len(v.text) for v in values), default=0)
+    lines = []
+    for v in values:
+        note = "exactly 0 or below the accuracy asked for" if v.digits == 0 else \
+            f"{v.digits} digits, |err| <= {v.err_text}"
+        lines.append(f"  {v.name:<{w}} = {v.text:<{wt}}   [{note}]")
+    return lines
+
+
+class _Values(Mapping[str, Value]):
+    """A mapping name -> :class:`Value` in the library's order; values are
+    also attributes (``sep.theta_s``)."""
+
+    _values: Dict[str, Value]
+    model: "Model"
+    digits: int
+
+    def __getitem__(self, key: str) -> Value:
+        return self._values[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __getattr__(self, name: str) -> Value:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        try:
+            return self._values[name]
+        except KeyError:
+            raise AttributeError(
+                f"{type(self).__name__} has no value {name!r}; it has {', '.join(self._values)}"
+            ) from None
+
+    def to_dict(self) -> Dict[str, float]:
+        """name -> float."""
+        return {k: float(v) for k, v in self._values.items()}
+
+    def texts(self) -> Dict[str, str]:
+        """name -> the verified digits as text."""
+        return {k: v.text for k, v in self._values.items()}
+
+
+class Event:
+    """One event of a motion with friction.
+
+    ``kind``: ``slip_onset``, ``stick``, ``slip_reversal``, ``separation``,
+    ``lift_off`` or ``impact``; ``contact``: ``"floor"``, ``"contact"`` or
+    ``None``; ``mode``: the mode entered (``"floor stick, contact slip+"``,
+    ``"flight"`` after separation, ``None`` at the end); ``t`` and ``theta``:
+    verified :class:`Value` s.
+    """
+
+    __slots__ = ("kind", "contact", "mode", "t", "theta")
+
+    def __init__(self, kind: str, contact: Optional[str], mode: Optional[str], t: Value,
+                 theta: Value) -> None:
+        self.kind = kind
+        self.contact = contact
+        self.mode = mode
+        self.t = t
+        self.theta = theta
+
+    def __repr__(self) -> str:
+        where = f" ({self.contact})" if self.contact else ""
+        into = f" -> {self.mode}" if self.mode else ""
+        return f"<Event {self.kind}{where} at t = {self.t.text}, theta = {self.theta.text}{into}>"
+
+
+class Separation(_Values):
+    """The answer of :meth:`Model.separation`.
+
+    A mapping name -> :class:`Value` (``theta_s``, ``t_s``, …, in the
+    command line's order) with the values also as attributes; ``t_s`` is
+    ``None`` for a start from rest exactly at the top. ``notes``: findings in
+    words. With friction also ``events`` (a list of :class:`Event`, the
+    impact last), ``start_mode`` and ``impact_surface``; without friction
+    ``events`` is empty and the other two are ``None``.
+    """
+
+    notes: List[str]
+    events: List[Event]
+    start_mode: Optional[str]
+    impact_surface: Optional[str]
+
+    @classmethod
+    def _build(cls, model: "Model", digits: int, d: Dict[str, Any]) -> "Separation":
+        s = cls.__new__(cls)
+        s.model = model
+        s.digits = digits
+        s._values = {raw[0]: Value._from(raw) for raw in d["values"]}
+        s.notes = list(d["notes"])
+        s.start_mode = d.get("start_mode")
+        s.impact_surface = d.get("impact_surface")
+        s.events = [Event(k, c, m, Value._from(t), Value._from(th))
+                    for (k, c, m, t, th) in d.get("events", [])]
+        return s
+
+    @property
+    def theta_s(self) -> Value:
+        """θs: where N12 first vanishes."""
+        return self._values["theta_s"]
+
+    @property
+    def t_s(self) -> Optional[Value]:
+        """The time to separation (``None``: infinite, a start from rest at the top)."""
+        return self._values.get("t_s")
+
+    @property
+    def friction(self) -> bool:
+        """Whether the motion has finite friction (and so events)."""
+        return self.start_mode is not None
+
+    def __str__(self) -> str:
+        lines = [f"Separation ({self.digits} digits requested; every digit shown is verified)"]
+        lines += _table(list(self._values.values()))
+        if self.start_mode is not None:
+            lines.append(f"  start mode: {self.start_mode}")
+            for i, e in enumerate(self.events, 1):
+                where = f" ({e.contact})" if e.contact else ""
+                into = f" -> {e.mode}" if e.mode else ""
+                lines.append(f"  event {i}: {e.kind}{where} at t = {e.t.text}, "
+                             f"theta = {e.theta.text}{into}")
+        lines += [f"  note: {n}" for n in self.notes]
+        return "\n".join(lines)
+
+    __repr__ = __str__
+
+
+class Forces(_Values):
+    """The answer of :meth:`Model.forces`: a mapping name -> :class:`Value`
+    (``F1``, ``N1``, ``F21``, ``N12``, ``theta_dot``, ``theta_ddot``,
+    ``mu_floor``, ``mu_contact``; with friction ``s1``, ``s12``, ``work``)
+    and, with friction, the mode there (``mode``, else ``None``)."""
+
+    mode: Optional[str]
+
+    @classmethod
+    def _build(cls, model: "Model", digits: int, vals: Sequence[_Raw],
+               mode: Optional[str]) -> "Forces":
+        f = cls.__new__(cls)
+        f.model = model
+        f.digits = digits
+        f._values = {raw[0]: Value._from(raw) for raw in vals}
+        f.mode = mode
+        return f
+
+    def __str__(self) -> str:
+        lines = [f"Forces ({self.digits} digits requested; every digit shown is verified)"]
+        lines += _table(list(self._values.values()))
+        if self.mode is not None:
+            lines.append(f"  mode: {self.mode}")
+        return "\n".join(lines)
+
+    __repr__ = __str__
+
+
+class Trajectory:
+    """The answer of :meth:`Model.trajectory`: a table, one row per time.
+
+    ``columns``: the names (``t, theta, theta_dot, theta_ddot, phi1, phi2,
+    x1, x2, y2, F1, N1, F21, N12``; with friction also ``s1, s12, work``);
+    ``rows``: lists of :class:`Value`; ``modes``: with friction the mode of
+    each row (``"stick/slip+"`` = floor sticking, contact slipping forwards;
+    ``"flight"``), else ``None``.
+
+    ``traj.column("theta")`` (or ``traj["theta"]``) is a float64 NumPy array;
+    ``traj.values("theta")`` the :class:`Value` s; ``traj.errors("theta")``
+    the error bounds; ``traj.to_numpy()`` the whole table (rows × columns);
+    ``traj.to_pandas()`` a DataFrame (needs pandas); ``traj.to_csv()`` the
+    command line's CSV (verified digits as text).
+    """
+
+    columns: List[str]
+    rows: List[List[Value]]
+    modes: Optional[List[str]]
+    model: "Model"
+    digits: int
+
+    @classmethod
+    def _build(cls, model: "Model", digits: int, cols: Sequence[str],
+               rows: Sequence[Sequence[_Raw]], modes: Optional[Sequence[str]]) -> "Trajectory":
+        t = cls.__new__(cls)
+        t.model = model
+        t.digits = digits
+        t.columns = list(cols)
+        t.rows = [[Value._from(raw) for raw in r] for r in rows]
+        t.modes = None if modes is None else list(modes)
+        return t
+
+    def _index(self, name: str) -> int:
+        try:
+            return self.columns.index(name)
+        except ValueError:
+            raise KeyError(f"no column {name!r}; columns: {', '.join(self.columns)}") from None
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+    def values(self, name: str) -> List[Value]:
+        """The column ``name`` as :class:`Value` s."""
+        i = self._index(name)
+        return [r[i] for r in self.rows]
+
+    def column(self, name: str) -> np.ndarray:
+        """The column ``name`` as a float64 array (each the float nearest the
+        verified digits)."""
+        i = self._index(name)
+        return np.array([float(r[i].text) for r in self.rows], dtype=np.float64)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.column(name)
+
+    def errors(self, name: str) -> np.ndarray:
+        """The error bounds of the column ``name`` (float64)."""
+        i = self._index(name)
+        return np.array([r[i].err for r in self.rows], dtype=np.float64)
+
+    def to_numpy(self) -> np.ndarray:
+        """The table as a float64 array of shape (rows, columns), columns in
+        :attr:`columns` order (the modes are in :attr:`modes`)."""
+        return np.array([[float(v.text) for v in r] for r in self.rows],
+                        dtype=np.float64).reshape(len(self.rows), len(self.columns))
+
+    def to_dict(self) -> Dict[str, np.ndarray]:
+        """name -> float64 array (``check`` takes this back)."""
+        return {c: self.column(c) for c in self.columns}
+
+    def to_pandas(self) -> "pandas.DataFrame":
+        """A pandas DataFrame of float64 columns (and ``mode`` with friction).
+        Raises ``ImportError`` when pandas is not installed."""
+        try:
+            import pandas as pd
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("Trajectory.to_pandas() needs pandas: pip install pandas") from e
+        df = pd.DataFrame(self.to_numpy(), columns=self.columns)
+        if self.modes is not None:
+            df["mode"] = self.modes
+        return df
+
+    def to_csv(self, path: Optional[str] = None) -> str:
+        """The command line's CSV (header, then the verified digits as text;
+        with friction a last ``mode`` column); written to ``path`` if given."""
+        head = list(self.columns) + (["mode"] if self.modes is not None else [])
+        lines = [",".join(head)]
+        for i, r in enumerate(self.rows):
+            cells = [v.text for v in r] + ([self.modes[i]] if self.modes is not None else [])
+            lines.append(",".join(cells))
+        text = "\n".join(lines) + "\n"
+        if path is not None:
+            with open(path, "w") as f:
+                f.write(text)
+        return text
+
+    def __str__(self) -> str:
+        n = len(self.rows)
+        head = (f"Trajectory: {n} row{'s' if n != 1 else ''} x {len(self.columns)} columns "
+                f"({self.digits} digits requested; every digit shown is verified)")
+        show = list(range(n)) if n <= 8 else [0, 1, 2, 3, None, n - 3, n - 2, n - 1]
+        cols = ["t", "theta", "theta_dot", "N12"]
+        lines = [head, "  " + "  ".join(f"{c:<18}" for c in cols)
+                 + ("  mode" if self.modes is not None else "")]
+        for i in show:
+            if i is None:
+                lines.append("  ...")
+                continue
+            r = self.rows[i]
+            cells = [r[self.columns.index(c)].text[:18] for c in cols]
+            line = "  " + "  ".join(f"{c:<18}" for c in cells)
+            if self.modes is not None:
+                line += f"  {self.modes[i]}"
+            lines.append(line)
+        return "\n".join(lines)
+
+    __repr__ = __str__

@@ -1,0 +1,540 @@
+//! `cylroll._cylroll`: the native half of the Python package `cylroll`.
+//!
+//! Thin on purpose: every function takes the model as key/value pairs of exact
+//! decimal text (the keys of `--params`, built by the Python class
+//! `cylroll.Model`), calls the library, and returns plain Python data — the
+//! verified values as `(name, text, digits, err, err_text)` tuples. The Python
+//! modules next to it (`cylroll/*.py`) give them their classes, docstrings and
+//! NumPy arrays.
+//!
+//! Long computations run on a worker thread with the GIL released while the
+//! calling thread waits in slices of 50 ms and checks for signals between
+//! them, so Ctrl-C raises `KeyboardInterrupt` at once. The library has no
+//! cancellation point, so an interrupted computation finishes on its thread
+//! in the background and its answer is dropped. A panic of the library is
+//! caught on that thread and raised as `cylroll.InternalError`; it never
+//! unwinds into Python.
+
+use cylroll::error::Error;
+use cylroll::exact::Exact;
+use cylroll::friction::{self, Friction};
+use cylroll::input::{self, Pairs, FRICTION_KEYS, MODEL_KEYS};
+use cylroll::model::Model;
+use cylroll::numeric::verify::Verified;
+use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
+use cylroll::record::check::CheckReport;
+use cylroll::record::Case;
+use pyo3::exceptions::PyRuntimeError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::time::Duration;
+
+mod golden {
+    include!(concat!(env!("OUT_DIR"), "/golden_cases.rs"));
+}
+
+/// A verified value as it crosses into Python: name, decimal text (exactly
+/// the verified digits), digits verified, error bound (as a float and as
+/// short text).
+type Value = (String, String, u32, f64, String);
+
+fn value(v: &Verified) -> Value {
+    (
+        v.name.clone(),
+        v.text.clone(),
+        v.digits,
+        v.err_bound.to_f64(),
+        v.err_text(),
+    )
+}
+
+/// A model's exact echo (key, text) and its friction laws (floor, contact).
+type Echo = (Vec<(&'static str, String)>, Option<(String, String)>);
+
+/// A trajectory: the column names, one row of values per time, the modes.
+type Table = (Vec<&'static str>, Vec<Vec<Value>>, Option<Vec<String>>);
+
+fn values(vs: &[Verified]) -> Vec<Value> {
+    vs.iter().map(value).collect()
+}
+
+/// A library error as the Python exception of `cylroll._errors` (built there,
+/// so the classes can inherit from `ValueError`, `ArithmeticError`, …).
+fn py_error(py: Python<'_>, e: &Error) -> PyErr {
+    let (kind, fields): (&str, Vec<(&str, String)>) = match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            allowed,
+        } => (
+            "invalid_parameter",
+            vec![
+                ("name", name.clone()),
+                ("value", value.clone()),
+                ("allowed", allowed.clone()),
+            ],
+        ),
+        Error::NotPhysical { what } => ("not_physical", vec![("what", what.clone())]),
+        Error::NotConverged {
+            quantity,
+            requested,
+            reached,
+            detail,
+        } => (
+            "not_converged",
+            vec![
+                ("quantity", quantity.clone()),
+                ("requested", requested.to_string()),
+                ("reached", reached.clone()),
+                ("detail", detail.clone()),
+            ],
+        ),
+        Error::NoSignChange { quantity, lo, hi } => (
+            "no_sign_change",
+            vec![
+                ("quantity", quantity.clone()),
+                ("lo", lo.clone()),
+                ("hi", hi.clone()),
+            ],
+        ),
+        Error::Io { path, what } => ("io", vec![("path", path.clone()), ("what", what.clone())]),
+        Error::Write { path, what } => (
+            "write",
+            vec![("path", path.clone()), ("what", what.clone())],
+        ),
+    };
+    let build = || -> PyResult<PyErr> {
+        let make = py.import("cylroll._errors")?.getattr("_from_library")?;
+        let exc = make.call1((kind, e.to_string(), e.exit_code(), fields))?;
+        Ok(PyErr::from_value(exc))
+    };
+    build().unwrap_or_else(|err| err)
+}
+
+fn internal(py: Python<'_>, what: String) -> PyErr {
+    let build = || -> PyResult<PyErr> {
+        let cls = py.import("cylroll._errors")?.getattr("InternalError")?;
+        Ok(PyErr::from_value(cls.call1((what.clone(),))?))
+    };
+    build().unwrap_or_else(|_| PyRuntimeError::new_err(what))
+}
+
+fn panic_text(p: Box<dyn std::any::Any + Send>) -> String {
+    let msg = p
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| p.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "(no message)".into());
+    format!("cylroll panicked (a bug; please report it with the model): {msg}")
+}
+
+/// Runs `f` on a worker thread with the GIL released; checks for signals
+/// every 50 ms (a `KeyboardInterrupt` returns at once and leaves the worker
+/// to finish unobserved); library errors and panics become Python exceptions.
+fn detached<T, F>(py: Python<'_>, f: F) -> PyResult<T>
+where
+    T: Send + 'static,
+    F: FnOnce() -> cylroll::Result<T> + Send + 'static,
+{
+    let (tx, rx) = mpsc::channel();
+    std::thread::Builder::new()
+        .name("cylroll".into())
+        .stack_size(64 << 20)
+        .spawn(move || {
+            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+            let _ = tx.send(r);
+        })
+        .map_err(|e| internal(py, format!("cannot start a worker thread: {e}")))?;
+    let mut rx = rx;
+    loop {
+        let (back, got) = py.detach(move || {
+            let r = rx.recv_timeout(Duration::from_millis(50));
+            (rx, r)
+        });
+        rx = back;
+        match got {
+            Ok(Ok(Ok(v))) => return Ok(v),
+            Ok(Ok(Err(e))) => return Err(py_error(py, &e)),
+            Ok(Err(p)) => return Err(internal(py, panic_text(p))),
+            Err(RecvTimeoutError::Timeout) => py.check_signals()?,
+            Err(RecvTimeoutError::Disconnected) => {
+                return Err(internal(
+                    py,
+                    "the worker thread ended without an answer".into(),
+                ))
+            }
+        }
+    }
+}
+
+/// Runs a quick library call on this thread, with panics caught.
+fn direct<T>(py: Python<'_>, f: impl FnOnce() -> cylroll::Result<T>) -> PyResult<T> {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
+        Ok(Ok(v)) => Ok(v),
+        Ok(Err(e)) => Err(py_error(py, &e)),
+        Err(p) => Err(internal(py, panic_text(p))),
+    }
+}
+
+/// The model and its friction laws from key/value pairs, exactly as the
+/// command line builds them: with only ideal laws (`inf`, `0`) the model is
+/// the equal ideal one and the friction `None`.
+fn spec(vals: &Pairs) -> cylroll::Result<(Model, Option<Friction>)> {
+    for k in vals.keys() {
+        if !MODEL_KEYS.contains(&k.as_str()) && !FRICTION_KEYS.contains(&k.as_str()) {
+            return Err(Error::invalid(
+                "model",
+                k,
+                format!(
+                    "unknown key; allowed keys: {}, {}",
+                    MODEL_KEYS.join(", "),
+                    FRICTION_KEYS.join(", ")
+                ),
+            ));
+        }
+    }
+    let model = input::model_from_pairs(vals)?;
+    let fr = input::friction_for(vals, &model)?;
+    friction::check_laws(&model, &fr)?;
+    let eff = friction::effective_model(&model, &fr)?;
+    if fr.floor.is_coulomb() || fr.contact.is_coulomb() {
+        Ok((eff, Some(fr)))
+    } else {
+        Ok((eff, None))
+    }
+}
+
+/// Validates a model; returns its exact echo (key, text) in the library's
+/// order and the friction laws as text (`None` without finite friction).
+#[pyfunction]
+fn validate(py: Python<'_>, pairs: Pairs) -> PyResult<Echo> {
+    direct(py, || {
+        let (model, fr) = spec(&pairs)?;
+        Ok((
+            model.echo(),
+            fr.map(|f| (f.floor.to_string(), f.contact.to_string())),
+        ))
+    })
+}
+
+/// The model keys of a TOML file (`--params` format: strings or integers).
+#[pyfunction]
+fn read_toml(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Pairs> {
+    direct(py, || {
+        let table = input::read_toml(&path, "params")?;
+        input::pairs_from_toml(&table, "params", &[])
+    })
+}
+
+/// Names of the embedded golden cases, sorted.
+#[pyfunction]
+fn golden_names() -> Vec<&'static str> {
+    golden::CASES.iter().map(|(n, _)| *n).collect()
+}
+
+fn golden_text(name: &str) -> cylroll::Result<&'static str> {
+    golden::CASES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, t)| *t)
+        .ok_or_else(|| {
+            Error::invalid(
+                "case",
+                name,
+                format!("unknown case; known: {}", golden_names().join(", ")),
+            )
+        })
+}
+
+/// A golden case: its TOML text, the model keys, the description and the
+/// number of intervals of its time grid.
+#[pyfunction]
+fn golden_case(py: Python<'_>, name: &str) -> PyResult<(String, Pairs, String, u32)> {
+    direct(py, || {
+        let text = golden_text(name)?;
+        let (pairs, description, steps) = case_parts(name, text)?;
+        Ok((text.to_string(), pairs, description, steps))
+    })
+}
+
+/// The parts of a case file (as `cylroll::record::load_case` reads them).
+fn case_parts(name: &str, text: &str) -> cylroll::Result<(Pairs, String, u32)> {
+    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+        Error::invalid(
+            "case",
+            name,
+            format!("not valid TOML: {}", e.message().trim()),
+        )
+    })?;
+    let pairs = input::pairs_from_toml(&table, "case", &["description", "steps"])?;
+    let description = match table.get("description") {
+        Some(toml::Value::String(s)) => s.clone(),
+        _ => String::new(),
+    };
+    let steps = match table.get("steps") {
+        None => 40,
+        Some(toml::Value::Integer(n)) if (1..=10_000).contains(n) => *n as u32,
+        Some(v) => {
+            return Err(Error::invalid(
+                "steps",
+                v,
+                "must be an integer between 1 and 10000",
+            ))
+        }
+    };
+    Ok((pairs, description, steps))
+}
+
+fn parse_angle(name: &str, text: &str) -> cylroll::Result<Exact> {
+    Exact::parse(name, text, true)
+}
+
+/// `separation`: the verified values in order, the notes, and with friction
+/// the start mode, the impact surface and the events
+/// `(kind, contact, mode, t, theta)`.
+#[pyfunction]
+#[pyo3(signature = (pairs, digits, mu=None))]
+fn separation<'py>(
+    py: Python<'py>,
+    pairs: Pairs,
+    digits: u32,
+    mu: Option<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    type Event = (String, Option<String>, Option<String>, Value, Value);
+    type Out = (
+        Vec<Value>,
+        Vec<String>,
+        Option<(String, String, Vec<Event>)>,
+    );
+    let out: Out = detached(py, move || {
+        let (model, fr) = spec(&pairs)?;
+        if let Some(fr) = fr {
+            if let Some(m) = mu {
+                return Err(Error::invalid(
+                    "mu",
+                    m,
+                    "is the ideal-rolling diagnostic; with mu_floor/mu_contact the slip itself \
+                     is computed (see the events)",
+                ));
+            }
+            let ans = friction::answer::separation(&model, &fr, digits)?;
+            let events = ans
+                .events
+                .iter()
+                .map(|e| {
+                    (
+                        e.kind.name().to_string(),
+                        e.which.map(|w| w.name().to_string()),
+                        e.mode.clone(),
+                        value(&e.t),
+                        value(&e.theta),
+                    )
+                })
+                .collect();
+            let mut notes = ans.notes;
+            notes.insert(
+                0,
+                format!("the first impact is on the {}", ans.impact_surface),
+            );
+            return Ok((
+                values(&ans.values),
+                notes,
+                Some((ans.start_mode, ans.impact_surface.to_string(), events)),
+            ));
+        }
+        let mu = mu.map(|s| Exact::parse("mu", &s, false)).transpose()?;
+        let mut o = Oracle::new(&model, digits)?.with_mu(mu)?;
+        let sep = o.separation()?;
+        let mut vals = vec![value(&sep.theta_s)];
+        vals.extend(sep.t_s.as_ref().map(value));
+        vals.extend(values(&sep.extra));
+        Ok((vals, sep.notes, None))
+    })?;
+    let d = PyDict::new(py);
+    d.set_item("values", out.0)?;
+    d.set_item("notes", out.1)?;
+    if let Some((start_mode, surface, events)) = out.2 {
+        d.set_item("start_mode", start_mode)?;
+        d.set_item("impact_surface", surface)?;
+        d.set_item("events", events)?;
+    }
+    Ok(d)
+}
+
+/// `time`: the time at which θ first reaches `theta`, and with friction the
+/// mode there.
+#[pyfunction]
+fn time(
+    py: Python<'_>,
+    pairs: Pairs,
+    digits: u32,
+    theta: String,
+) -> PyResult<(Value, Option<String>)> {
+    detached(py, move || {
+        let (model, fr) = spec(&pairs)?;
+        let th = parse_angle("theta", &theta)?;
+        match fr {
+            Some(fr) => {
+                let (t, mode) = friction::answer::time_at(&model, &fr, digits, &th)?;
+                Ok((value(&t), Some(mode)))
+            }
+            None => Ok((value(&Oracle::new(&model, digits)?.time_at(&th)?), None)),
+        }
+    })
+}
+
+/// `forces`: the forces and rates where θ first reaches `theta` (the keys
+/// of the command line's `forces`), and with friction the mode there.
+#[pyfunction]
+fn forces(
+    py: Python<'_>,
+    pairs: Pairs,
+    digits: u32,
+    theta: String,
+) -> PyResult<(Vec<Value>, Option<String>)> {
+    detached(py, move || {
+        let (model, fr) = spec(&pairs)?;
+        let th = parse_angle("theta", &theta)?;
+        match fr {
+            Some(fr) => {
+                let (v, mode) = friction::answer::forces_at(&model, &fr, digits, &th)?;
+                Ok((values(&v), Some(mode)))
+            }
+            None => {
+                let v = Oracle::new(&model, digits)?.forces_at(&th)?;
+                debug_assert_eq!(v.len(), FORCE_KEYS.len());
+                Ok((values(&v), None))
+            }
+        }
+    })
+}
+
+/// `trajectory`: the column names, one row of values per time, and with
+/// friction the mode of each row.
+#[pyfunction]
+fn trajectory(py: Python<'_>, pairs: Pairs, digits: u32, times: Vec<String>) -> PyResult<Table> {
+    detached(py, move || {
+        let (model, fr) = spec(&pairs)?;
+        let times: Vec<Exact> = times
+            .iter()
+            .map(|t| Exact::parse("times", t, false))
+            .collect::<cylroll::Result<_>>()?;
+        if times.is_empty() {
+            return Err(Error::invalid("times", "", "give at least one time"));
+        }
+        match fr {
+            Some(fr) => {
+                let ans = friction::answer::trajectory(&model, &fr, digits, &times)?;
+                let rows = ans.rows.iter().map(|r| values(r)).collect();
+                Ok((friction::columns(), rows, Some(ans.modes)))
+            }
+            None => {
+                let rows = Oracle::new(&model, digits)?.trajectory(&times)?;
+                let rows = rows.iter().map(|r| values(r)).collect();
+                Ok((TRAJECTORY_COLUMNS.to_vec(), rows, None))
+            }
+        }
+    })
+}
+
+/// The one call into the library's candidate judge (`cylroll check`).
+fn run_check(
+    csv: &str,
+    source: &str,
+    case: &Case,
+    rtol: f64,
+    atol: f64,
+    digits: u32,
+) -> cylroll::Result<CheckReport> {
+    cylroll::record::check::check(csv, source, case, rtol, atol, digits)
+}
+
+/// `check`: judges candidate CSV text against a golden case (by name) or a
+/// model (key/value pairs); returns the report as a dict.
+#[pyfunction]
+#[pyo3(signature = (csv, source, case_name, pairs, rtol, atol, digits))]
+#[allow(clippy::too_many_arguments)]
+fn check<'py>(
+    py: Python<'py>,
+    csv: String,
+    source: String,
+    case_name: String,
+    pairs: Option<Pairs>,
+    rtol: f64,
+    atol: f64,
+    digits: u32,
+) -> PyResult<Bound<'py, PyDict>> {
+    let rep = detached(py, move || {
+        let (pairs, description, steps) = match pairs {
+            Some(p) => (p, String::new(), 40),
+            None => case_parts(&case_name, golden_text(&case_name)?)?,
+        };
+        let (model, friction) = spec(&pairs)?;
+        let case = Case {
+            name: case_name,
+            description,
+            model,
+            friction,
+            steps,
+        };
+        run_check(&csv, &source, &case, rtol, atol, digits)
+    })?;
+    let d = PyDict::new(py);
+    d.set_item("case", &rep.case)?;
+    d.set_item("rtol", rep.rtol)?;
+    d.set_item("atol", rep.atol)?;
+    d.set_item("rows", rep.rows)?;
+    d.set_item("digits", rep.digits)?;
+    d.set_item("passed", rep.passed())?;
+    d.set_item("text", rep.text())?;
+    let cols: Vec<(String, f64, String, f64, String, usize)> = rep
+        .columns
+        .iter()
+        .map(|c| {
+            (
+                c.name.clone(),
+                c.max_abs,
+                c.max_abs_t.clone(),
+                c.max_rel,
+                c.max_rel_t.clone(),
+                c.failures,
+            )
+        })
+        .collect();
+    d.set_item("columns", cols)?;
+    let first = rep.first_failure.as_ref().map(|f| {
+        (
+            f.row,
+            f.t.clone(),
+            f.column.clone(),
+            f.candidate.clone(),
+            f.oracle.clone(),
+        )
+    });
+    d.set_item("first_failure", first)?;
+    Ok(d)
+}
+
+/// The native module.
+#[pymodule]
+fn _cylroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("MODEL_KEYS", MODEL_KEYS.to_vec())?;
+    m.add("FRICTION_KEYS", FRICTION_KEYS.to_vec())?;
+    m.add("TRAJECTORY_COLUMNS", TRAJECTORY_COLUMNS.to_vec())?;
+    m.add("FRICTION_COLUMNS", friction::columns())?;
+    m.add("FORCE_KEYS", FORCE_KEYS.to_vec())?;
+    m.add("FRICTION_FORCE_KEYS", friction::answer::force_keys())?;
+    m.add("MAX_DIGITS", cylroll::oracle::MAX_DIGITS)?;
+    m.add("LIBRARY_VERSION", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(validate, m)?)?;
+    m.add_function(wrap_pyfunction!(read_toml, m)?)?;
+    m.add_function(wrap_pyfunction!(golden_names, m)?)?;
+    m.add_function(wrap_pyfunction!(golden_case, m)?)?;
+    m.add_function(wrap_pyfunction!(separation, m)?)?;
+    m.add_function(wrap_pyfunction!(time, m)?)?;
+    m.add_function(wrap_pyfunction!(forces, m)?)?;
+    m.add_function(wrap_pyfunction!(trajectory, m)?)?;
+    m.add_function(wrap_pyfunction!(check, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,222 @@
+"""The values the Rust tests hold, held again through the Python API."""
+import csv
+import json
+from decimal import Decimal, localcontext
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import cylroll
+
+from _decimal_math import cos, pi, round_sig
+
+
+def test_theta_s_is_pi_over_3_to_all_digits():
+    # identical solid cylinders from rest at the top: θs = π/3 (the paper's main result)
+    for digits in (30, 200):
+        sep = cylroll.Model().separation(digits=digits)
+        with localcontext() as c:
+            c.prec = digits + 20
+            expect = round_sig(pi(digits + 20) / 3, digits)
+        assert sep.theta_s.text == expect
+        assert sep.theta_s.digits == digits
+        assert sep.t_s is None          # infinite from rest at the top
+        assert sep.theta_s.err < Decimal(10) ** (-digits)
+        assert sep.events == [] and sep.start_mode is None and not sep.friction
+
+
+@pytest.mark.parametrize("k2, cos_s", [("0", Fraction(2, 3)), ("1/2", Fraction(4, 7)),
+                                       ("2/5", Fraction(10, 17))])
+def test_fixed_lower_cylinder_closed_form(k2, cos_s):
+    # cos θs = 2/(3 + k2) with the lower cylinder held (paper footnote 8)
+    sep = cylroll.Model(floor="fixed", k2=k2).separation(digits=60)
+    c = cos(sep.theta_s.decimal(), 80)
+    with localcontext() as ctx:
+        ctx.prec = 80
+        assert abs(c - Decimal(cos_s.numerator) / cos_s.denominator) < Decimal("1e-58")
+
+
+def test_fixed_lower_cylinder_forces_closed_form():
+    # fixed floor, rolling contact, from rest at θ0: (1 + k2) r θ̇² = 2 g (cos θ0 − cos θ),
+    # N12 = m2 g cos θ − m2 r θ̇²
+    m = cylroll.Model(floor="fixed", theta0="1/10", k2="1/2")
+    f = m.forces("0.7", digits=40)
+    with localcontext() as ctx:
+        ctx.prec = 60
+        r, k2 = Decimal(2), Decimal("0.5")
+        th2 = 2 * (cos(Decimal("0.1"), 60) - cos(Decimal("0.7"), 60)) / (r * (1 + k2))
+        n12 = cos(Decimal("0.7"), 60) - r * th2
+        assert abs(f.theta_dot.decimal() ** 2 - th2) < Decimal("1e-38")
+        assert abs(f["N12"].decimal() - n12) < Decimal("1e-38")
+    assert f["F1"].text == "0" or f.F1.digits > 0
+    assert f.mode is None
+    assert list(f) == ["F1", "N1", "F21", "N12", "theta_dot", "theta_ddot", "mu_floor",
+                       "mu_contact"]
+
+
+def test_time_and_trajectory_agree():
+    m = cylroll.Model(theta0="1/10")
+    t = m.time("0.9", digits=30)
+    assert t.digits == 30 and t.name == "t" and t.mode is None
+    row = m.trajectory([t.text], digits=30)
+    assert abs(row.values("theta")[0].decimal() - Decimal("0.9")) < Decimal("1e-28")
+    assert float(t) == pytest.approx(4.9, abs=0.2)
+
+
+def test_trajectory_reproduces_the_golden_csv(golden_dir):
+    # the golden data were written by the command line (`cylroll golden`) at 30 digits
+    for name in ("mujoco_main", "main_mu_1"):
+        with open(golden_dir / "data" / f"{name}.csv", newline="") as f:
+            rows = list(csv.reader(f))
+        head, data = rows[0], rows[1:]
+        times = [r[0] for r in data[::8]]
+        traj = cylroll.golden.case(name).trajectory(times, digits=30)
+        want_cols = [c for c in head if c != "mode"]
+        assert traj.columns == want_cols
+        for i, r in enumerate(data[::8]):
+            assert [v.text for v in traj.rows[i]] == r[:len(want_cols)]
+            if "mode" in head:
+                assert traj.modes[i] == r[-1]
+
+
+def test_separation_reproduces_the_golden_json(golden_dir):
+    doc = json.loads((golden_dir / "data" / "main_mu_0_3.json").read_text())
+    sep = cylroll.golden.case("main_mu_0_3").separation(digits=30)
+    assert sep.start_mode == doc["start_mode"]
+    assert [(e.kind, e.contact, e.mode, e.t.text, e.theta.text) for e in sep.events] == [
+        (e["kind"], e["contact"], e["mode"], e["t"], e["theta"]) for e in doc["events"]]
+    for k, v in doc["scalars"].items():
+        if k in sep:
+            assert sep[k].text == v
+
+
+def _energy(p, row):
+    """Total energy of the roll/roll system from one trajectory row, from the README's
+    conventions: x1 = r1 φ1, (x2, y2) = (x1 + r sin θ, r1 + r cos θ), φ2 − θ the
+    counter-clockwise rotation of cylinder 2 with r2 φ2 = r1(φ1 − θ). With T the kinetic
+    energy in (φ1, θ), the momentum conjugate to φ1 is
+        p = r1² D φ̇1 − m2 r1 r θ̇ (k2 − cos θ),  D = m1 (1 + k1) + m2 (1 + k2),
+    conserved (φ1 is cyclic) and equal to r1² D ω0 (ω0 = φ̇1 where θ̇ = 0), so
+        φ̇1 = ω0 + m2 r θ̇ (k2 − cos θ) / (r1 D).
+    cos θ and sin θ are taken from the position columns, not from θ."""
+    m1, m2, r1, r2, k1, k2, g, w0 = (p[k] for k in ("m1", "m2", "r1", "r2", "k1", "k2", "g",
+                                                    "omega0"))
+    r = r1 + r2
+    th_d, x1, x2, y2 = row["theta_dot"], row["x1"], row["x2"], row["y2"]
+    c = (y2 - r1) / r
+    s = (x2 - x1) / r
+    D = m1 * (1 + k1) + m2 * (1 + k2)
+    phi1_d = w0 + m2 * r * th_d * (k2 - c) / (r1 * D)
+    vx2 = r1 * phi1_d + r * c * th_d
+    vy2 = -r * s * th_d
+    psi2_d = (r1 * phi1_d - r * th_d) / r2
+    T = (m1 * (1 + k1) * r1 ** 2 * phi1_d ** 2 + m2 * (vx2 ** 2 + vy2 ** 2)
+         + k2 * m2 * r2 ** 2 * psi2_d ** 2) / 2
+    return T + m2 * g * y2, phi1_d
+
+
+def test_energy_is_conserved_along_a_trajectory():
+    kw = dict(m1=2, m2=1, r1=1, r2="1/2", k1="1/2", k2="2/5", g="9.81", theta0="1/5",
+              thetadot0="1/10", omega0="1/3")
+    m = cylroll.Model(**kw)
+    p = {k: Decimal(Fraction(v).numerator) / Fraction(v).denominator
+         for k, v in ((k, Fraction(str(v))) for k, v in kw.items())}
+    t_s = m.separation(digits=20).t_s
+    steps = 40
+    traj = m.trajectory(t_end=Decimal(t_s.text) * Decimal("0.999"), steps=steps, digits=30)
+    assert len(traj) == steps + 1
+    with localcontext() as ctx:
+        ctx.prec = 60
+        cols = {c: [v.decimal() for v in traj.values(c)] for c in traj.columns}
+        rows = [{c: cols[c][i] for c in cols} for i in range(len(traj))]
+        energies = [_energy(p, r)[0] for r in rows]
+        e0 = energies[0]
+        scale = p["m2"] * p["g"] * (p["r1"] + p["r2"])
+        drift = max(abs(e - e0) for e in energies) / scale
+        assert drift < Decimal("1e-26"), drift
+        # the derivation's φ̇1 against the phi1 column (central differences, O(h²))
+        h = Decimal(t_s.text) * Decimal("0.999") / steps
+        for i in range(1, len(rows) - 1):
+            fd = (rows[i + 1]["phi1"] - rows[i - 1]["phi1"]) / (2 * h)
+            assert abs(fd - _energy(p, rows[i])[1]) < Decimal("1e-2") * (1 + abs(fd))
+        # the constraints the columns obey
+        for r in rows:
+            assert abs(r["x1"] - p["r1"] * r["phi1"]) < Decimal("1e-28")
+            assert abs(p["r2"] * r["phi2"] - p["r1"] * (r["phi1"] - r["theta"])) < \
+                Decimal("1e-28")
+    # the same energy in float64 from the NumPy columns
+    a = {c: traj.column(c) for c in traj.columns}
+    pf = {k: float(v) for k, v in p.items()}
+    ef = np.array([_energy(pf, {c: a[c][i] for c in a})[0] for i in range(len(traj))])
+    assert np.ptp(ef) / float(scale) < 1e-13
+
+
+def test_friction_events_and_columns():
+    m = cylroll.Model(theta0="1/10", mu_floor="0.3", mu_contact="0.3")
+    sep = m.separation(digits=12)
+    assert sep.friction and sep.start_mode == "floor stick, contact stick"
+    assert [e.kind for e in sep.events] == ["slip_onset", "separation", "impact"]
+    onset = sep.events[0]
+    assert onset.contact == "contact" and onset.mode == "floor stick, contact slip+"
+    assert onset.theta.text == "0.584216022929"
+    assert sep.events[1].t.text == sep.t_s.text and sep.events[1].theta.text == sep.theta_s.text
+    assert sep.impact_surface == "floor"
+    assert list(sep)[:3] == ["theta_s", "t_s", "work_s"]
+    assert "event 1: slip_onset (contact)" in str(sep)
+    traj = m.trajectory(t_end="5.5", steps=11, digits=12)
+    assert traj.columns == list(cylroll.FRICTION_COLUMNS)
+    assert traj.modes[0] == "stick/stick" and traj.modes[-1] == "flight"
+    assert traj.column("work")[-1] == pytest.approx(float(sep["work_s"]), rel=1e-9)
+    f = m.forces("0.7", digits=12)
+    assert f.mode == "floor stick, contact slip+" and float(f["s12"]) > 0
+    t = m.time("0.7", digits=12)
+    assert t.mode == "floor stick, contact slip+"
+
+
+def test_value_type():
+    v = cylroll.Model(theta0="1/10").time("pi/4", digits=25)
+    assert isinstance(v.decimal(), Decimal) and str(v) == v.text
+    assert float(v) == float(v.text)
+    assert len(v.text.replace(".", "").lstrip("0")) == 25 == v.digits
+    assert "Value('t', '4.680205009695901966571853'" in repr(v)
+
+
+def test_trajectory_table_api():
+    m = cylroll.Model(theta0="1/10")
+    traj = m.trajectory(np.linspace(0, 5, 11), digits=20)
+    assert traj.values("t")[1].text == "0.5"           # floats read as they print
+    arr = traj.to_numpy()
+    assert arr.shape == (11, 13) and arr.dtype == np.float64
+    assert np.array_equal(arr[:, 1], traj.column("theta"))
+    assert np.array_equal(traj["theta"], traj.column("theta"))
+    assert (traj.errors("theta") < 1e-19).all()
+    assert traj.to_csv().splitlines()[0] == ",".join(cylroll.TRAJECTORY_COLUMNS)
+    assert set(traj.to_dict()) == set(traj.columns)
+    with pytest.raises(KeyError):
+        traj.column("nope")
+    assert "Trajectory: 11 rows x 13 columns" in str(traj)
+    grid = m.trajectory(t_end="1/3", steps=3, digits=10)
+    assert [v.text for v in grid.values("t")][0] == "0"
+
+
+def test_to_pandas():
+    pd = pytest.importorskip("pandas")
+    m = cylroll.Model(theta0="1/10", mu_contact="0.3")
+    df = m.trajectory(t_end=5, steps=5, digits=10).to_pandas()
+    assert isinstance(df, pd.DataFrame) and df["mode"].iloc[0] == "stick/stick"
+    assert df["theta"].dtype == np.float64
+
+
+def test_separation_with_mu_diagnostic():
+    sep = cylroll.Model(theta0="1/10").separation(digits=20, mu="0.3")
+    assert "theta_slip_contact" in sep and sep.t_s is not None
+    # the ideal diagnostic agrees with the frictional motion's slip onset
+    fr = cylroll.Model(theta0="1/10", mu_contact="0.3").separation(digits=12)
+    assert fr.events[0].theta.text == round_sig(sep["theta_slip_contact"].decimal(), 12)
+
+
+def test_print_of_the_default_separation():
+    text = str(cylroll.Model().separation())
+    assert text.startswith("Separation (30 digits requested")
+    assert "theta_s            = 1.04719755119659774615421446109" in text
