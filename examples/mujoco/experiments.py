@@ -60,7 +60,9 @@ def sim(name, dt, extra, forces=False):
 
 
 def e3(x):
-    """x as the command line writes it (Rust's {:.3e}: 2.732e-4)."""
+    """x as the command line writes it (Rust's {:.3e}: 2.732e-4; None as "-")."""
+    if x is None:
+        return "-"
     m, ex = f"{x:.3e}".split("e")
     return f"{m}e{int(ex)}"
 

@@ -27,12 +27,18 @@ class ColumnStats(NamedTuple):
     max_abs: float
     #: the time where it occurs (as the candidate wrote it)
     max_abs_t: str
-    #: largest |candidate − oracle| / |oracle| (oracle values printed as 0 skip it)
-    max_rel: float
+    #: largest |candidate − oracle| / |oracle|; ``None`` when every oracle
+    #: value of the column is 0 (a relative error is undefined there)
+    max_rel: Optional[float]
     #: the time where it occurs
     max_rel_t: str
     #: rows out of tolerance
     failures: int
+    #: largest |candidate − oracle| / (atol + rtol·|oracle|): above 1 fails
+    worst_ratio: float
+    #: which term of that limit was the larger where it occurs: ``"atol"``
+    #: (an oracle value near 0) or ``"rtol"``
+    worst_bound: str
 
 
 class FirstFailure(NamedTuple):
@@ -48,6 +54,10 @@ class FirstFailure(NamedTuple):
     candidate: str
     #: the oracle's value (verified digits)
     oracle: str
+    #: the limit atol + rtol·|oracle| it exceeded
+    limit: float
+    #: which term of the limit was the larger: ``"atol"`` or ``"rtol"``
+    bound: str
 
 
 class CheckReport:

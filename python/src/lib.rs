@@ -488,7 +488,8 @@ fn check<'py>(
     d.set_item("digits", rep.digits)?;
     d.set_item("passed", rep.passed())?;
     d.set_item("text", rep.text())?;
-    let cols: Vec<(String, f64, String, f64, String, usize)> = rep
+    #[allow(clippy::type_complexity)]
+    let cols: Vec<(String, f64, String, Option<f64>, String, usize, f64, String)> = rep
         .columns
         .iter()
         .map(|c| {
@@ -499,6 +500,8 @@ fn check<'py>(
                 c.max_rel,
                 c.max_rel_t.clone(),
                 c.failures,
+                c.worst_ratio,
+                c.worst_bound.to_string(),
             )
         })
         .collect();
@@ -510,6 +513,8 @@ fn check<'py>(
             f.column.clone(),
             f.candidate.clone(),
             f.oracle.clone(),
+            f.limit,
+            f.bound.to_string(),
         )
     });
     d.set_item("first_failure", first)?;
