@@ -552,3 +552,143 @@ mod near_separation_and_the_top {
         assert!(rel < 1e-20, "{d} vs {per_decade}");
     }
 }
+
+mod along_the_motion {
+    use cylroll::exact::Exact;
+    use cylroll::model::Model;
+    use cylroll::oracle::Oracle;
+
+    fn sep(args: &[(&str, &str)], digits: u32) -> cylroll::oracle::Separation {
+        let mut pairs = cylroll::input::Pairs::new();
+        for (k, v) in args {
+            pairs.insert(k.to_string(), v.to_string());
+        }
+        let m = cylroll::input::model_from_pairs(&pairs).unwrap();
+        Oracle::new(&m, digits).unwrap().separation().unwrap()
+    }
+
+    fn get<'a>(
+        s: &'a cylroll::oracle::Separation,
+        k: &str,
+    ) -> &'a cylroll::numeric::verify::Verified {
+        s.extra.iter().find(|v| v.name == k).unwrap_or_else(|| {
+            panic!(
+                "no {k}: {:?}",
+                s.extra.iter().map(|v| &v.name).collect::<Vec<_>>()
+            )
+        })
+    }
+
+    /// N1 for identical solid cylinders from rest at the top, from the
+    /// paper's eq. (23) (first form, confirmed by the audit) and the energy
+    /// integral θ̇² = 2(g/r)(1 − c)/K(c), K = 1 + k2 − A(c − k2)², A = 1/3,
+    /// g/r = 1/2: N1 = (m1 + m2)g − m2 r (sin θ θ̈ + cos θ θ̇²).
+    fn n1_paper(th: f64) -> f64 {
+        let (a, k2, gr) = (1.0 / 3.0, 0.5, 0.5);
+        let c = th.cos();
+        let k = 1.0 + k2 - a * (c - k2) * (c - k2);
+        let td2 = 2.0 * gr * (1.0 - c) / k;
+        let tdd = (gr - a * (c - k2) * td2) * th.sin() / k;
+        2.0 - 2.0 * (th.sin() * tdd + c * td2)
+    }
+
+    #[test]
+    fn the_least_n1_is_verified_and_certified() {
+        let s = sep(&[], 30);
+        // N1 decreases all the way (dense scan of the paper's formula), so
+        // its minimum is at θs = π/3, where N1 = 2 − 2(1/4 + 1/6) = 7/6
+        let mut last = f64::INFINITY;
+        for i in 1..=2000 {
+            let th = std::f64::consts::FRAC_PI_3 * i as f64 / 2000.0;
+            let v = n1_paper(th);
+            assert!(v < last, "N1 rises at {th}");
+            last = v;
+        }
+        assert_eq!(get(&s, "N1_min").text, "1.16666666666666666666666666667");
+        assert_eq!(get(&s, "theta_N1_min").text, s.theta_s.text);
+        assert!(s.notes.iter().any(|n| n.contains("N1 > 0 at every angle")));
+        assert!(!s.notes.iter().any(|n| n.contains("scan points")));
+    }
+
+    #[test]
+    fn with_a_frictionless_contact_n1_at_separation_is_m1_g() {
+        // N12 = 0 and F21 = 0 at θs: nothing but gravity acts on cylinder 1
+        // vertically, N1 = m1 g (m1 = 3/2, g = 7/4: 2.625)
+        for floor in ["roll", "slip", "fixed"] {
+            let s = sep(
+                &[
+                    ("floor", floor),
+                    ("contact", "slip"),
+                    ("m1", "3/2"),
+                    ("g", "7/4"),
+                ],
+                25,
+            );
+            let n1 = get(&s, "N1_min");
+            assert_eq!(n1.text, "2.625000000000000000000000", "{floor}");
+            assert_eq!(get(&s, "theta_N1_min").text, s.theta_s.text, "{floor}");
+        }
+    }
+
+    #[test]
+    fn the_largest_friction_the_floor_needs_is_the_maximum_of_the_force_ratio() {
+        let s = sep(&[("theta0", "1/10")], 25);
+        let th = get(&s, "theta_mu_floor_max").value.to_f64();
+        let mu = get(&s, "mu_floor_max").value.to_f64();
+        // a dense scan of forces_at's mu_floor (the state from the dynamics,
+        // not the polynomial extremum) never exceeds it, and comes close
+        let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+        let mut o = Oracle::new(&m, 12).unwrap();
+        let ths = s.theta_s.value.to_f64();
+        let mut best = (0.0, 0.0);
+        for i in 0..=200 {
+            let t = 0.1 + (ths - 0.1) * i as f64 / 200.0 - 1e-9 * (i == 200) as u8 as f64;
+            let e = Exact::parse("theta", &format!("{t:.15}"), false).unwrap();
+            let f = o.forces_at(&e).unwrap();
+            let v = f
+                .iter()
+                .find(|v| v.name == "mu_floor")
+                .unwrap()
+                .value
+                .to_f64();
+            assert!(v <= mu * (1.0 + 1e-12), "{t}: {v} > {mu}");
+            if v > best.0 {
+                best = (v, t);
+            }
+        }
+        assert!(
+            (best.1 - th).abs() < (ths - 0.1) / 100.0,
+            "{best:?} vs {th}"
+        );
+        assert!(mu - best.0 < 1e-4 * mu);
+        // and at the verified angle the ratio is the verified maximum
+        let e = Exact::parse("theta", &get(&s, "theta_mu_floor_max").text, false).unwrap();
+        let f = o.forces_at(&e).unwrap();
+        let v = f
+            .iter()
+            .find(|v| v.name == "mu_floor")
+            .unwrap()
+            .value
+            .to_f64();
+        assert!((v - mu).abs() < 1e-11 * mu);
+    }
+
+    #[test]
+    fn sign_changes_after_separation_are_reported_and_marked() {
+        let s = sep(&[("theta0", "1/10")], 20);
+        let v = get(&s, "theta_phi1_zero_after_separation");
+        assert!(v.value > s.theta_s.value);
+        assert!(s
+            .notes
+            .iter()
+            .any(|n| n.contains("not of the motion") && n.contains(&v.text)));
+        // φ1 = α δ + β (sin θ − sin θ0) from rest (γ = 0): at the reported
+        // angle it is 0; φ̇1 = (α + β cos θ) θ̇ vanishes at cos θ = −α/β, which
+        // for identical solid cylinders is θ = π/3 (theta_phi1dot_zero)
+        assert_eq!(get(&s, "theta_phi1dot_zero").text, "1.0471975511965977462");
+        // so α = −β/2 and φ1 ∝ −(θ − θ0)/2 + sin θ − sin θ0
+        let th = v.value.to_f64();
+        let (a, b) = (-0.5, 1.0);
+        assert!((a * (th - 0.1) + b * (th.sin() - 0.1f64.sin())).abs() < 1e-12);
+    }
+}

@@ -70,7 +70,7 @@ def test_from_toml(tmp_path):
     m = cylroll.Model.from_toml(p)
     assert m == cylroll.Model(floor="fixed", k2="2/5", theta0="1/20", m1=2)
     p.write_text("m1 = 0.3\n")
-    with pytest.raises(cylroll.InvalidParameterError, match="strings"):
+    with pytest.raises(cylroll.InvalidParameterError, match="as a string"):
         cylroll.Model.from_toml(p)
     with pytest.raises(cylroll.InputFileError) as e:
         cylroll.Model.from_toml(tmp_path / "missing.toml")

@@ -154,6 +154,9 @@ pub struct TwoRun {
     pub phi1_zero: Option<(TwoState, Float)>,
     /// Turning points θ̇ = 0 before separation.
     pub turning: Vec<(TwoState, Float)>,
+    /// The state at the first crossing of each angle of [`TwoOpts::reach`]
+    /// (`None`: not reached before separation).
+    pub reached: Vec<Option<TwoState>>,
     /// Largest relative change of the energy over the samples and events.
     pub energy_drift: Float,
     /// Largest change of the conserved momenta over the samples and events.
@@ -167,6 +170,8 @@ pub struct TwoRun {
 pub struct TwoOpts {
     /// Also locate where φ̇1 and φ1 change sign.
     pub phi1_events: bool,
+    /// Angles θ at which to record the state (the first crossing of each).
+    pub reach: Vec<Float>,
 }
 
 fn row_value(sys: &System, s: &Sample, row: Row) -> Float {
@@ -255,6 +260,16 @@ pub fn two_cylinder(
             terminal: false,
         });
     }
+    for (k, th) in opts.reach.iter().enumerate() {
+        events.push(Event {
+            name: format!("reach{k}"),
+            watch: Watch::Reach {
+                i: system::th(0),
+                value: Float::with_val(o.prec, th),
+            },
+            terminal: false,
+        });
+    }
     // the start must have both contacts pressing
     let a0 = sys.accel(&q0, &v0)?;
     if !a0.lambda[n12].is_sign_positive() || a0.lambda[n12].is_zero() {
@@ -270,6 +285,7 @@ pub fn two_cylinder(
         phi1dot_zero: None,
         phi1_zero: None,
         turning: Vec::new(),
+        reached: vec![None; opts.reach.len()],
         energy_drift: Float::new(prec),
         momentum_drift: Float::new(prec),
         run: run.clone(),
@@ -284,6 +300,13 @@ pub fn two_cylinder(
                 }
             }
             "theta_dot" => out.turning.push(st),
+            name if name.starts_with("reach") => {
+                if let Ok(k) = name["reach".len()..].parse::<usize>() {
+                    if out.reached[k].is_none() {
+                        out.reached[k] = Some(st.0);
+                    }
+                }
+            }
             "phi1_dot" => {
                 if out.phi1dot_zero.is_none() {
                     out.phi1dot_zero = Some(st)

@@ -218,6 +218,7 @@ pub fn compare_case(case: &VerifyCase, digits: u32) -> Result<CaseReport> {
             &t_end,
             &TwoOpts {
                 phi1_events: want_phi,
+                reach: Vec::new(),
             },
         )?;
         if run.rows.len() != tf.len() {
@@ -612,8 +613,20 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
                     g.case
                 )
             } else if g.failures.is_empty() {
+                let skipped = if g.skipped.is_empty() {
+                    String::new()
+                } else {
+                    format!(
+                        "; not reached by route 2: {}",
+                        g.skipped
+                            .iter()
+                            .map(|(k, why)| format!("{k} ({why})"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    )
+                };
                 format!(
-                    "{}: all {} values round to the printed digits (largest |route 2 - golden| = {:.3} of a unit in the last printed digit)",
+                    "{}: all {} values round to the printed digits (largest |route 2 - golden| = {:.3} of a unit in the last printed digit){skipped}",
                     g.case, g.checked, g.worst_ulps
                 )
             } else {

@@ -222,11 +222,6 @@ impl Engine {
         self.dynm.forces(&st).n12
     }
 
-    pub fn n1(&mut self, d: &Float) -> Float {
-        let st = self.dynm.state(d);
-        self.dynm.forces(&st).n1
-    }
-
     pub fn phi1_dot(&mut self, d: &Float) -> Float {
         self.dynm.state(d).v[PHI1].clone()
     }

@@ -93,6 +93,20 @@ pub struct Oracle {
     delta_s_at: HashMap<u32, (Float, Float)>,
     /// N12·K²/m2 as an exact polynomial in cos θ (built on first use).
     n12_poly: Option<crate::mechanics::dynamics::N12Poly>,
+    /// N1, F1, F21 as exact polynomials in cos θ (built on first use).
+    force_polys: Option<crate::mechanics::dynamics::ForcePolys>,
+}
+
+/// Where an extremum along [θ0, θs] lies.
+#[derive(Debug, Clone)]
+enum At {
+    /// θ0.
+    Start,
+    /// θs.
+    Separation,
+    /// An interior root c of a polynomial in c = cos θ (found at
+    /// `SCAN_PREC` bits), refined at each precision.
+    Root(Float, crate::mechanics::dynamics::HPoly),
 }
 
 /// Constants of the trajectory rows at one precision.
@@ -161,6 +175,7 @@ impl Oracle {
             t_s_at: HashMap::new(),
             delta_s_at: HashMap::new(),
             n12_poly: None,
+            force_polys: None,
         };
         let e = o.engine(SCAN_PREC)?;
         let z = Float::new(SCAN_PREC);
@@ -387,6 +402,205 @@ impl Oracle {
         single(v)
     }
 
+    /// N1 on [θ0, θs] from N1·K², a polynomial in c = cos θ (K > 0): its
+    /// real roots on [cos θs, cos θ0] are isolated (by the monotone pieces
+    /// between the roots of its derivatives, [`crate::numeric::poly`]), so
+    /// "N1 > 0 up to separation" is a statement about every angle, not about
+    /// scan points. Its minimum is at an end or at a root of
+    /// D = B'K − 2BK' (B = N1·K²); the largest friction the floor needs,
+    /// |F1|/N1 = sin θ·|A|/B (A = F1·K²/sin θ), at an end or a root of
+    /// E = cAB − (1 − c²)(A'B − AB'). Each is verified like θs: the root
+    /// refined at both precisions, θ = acos c, the value at θ.
+    fn n1_findings(
+        &mut self,
+        ds_scan: &Float,
+        extra: &mut Vec<Verified>,
+        notes: &mut Vec<String>,
+    ) -> Result<()> {
+        use crate::mechanics::dynamics::{ForcePolys, HPoly, N12Poly};
+        use crate::numeric::poly;
+        let (floor, contact) = (self.work.floor(), self.work.contact());
+        let fp = match &self.force_polys {
+            Some(f) => f.clone(),
+            None => {
+                let f = ForcePolys::new(&self.red, self.work.params(), floor, contact);
+                self.force_polys = Some(f.clone());
+                f
+            }
+        };
+        let q = |v: i64| rug::Rational::from(v);
+        let k = HPoly::constant(&fp.k);
+        let b = HPoly::linear(&fp.n1);
+        let a = HPoly::linear(&fp.f1);
+        let cpoly = HPoly::constant(&[q(0), q(1)]);
+        let one_m_c2 = HPoly::constant(&[q(1), q(0), q(-1)]);
+        let d = b.deriv().mul(&k).add_scaled(&b.mul(&k.deriv()), &q(-2));
+        let apb = a.deriv().mul(&b).add_scaled(&a.mul(&b.deriv()), &q(-1));
+        let e = cpoly
+            .mul(&a)
+            .mul(&b)
+            .add_scaled(&one_m_c2.mul(&apb), &q(-1));
+
+        let p = SCAN_PREC;
+        let (c0, a_h) = {
+            let eng = self.engine(p)?;
+            (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
+        };
+        let th_s = Float::with_val(p, self.work.start().theta0.to_float(p) + ds_scan);
+        let cs = Float::with_val(p, th_s.cos_ref());
+        if cs >= c0 {
+            return Ok(());
+        }
+        let roots_in = |hp: &HPoly| -> Vec<Float> {
+            poly::sign_change_roots(&hp.at(&a_h, p), &cs, &c0)
+                .into_iter()
+                .filter(|c| *c > cs && *c < c0)
+                .collect()
+        };
+        let eval = |hp: &HPoly, c: &Float| -> Float {
+            let mut v = Float::new(p);
+            poly::horner(&hp.at(&a_h, p), c, &mut v);
+            v
+        };
+        // the first root of N1 in θ: the largest c
+        if let Some(cz) = roots_in(&b).into_iter().next_back() {
+            let v = self.verify_at("theta_N1_zero", None, &At::Root(cz, b.clone()))?;
+            notes.push(format!(
+                "N1 vanishes at theta = {} before separation: cylinder 1 would leave the floor there, \
+                 and the motion after that angle (including theta_s) is not the model's",
+                v[0].text
+            ));
+            extra.extend(v);
+            return Ok(());
+        }
+        notes.push(
+            "N1 > 0 at every angle from theta0 to theta_s (N1 K^2, a polynomial in cos theta, \
+             has no root there): cylinder 1 stays on the floor"
+                .to_string(),
+        );
+        // candidates: the ends and the interior extrema
+        let pick = |cands: Vec<At>, f: &dyn Fn(&Float) -> Float, max: bool| -> At {
+            let mut best: Option<(Float, At)> = None;
+            for at in cands {
+                let c = match &at {
+                    At::Start => c0.clone(),
+                    At::Separation => cs.clone(),
+                    At::Root(c, _) => c.clone(),
+                };
+                let v = f(&c);
+                let better = match &best {
+                    None => true,
+                    Some((bv, _)) => {
+                        if max {
+                            v > *bv
+                        } else {
+                            v < *bv
+                        }
+                    }
+                };
+                if better {
+                    best = Some((v, at));
+                }
+            }
+            best.map(|b| b.1).unwrap_or(At::Start)
+        };
+        let kq = |c: &Float| eval(&k, c);
+        let n1_of = |c: &Float| -> Float {
+            let kk = kq(c);
+            Float::with_val(p, eval(&b, c) / Float::with_val(p, kk.square_ref()))
+        };
+        let mut cands = vec![At::Start, At::Separation];
+        cands.extend(roots_in(&d).into_iter().map(|c| At::Root(c, d.clone())));
+        let at_min = pick(cands, &n1_of, false);
+        let v = self.verify_at("theta_N1_min", Some("N1_min"), &at_min)?;
+        extra.extend(v);
+        if floor != Floor::Slip {
+            let mu_of = |c: &Float| -> Float {
+                let s = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
+                Float::with_val(p, s * eval(&a, c) / eval(&b, c)).abs()
+            };
+            let mut cands = vec![At::Start, At::Separation];
+            cands.extend(roots_in(&e).into_iter().map(|c| At::Root(c, e.clone())));
+            let at_max = pick(cands, &mu_of, true);
+            let v = self.verify_at("theta_mu_floor_max", Some("mu_floor_max"), &at_max)?;
+            extra.extend(v);
+        }
+        Ok(())
+    }
+
+    /// The angle `at` (named `theta_name`) and, with `value`, the quantity
+    /// there (`N1_min`: N1; `mu_floor_max`: |F1|/N1), verified at two
+    /// precisions. The value's error includes its change across the angle's
+    /// error bound.
+    fn verify_at(
+        &mut self,
+        theta_name: &str,
+        value: Option<&str>,
+        at: &At,
+    ) -> Result<Vec<Verified>> {
+        use crate::mechanics::dynamics::N12Poly;
+        let mut names = vec![theta_name];
+        if let Some(v) = value {
+            names.push(v);
+        }
+        ladder(self.digits, &names, |p| {
+            let th0 = self.work.start().theta0.to_float(p);
+            let (delta, derr) = match at {
+                At::Start => (Float::new(p), Float::new(p)),
+                At::Separation => self.delta_s(p)?,
+                At::Root(c_iso, hp) => {
+                    let a_h = N12Poly::a_h(&self.engine(p)?.dynm);
+                    let coef = hp.at(&a_h, p + 16);
+                    let (c, eps) = crate::numeric::poly::refine_root(theta_name, &coef, c_iso, p)?;
+                    let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
+                    let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
+                    let mut err = Float::with_val(p, &eps / &sin);
+                    err += Float::with_val(p, &err >> 16);
+                    err += th_err;
+                    (Float::with_val(p, th - &th0), err)
+                }
+            };
+            let th = Float::with_val(p, &th0 + &delta);
+            let one = Float::with_val(p, 1u32);
+            let mut out = vec![if derr.is_zero() {
+                Estimate::rounded(self.odd(th), one.clone())
+            } else {
+                Estimate::new(self.odd(th), derr.clone(), one.clone())
+            }];
+            if let Some(name) = value {
+                let sf = self.scale_force(p);
+                let e = self.engine(p)?;
+                let q = |d: &Float| -> Float {
+                    let f = e.dynm.forces(&e.dynm.state(d));
+                    if name == "N1_min" {
+                        f.n1
+                    } else {
+                        Float::with_val(p, f.f1.abs_ref()) / &f.n1
+                    }
+                };
+                let v = q(&delta);
+                let mut err = Float::new(p);
+                if !derr.is_zero() {
+                    for sg in [1i32, -1] {
+                        let d2 = Float::with_val(p, &delta + Float::with_val(p, &derr * sg));
+                        if d2.is_sign_negative() {
+                            continue;
+                        }
+                        let dv = Float::with_val(p, &q(&d2) - &v).abs();
+                        if dv > err {
+                            err = dv;
+                        }
+                    }
+                }
+                let ulps = Float::with_val(p, v.abs_ref()) >> (p as i32 - 4);
+                err += ulps;
+                let scale = if name == "N1_min" { sf } else { one };
+                out.push(Estimate::new(v, err, scale));
+            }
+            Ok(out)
+        })
+    }
+
     /// Sign-change angles, N1 > 0, friction needed, slip angles for μ.
     fn separation_findings(
         &mut self,
@@ -402,30 +616,9 @@ impl Oracle {
         let finite = !self.work.starts_at_equilibrium();
         let sign = self.sign;
 
-        // --- N1 > 0 up to separation
-        let n1_root = {
-            let scan = self.engine(SCAN_PREC)?;
-            let z = Float::new(SCAN_PREC);
-            crate::numeric::root::first_sign_change(&z, &ds_scan, SCAN_STEPS, |d| scan.n1(d))
-        };
-        match n1_root {
-            None => notes.push(format!(
-                "N1 > 0 at all {SCAN_STEPS} scan points up to separation: cylinder 1 stays on the floor"
-            )),
-            Some((lo, hi)) => {
-                let v = ladder(digits, &["theta_N1_zero"], |p| {
-                    let (d, err) = self.engine(p)?.refine_root("theta_N1_zero", &lo, &hi, |e, d| e.n1(d))?;
-                    let th = Float::with_val(p, self.work.start().theta0.to_float(p) + d);
-                    Ok(vec![Estimate::new(self.odd(th), err, Float::with_val(p, 1u32))])
-                })?;
-                notes.push(format!(
-                    "N1 vanishes at theta = {} before separation: cylinder 1 would leave the floor there, \
-                     and the motion after that angle (including theta_s) is not the model's",
-                    v[0].text
-                ));
-                extra.extend(v);
-            }
-        }
+        // --- N1 along the motion: its sign, its minimum, the friction the
+        // floor needs (from the polynomials in cos θ: certified, not a scan)
+        self.n1_findings(&ds_scan, extra, notes)?;
 
         // --- where φ̇1 and φ1 change sign
         let phi_moves = floor != Floor::Fixed
@@ -460,9 +653,34 @@ impl Oracle {
                         f(scan, d)
                     })
                 };
+                // none up to θs: the formulas continued past θs (while θ̇ > 0,
+                // up to θ = π) may still change sign there; a property of
+                // the formulas the paper discusses, reported as such
+                let (found, after) = match found {
+                    Some(b) => (Some(b), false),
+                    None => {
+                        let scan = self.engine(SCAN_PREC)?;
+                        let lo0 = Float::with_val(SCAN_PREC, &ds_scan + &step);
+                        let pi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi);
+                        let hi0 = Float::with_val(SCAN_PREC, &pi - &th0);
+                        let hi0 = Float::with_val(
+                            SCAN_PREC,
+                            &hi0 - (Float::with_val(SCAN_PREC, &hi0 >> 10)),
+                        );
+                        let b = if hi0 > lo0 {
+                            crate::numeric::root::first_sign_change(&lo0, &hi0, SCAN_STEPS, |d| {
+                                f(scan, d)
+                            })
+                        } else {
+                            None
+                        };
+                        (b, true)
+                    }
+                };
                 match found {
                     None => notes.push(format!(
-                        "{label} keeps its sign from the start to separation"
+                        "{label} keeps its sign from the start to separation (and on the formulas \
+                         continued up to theta = pi)"
                     )),
                     Some((lo, hi)) => {
                         let v = ladder(digits, &[name], |p| {
@@ -484,10 +702,18 @@ impl Oracle {
                             notes.push(format!(
                                 "{label} changes sign at separation (equal to all digits verified)"
                             ));
-                        } else if (v.value.clone() * sign) > (theta_s.value.clone() * sign) {
+                        } else if after || (v.value.clone() * sign) > (theta_s.value.clone() * sign)
+                        {
+                            // past θs: marked in its name and in a note
+                            let mut v = v;
+                            v.name = format!("{name}_after_separation");
                             notes.push(format!(
-                                "{label} keeps its sign from the start to separation"
+                                "{label} keeps its sign from the start to separation; the formulas \
+                                 continued past theta_s change its sign at theta = {} \
+                                 ({}: a property of the formulas, not of the motion)",
+                                v.text, v.name
                             ));
+                            extra.push(v);
                             continue;
                         }
                         extra.push(v);
