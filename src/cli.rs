@@ -727,8 +727,10 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 return Ok((a.render(common.format), 0));
             }
             let mut o = Oracle::new(&model, common.digits)?;
-            let values = o.forces_at(&th)?;
+            let mut values = o.forces_at(&th)?;
             debug_assert_eq!(values.len(), FORCE_KEYS.len());
+            // the most friction needed so far, and where
+            values.extend(o.friction_needed(&th)?);
             let notes = values
                 .iter()
                 .filter(|v| v.text.starts_with(">="))

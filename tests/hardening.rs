@@ -674,6 +674,42 @@ mod along_the_motion {
     }
 
     #[test]
+    fn the_most_friction_needed_so_far_bounds_every_angle_before() {
+        let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+        let mut o = Oracle::new(&m, 15).unwrap();
+        let th = Exact::parse("theta", "1", false).unwrap();
+        let need = o.friction_needed(&th).unwrap();
+        let get = |k: &str| need.iter().find(|v| v.name == k).unwrap().value.to_f64();
+        let (mf, mc) = (get("mu_floor_max"), get("mu_contact_max"));
+        let mut seen = (0.0f64, 0.0f64);
+        for i in 0..=90 {
+            let t = 0.1 + 0.01 * i as f64;
+            let e = Exact::parse("theta", &format!("{t:.2}"), false).unwrap();
+            let f = o.forces_at(&e).unwrap();
+            let v = |k: &str| f.iter().find(|v| v.name == k).unwrap().value.to_f64();
+            assert!(v("mu_floor") <= mf * (1.0 + 1e-13), "{t}");
+            assert!(v("mu_contact") <= mc * (1.0 + 1e-13), "{t}");
+            seen = (seen.0.max(v("mu_floor")), seen.1.max(v("mu_contact")));
+        }
+        // |F21|/N12 grows towards separation: its maximum over [θ0, 1] is at 1
+        assert_eq!(seen.1, mc);
+        assert!((get("theta_mu_contact_max") - 1.0).abs() < 1e-15);
+        assert!(mf - seen.0 < 1e-4 * mf);
+        // over [θ0, θ0] the maximum is the value at the start
+        let th0 = Exact::parse("theta", "1/10", false).unwrap();
+        let need = o.friction_needed(&th0).unwrap();
+        let f = o.forces_at(&th0).unwrap();
+        for (a, b) in [
+            ("mu_floor_max", "mu_floor"),
+            ("mu_contact_max", "mu_contact"),
+        ] {
+            let x = need.iter().find(|v| v.name == a).unwrap();
+            let y = f.iter().find(|v| v.name == b).unwrap();
+            assert_eq!(x.text, y.text, "{a}");
+        }
+    }
+
+    #[test]
     fn sign_changes_after_separation_are_reported_and_marked() {
         let s = sep(&[("theta0", "1/10")], 20);
         let v = get(&s, "theta_phi1_zero_after_separation");

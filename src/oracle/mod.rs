@@ -104,6 +104,8 @@ enum At {
     Start,
     /// θs.
     Separation,
+    /// A given angle inside the motion.
+    Angle(Exact),
     /// An interior root c of a polynomial in c = cos θ (found at
     /// `SCAN_PREC` bits), refined at each precision.
     Root(Float, crate::mechanics::dynamics::HPoly),
@@ -431,15 +433,7 @@ impl Oracle {
         let q = |v: i64| rug::Rational::from(v);
         let k = HPoly::constant(&fp.k);
         let b = HPoly::linear(&fp.n1);
-        let a = HPoly::linear(&fp.f1);
-        let cpoly = HPoly::constant(&[q(0), q(1)]);
-        let one_m_c2 = HPoly::constant(&[q(1), q(0), q(-1)]);
         let d = b.deriv().mul(&k).add_scaled(&b.mul(&k.deriv()), &q(-2));
-        let apb = a.deriv().mul(&b).add_scaled(&a.mul(&b.deriv()), &q(-1));
-        let e = cpoly
-            .mul(&a)
-            .mul(&b)
-            .add_scaled(&one_m_c2.mul(&apb), &q(-1));
 
         let p = SCAN_PREC;
         let (c0, a_h) = {
@@ -484,7 +478,7 @@ impl Oracle {
             for at in cands {
                 let c = match &at {
                     At::Start => c0.clone(),
-                    At::Separation => cs.clone(),
+                    At::Separation | At::Angle(_) => cs.clone(),
                     At::Root(c, _) => c.clone(),
                 };
                 let v = f(&c);
@@ -515,17 +509,86 @@ impl Oracle {
         let v = self.verify_at("theta_N1_min", Some("N1_min"), &at_min)?;
         extra.extend(v);
         if floor != Floor::Slip {
-            let mu_of = |c: &Float| -> Float {
-                let s = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
-                Float::with_val(p, s * eval(&a, c) / eval(&b, c)).abs()
-            };
-            let mut cands = vec![At::Start, At::Separation];
-            cands.extend(roots_in(&e).into_iter().map(|c| At::Root(c, e.clone())));
-            let at_max = pick(cands, &mu_of, true);
-            let v = self.verify_at("theta_mu_floor_max", Some("mu_floor_max"), &at_max)?;
-            extra.extend(v);
+            extra.extend(self.needed_max(false, At::Separation, &cs)?);
         }
         Ok(())
+    }
+
+    /// The largest friction a rolling contact needs over [θ0, end] — the
+    /// floor (|F1|/N1) or, with `contact_side`, the contact between the
+    /// cylinders (|F21|/N12) — and where: the ratio is sin θ·|A|/B with A, B
+    /// polynomials in c = cos θ ([`crate::mechanics::dynamics::ForcePolys`],
+    /// B > 0 inside the motion), so its maximum is at an end or at a root of
+    /// E = cAB − (1 − c²)(A'B − AB') on [c_end, cos θ0]; the candidates are
+    /// compared at 96 bits and the winner verified ([`Oracle::verify_at`]).
+    /// `c_end` is cos of the end angle at 96 bits.
+    fn needed_max(&mut self, contact_side: bool, end: At, c_end: &Float) -> Result<Vec<Verified>> {
+        use crate::mechanics::dynamics::{ForcePolys, HPoly, N12Poly};
+        use crate::numeric::poly;
+        let (floor, contact) = (self.work.floor(), self.work.contact());
+        let fp = match &self.force_polys {
+            Some(f) => f.clone(),
+            None => {
+                let f = ForcePolys::new(&self.red, self.work.params(), floor, contact);
+                self.force_polys = Some(f.clone());
+                f
+            }
+        };
+        let q = |v: i64| rug::Rational::from(v);
+        let (a, b) = if contact_side {
+            let np = self
+                .n12_poly
+                .get_or_insert_with(|| N12Poly::new(&self.red, self.work.params()))
+                .clone();
+            let m2 = self.work.params().m2.clone();
+            // N12·K² = m2 · (N12·K²/m2)
+            let b = HPoly::default().add_scaled(&HPoly::linear(&(np.base, np.per_h)), &m2);
+            (HPoly::linear(&fp.f21), b)
+        } else {
+            (HPoly::linear(&fp.f1), HPoly::linear(&fp.n1))
+        };
+        let cpoly = HPoly::constant(&[q(0), q(1)]);
+        let one_m_c2 = HPoly::constant(&[q(1), q(0), q(-1)]);
+        let apb = a.deriv().mul(&b).add_scaled(&a.mul(&b.deriv()), &q(-1));
+        let e = cpoly
+            .mul(&a)
+            .mul(&b)
+            .add_scaled(&one_m_c2.mul(&apb), &q(-1));
+        let p = SCAN_PREC;
+        let (c0, a_h) = {
+            let eng = self.engine(p)?;
+            (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
+        };
+        let (theta_name, value_name) = if contact_side {
+            ("theta_mu_contact_max", "mu_contact_max")
+        } else {
+            ("theta_mu_floor_max", "mu_floor_max")
+        };
+        let eval = |hp: &HPoly, c: &Float| -> Float {
+            let mut v = Float::new(p);
+            poly::horner(&hp.at(&a_h, p), c, &mut v);
+            v
+        };
+        let ratio = |c: &Float| -> Float {
+            let s = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
+            Float::with_val(p, s * eval(&a, c) / eval(&b, c)).abs()
+        };
+        let mut best = (ratio(&c0), At::Start);
+        if *c_end < c0 {
+            let v = ratio(c_end);
+            if v > best.0 {
+                best = (v, end);
+            }
+            for c in poly::sign_change_roots(&e.at(&a_h, p), c_end, &c0) {
+                if c > *c_end && c < c0 {
+                    let v = ratio(&c);
+                    if v > best.0 {
+                        best = (v, At::Root(c, e.clone()));
+                    }
+                }
+            }
+        }
+        self.verify_at(theta_name, Some(value_name), &best.1)
     }
 
     /// The angle `at` (named `theta_name`) and, with `value`, the quantity
@@ -548,6 +611,7 @@ impl Oracle {
             let (delta, derr) = match at {
                 At::Start => (Float::new(p), Float::new(p)),
                 At::Separation => self.delta_s(p)?,
+                At::Angle(th) => (self.delta_of("theta", th, p)?, Float::new(p)),
                 At::Root(c_iso, hp) => {
                     let a_h = N12Poly::a_h(&self.engine(p)?.dynm);
                     let coef = hp.at(&a_h, p + 16);
@@ -572,10 +636,10 @@ impl Oracle {
                 let e = self.engine(p)?;
                 let q = |d: &Float| -> Float {
                     let f = e.dynm.forces(&e.dynm.state(d));
-                    if name == "N1_min" {
-                        f.n1
-                    } else {
-                        Float::with_val(p, f.f1.abs_ref()) / &f.n1
+                    match name {
+                        "N1_min" => f.n1,
+                        "mu_contact_max" => Float::with_val(p, f.f21.abs_ref()) / &f.n12,
+                        _ => Float::with_val(p, f.f1.abs_ref()) / &f.n1,
                     }
                 };
                 let v = q(&delta);
@@ -962,6 +1026,46 @@ impl Oracle {
                 }
             };
             out.push(v);
+        }
+        Ok(out)
+    }
+
+    /// The largest friction each rolling contact needs over [θ0, θ], and
+    /// where: `theta_mu_floor_max`, `mu_floor_max` (a rolling or held floor)
+    /// and `theta_mu_contact_max`, `mu_contact_max` (a rolling contact),
+    /// verified like [`Oracle::separation`]'s extrema. Where N12 is 0 at θ to
+    /// within its bound (θ = θs), the contact's maximum is only bounded below
+    /// (text `>=…`), as in [`Oracle::forces_at`].
+    ///
+    /// Errors: θ outside the motion (as [`Oracle::forces_at`]).
+    pub fn friction_needed(&mut self, theta: &Exact) -> Result<Vec<Verified>> {
+        let forces = self.forces_at(theta)?;
+        let w = self.to_work(theta).to_float(SCAN_PREC);
+        let c_end = Float::with_val(SCAN_PREC, w.cos_ref());
+        let mut out = Vec::new();
+        if self.work.floor() != Floor::Slip {
+            out.extend(self.needed_max(false, At::Angle(theta.clone()), &c_end)?);
+        }
+        if self.work.contact() == Contact::Roll {
+            let mu = forces.iter().find(|v| v.name == "mu_contact");
+            match mu {
+                Some(m) if m.text.starts_with(">=") => {
+                    let th = ladder(self.digits, &["theta_mu_contact_max"], |p| {
+                        let d = self.delta_of("theta", theta, p)?;
+                        let th0 = self.work.start().theta0.to_float(p);
+                        let th = Float::with_val(p, th0 + d);
+                        Ok(vec![Estimate::rounded(
+                            self.odd(th),
+                            Float::with_val(p, 1u32),
+                        )])
+                    })?;
+                    out.extend(th);
+                    let mut m = m.clone();
+                    m.name = "mu_contact_max".into();
+                    out.push(m);
+                }
+                _ => out.extend(self.needed_max(true, At::Angle(theta.clone()), &c_end)?),
+            }
         }
         Ok(out)
     }
