@@ -728,3 +728,28 @@ mod along_the_motion {
         assert!((a * (th - 0.1) + b * (th.sin() - 0.1f64.sin())).abs() < 1e-12);
     }
 }
+
+#[test]
+fn help_names_every_flag_with_its_range_and_default() {
+    let out = cyl().args(["separation", "--help"]).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    for flag in [
+        "--m1", "--m2", "--r1", "--r2", "--g", "--k1", "--k2", "--theta0",
+    ] {
+        // the flag's help, wrapped lines included, up to the next flag
+        let start = text
+            .find(&format!("{flag} <"))
+            .unwrap_or_else(|| panic!("{flag}: {text}"));
+        let rest = &text[start + flag.len()..];
+        let end = rest.find("\n      --").unwrap_or(rest.len());
+        assert!(rest[..end].contains("[default:"), "{}", &rest[..end]);
+    }
+    let out = cyl().args(["trajectory", "--help"]).output().unwrap();
+    assert!(String::from_utf8_lossy(&out.stdout).contains("theta_ddot"));
+    let out = cyl().args(["check", "--help"]).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("csv") && text.contains("--max-rows"),
+        "{text}"
+    );
+}
