@@ -350,6 +350,8 @@ pub fn run_with<I: Stepper>(
     let mut max_drift = Float::new(p);
     let mut projections = 0u32;
     let mut next_out = 0usize;
+    // dλ/dt at the current sample, computed when a dip test needs it
+    let mut rates_cur: Option<Vec<Float>> = None;
     while next_out < times.len() && times[next_out] <= t {
         outputs.push(cur.clone());
         next_out += 1;
@@ -405,6 +407,7 @@ pub fn run_with<I: Stepper>(
             }
         }
         let next = sample(sys, &t1, &y1)?;
+        let mut rates_next: Option<Vec<Float>> = None;
         let g1: Vec<Float> = events
             .iter()
             .map(|e| watch_value(&e.watch, &next))
@@ -421,6 +424,20 @@ pub fn run_with<I: Stepper>(
                 let ends = [(&cur, a), (&next, b)];
                 let (s, at, err) =
                     locate(sys, gbs, &y, &f0, &t, &step.h, step.column, &ev.watch, ends)?;
+                found.push((s, i, at, err));
+            } else if let Some((xm, gm, smp)) = dip(
+                sys,
+                gbs,
+                (&y, &f0, &t, &step.h, step.column),
+                &ev.watch,
+                [(&cur, a), (&next, b)],
+                [&mut rates_cur, &mut rates_next],
+            )? {
+                // g left zero's side and came back within the step (a long
+                // step at a low precision): the first crossing is in [t, t + xm]
+                let ends = [(&cur, a), (&smp, &gm)];
+                let (s, at, err) =
+                    locate(sys, gbs, &y, &f0, &t, &xm, step.column, &ev.watch, ends)?;
                 found.push((s, i, at, err));
             }
         }
@@ -451,6 +468,7 @@ pub fn run_with<I: Stepper>(
         t = t1;
         y = y_of(sys, &next);
         cur = next;
+        rates_cur = rates_next;
         if reached_stop {
             // every output at this time (a time may be asked twice)
             while next_out < times.len() && t == times[next_out] {
@@ -535,6 +553,107 @@ fn lambda_rates(sys: &mut System, s: &Sample) -> Result<Vec<Float>> {
         .zip(&am.lambda)
         .map(|(a, b)| Float::with_val(p, a - b) / &two_eps)
         .collect())
+}
+
+/// dg/dt as [`rate_of`], with the multipliers' rates of the sample computed
+/// at most once (`cache`).
+fn rate_cached(
+    sys: &mut System,
+    w: &Watch,
+    s: &Sample,
+    cache: &mut Option<Vec<Float>>,
+) -> Result<Float> {
+    let p = sys.prec;
+    match w {
+        Watch::Multiplier(k) => {
+            if cache.is_none() {
+                *cache = Some(lambda_rates(sys, s)?);
+            }
+            Ok(cache
+                .as_ref()
+                .map_or_else(|| Float::new(p), |l| l[*k].clone()))
+        }
+        Watch::Lin(terms) => {
+            let mut acc = Float::new(p);
+            for (w, c) in terms {
+                acc += rate_cached(sys, w, s, cache)? * c;
+            }
+            Ok(acc)
+        }
+        other => rate_of(sys, other, s),
+    }
+}
+
+/// A watched function with the same sign at both ends of a step may still
+/// have crossed zero twice inside it (a friction cone left and re-entered
+/// within one long step). Its cubic Hermite interpolant (values and rates at
+/// both ends) tells where it comes closest to zero; if the interpolant
+/// reaches zero's side, g itself is evaluated there (re-integrating at the
+/// step's column), and a sign opposite to the ends' gives a bracket of the
+/// first crossing: (x, g(x), the state there).
+#[allow(clippy::type_complexity)]
+fn dip<I: Stepper>(
+    sys: &mut System,
+    gbs: &mut I,
+    (y0, f0, t, h, column): (&[Float], &[Float], &Float, &Float, usize),
+    watch: &Watch,
+    ends: [(&Sample, &Float); 2],
+    caches: [&mut Option<Vec<Float>>; 2],
+) -> Result<Option<(Float, Float, Sample)>> {
+    let (s0, ga) = ends[0];
+    let (s1, gb) = ends[1];
+    let [c0, c1] = caches;
+    let d0 = rate_cached(sys, watch, s0, c0)?;
+    // moving away from zero at the start and towards it never at the end:
+    // a cubic with these slopes has no interior extremum on zero's side
+    let pos = !ga.is_sign_negative();
+    let toward0 = if pos {
+        d0.is_sign_negative()
+    } else {
+        d0.is_sign_positive()
+    };
+    if !toward0 {
+        return Ok(None);
+    }
+    let d1 = rate_cached(sys, watch, s1, c1)?;
+    let hf = h.to_f64();
+    let (g0, g1, r0, r1) = (ga.to_f64(), gb.to_f64(), d0.to_f64(), d1.to_f64());
+    let val = |x: f64| {
+        let u = x / hf;
+        let h00 = 2.0 * u * u * u - 3.0 * u * u + 1.0;
+        let h10 = u * u * u - 2.0 * u * u + u;
+        let h01 = -2.0 * u * u * u + 3.0 * u * u;
+        let h11 = u * u * u - u * u;
+        h00 * g0 + h10 * hf * r0 + h01 * g1 + h11 * hf * r1
+    };
+    // the interpolant's closest approach to zero, on a fine grid
+    let sgn = if pos { 1.0 } else { -1.0 };
+    let (mut xm, mut vm) = (0.0, f64::INFINITY);
+    for k in 1..128 {
+        let x = hf * k as f64 / 128.0;
+        let v = sgn * val(x);
+        if v < vm {
+            (xm, vm) = (x, v);
+        }
+    }
+    // reaches zero, or comes within a tenth of the smaller end value
+    if vm > 0.1 * (g0.abs().min(g1.abs())) {
+        return Ok(None);
+    }
+    let p = gbs.prec();
+    let x = Float::with_val(p, xm);
+    let yx = {
+        let nq = sys.nq();
+        let mut dae = Dae { sys, nq };
+        gbs.fixed_step(&mut dae, y0, f0, &x, column)?
+    };
+    let tx = Float::with_val(p, t + &x);
+    let smp = sample(sys, &tx, &yx)?;
+    let gx = watch_value(watch, &smp);
+    if !gx.is_zero() && gx.is_sign_negative() == !pos {
+        return Ok(None);
+    }
+    Ok(Some((x, gx, smp)))
 }
 
 /// The root in (0, h) of the cubic Hermite interpolant of g with values
