@@ -650,7 +650,7 @@ fn dip<I: Stepper>(
     let tx = Float::with_val(p, t + &x);
     let smp = sample(sys, &tx, &yx)?;
     let gx = watch_value(watch, &smp);
-    if !gx.is_zero() && gx.is_sign_negative() == !pos {
+    if !gx.is_zero() && gx.is_sign_negative() != pos {
         return Ok(None);
     }
     Ok(Some((x, gx, smp)))
