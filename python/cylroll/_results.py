@@ -28,6 +28,11 @@ class Value:
 
     ``float(v)`` is the float nearest ``text``; ``v.decimal()`` the exact
     ``decimal.Decimal`` of ``text``. ``str(v)`` is ``text``.
+
+    A friction ratio at an angle where its normal force is 0 to within its
+    bound (at θs, ``|F21|/N12``) has no finite verified value: its ``text`` is
+    ``">=X"``, ``is_lower_bound`` is true, ``lower_bound`` is X, and
+    ``float(v)`` / ``v.decimal()`` raise ``ValueError`` saying so.
     """
 
     __slots__ = ("name", "text", "digits", "err", "err_text", "mode")
@@ -53,11 +58,29 @@ class Value:
     def _from(cls, raw: _Raw, mode: Optional[str] = None) -> "Value":
         return cls(raw[0], raw[1], raw[2], raw[3], raw[4], mode)
 
+    @property
+    def is_lower_bound(self) -> bool:
+        """Whether only a lower bound is known (``text`` is ``">=X"``)."""
+        return self.text.startswith(">=")
+
+    @property
+    def lower_bound(self) -> Optional[float]:
+        """X of a ``">=X"`` value; ``None`` for a verified value."""
+        return float(self.text[2:]) if self.is_lower_bound else None
+
+    def _check_finite(self) -> None:
+        if self.is_lower_bound:
+            raise ValueError(
+                f"{self.name} has no finite verified value here, only the lower bound "
+                f"{self.text} (its normal force is 0 to within its error bound)")
+
     def decimal(self) -> Decimal:
         """The verified digits as an exact ``decimal.Decimal``."""
+        self._check_finite()
         return Decimal(self.text)
 
     def __float__(self) -> float:
+        self._check_finite()
         return float(self.text)
 
     def __str__(self) -> str:
@@ -82,8 +105,13 @@ def _table(values: Sequence[Value]) -> List[str]:
     wt = max((len(v.text) for v in values), default=0)
     lines = []
     for v in values:
-        note = "exactly 0 or below the accuracy asked for" if v.digits == 0 else \
-            f"{v.digits} digits, |err| <= {v.err_text}"
+        if v.is_lower_bound:
+            note = "a lower bound: the normal force is 0 to within its error bound"
+        elif v.digits == 0:
+            note = ("exactly 0" if v.err == 0 else
+                    f"0 to within an absolute bound: |x| <= {v.err_text}")
+        else:
+            note = f"{v.digits} digits, |err| <= {v.err_text}"
         lines.append(f"  {v.name:<{w}} = {v.text:<{wt}}   [{note}]")
     return lines
 

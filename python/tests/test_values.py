@@ -220,3 +220,19 @@ def test_print_of_the_default_separation():
     text = str(cylroll.Model().separation())
     assert text.startswith("Separation (30 digits requested")
     assert "theta_s            = 1.04719755119659774615421446109" in text
+
+
+def test_at_separation_the_contact_friction_is_only_bounded_below():
+    # identical solid cylinders from the top separate at theta = pi/3 exactly:
+    # N12 = 0 there to within an absolute bound, |F21|/N12 has no finite value
+    f = cylroll.Model().forces("pi/3", digits=12)
+    n12 = f["N12"]
+    assert n12.text == "0" and n12.digits == 0 and 0 < n12.err < 1e-12
+    mu = f["mu_contact"]
+    assert mu.is_lower_bound and mu.lower_bound > 1e12
+    with pytest.raises(ValueError, match="lower bound"):
+        float(mu)
+    assert "a lower bound" in repr(f)
+    # an ordinary value is not
+    assert not f["N1"].is_lower_bound and f["N1"].lower_bound is None
+    assert abs(float(f["N1"]) - 7 / 6) < 1e-12
