@@ -8,6 +8,7 @@ use cylroll::friction::Friction;
 use cylroll::input::{self, FRICTION_KEYS, MODEL_KEYS};
 use cylroll::model::Model;
 use cylroll::numeric::verify::Verified;
+use cylroll::oracle::rigorous::Proved;
 use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
 use rug::Rational;
 use std::io::Write;
@@ -191,6 +192,10 @@ pub struct Common {
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
+    /// Prove the digits: interval enclosures [mid ± rad] with directed rounding (ideal models;
+    /// see README, "Guarantees")
+    #[arg(long)]
+    rigorous: bool,
 }
 
 /// `--digits`: an integer 1..=MAX_DIGITS (a message clap prints on one line).
@@ -288,6 +293,10 @@ struct Answer {
     table: Option<(Vec<&'static str>, Vec<Vec<Verified>>)>,
     /// With friction: the friction laws (echoed) and the event list.
     friction: Option<(Friction, String, Vec<VerifiedEvent>)>,
+    /// With `--rigorous`: the enclosure of each value (None: not enclosed).
+    proved: Vec<Option<Proved>>,
+    /// With `--rigorous`: the enclosures of the table's rows.
+    proved_rows: Vec<Vec<Proved>>,
 }
 
 fn json_str(s: &str) -> String {
@@ -316,7 +325,36 @@ impl Answer {
         ));
         out.push_str(&format!("# {} significant digits requested; each value below is verified to the digits printed\n", self.digits));
         let w = self.values.iter().map(|v| v.name.len()).max().unwrap_or(0);
-        for v in &self.values {
+        if !self.proved.is_empty() {
+            out.push_str("# --rigorous: each value shows the digits its interval enclosure proves (directed rounding)\n");
+        }
+        for (i, v) in self.values.iter().enumerate() {
+            if let Some(pr) = self.proved.get(i) {
+                let line = match pr {
+                    Some(pv) => {
+                        let (mid, rad) = pv.texts(self.digits);
+                        format!(
+                            "{:w$} = {}  [proved: {} digits, in {} ± {}; verified: {} digits]\n",
+                            v.name,
+                            pv.shown.text,
+                            pv.shown.digits,
+                            mid,
+                            rad,
+                            v.digits,
+                            w = w
+                        )
+                    }
+                    None => format!(
+                        "{:w$} = {}  [verified: {} digits; not enclosed]\n",
+                        v.name,
+                        v.text,
+                        v.digits,
+                        w = w
+                    ),
+                };
+                out.push_str(&line);
+                continue;
+            }
             let note = if v.text.starts_with(">=") {
                 "[a lower bound: the normal force is 0 to within its error bound]".to_string()
             } else if v.digits == 0 {
@@ -359,10 +397,29 @@ impl Answer {
         if let Some((cols, rows)) = &self.table {
             out.push_str(&cols.join("\t"));
             out.push('\n');
-            for r in rows {
-                let line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
-                out.push_str(&line.join("\t"));
-                out.push('\n');
+            if self.proved_rows.is_empty() {
+                for r in rows {
+                    let line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
+                    out.push_str(&line.join("\t"));
+                    out.push('\n');
+                }
+            } else {
+                for r in &self.proved_rows {
+                    let line: Vec<&str> = r.iter().map(|v| v.shown.text.as_str()).collect();
+                    out.push_str(&line.join("\t"));
+                    out.push('\n');
+                }
+                let least = self
+                    .proved_rows
+                    .iter()
+                    .flatten()
+                    .filter(|v| v.shown.text != "0")
+                    .map(|v| v.shown.digits)
+                    .min()
+                    .unwrap_or(self.digits);
+                out.push_str(&format!(
+                    "note: --rigorous: every cell shows the digits its interval enclosure proves (at least {least} significant digits)\n"
+                ));
             }
             for z in zero_cells(cols, rows) {
                 out.push_str(&format!("note: {z}\n"));
@@ -407,8 +464,23 @@ impl Answer {
         }
         let mut verified = serde_json::Map::new();
         let mut errs = serde_json::Map::new();
-        for v in &self.values {
-            o.insert(v.name.clone(), v.text.clone().into());
+        let mut rig = serde_json::Map::new();
+        let mut encl = serde_json::Map::new();
+        for (i, v) in self.values.iter().enumerate() {
+            match self.proved.get(i) {
+                Some(Some(pv)) => {
+                    o.insert(v.name.clone(), pv.shown.text.clone().into());
+                    rig.insert(v.name.clone(), pv.shown.digits.to_string().into());
+                    encl.insert(v.name.clone(), enclosure_json(pv, self.digits));
+                }
+                Some(None) => {
+                    o.insert(v.name.clone(), v.text.clone().into());
+                    rig.insert(v.name.clone(), serde_json::Value::Null);
+                }
+                None => {
+                    o.insert(v.name.clone(), v.text.clone().into());
+                }
+            }
             verified.insert(v.name.clone(), v.digits.to_string().into());
             errs.insert(v.name.clone(), v.err_text().into());
         }
@@ -467,6 +539,40 @@ impl Answer {
                 }
             }
         }
+        if !self.proved_rows.is_empty() {
+            let rows_json: Vec<serde_json::Value> = self
+                .proved_rows
+                .iter()
+                .map(|r| {
+                    let mut row = serde_json::Map::new();
+                    let mut e = serde_json::Map::new();
+                    for v in r {
+                        row.insert(v.name.clone(), v.shown.text.clone().into());
+                        e.insert(v.name.clone(), enclosure_json(v, self.digits));
+                    }
+                    row.insert("enclosures".into(), e.into());
+                    row.into()
+                })
+                .collect();
+            o.insert("rows".into(), rows_json.into());
+            if let Some(first) = self.proved_rows.first() {
+                for (j, v) in first.iter().enumerate() {
+                    let d = self
+                        .proved_rows
+                        .iter()
+                        .map(|r| r[j].shown.digits)
+                        .min()
+                        .unwrap_or(0);
+                    rig.insert(v.name.clone(), d.to_string().into());
+                }
+            }
+        }
+        if !self.proved.is_empty() || !self.proved_rows.is_empty() {
+            o.insert("digits_rigorous".into(), rig.into());
+            if !encl.is_empty() {
+                o.insert("enclosures".into(), encl.into());
+            }
+        }
         o.insert("digits_verified".into(), verified.into());
         o.insert("error_bounds".into(), errs.into());
         o.insert(
@@ -483,7 +589,15 @@ impl Answer {
 
     fn csv(&self) -> String {
         let mut out = String::new();
-        if let Some((cols, rows)) = &self.table {
+        if let (Some((cols, _)), false) = (&self.table, self.proved_rows.is_empty()) {
+            out.push_str(&cols.join(","));
+            out.push('\n');
+            for r in &self.proved_rows {
+                let line: Vec<&str> = r.iter().map(|v| v.shown.text.as_str()).collect();
+                out.push_str(&line.join(","));
+                out.push('\n');
+            }
+        } else if let Some((cols, rows)) = &self.table {
             out.push_str(&cols.join(","));
             out.push('\n');
             for r in rows {
@@ -511,14 +625,46 @@ impl Answer {
                     }
                 }
             }
-            for v in &self.values {
-                out.push_str(&format!(
-                    "{},{},{},{}\n",
-                    v.name,
-                    v.text,
-                    v.digits,
-                    v.err_text()
-                ));
+            if self.proved.is_empty() {
+                for v in &self.values {
+                    out.push_str(&format!(
+                        "{},{},{},{}\n",
+                        v.name,
+                        v.text,
+                        v.digits,
+                        v.err_text()
+                    ));
+                }
+            } else {
+                // with --rigorous: the proved digits, then the enclosure
+                out = out.replace(
+                    "key,value,digits_verified,error_bound\n",
+                    "key,value,digits_verified,error_bound,digits_rigorous,mid,rad\n",
+                );
+                for (i, v) in self.values.iter().enumerate() {
+                    match self.proved.get(i).and_then(|p| p.as_ref()) {
+                        Some(pv) => {
+                            let (mid, rad) = pv.texts(self.digits);
+                            out.push_str(&format!(
+                                "{},{},{},{},{},{},{}\n",
+                                v.name,
+                                pv.shown.text,
+                                v.digits,
+                                v.err_text(),
+                                pv.shown.digits,
+                                mid,
+                                rad
+                            ));
+                        }
+                        None => out.push_str(&format!(
+                            "{},{},{},{},,,\n",
+                            v.name,
+                            v.text,
+                            v.digits,
+                            v.err_text()
+                        )),
+                    }
+                }
             }
             // the notes are findings too (e.g. "t_s is infinite"): one row
             // each, the text quoted as CSV requires
@@ -528,6 +674,13 @@ impl Answer {
         }
         out
     }
+}
+
+/// `{"mid": …, "rad": …}` of an enclosure (decimal strings; mid with five
+/// digits beyond those asked, rad rounded up).
+fn enclosure_json(pv: &Proved, digits: u32) -> serde_json::Value {
+    let (mid, rad) = pv.texts(digits);
+    serde_json::json!({"mid": mid, "rad": rad})
 }
 
 /// Per column, the cells printed 0 that are 0 only to within an absolute
@@ -554,6 +707,43 @@ fn zero_cells(cols: &[&str], rows: &[Vec<Verified>]) -> Vec<String> {
         }
     }
     out
+}
+
+/// Runs a proof at a working precision of the digits asked plus 32 bits,
+/// then, if it proves fewer digits than asked (`short` of the result),
+/// once more at twice that.
+fn prove_with<T>(
+    digits: u32,
+    mut f: impl FnMut(u32) -> Result<T>,
+    short: impl Fn(&T) -> bool,
+) -> Result<T> {
+    let p0 = cylroll::numeric::bits_for_digits(digits) + 32;
+    let first = f(p0)?;
+    if !short(&first) {
+        return Ok(first);
+    }
+    f(2 * p0).or(Ok(first))
+}
+
+fn proves_less(v: &[Proved], digits: u32) -> bool {
+    v.iter()
+        .any(|x| x.shown.digits < digits && x.shown.text != "0")
+}
+
+/// Why an enclosure failed, in a few words.
+fn enclosure_why(e: &Error) -> String {
+    match e {
+        Error::NotConverged { detail, .. } => detail.clone(),
+        other => other.to_string(),
+    }
+}
+
+/// `--rigorous` is for the ideal models only.
+fn rigorous_supported(common: &Common, friction: bool) -> Result<()> {
+    if common.rigorous && friction {
+        return Err(cylroll::oracle::rigorous::unsupported("with friction"));
+    }
+    Ok(())
 }
 
 fn parse_list(name: &str, s: &str) -> Result<Vec<Exact>> {
@@ -634,6 +824,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
         }
         Command::Separation { common, mu } => {
             let (model, fr) = common.model_friction()?;
+            rigorous_supported(&common, fr.is_some())?;
             if let Some(fr) = fr {
                 if let Some(m) = mu {
                     return Err(Error::invalid(
@@ -657,28 +848,72 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                     notes,
                     table: None,
                     friction: Some((fr, ans.start_mode, ans.events)),
+                    proved: Vec::new(),
+                    proved_rows: Vec::new(),
                 };
                 return Ok((a.render(common.format), 0));
             }
             let mu = mu.map(|s| Exact::parse("mu", &s, false)).transpose()?;
             let mut o = Oracle::new(&model, common.digits)?.with_mu(mu)?;
             let sep = o.separation()?;
+            let has_ts = sep.t_s.is_some();
             let mut values = vec![sep.theta_s];
             values.extend(sep.t_s);
             values.extend(sep.extra);
+            let mut notes = sep.notes;
+            let mut proved = Vec::new();
+            if common.rigorous {
+                let digits = common.digits;
+                let (th, ts) = match prove_with(
+                    digits,
+                    |p| o.rigorous_separation(p),
+                    |(th, ts)| {
+                        th.shown.digits < digits
+                            || ts.as_ref().is_ok_and(|t| t.shown.digits < digits)
+                    },
+                ) {
+                    Ok((th, ts)) => (Some(th), ts),
+                    Err(e) => {
+                        let why = enclosure_why(&e);
+                        notes.push(format!(
+                            "theta_s is not enclosed ({why}): verified digits only"
+                        ));
+                        (None, Err(why))
+                    }
+                };
+                proved.push(th);
+                if has_ts {
+                    match ts {
+                        Ok(t) => proved.push(Some(t)),
+                        Err(why) => {
+                            notes
+                                .push(format!("t_s is not enclosed ({why}): verified digits only"));
+                            proved.push(None);
+                        }
+                    }
+                }
+                proved.resize(values.len(), None);
+                notes.push(
+                    "--rigorous encloses theta_s and t_s; the other findings are verified only"
+                        .into(),
+                );
+            }
             let a = Answer {
                 command: "separation",
                 model,
                 digits: common.digits,
                 values,
-                notes: sep.notes,
+                notes,
                 table: None,
                 friction: None,
+                proved,
+                proved_rows: Vec::new(),
             };
             (common, a)
         }
         Command::Time { common, to } => {
             let (model, fr) = common.model_friction()?;
+            rigorous_supported(&common, fr.is_some())?;
             let theta = Exact::parse("to", &to, true)?;
             if let Some(fr) = fr {
                 let (t, mode) =
@@ -691,24 +926,49 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                     notes: vec![format!("mode at theta: {mode}")],
                     table: None,
                     friction: Some((fr, String::new(), vec![])),
+                    proved: Vec::new(),
+                    proved_rows: Vec::new(),
                 };
                 return Ok((a.render(common.format), 0));
             }
+            rigorous_supported(&common, false)?;
             let mut o = Oracle::new(&model, common.digits)?;
             let t = o.time_at(&theta)?;
+            let mut proved = Vec::new();
+            let mut notes = vec![];
+            if common.rigorous {
+                let digits = common.digits;
+                match prove_with(
+                    digits,
+                    |p| o.rigorous_time(&theta, p),
+                    |v| v.shown.digits < digits,
+                ) {
+                    Ok(pv) => proved.push(Some(pv)),
+                    Err(e) => {
+                        proved.push(None);
+                        notes.push(format!(
+                            "t is not enclosed ({}): verified digits only",
+                            enclosure_why(&e)
+                        ));
+                    }
+                }
+            }
             let a = Answer {
                 command: "time",
                 model,
                 digits: common.digits,
                 values: vec![t],
-                notes: vec![],
+                notes,
                 table: None,
                 friction: None,
+                proved,
+                proved_rows: Vec::new(),
             };
             (common, a)
         }
         Command::Forces { common, theta } => {
             let (model, fr) = common.model_friction()?;
+            rigorous_supported(&common, fr.is_some())?;
             let th = Exact::parse("theta", &theta, true)?;
             if let Some(fr) = fr {
                 let (values, mode) =
@@ -723,6 +983,8 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                     )],
                     table: None,
                     friction: Some((fr, String::new(), vec![])),
+                    proved: Vec::new(),
+                    proved_rows: Vec::new(),
                 };
                 return Ok((a.render(common.format), 0));
             }
@@ -731,18 +993,37 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             debug_assert_eq!(values.len(), FORCE_KEYS.len());
             // the most friction needed so far, and where
             values.extend(o.friction_needed(&th)?);
-            let notes = values
-                .iter()
-                .filter(|v| v.text.starts_with(">="))
-                .map(|v| {
-                    format!(
-                        "{} has no finite verified value here: the normal force is 0 to within its \
-                         error bound (theta is theta_s to the accuracy of the computation), so only \
-                         the lower bound |F|/bound(N) is given",
-                        v.name
-                    )
-                })
-                .collect();
+            let mut proved: Vec<Option<Proved>> = Vec::new();
+            let mut rig_notes: Vec<String> = Vec::new();
+            if common.rigorous {
+                let digits = common.digits;
+                match prove_with(
+                    digits,
+                    |p| o.rigorous_forces(&th, p),
+                    |v| {
+                        v.iter().any(|x| {
+                            x.as_ref()
+                                .is_some_and(|x| x.shown.digits < digits && x.shown.text != "0")
+                        })
+                    },
+                ) {
+                    Ok(pv) => proved = pv,
+                    Err(e) => rig_notes.push(format!(
+                        "the forces are not enclosed ({}): verified digits only",
+                        enclosure_why(&e)
+                    )),
+                }
+                proved.resize(values.len(), None);
+            }
+            let mut notes = rig_notes;
+            for v in values.iter().filter(|v| v.text.starts_with(">=")) {
+                notes.push(format!(
+                    "{} has no finite verified value here: the normal force is 0 to within its \
+                     error bound (theta is theta_s to the accuracy of the computation), so only \
+                     the lower bound |F|/bound(N) is given",
+                    v.name
+                ));
+            }
             let a = Answer {
                 command: "forces",
                 model,
@@ -751,6 +1032,8 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 notes,
                 table: None,
                 friction: None,
+                proved,
+                proved_rows: Vec::new(),
             };
             (common, a)
         }
@@ -783,6 +1066,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 }
             };
             let (model, fr) = common.model_friction()?;
+            rigorous_supported(&common, fr.is_some())?;
             if let Some(fr) = fr {
                 let ans =
                     cylroll::friction::answer::trajectory(&model, &fr, common.digits, &times)?;
@@ -813,19 +1097,42 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                     notes: vec![],
                     table: Some((cols, rows)),
                     friction: Some((fr, String::new(), vec![])),
+                    proved: Vec::new(),
+                    proved_rows: Vec::new(),
                 };
                 return Ok((a.render(common.format), 0));
             }
+            rigorous_supported(&common, false)?;
             let mut o = Oracle::new(&model, common.digits)?;
             let rows = o.trajectory(&times)?;
+            let mut proved_rows = Vec::new();
+            let mut notes = vec![];
+            if common.rigorous {
+                let digits = common.digits;
+                for t in &times {
+                    match prove_with(digits, |p| o.rigorous_row(t, p), |v| proves_less(v, digits)) {
+                        Ok(r) => proved_rows.push(r),
+                        Err(e) => {
+                            proved_rows.clear();
+                            notes.push(format!(
+                                "the rows are not enclosed (t = {t}: {}): verified digits only",
+                                enclosure_why(&e)
+                            ));
+                            break;
+                        }
+                    }
+                }
+            }
             let a = Answer {
                 command: "trajectory",
                 model,
                 digits: common.digits,
                 values: vec![],
-                notes: vec![],
+                notes,
                 table: Some((TRAJECTORY_COLUMNS.to_vec(), rows)),
                 friction: None,
+                proved: Vec::new(),
+                proved_rows,
             };
             (common, a)
         }

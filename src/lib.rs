@@ -14,8 +14,9 @@
 //! Precision is always an explicit argument; no global state. Every number the
 //! oracle returns has been computed at two working precisions and carries an
 //! error bound combining their difference and the method's own estimate; only
-//! digits that every number within the bound shares are printed. The accuracy
-//! is *estimated*, not rigorous (see README, "Guarantees").
+//! digits that every number within the bound shares are printed. That accuracy
+//! is *estimated*; [`oracle::rigorous`] proves digits by interval arithmetic
+//! for the ideal models (see README, "Guarantees").
 //!
 //! ```
 //! use cylroll::{exact::Exact, model::Model, oracle::Oracle};

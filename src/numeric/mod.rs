@@ -2,8 +2,9 @@
 //! Gauss–Legendre ([`gauss`]) quadrature, bracketed roots ([`root`]) and real
 //! polynomial roots ([`poly`]), a Taylor-series ODE integrator with dense
 //! output ([`taylor`], on the fixed-point kernel of [`fixed`]), decimal
-//! output ([`decimal`]), and the precision ladder that turns two runs into
-//! verified digits ([`verify`]).
+//! output ([`decimal`]), the precision ladder that turns two runs into
+//! verified digits ([`verify`]), and interval arithmetic with directed
+//! rounding for proved digits ([`interval`]).
 //!
 //! No Rust crate integrates or root-solves on MPFR numbers; these are ours and
 //! are tested against closed forms in their own unit tests.
@@ -11,6 +12,7 @@
 pub mod decimal;
 pub mod fixed;
 pub mod gauss;
+pub mod interval;
 pub mod poly;
 pub mod quad;
 pub mod root;

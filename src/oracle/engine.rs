@@ -175,6 +175,12 @@ impl Engine {
         Some((v, e))
     }
 
+    /// The values of sin²u where the half-angle integrand in u is singular
+    /// (see [`HalfAngleTime::singular_sin2`]).
+    pub fn half_singular_sin2(&self, dsig: &Float) -> Vec<gauss::C64> {
+        self.half.singular_sin2(dsig)
+    }
+
     /// Gauss–Legendre with `n` points on the half-angle form in u.
     fn time_gl(&mut self, sigma: &Float, n: usize, rho: f64) -> (Float, Float) {
         let p = self.prec();

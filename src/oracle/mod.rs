@@ -18,6 +18,7 @@
 //! change sign on the way out.
 
 mod engine;
+pub mod rigorous;
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;

@@ -1,0 +1,249 @@
+//! Proved enclosures: each contains a value computed independently at a
+//! much higher precision (or a closed form), and shrinks with the precision.
+
+use cylroll::exact::Exact;
+use cylroll::input::{model_from_pairs, Pairs};
+use cylroll::model::Model;
+use cylroll::oracle::Oracle;
+use rug::float::Constant;
+use rug::Float;
+
+fn model(pairs: &[(&str, &str)]) -> Model {
+    let mut p = Pairs::new();
+    for (k, v) in pairs {
+        p.insert(k.to_string(), v.to_string());
+    }
+    model_from_pairs(&p).unwrap()
+}
+
+fn ex(s: &str) -> Exact {
+    Exact::parse("x", s, true).unwrap()
+}
+
+#[test]
+fn theta_s_encloses_the_closed_forms_and_shrinks_with_precision() {
+    // identical solid cylinders from rest at the top: θs = π/3; a fixed lower
+    // cylinder: cos θs = 2/(3 + k2) (k2 = 1/2: 4/7; k2 = 0: 2/3)
+    let hi = 2048;
+    let cases: [(&[(&str, &str)], Float); 3] = [
+        (&[], Float::with_val(hi, Constant::Pi) / 3u32),
+        (
+            &[("floor", "fixed")],
+            Float::with_val(hi, Float::with_val(hi, 4) / 7u32).acos(),
+        ),
+        (
+            &[("floor", "fixed"), ("k2", "0")],
+            Float::with_val(hi, Float::with_val(hi, 2) / 3u32).acos(),
+        ),
+    ];
+    for (pairs, want) in cases {
+        let mut o = Oracle::new(&model(pairs), 30).unwrap();
+        let mut last_w: Option<Float> = None;
+        for p in [128u32, 256, 512] {
+            let iv = o.rigorous_theta_s(p).unwrap();
+            assert!(
+                iv.contains(&want),
+                "{pairs:?} at {p}: [{}, {}]",
+                iv.lo,
+                iv.hi
+            );
+            let w = iv.width();
+            assert!(
+                w < Float::with_val(64, 1) >> (p - 24),
+                "{pairs:?}: width {w} at {p}"
+            );
+            if let Some(l) = last_w {
+                assert!(w < l);
+            }
+            last_w = Some(w);
+        }
+    }
+}
+
+#[test]
+fn a_shrunk_enclosure_is_caught() {
+    // the same check with the radius taken away misses the true value: the
+    // test above has teeth
+    let mut o = Oracle::new(&model(&[]), 30).unwrap();
+    let iv = o.rigorous_theta_s(128).unwrap();
+    let want = Float::with_val(1024, Constant::Pi) / 3u32;
+    let (mid, rad) = iv.mid_rad();
+    let shrunk = Float::with_val(128, &rad >> 200u32);
+    let lo = Float::with_val(128, &mid - &shrunk);
+    let hi = Float::with_val(128, &mid + &shrunk);
+    assert!(!(lo <= want && want <= hi));
+}
+
+#[test]
+fn forces_at_an_angle_enclose_the_verified_values_at_higher_precision() {
+    for pairs in [
+        &[("theta0", "1/10")][..],
+        &[("floor", "slip"), ("contact", "roll"), ("theta0", "1/20")],
+        &[("floor", "fixed"), ("k2", "2/5")],
+        &[("theta0", "-1/10"), ("m1", "3"), ("r2", "1/3")],
+    ] {
+        let m = model(pairs);
+        let th = if pairs
+            .iter()
+            .any(|(k, v)| *k == "theta0" && v.starts_with('-'))
+        {
+            ex("-1/2")
+        } else {
+            ex("1/2")
+        };
+        let mut o = Oracle::new(&m, 25).unwrap();
+        let proved = o.rigorous_forces(&th, 160).unwrap();
+        let mut hi = Oracle::new(&m, 60).unwrap();
+        let want = hi.forces_at(&th).unwrap();
+        for (p, w) in proved.iter().zip(&want) {
+            let p = p.as_ref().unwrap();
+            assert_eq!(p.name, w.name);
+            assert!(
+                p.iv.contains(&w.value) || (w.digits == 0 && p.iv.contains_zero()),
+                "{pairs:?} {}: {} not in [{}, {}]",
+                p.name,
+                w.value,
+                p.iv.lo,
+                p.iv.hi
+            );
+            assert!(
+                p.shown.digits >= 25 || w.digits == 0,
+                "{}: {}",
+                p.name,
+                p.shown.digits
+            );
+        }
+    }
+}
+
+#[test]
+fn time_encloses_the_verified_value_at_higher_precision() {
+    for (pairs, to) in [
+        (&[("theta0", "1/10")][..], "9/10"),
+        (&[("theta0", "1/10"), ("thetadot0", "1/5")], "1"),
+        (&[("floor", "fixed"), ("theta0", "1/20")], "1/2"),
+        (&[("theta0", "1/1000")], "1/2"),
+    ] {
+        let m = model(pairs);
+        let mut o = Oracle::new(&m, 30).unwrap();
+        let p = 160;
+        let th = cylroll::numeric::interval::Iv::exact(p, &ex(to));
+        let iv = o
+            .rigorous_time_iv(&th, p)
+            .unwrap_or_else(|e| panic!("{pairs:?}: {e}"));
+        let want = Oracle::new(&m, 60).unwrap().time_at(&ex(to)).unwrap();
+        assert!(
+            iv.contains(&want.value),
+            "{pairs:?}: {} not in [{}, {}]",
+            want.value,
+            iv.lo,
+            iv.hi
+        );
+        let rel = (iv.width() / want.value.clone()).to_f64();
+        assert!(rel < 1e-40, "{pairs:?}: relative width {rel}");
+    }
+}
+
+fn cli(args: &[&str]) -> (i32, String, String) {
+    let out = assert_cmd::Command::cargo_bin("cylroll")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn the_flag_prints_proved_digits_and_enclosures_that_hold() {
+    // θs = π/3: the JSON enclosure [mid ± rad] contains π/3
+    let (code, out, err) = cli(&[
+        "separation",
+        "--rigorous",
+        "--digits",
+        "25",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["digits_rigorous"]["theta_s"], "25");
+    assert!(v["digits_rigorous"]["F21_at_s"].is_null());
+    let mid = Float::with_val(
+        512,
+        Float::parse(v["enclosures"]["theta_s"]["mid"].as_str().unwrap()).unwrap(),
+    );
+    let rad = Float::with_val(
+        512,
+        Float::parse(v["enclosures"]["theta_s"]["rad"].as_str().unwrap()).unwrap(),
+    );
+    let pi3 = Float::with_val(512, Constant::Pi) / 3u32;
+    assert!(Float::with_val(512, &mid - &pi3).abs() <= rad);
+    // time, forces and trajectory rows: proved digits in text, CSV and JSON
+    let (code, out, _) = cli(&[
+        "time",
+        "--rigorous",
+        "--theta0",
+        "1/10",
+        "--to",
+        "9/10",
+        "--digits",
+        "20",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("t = 4.9243154682432875096  [proved: 20 digits"),
+        "{out}"
+    );
+    let (code, out, _) = cli(&[
+        "forces",
+        "--rigorous",
+        "--theta",
+        "pi/4",
+        "--digits",
+        "15",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(code, 0);
+    assert!(out.starts_with("key,value,digits_verified,error_bound,digits_rigorous,mid,rad\n"));
+    assert!(out.contains("\nN12,0.355937090382742,15,"), "{out}");
+    let (code, out, _) = cli(&[
+        "trajectory",
+        "--rigorous",
+        "--theta0",
+        "1/10",
+        "--times",
+        "0,1",
+        "--digits",
+        "12",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["rows"][1]["theta"], "0.118114590944");
+    assert!(v["rows"][1]["enclosures"]["N12"]["rad"].is_string());
+    assert_eq!(v["digits_rigorous"]["theta"], "12");
+}
+
+#[test]
+fn friction_is_not_enclosed_and_says_so() {
+    let (code, out, err) = cli(&[
+        "separation",
+        "--rigorous",
+        "--theta0",
+        "1/10",
+        "--mu-contact",
+        "0.3",
+    ]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert!(
+        err.contains("rigorous") && err.contains("friction"),
+        "{err}"
+    );
+}
