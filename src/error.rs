@@ -40,6 +40,9 @@ pub enum Error {
     /// An output file could not be written.
     #[error("cannot write {path}: {what}")]
     Write { path: String, what: String },
+    /// The computation was stopped by its caller ([`crate::cancel`]).
+    #[error("cancelled")]
+    Cancelled,
 }
 
 impl Error {
@@ -51,6 +54,7 @@ impl Error {
             Error::InvalidParameter { .. } | Error::NotPhysical { .. } | Error::Io { .. } => 2,
             Error::NotConverged { .. } | Error::NoSignChange { .. } => 3,
             Error::Write { .. } => 4,
+            Error::Cancelled => 130,
         }
     }
 

@@ -28,6 +28,7 @@
 //! ```
 
 pub mod audit;
+pub mod cancel;
 pub mod dae;
 pub mod error;
 pub mod exact;

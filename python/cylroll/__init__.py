@@ -27,9 +27,8 @@ The pieces:
   :class:`InternalError`, all :class:`CylrollError`.
 
 Computations release the GIL and run on a worker thread; Ctrl-C
-(``KeyboardInterrupt``) returns at once, but the interrupted computation
-finishes in the background (the library has no cancellation point) and its
-answer is dropped.
+(``KeyboardInterrupt``) returns at once and stops the computation at its next
+rung or integration step.
 """
 
 from . import _cylroll

@@ -103,6 +103,8 @@ fn py_error(py: Python<'_>, e: &Error) -> PyErr {
             "write",
             vec![("path", path.clone()), ("what", what.clone())],
         ),
+        // only after a KeyboardInterrupt, which the caller has raised already
+        Error::Cancelled => ("cancelled", vec![]),
     };
     let build = || -> PyResult<PyErr> {
         let make = py.import("cylroll._errors")?.getattr("_from_library")?;
@@ -130,18 +132,23 @@ fn panic_text(p: Box<dyn std::any::Any + Send>) -> String {
 }
 
 /// Runs `f` on a worker thread with the GIL released; checks for signals
-/// every 50 ms (a `KeyboardInterrupt` returns at once and leaves the worker
-/// to finish unobserved); library errors and panics become Python exceptions.
+/// every 50 ms (a `KeyboardInterrupt` returns at once and sets the worker's
+/// cancellation flag, [`cylroll::cancel`], so the computation stops at its
+/// next rung or step); library errors and panics become Python exceptions.
 fn detached<T, F>(py: Python<'_>, f: F) -> PyResult<T>
 where
     T: Send + 'static,
     F: FnOnce() -> cylroll::Result<T> + Send + 'static,
 {
     let (tx, rx) = mpsc::channel();
+    // set on KeyboardInterrupt: the worker stops at its next rung or step
+    let cancel = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let flag = cancel.clone();
     std::thread::Builder::new()
         .name("cylroll".into())
         .stack_size(64 << 20)
         .spawn(move || {
+            cylroll::cancel::install(flag);
             let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
             let _ = tx.send(r);
         })
@@ -157,7 +164,13 @@ where
             Ok(Ok(Ok(v))) => return Ok(v),
             Ok(Ok(Err(e))) => return Err(py_error(py, &e)),
             Ok(Err(p)) => return Err(internal(py, panic_text(p))),
-            Err(RecvTimeoutError::Timeout) => py.check_signals()?,
+            Err(RecvTimeoutError::Timeout) => {
+                if let Err(e) = py.check_signals() {
+                    // stop the worker too (it ends at its next check)
+                    cancel.store(true, std::sync::atomic::Ordering::Relaxed);
+                    return Err(e);
+                }
+            }
             Err(RecvTimeoutError::Disconnected) => {
                 return Err(internal(
                     py,

@@ -109,6 +109,11 @@ def test_keyboard_interrupt_stops_a_long_computation():
         m.separation(digits=100)      # about 2 s
     assert time.monotonic() - t0 < 2.0
     timer.cancel()
+    # the worker stopped too: the process spends (almost) no CPU afterwards
+    time.sleep(0.2)
+    c0 = time.process_time()
+    time.sleep(0.6)
+    assert time.process_time() - c0 < 0.2
 
 
 def test_gil_is_released():

@@ -374,6 +374,7 @@ pub fn run_with<I: Stepper>(
                 capped = true;
             }
         }
+        crate::cancel::check()?;
         if gbs.stats().steps >= opts.max_steps {
             return Err(Error::NotConverged {
                 quantity: "integration".into(),

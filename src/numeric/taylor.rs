@@ -426,6 +426,7 @@ fn run<const L: usize>(
         Float::with_val(pw, 1u32) << scale0.log2().floor().clamp(-1000.0, 1000.0) as i32;
     let mut dv = vec![Fx::<L>::ZERO; n + 1];
     while t < t_end {
+        crate::cancel::check()?;
         if steps.len() > 100_000 {
             return Err(collapsed(prec, &t));
         }

@@ -390,6 +390,7 @@ where
     let mut done: Vec<Option<Vec<Verified>>> = vec![None; rows];
     let mut last_fail = None;
     for attempt in 0..MAX_ATTEMPTS {
+        crate::cancel::check()?;
         let precs = precisions(digits, attempt);
         let a = f(precs.0, Run::Low)?;
         let b = f(precs.1, Run::High)?;
