@@ -146,16 +146,20 @@ pub const MAX_TOML_BYTES: u64 = 1 << 20;
 /// is refused without reading further), UTF-8, a leading byte-order mark
 /// removed.
 ///
-/// Errors: [`Error::InvalidParameter`] naming `what` when the file cannot be
-/// opened or read, is too large or is not UTF-8.
+/// Errors: [`Error::Io`] naming `what` when the file cannot be opened or
+/// read; [`Error::InvalidParameter`] naming `what` when it is too large or
+/// not UTF-8.
 pub fn read_input(path: &std::path::Path, what: &str, max_bytes: u64) -> Result<String> {
     use std::io::Read;
     let fail = |why: String| Error::invalid(what, path.display(), why);
-    let file = std::fs::File::open(path).map_err(|e| fail(format!("cannot be read: {e}")))?;
+    // a file that cannot be opened or read is an input-file error naming the parameter
+    let io = |e: std::io::Error| Error::Io {
+        path: path.display().to_string(),
+        what: format!("{what} cannot be read: {e}"),
+    };
+    let file = std::fs::File::open(path).map_err(io)?;
     let mut bytes = Vec::new();
-    file.take(max_bytes + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| fail(format!("cannot be read: {e}")))?;
+    file.take(max_bytes + 1).read_to_end(&mut bytes).map_err(io)?;
     if bytes.len() as u64 > max_bytes {
         return Err(fail(format!(
             "is larger than the {max_bytes} bytes allowed"
