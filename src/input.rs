@@ -159,7 +159,9 @@ pub fn read_input(path: &std::path::Path, what: &str, max_bytes: u64) -> Result<
     };
     let file = std::fs::File::open(path).map_err(io)?;
     let mut bytes = Vec::new();
-    file.take(max_bytes + 1).read_to_end(&mut bytes).map_err(io)?;
+    file.take(max_bytes + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
     if bytes.len() as u64 > max_bytes {
         return Err(fail(format!(
             "is larger than the {max_bytes} bytes allowed"

@@ -405,6 +405,21 @@ impl Oracle {
         single(v)
     }
 
+    /// N1, F1, F21 as polynomials in cos θ (built once).
+    fn force_polys(&mut self) -> crate::mechanics::dynamics::ForcePolys {
+        let (floor, contact) = (self.work.floor(), self.work.contact());
+        self.force_polys
+            .get_or_insert_with(|| {
+                crate::mechanics::dynamics::ForcePolys::new(
+                    &self.red,
+                    self.work.params(),
+                    floor,
+                    contact,
+                )
+            })
+            .clone()
+    }
+
     /// N1 on [θ0, θs] from N1·K², a polynomial in c = cos θ (K > 0): its
     /// real roots on [cos θs, cos θ0] are isolated (by the monotone pieces
     /// between the roots of its derivatives, [`crate::numeric::poly`]), so
@@ -420,17 +435,9 @@ impl Oracle {
         extra: &mut Vec<Verified>,
         notes: &mut Vec<String>,
     ) -> Result<()> {
-        use crate::mechanics::dynamics::{ForcePolys, HPoly, N12Poly};
+        use crate::mechanics::dynamics::{HPoly, N12Poly};
         use crate::numeric::poly;
-        let (floor, contact) = (self.work.floor(), self.work.contact());
-        let fp = match &self.force_polys {
-            Some(f) => f.clone(),
-            None => {
-                let f = ForcePolys::new(&self.red, self.work.params(), floor, contact);
-                self.force_polys = Some(f.clone());
-                f
-            }
-        };
+        let fp = self.force_polys();
         let q = |v: i64| rug::Rational::from(v);
         let k = HPoly::constant(&fp.k);
         let b = HPoly::linear(&fp.n1);
@@ -509,7 +516,7 @@ impl Oracle {
         let at_min = pick(cands, &n1_of, false);
         let v = self.verify_at("theta_N1_min", Some("N1_min"), &at_min)?;
         extra.extend(v);
-        if floor != Floor::Slip {
+        if self.work.floor() != Floor::Slip {
             extra.extend(self.needed_max(false, At::Separation, &cs)?);
         }
         Ok(())
@@ -524,17 +531,9 @@ impl Oracle {
     /// compared at 96 bits and the winner verified ([`Oracle::verify_at`]).
     /// `c_end` is cos of the end angle at 96 bits.
     fn needed_max(&mut self, contact_side: bool, end: At, c_end: &Float) -> Result<Vec<Verified>> {
-        use crate::mechanics::dynamics::{ForcePolys, HPoly, N12Poly};
+        use crate::mechanics::dynamics::{HPoly, N12Poly};
         use crate::numeric::poly;
-        let (floor, contact) = (self.work.floor(), self.work.contact());
-        let fp = match &self.force_polys {
-            Some(f) => f.clone(),
-            None => {
-                let f = ForcePolys::new(&self.red, self.work.params(), floor, contact);
-                self.force_polys = Some(f.clone());
-                f
-            }
-        };
+        let fp = self.force_polys();
         let q = |v: i64| rug::Rational::from(v);
         let (a, b) = if contact_side {
             let np = self

@@ -81,8 +81,8 @@ pub fn load_case(path: &Path) -> Result<Case> {
     })
 }
 
-/// All cases of `dir/cases`, sorted by name.
-pub fn load_cases(golden_dir: &Path) -> Result<Vec<Case>> {
+/// The case files `dir/cases/*.toml`, sorted.
+fn case_paths(golden_dir: &Path) -> Result<Vec<PathBuf>> {
     let dir = golden_dir.join("cases");
     let mut paths: Vec<PathBuf> = std::fs::read_dir(&dir)
         .map_err(|e| Error::Io {
@@ -93,23 +93,23 @@ pub fn load_cases(golden_dir: &Path) -> Result<Vec<Case>> {
         .filter(|p| p.extension().is_some_and(|x| x == "toml"))
         .collect();
     paths.sort();
-    paths.iter().map(|p| load_case(p)).collect()
+    Ok(paths)
+}
+
+/// All cases of `dir/cases`, sorted by name.
+pub fn load_cases(golden_dir: &Path) -> Result<Vec<Case>> {
+    case_paths(golden_dir)?
+        .iter()
+        .map(|p| load_case(p))
+        .collect()
 }
 
 /// The names (file stems) of the cases in `golden_dir/cases`, sorted.
 pub fn case_names(golden_dir: &Path) -> Result<Vec<String>> {
-    let dir = golden_dir.join("cases");
-    let mut names: Vec<String> = std::fs::read_dir(&dir)
-        .map_err(|e| Error::Io {
-            path: dir.display().to_string(),
-            what: e.to_string(),
-        })?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+    Ok(case_paths(golden_dir)?
+        .iter()
         .filter_map(|p| p.file_stem().and_then(|s| s.to_str()).map(String::from))
-        .collect();
-    names.sort();
-    Ok(names)
+        .collect())
 }
 
 /// A case by name from `golden_dir/cases/NAME.toml`.
