@@ -152,28 +152,41 @@ impl Iv {
         }
     }
 
-    /// x·y: the least and greatest of the four end products, each rounded
-    /// outwards.
+    /// x·y: by the signs of the ends, the two end products that bound it
+    /// (all four when both intervals straddle 0), rounded outwards.
     pub fn mul(&self, o: &Iv) -> Iv {
         let p = self.prec();
-        let mut lo: Option<Float> = None;
-        let mut hi: Option<Float> = None;
-        for a in [&self.lo, &self.hi] {
-            for b in [&o.lo, &o.hi] {
-                let d = Float::with_val_round(p, a * b, Round::Down).0;
-                let u = Float::with_val_round(p, a * b, Round::Up).0;
-                if lo.as_ref().is_none_or(|l| d < *l) {
-                    lo = Some(d);
-                }
-                if hi.as_ref().is_none_or(|h| u > *h) {
-                    hi = Some(u);
-                }
+        let dn = |a: &Float, b: &Float| Float::with_val_round(p, a * b, Round::Down).0;
+        let up = |a: &Float, b: &Float| Float::with_val_round(p, a * b, Round::Up).0;
+        let (a, b, c, d) = (&self.lo, &self.hi, &o.lo, &o.hi);
+        let nonneg = |x: &Float| !x.is_sign_negative() || x.is_zero();
+        let nonpos = |x: &Float| x.is_sign_negative() || x.is_zero();
+        let (lo, hi) = if nonneg(a) {
+            if nonneg(c) {
+                (dn(a, c), up(b, d))
+            } else if nonpos(d) {
+                (dn(b, c), up(a, d))
+            } else {
+                (dn(b, c), up(b, d))
             }
-        }
-        Iv {
-            lo: lo.unwrap_or_else(|| Float::new(p)),
-            hi: hi.unwrap_or_else(|| Float::new(p)),
-        }
+        } else if nonpos(b) {
+            if nonneg(c) {
+                (dn(a, d), up(b, c))
+            } else if nonpos(d) {
+                (dn(b, d), up(a, c))
+            } else {
+                (dn(a, d), up(a, c))
+            }
+        } else if nonneg(c) {
+            (dn(a, d), up(b, d))
+        } else if nonpos(d) {
+            (dn(b, c), up(a, c))
+        } else {
+            let (l1, l2) = (dn(a, d), dn(b, c));
+            let (h1, h2) = (up(a, c), up(b, d));
+            (if l1 < l2 { l1 } else { l2 }, if h1 > h2 { h1 } else { h2 })
+        };
+        Iv { lo, hi }
     }
 
     /// x².

@@ -373,7 +373,7 @@ impl Oracle {
             50.0
         };
         let mut last = None;
-        for frac in [0.75, 0.5, 0.25, 0.1] {
+        for frac in [0.9, 0.75, 0.5, 0.25, 0.1] {
             let rho = 1.0 + (rho_max - 1.0) * frac;
             if rho <= 1.0 + 1e-6 {
                 break;
@@ -419,14 +419,20 @@ impl Oracle {
             .collect();
         let mut sum = Iv::int(p, 0);
         let quarter_pi = pi.mul_q(&Rational::from((1, 4)));
+        // b_k/(4k² − 1), enclosed once
+        let coefs: Vec<Iv> = (1..=n / 2)
+            .map(|kk| {
+                let b = if 2 * kk == n { 1i64 } else { 2 };
+                Iv::rational(p, &Rational::from((b, 4 * (kk * kk) as i64 - 1)))
+            })
+            .collect();
         for j in 0..=n {
             // w_j = (c_j/n)(1 − Σ_{k=1}^{n/2} b_k/(4k²−1) cos(2πkj/n))
             let mut acc = Iv::int(p, 1);
-            for kk in 1..=n / 2 {
-                let b = if 2 * kk == n { 1i64 } else { 2 };
-                let coef = Rational::from((b, 4 * (kk * kk) as i64 - 1));
+            for (i, coef) in coefs.iter().enumerate() {
+                let kk = i + 1;
                 let cosv = &table[(2 * ((kk * j) % n)) % (2 * n)];
-                acc = acc.sub(&cosv.mul_q(&coef));
+                acc = acc.sub(&cosv.mul(coef));
             }
             let cj = if j == 0 || j == n { 1i64 } else { 2 };
             let w = acc.mul_q(&Rational::from((cj, n as i64)));
