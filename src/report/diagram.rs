@@ -8,7 +8,7 @@ use super::plot::{xml, Figure, FONT, PALETTE};
 use std::fmt::Write as _;
 
 /// Size of the drawing in px.
-pub const SIZE: (u32, u32) = (720, 470);
+pub const SIZE: (u32, u32) = (820, 470);
 
 fn hex(c: (u8, u8, u8)) -> String {
     format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
@@ -166,7 +166,7 @@ pub fn svg() -> String {
         "ak",
         "φ₁: clockwise rotation of cylinder 1",
     );
-    d.text(c1.0 - 40.0, c1.1 + 10.0, "φ₁", "#000", "middle", 18.0);
+    d.text(c1.0 - 36.0, c1.1 + 12.0, "φ₁", "#000", "middle", 18.0);
     // φ2 − θ: counter-clockwise rotation of cylinder 2
     d.arc(
         c2,
@@ -260,7 +260,7 @@ pub fn svg() -> String {
     d.text(o.0 + 56.0, o.1 + 5.0, "x", "#000", "start", 16.0);
     d.text(o.0, o.1 - 50.0, "y", "#000", "middle", 16.0);
     // key
-    let kx = 470.0;
+    let kx = 520.0;
     let lines = [
         ("Positive directions:", "#000"),
         ("F₁, N₁: floor on cylinder 1 (x, y)", "#000"),

@@ -124,6 +124,16 @@ fn sep_legend() -> LegendEntry {
     }
 }
 
+fn end_legend() -> LegendEntry {
+    LegendEntry {
+        label: "separation (N₁₂ = 0): each curve ends there with its large hollow marker".into(),
+        color: SEP_COLOR,
+        dash: None,
+        shape: Some(Shape::Circle),
+        filled: false,
+    }
+}
+
 /// The four forces of one trajectory or θ curve as series.
 fn force_series(
     rows: &[Vec<f64>],
@@ -267,10 +277,13 @@ fn time_panel(
             p.lines
                 .push(sep_line(x, format!("tₛ = {}", fmt(t_s(c), 4))));
         }
+        p.legend.push(sep_legend());
     } else if shift {
         p.lines.push(sep_line(0.0, "separation".into()));
+        p.legend.push(sep_legend());
+    } else {
+        p.legend.push(end_legend());
     }
-    p.legend.push(sep_legend());
     p
 }
 
@@ -323,10 +336,15 @@ pub fn figures(data: &Data, cfg: &Config) -> Vec<Figure> {
         let ths = c.sep.theta_s.value.to_f64();
         let dot_text = match phi1dot {
             Some(a) if (a - ths).abs() < 1e-9 => format!(
-                "dφ₁/dt reaches 0 exactly at separation (θ = {}, where cos θ = k₂ in this case: the paper's remark after eq. 18)",
-                fmt(a, 4)
+                "dφ₁/dt reaches 0 exactly at separation (θ = {}, where cos θ = k₂: the paper's remark after eq. 18)",
+                fmt(a, 6)
             ),
-            Some(a) => format!("dφ₁/dt changes sign at θ = {}", fmt(a, 4)),
+            Some(a) => format!(
+                "dφ₁/dt changes sign at θ = {} (where cos θ = k₂, the paper's remark after eq. 18), {} separation at θₛ = {}",
+                fmt(a, 6),
+                if ths - a < 0.01 { "just before" } else { "before" },
+                fmt(ths, 6)
+            ),
             None => "dφ₁/dt keeps its sign up to separation".into(),
         };
         let after = extra_f(&c.sep, "theta_phi1_zero_after_separation")
@@ -570,8 +588,10 @@ pub fn figures(data: &Data, cfg: &Config) -> Vec<Figure> {
             }
             if mode == 1 {
                 p.lines.push(sep_line(0.0, "separation".into()));
+                p.legend.push(sep_legend());
+            } else {
+                p.legend.push(end_legend());
             }
-            p.legend.push(sep_legend());
             panels.push(p);
         }
         if mode == 1 {
@@ -1016,7 +1036,7 @@ fn plane_figures(data: &Data, cfg: &Config) -> Vec<Figure> {
     let flat = flattest_k2(data, cfg);
     let cross = flat
         .as_ref()
-        .map(|f| format!(" The curves cross near k₂ ≈ {}: there θₛ hardly depends on m₂/m₁ (see the heat map).", fmt(f.k2, 2)))
+        .map(|f| format!(" The curves cross near k₂ ≈ {} (θₛ ≈ {}°): there θₛ hardly depends on m₂/m₁ (see the heat map).", fmt(f.k2, 2), fmt(f.mean, 1)))
         .unwrap_or_default();
     figs.push(
         Figure::single("plane_k2.svg", "Separation angle over k₂, for several mass ratios".into(), (1100, 600), p, 230).caption(format!(
@@ -1042,6 +1062,8 @@ pub struct Flat {
     pub spread: f64,
     /// The mean θs there, in degrees.
     pub mean: f64,
+    /// The grid row of the smallest spread.
+    pub row: f64,
 }
 
 fn heat_grid(data: &Data, cfg: &Config) -> (Vec<String>, Vec<String>, Vec<Vec<f64>>) {
@@ -1067,11 +1089,25 @@ fn heat_grid(data: &Data, cfg: &Config) -> (Vec<String>, Vec<String>, Vec<Vec<f6
 }
 
 fn flattest_k2(data: &Data, cfg: &Config) -> Option<Flat> {
-    let (_, hk, z) = heat_grid(data, cfg);
+    let (hr, hk, z) = heat_grid(data, cfg);
+    // the spread of θs over the mass ratios of the curves θs(k2) (0.1 to 10)
+    let cols: Vec<usize> = hr
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| {
+            let v = text_f64(r);
+            (0.1 * (1.0 - 1e-9)..=10.0 * (1.0 + 1e-9)).contains(&v)
+        })
+        .map(|(i, _)| i)
+        .collect();
     let spread: Vec<f64> = z
         .iter()
         .map(|row| {
-            let f: Vec<f64> = row.iter().copied().filter(|v| v.is_finite()).collect();
+            let f: Vec<f64> = cols
+                .iter()
+                .map(|&i| row[i])
+                .filter(|v| v.is_finite())
+                .collect();
             if f.len() < 2 {
                 return f64::NAN;
             }
@@ -1087,26 +1123,26 @@ fn flattest_k2(data: &Data, cfg: &Config) -> Option<Flat> {
     let ks: Vec<f64> = hk.iter().map(|k| text_f64(k)).collect();
     let mut k2 = ks[j];
     if j > 0 && j + 1 < ks.len() && spread[j - 1].is_finite() && spread[j + 1].is_finite() {
-        // the spread is |a (k - k*)| near its zero: the crossing of two lines
+        // near its zero the spread is |a (k − k*)|: the crossing of two lines
         let (a, b, c) = (spread[j - 1], spread[j], spread[j + 1]);
         let h = ks[j + 1] - ks[j];
         if a > c {
-            // zero between j and j+1: slope from the left side
-            let slope = (a - b) / h;
-            k2 = ks[j] + (b / slope).min(h);
-            let _ = c;
+            k2 = ks[j] + (b / ((a - b) / h)).min(h);
         } else {
-            let slope = (c - b) / h;
-            k2 = ks[j] - (b / slope).min(h);
+            k2 = ks[j] - (b / ((c - b) / h)).min(h);
         }
     }
-    let row = &z[j];
-    let f: Vec<f64> = row.iter().copied().filter(|v| v.is_finite()).collect();
-    let mean = f.iter().sum::<f64>() / f.len() as f64;
+    let f: Vec<f64> = cols
+        .iter()
+        .map(|&i| z[j][i])
+        .filter(|v| v.is_finite())
+        .collect();
+    let mean = f.iter().sum::<f64>() / f.len().max(1) as f64;
     Some(Flat {
         k2,
         spread: s,
         mean,
+        row: ks[j],
     })
 }
 
@@ -1201,38 +1237,35 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
         }
     }
     let full_x = xs[xs.len() - 1] - xs[0];
-    let flat_text = flat
-        .map(|f| {
-            let nearest = levels
-                .iter()
-                .copied()
-                .min_by(|a, b| (a - f.mean).abs().total_cmp(&(b - f.mean).abs()));
-            let contour_text = nearest
-                .and_then(|l| {
-                    level_k2
-                        .iter()
-                        .find(|(lv, _, _, xspan)| *lv == l && *xspan > 0.9 * full_x)
-                        .map(|(_, a, b, _)| (l, *a, *b))
-                })
-                .filter(|(_, a, b)| b - a < 0.1)
-                .map(|(l, a, b)| {
-                    format!(
-                        "the {l:.0}° contour runs almost flat across the whole range of m₂/m₁, between k₂ = {} and {}: ",
-                        fmt(a, 3),
-                        fmt(b, 3)
-                    )
-                })
-                .unwrap_or_default();
+    // the flattest contour that crosses the whole range of mass ratios
+    let flattest = level_k2
+        .iter()
+        .filter(|(_, _, _, xspan)| *xspan > 0.95 * full_x)
+        .min_by(|a, b| (a.2 - a.1).total_cmp(&(b.2 - b.1)))
+        .copied();
+    let contour_text = flattest
+        .filter(|(_, a, b, _)| b - a < 0.05)
+        .map(|(l, a, b, _)| {
             format!(
-                " Near k₂ ≈ {}, {contour_text}θₛ is nearly independent of the mass ratio (it varies by only {}° over the row k₂ = {} of the \
-                 grid, around {}°). This is where the curves of θₛ against k₂ for different m₂/m₁ cross in the figure above.",
-                fmt(f.k2, 2),
-                fmt(f.spread, 2),
-                fmt(ys.iter().copied().min_by(|a, b| (a - f.k2).abs().total_cmp(&(b - f.k2).abs())).unwrap_or(f.k2), 3),
-                fmt(f.mean, 1)
+                " The {l:.0}° contour is almost flat: it stays between k₂ = {} and {} over the whole range of m₂/m₁, so there θₛ \
+                 hardly depends on the mass ratio.",
+                fmt(a, 3),
+                fmt(b, 3)
             )
         })
         .unwrap_or_default();
+    let flat_text = flat
+        .map(|f| {
+            format!(
+                "{contour_text} Over m₂/m₁ from 0.1 to 10, θₛ varies least on the row k₂ = {} of the grid (by {}°, around {}°): the curves \
+                 of θₛ against k₂ for different m₂/m₁ cross near k₂ ≈ {} (figure above).",
+                fmt(f.row, 3),
+                fmt(f.spread, 2),
+                fmt(f.mean, 1),
+                fmt(f.k2, 2)
+            )
+        })
+        .unwrap_or(contour_text);
     let mut csv = String::from("m2_over_m1,k2,theta_s_deg\n");
     for (j, k) in hk.iter().enumerate() {
         for (i, r) in hr.iter().enumerate() {

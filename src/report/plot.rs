@@ -1305,7 +1305,18 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
             svg.polyline(&px, s.color, s.width, s.dash, &title);
         }
     }
-    // periodic markers
+    // periodic markers, never on (or under) an event marker or a curve's end
+    let taken: Vec<(f64, f64)> = p
+        .markers
+        .iter()
+        .filter(|m| f.inside(m.at.0, m.at.1))
+        .map(|m| (f.px(m.at.0), f.py(m.at.1)))
+        .chain(p.series.iter().filter_map(|s| {
+            let &(x, y) = s.points.last()?;
+            (s.end.is_some() && f.inside(x, y)).then(|| (f.px(x), f.py(y)))
+        }))
+        .collect();
+    let free = |x: f64, y: f64| taken.iter().all(|q| (q.0 - x).hypot(q.1 - y) > 11.0);
     for s in &p.series {
         if let (Some(shape), true) = (s.shape, s.every > 0) {
             let last = s.points.len().saturating_sub(1);
@@ -1314,6 +1325,7 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
                     && (i - s.phase) % s.every == 0
                     && i + s.every / 2 < last
                     && f.inside(x, y)
+                    && free(f.px(x), f.py(y))
                 {
                     svg.marker(
                         f.px(x),
@@ -1379,14 +1391,20 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
         .collect();
     direct.sort_by(|a, b| a.1.total_cmp(&b.1));
     let gap = NOTE_PX + 2.0;
-    for i in 1..direct.len() {
-        let prev = direct[i - 1].1;
-        let clash = direct[i].1 - prev < gap
-            && (direct[i].0 - direct[i - 1].0).abs()
-                < text_width(&direct[i - 1].2, NOTE_PX).max(text_width(&direct[i].2, NOTE_PX));
-        if clash {
-            direct[i].1 = prev + gap;
+    let mut placed: Vec<(f64, f64, f64)> = Vec::new();
+    for d in &mut direct {
+        let w = text_width(&d.2, NOTE_PX);
+        let clashes = |y: f64, placed: &[(f64, f64, f64)]| {
+            placed
+                .iter()
+                .any(|&(px, py, pw)| (y - py).abs() < gap && d.0 < px + pw && px < d.0 + w)
+        };
+        let mut tries = 0;
+        while clashes(d.1, &placed) && tries < 20 {
+            d.1 += gap / 2.0;
+            tries += 1;
         }
+        placed.push((d.0, d.1, w));
     }
     for (x, y, t, c) in &direct {
         svg.text(*x, *y, t, NOTE_PX, "start", darker(*c), true, false);

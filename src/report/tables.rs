@@ -486,14 +486,7 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
     let mut items = Vec::new();
     for (vi, v) in VARIANTS.iter().enumerate() {
         if let Some(Ok(s)) = data.sep.get(vi).and_then(|s| s.first()) {
-            for n in &s.notes {
-                items.push(format!("{}: {n}", variant_name(*v)));
-            }
-            for x in &s.extra {
-                if x.name != "F21_at_s" {
-                    items.push(format!("{}: {} = {}", variant_name(*v), x.name, x.text));
-                }
-            }
+            items.push(format!("{}: {}", variant_name(*v), reader_notes(*v, s)));
         }
     }
     for (vi, v) in VARIANTS.iter().enumerate() {
@@ -554,9 +547,10 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
     let notes = Section {
         title: "What the oracle reported".into(),
         paragraphs: vec![format!(
-            "The oracle's findings for each contact model from rest at the top ({d} digits): where φ1 and dφ1/dt \
-             change sign, whether the lower cylinder stays on the floor, what happens to the friction at separation. \
-             Any point that could not be verified is listed here too."
+            "What the oracle found for each contact model, started from rest at the top (the limit θ₀ → 0+, where the \
+             time to separation is infinite), with its verified values rounded here to 6 decimals (to {d} digits in \
+             `separation.csv` and from `cylroll separation`). Forces are in units of m₁g. Any point that could not be \
+             verified is listed here too."
         )],
         items,
         links: Vec::new(),
@@ -569,4 +563,136 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
         plane_csv,
         problems,
     })
+}
+
+/// A verified value rounded for prose.
+fn r6(v: &Verified) -> String {
+    let x = v.value.to_f64();
+    super::plot::minus(&format!("{x:.6}"))
+}
+
+/// Plain words for the oracle's technical names in a note it wrote.
+fn plain(note: &str) -> String {
+    let mut t = note.to_string();
+    for (a, b) in [
+        ("theta_s", "θₛ"),
+        ("theta0", "θ₀"),
+        ("phi1_dot", "dφ₁/dt"),
+        ("phi1", "φ₁"),
+        ("phi2", "φ₂"),
+        ("theta", "θ"),
+        ("N12", "N₁₂"),
+        ("N1", "N₁"),
+        ("F21", "F₂₁"),
+        ("F1", "F₁"),
+        ("t_s", "tₛ"),
+        (" != ", " ≠ "),
+        (" -> ", " → "),
+        ("0+", "0⁺"),
+        ("K^2", "K²"),
+    ] {
+        t = t.replace(a, b);
+    }
+    t
+}
+
+/// The oracle's findings for one contact model, written for a reader: the
+/// lower cylinder's normal force, the friction the floor needs, the turning
+/// of cylinder 1, the friction at separation, then any other note.
+pub fn reader_notes(v: (Floor, Contact), s: &Separation) -> String {
+    let mut out: Vec<String> = Vec::new();
+    let held = v.0 == Floor::Fixed;
+    let n1 = extra(s, "N1_min").zip(extra(s, "theta_N1_min"));
+    let lift = extra(s, "theta_N1_zero");
+    match (held, lift, n1) {
+        (_, Some(a), _) => out.push(format!(
+            "N₁ reaches 0 at θ = {} before separation: cylinder 1 would leave {} first",
+            r6(a),
+            if held { "its holder" } else { "the floor" }
+        )),
+        (true, None, Some((m, a))) => out.push(format!(
+            "cylinder 1 is held: the holder's vertical force N₁ stays positive up to separation (checked at every angle), \
+             smallest {} at θ = {}",
+            r6(m),
+            r6(a)
+        )),
+        (false, None, Some((m, a))) => out.push(format!(
+            "cylinder 1 stays on the floor: N₁ > 0 at every angle up to separation (N₁ has no root there), smallest {} at θ = {}",
+            r6(m),
+            r6(a)
+        )),
+        _ => {}
+    }
+    if let (Some(m), Some(a)) = (extra(s, "mu_floor_max"), extra(s, "theta_mu_floor_max")) {
+        out.push(if held {
+            format!(
+                "the holder's horizontal force is at most |F₁|/N₁ = {} of its vertical force (at θ = {})",
+                r6(m),
+                r6(a)
+            )
+        } else {
+            format!(
+                "rolling on the floor needs a friction coefficient of at most |F₁|/N₁ = {} (at θ = {})",
+                r6(m),
+                r6(a)
+            )
+        });
+    }
+    if !held && v != (Floor::Slip, Contact::Slip) {
+        for (key, name) in [("phi1dot", "dφ₁/dt"), ("phi1", "φ₁")] {
+            let before = extra(s, &format!("theta_{key}_zero"));
+            let after = extra(s, &format!("theta_{key}_zero_after_separation"));
+            let ths = s.theta_s.value.to_f64();
+            out.push(match (before, after) {
+                (Some(a), _) if (a.value.to_f64() - ths).abs() < 1e-12 * ths.max(1.0) => {
+                    format!("{name} reaches 0 exactly at separation")
+                }
+                (Some(a), _) => format!("{name} changes sign at θ = {}, before separation", r6(a)),
+                (None, Some(a)) => format!(
+                    "{name} keeps its sign up to separation (continued past θₛ, the formulas would change it at θ = {}, which the \
+                     motion never reaches)",
+                    r6(a)
+                ),
+                (None, None) => format!("{name} keeps its sign up to separation"),
+            });
+        }
+    }
+    if let Some(f) = extra(s, "F21_at_s") {
+        out.push(format!(
+            "at separation F₂₁ = {} while N₁₂ → 0, so the friction a rolling contact needs, |F₂₁|/N₁₂, grows without bound: with \
+             any finite μ the upper cylinder slips before it separates",
+            r6(f)
+        ));
+    }
+    // notes not said above, in plain words
+    let said = ["t_s is infinite", "N1 > 0", "N1 ", "phi1", "F21 != 0"];
+    for n in &s.notes {
+        if !said.iter().any(|p| n.starts_with(p)) {
+            out.push(plain(n));
+        }
+    }
+    // verified values not said above
+    let known = [
+        "F21_at_s",
+        "N1_min",
+        "theta_N1_min",
+        "theta_N1_zero",
+        "mu_floor_max",
+        "theta_mu_floor_max",
+        "theta_phi1dot_zero",
+        "theta_phi1_zero",
+        "theta_phi1dot_zero_after_separation",
+        "theta_phi1_zero_after_separation",
+    ];
+    for x in &s.extra {
+        if !known.contains(&x.name.as_str()) {
+            out.push(format!("{} = {}", plain(&x.name), r6(x)));
+        }
+    }
+    let mut text = out.join("; ");
+    if let Some(first) = text.get(..1) {
+        text = first.to_uppercase() + &text[1..];
+    }
+    text.push('.');
+    text
 }
