@@ -8,7 +8,7 @@ use super::plot::{xml, Figure, FONT, PALETTE};
 use std::fmt::Write as _;
 
 /// Size of the drawing in px.
-pub const SIZE: (u32, u32) = (820, 470);
+pub const SIZE: (u32, u32) = (560, 640);
 
 fn hex(c: (u8, u8, u8)) -> String {
     format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
@@ -97,7 +97,7 @@ pub fn svg() -> String {
     let floor_y = 420.0;
     let r = 105.0;
     let th = 32f64.to_radians();
-    let c1 = (250.0, floor_y - r);
+    let c1 = (210.0, floor_y - r);
     let c2 = (c1.0 + 2.0 * r * th.sin(), c1.1 - 2.0 * r * th.cos());
     let p = (c1.0 + r * th.sin(), c1.1 - r * th.cos());
     let grey = "#6e6e6e";
@@ -148,14 +148,14 @@ pub fn svg() -> String {
     );
     d.arc(
         c1,
-        150.0,
+        48.0,
         0.0,
         32.0,
         "#000",
         "ak",
         "θ: the line of centres, clockwise from the vertical",
     );
-    d.text(c1.0 + 45.0, c1.1 - 155.0, "θ", "#000", "middle", 20.0);
+    d.text(c1.0 + 20.0, c1.1 - 56.0, "θ", "#000", "middle", 19.0);
     // φ1: clockwise rotation of cylinder 1
     d.arc(
         c1,
@@ -241,8 +241,8 @@ pub fn svg() -> String {
         3.0,
     );
     d.text(
-        p.0 + len * n.0 - 34.0,
-        p.1 + len * n.1 + 2.0,
+        p.0 + len * n.0 - 8.0,
+        p.1 + len * n.1 - 4.0,
         "N₁₂",
         &hex(PALETTE[3]),
         "end",
@@ -260,7 +260,7 @@ pub fn svg() -> String {
     d.text(o.0 + 56.0, o.1 + 5.0, "x", "#000", "start", 16.0);
     d.text(o.0, o.1 - 50.0, "y", "#000", "middle", 16.0);
     // key
-    let kx = 520.0;
+    let kx = 30.0;
     let lines = [
         ("Positive directions:", "#000"),
         ("F₁, N₁: floor on cylinder 1 (x, y)", "#000"),
@@ -274,8 +274,8 @@ pub fn svg() -> String {
     for (i, (l, c)) in lines.iter().enumerate() {
         let _ = writeln!(
             d.s,
-            "<text x=\"{kx}\" y=\"{}\" font-size=\"14.5\" fill=\"{c}\"{}>{}</text>",
-            40.0 + 21.0 * i as f64,
+            "<text x=\"{kx}\" y=\"{}\" font-size=\"15\" fill=\"{c}\"{}>{}</text>",
+            466.0 + 21.0 * i as f64,
             if i == 0 { " font-weight=\"bold\"" } else { "" },
             xml(l)
         );

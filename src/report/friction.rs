@@ -181,10 +181,10 @@ pub fn table(d: &FrictionData) -> Table {
         id: "friction-events".into(),
         title: "Events of the main case with Coulomb friction".into(),
         intro: format!(
-            "The main case (identical solid cylinders, from rest at θ0 = {THETA0}) with the same coefficient μ \
+            "The main case (identical solid cylinders, from rest at θ₀ = {THETA0}) with the same coefficient μ \
              (static = kinetic) at the floor and between the cylinders. Every time and angle is printed with \
              its verified digits. The floor never slips in these three cases; at μ = 10 no sliding continuation \
-             is consistent when the contact reaches its cone, and the cylinders part there with N12 > 0 just \
+             is consistent when the contact reaches its cone, and the cylinders part there with N₁₂ > 0 just \
              before (project README, \"Friction\")."
         ),
         header: vec![
@@ -431,10 +431,10 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
             250,
         ).caption(format!(
                 "The same coefficient at both contacts, {} values from 0.01 to 100. As μ → ∞ the slip onset \
-                 and θs approach the rolling model's θs = {:.6}; as μ → 0 slip starts at once and θs approaches \
-                 the frictionless model's {:.6}. Marked: the contact opens at an event while N12 > 0, because no \
+                 and θₛ approach the rolling model's θₛ = {:.6}; as μ → 0 slip starts at once and θₛ approaches \
+                 the frictionless model's {:.6}. Marked: the contact opens at an event while N₁₂ > 0, because no \
                  mode with the contact closed is consistent there — for large μ when the contact reaches its \
-                 cone close to θs, and elsewhere when the floor's slip stops and the floor's force jumps.{failed}",
+                 cone close to θₛ, and elsewhere when the floor's slip stops and the floor's force jumps.{failed}",
                 d.map.len() + d.map_failed.len(),
                 d.ideal[0],
                 d.ideal[1]
@@ -500,8 +500,8 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
             ],
         });
         figs.push(fig.caption(format!(
-                "θs (colour) on a {n} × {n} grid of coefficients from 0.01 to 100 (static = kinetic). The marks \
-                 on the colour bar are the ideal models' θs: both rolling ({:.4}, approached towards the \
+                "θₛ (colour) on a {n} × {n} grid of coefficients from 0.01 to 100 (static = kinetic). The marks \
+                 on the colour bar are the ideal models' θₛ: both rolling ({:.4}, approached towards the \
                  top-right corner) and a rolling floor under a frictionless contact ({:.4}, the bottom-right \
                  corner).{}",
                 d.ideal[0],

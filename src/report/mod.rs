@@ -179,14 +179,14 @@ fn intro(cfg: &Config) -> Vec<String> {
             cfg.digits, cfg.plot_digits
         ),
         format!(
-            "Units and conventions: unless said otherwise m1 = m2 = r1 = r2 = g = 1 and k1 = k2 = 1/2 (identical \
-             solid cylinders); time in units of {} and forces in units of m1 g (so N1 = 2 and N12 = 1 at rest at \
-             the top). θ is the line of centres measured clockwise from the vertical; φ1 the clockwise rotation of \
-             cylinder 1; φ2 the paper's angle (eq. 2). F1, N1: the floor's force on cylinder 1 (the holder's when \
-             it is fixed); F21: the friction force of cylinder 1 on cylinder 2; N12: the normal force between the \
-             cylinders, which vanishes at separation θs. A start from rest exactly at the top takes infinitely \
-             long, so the plots against time start from rest at θ0 = {}; the plots against θ and the main tables \
-             are the limit θ0 → 0+.",
+            "Units and conventions: unless said otherwise m₁ = m₂ = r₁ = r₂ = g = 1 and k₁ = k₂ = 1/2 (identical \
+             solid cylinders); time in units of {} and forces in units of m₁g (so N₁ = 2 and N₁₂ = 1 at rest at \
+             the top). θ is the line of centres measured clockwise from the vertical; φ₁ the clockwise rotation of \
+             cylinder 1; φ₂ the paper's angle (eq. 2). F₁, N₁: the floor's force on cylinder 1 (the holder's when \
+             it is fixed); F₂₁: the friction force of cylinder 1 on cylinder 2; N₁₂: the normal force between the \
+             cylinders, which vanishes at separation θₛ. A start from rest exactly at the top takes infinitely \
+             long, so the plots against time start from rest at θ₀ = {}; the plots against θ and the main tables \
+             are the limit θ₀ → 0+.",
             figures::TAU,
             data::THETA0_TIME
         ),

@@ -232,7 +232,7 @@ h1{font-size:1.55em;line-height:1.25}h2{margin-top:2em;border-bottom:1px solid #
 code{font-family:'DejaVu Sans Mono',Menlo,Consolas,monospace;font-size:0.92em}\
 pre{overflow-x:auto;background:#f6f6f6;padding:0.5em}\
 figure{margin:1em 0 2.2em 0}figure h3{margin-top:0}\
-object.fig{display:block;width:100%;height:auto;border:1px solid #ddd;background:#fff}\
+object.fig{display:block;width:100%;height:auto;border:1px solid #ddd;background:#fff}object.one{max-width:820px}\
 object.narrow{display:none}\
 figcaption{font-size:0.95em;color:#222;margin-top:0.5em}figcaption .data{white-space:nowrap}\
 .scroll{overflow-x:auto;max-width:100%}\
@@ -336,7 +336,12 @@ fn figure_html(f: &Figure) -> String {
             t = esc(&f.title)
         )
     };
-    s.push_str(&obj(&figure_path(f), "wide", f.size.0, f.size.1));
+    let class = if narrow_path(f).is_some() {
+        "wide"
+    } else {
+        "one"
+    };
+    s.push_str(&obj(&figure_path(f), class, f.size.0, f.size.1));
     if let Some(n) = narrow_path(f) {
         let (w, h) = super::plot::narrow_size(f);
         s.push_str(&obj(&n, "narrow", w, h));
