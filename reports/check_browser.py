@@ -151,7 +151,7 @@ class Browser:
 PROBE = r"""
 (() => {
   const out = {failures: [], links: [], minFigText: 1e9, minPageText: 1e9};
-  const vw = window.innerWidth;
+  const vw = Math.min(window.innerWidth, __WIDTH__);
   const docW = Math.max(document.documentElement.scrollWidth, document.body.scrollWidth);
   if (docW > vw + 1) {
     const wide = [...document.body.querySelectorAll('*')]
@@ -160,6 +160,23 @@ PROBE = r"""
     out.failures.push(`horizontal overflow: document ${docW} px wide in a ${vw} px viewport (${wide.join(', ')})`);
   }
   const visible = e => e.offsetParent !== null && e.getClientRects().length > 0;
+  // content sticking out of the viewport outside any scrolling container
+  const scrolls = e => {
+    for (let a = e.parentElement; a && a !== document.body; a = a.parentElement) {
+      const o = getComputedStyle(a).overflowX;
+      if (o === 'auto' || o === 'scroll' || o === 'hidden') return true;
+    }
+    return false;
+  };
+  const out_of_view = [];
+  for (const e of document.body.querySelectorAll('*')) {
+    if (!visible(e) || scrolls(e)) continue;
+    for (const r of e.getClientRects()) {
+      if (r.right > vw + 1 && r.width > 0) { out_of_view.push(e.tagName + ': ' + (e.textContent || '').trim().slice(0, 40)); break; }
+    }
+    if (out_of_view.length >= 5) break;
+  }
+  if (out_of_view.length) out.failures.push(`content beyond the right edge: ${out_of_view.join(' | ')}`);
   let figs = 0;
   for (const o of document.querySelectorAll('object')) {
     if (!visible(o)) continue;
@@ -221,7 +238,11 @@ def check_page(b, url, width, shot=None):
     b.send("Page.navigate", {"url": url}, session=s)
     b.wait_event("Page.loadEventFired", timeout=120)
     time.sleep(0.3)
-    r = b.send("Runtime.evaluate", {"expression": PROBE, "returnByValue": True}, session=s)
+    r = b.send(
+        "Runtime.evaluate",
+        {"expression": PROBE.replace("__WIDTH__", str(width)), "returnByValue": True},
+        session=s,
+    )
     if "exceptionDetails" in r:
         failures.append(f"probe failed: {r['exceptionDetails']}")
         probe = {"failures": [], "links": []}

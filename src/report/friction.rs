@@ -221,6 +221,7 @@ fn phases(rows: &[Vec<f64>], modes: &[String], y: (f64, f64)) -> Vec<Cell> {
                 lo: (rows[i][0], y.0),
                 hi: (rows[i + 1][0], y.1),
                 color,
+                title: format!("{m}, t = {:.3} to {:.3}", rows[i][0], rows[i + 1][0]),
             });
         }
         i += 1;
@@ -464,6 +465,7 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
             "log₁₀ μ_floor (the floor's coefficient)",
             "log₁₀ μ_contact (between the cylinders)",
         );
+        let mut csv = String::from("mu_floor,mu_contact,theta_s_rad\n");
         for (j, row) in rows.iter().enumerate() {
             for (i, v) in row.iter().enumerate() {
                 let (x0, x1) = half(i);
@@ -476,7 +478,21 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
                     lo: (x0, y0),
                     hi: (x1, y1),
                     color,
+                    title: format!(
+                        "μ_floor = {:.3}, μ_contact = {:.3}: {}",
+                        gx[i],
+                        gx[j],
+                        v.map_or("no unique continuation".to_string(), |v| format!(
+                            "θₛ = {v:.4}"
+                        ))
+                    ),
                 });
+                csv.push_str(&format!(
+                    "{},{},{}\n",
+                    super::plot::csv_num(gx[i], 6),
+                    super::plot::csv_num(gx[j], 6),
+                    v.map_or(String::new(), |v| super::plot::csv_num(v, 12))
+                ));
             }
         }
         p.xrange = Some((half(0).0, half(lg.len() - 1).1));
@@ -491,6 +507,7 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
             p,
             150,
         );
+        fig.csv = Some(csv);
         fig.colorbar = Some(ColorBar {
             label: "θₛ [rad]".into(),
             range: (lo, hi),

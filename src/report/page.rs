@@ -234,7 +234,7 @@ pre{overflow-x:auto;background:#f6f6f6;padding:0.5em}\
 figure{margin:1em 0 2.2em 0}figure h3{margin-top:0}\
 object.fig{display:block;width:100%;height:auto;border:1px solid #ddd;background:#fff}object.one{max-width:820px}\
 object.narrow{display:none}\
-figcaption{font-size:0.95em;color:#222;margin-top:0.5em}figcaption .data{white-space:nowrap}\
+figcaption{font-size:0.95em;color:#222;margin-top:0.5em}figcaption .data{display:inline-block}\
 .scroll{overflow-x:auto;max-width:100%}\
 table{border-collapse:collapse;margin:0.5em 0 1.5em 0;font-size:0.95em}\
 th,td{border:1px solid #ccc;padding:3px 8px;text-align:left;vertical-align:top}th{background:#f3f3f3}\

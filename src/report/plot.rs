@@ -180,6 +180,8 @@ pub struct Cell {
     pub hi: (f64, f64),
     /// Fill colour.
     pub color: Rgb,
+    /// Hover text.
+    pub title: String,
 }
 
 /// A marked point (an event).
@@ -1234,7 +1236,17 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
         if a0 < a1 && b0 < b1 {
             let (px0, px1) = (f.cx(a0), f.cx(a1));
             let (py0, py1) = (f.py(b1), f.py(b0));
-            svg.rect(px0, py0, px1 - px0, py1 - py0, &hex(c.color), "none");
+            let _ = writeln!(
+                svg.s,
+                "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"0.5\">{}</rect>",
+                n(px0),
+                n(py0),
+                n(px1 - px0),
+                n(py1 - py0),
+                hex(c.color),
+                hex(c.color),
+                Svg::title(&c.title)
+            );
         }
     }
     // grid
