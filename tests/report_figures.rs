@@ -46,7 +46,7 @@ fn curves_keep_sub_pixel_coordinates() {
         .find(|l| l.starts_with("<path d=\"M") && l.contains("<title>F₁</title>"))
         .expect("the F1 curve");
     let fractional = curve
-        .split(|c: char| c == ' ' || c == 'M' || c == 'L' || c == '"')
+        .split([' ', 'M', 'L', '"'])
         .filter(|t| t.contains('.') && t.parse::<f64>().is_ok())
         .count();
     assert!(fractional > 3, "curve on whole pixels: {curve}");

@@ -40,6 +40,9 @@ const FORCE_LONG: [&str; 4] = [
 ];
 const FORCE_DASH: [Dash; 4] = [Dash::Solid, Dash::Dashed, Dash::DashDot, Dash::Dotted];
 
+/// A variant's curve of one force: (variant, points, tₛ, θₛ).
+type Curve = (usize, Vec<(f64, f64)>, f64, f64);
+
 /// Time unit text.
 pub const TAU: &str = "τ = √(r₁/g)";
 const T_LABEL: &str = "t  [τ]";
@@ -536,7 +539,8 @@ pub fn figures(data: &Data, cfg: &Config) -> Vec<Figure> {
         let xlabel = [T_LABEL, TS_LABEL, THETA_LABEL][mode];
         for (i, name) in FORCE_NAMES.iter().enumerate() {
             let mut p = Panel::new(*name, xlabel, FORCE_LABEL);
-            let mut curves: Vec<(usize, Vec<(f64, f64)>, f64, f64)> = Vec::new();
+            // (variant, points, tₛ, θₛ)
+            let mut curves: Vec<Curve> = Vec::new();
             if mode < 2 {
                 for &(v, c) in &times {
                     let mut pts = column(&c.rows, T, TF[i]);

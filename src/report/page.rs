@@ -627,10 +627,15 @@ pub fn markdown_page(md: &str, fallback_title: &str) -> String {
                 if !is_item || lines[i].starts_with("  ") {
                     break;
                 }
+                // keep trailing spaces: two of them are a hard line break
+                let full = lines[i].trim_start();
                 let mut item = if bullet {
-                    t[2..].to_string()
+                    full[2..].to_string()
                 } else {
-                    t.split_once(". ").map(|x| x.1).unwrap_or(t).to_string()
+                    full.split_once(". ")
+                        .map(|x| x.1)
+                        .unwrap_or(full)
+                        .to_string()
                 };
                 i += 1;
                 // continuation lines (indented, or not blank and not a new item)
@@ -702,9 +707,11 @@ mod tests {
         assert!(h.contains("<em>text</em>"));
         assert!(h.contains("<strong>bold</strong>"));
         assert!(h.contains("<a href=\"audit.html\">the audit</a>"));
-        assert!(h.contains(
-            "<ol>\n<li><strong>One</strong> — first<br>second line</li>\n<li>Two</li>\n</ol>"
-        ));
+        assert!(
+            h.contains("<ol>\n<li><strong>One</strong> — first<br>second line</li>"),
+            "{h}"
+        );
+        assert!(h.contains("<li>Two</li>\n</ol>"), "{h}");
         assert!(h.contains("<ul>\n<li>a</li>\n<li>b</li>\n</ul>"));
         assert!(h.contains("<td>a|b</td>"));
     }
