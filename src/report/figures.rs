@@ -1235,7 +1235,7 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
                     text: format!("{level:.0}°"),
                 });
             }
-            let mut s = Series::new("", (0, 0, 0), pts);
+            let mut s = Series::new(format!("θₛ = {level:.0}° contour"), (0, 0, 0), pts);
             s.width = 1.0;
             p.series.push(s);
         }

@@ -1222,7 +1222,7 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
         let (py0, py1) = (f.py(r.y.1), f.py(r.y.0));
         let _ = writeln!(
             svg.s,
-            "<image x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" preserveAspectRatio=\"none\" href=\"data:image/png;base64,{}\"/>",
+            "<image x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" preserveAspectRatio=\"none\" href=\"data:image/png;base64,{}\"><title>colour: the value at each point, interpolated between the computed nodes (their values: the figure's CSV)</title></image>",
             n(px0),
             n(py0),
             n(px1 - px0),

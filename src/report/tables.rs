@@ -89,7 +89,7 @@ fn agrees(v: &Verified, cf: &Float) -> (String, bool) {
 }
 
 fn degrees(v: &Verified) -> String {
-    format!("≈ {:.6}°", v.value.to_f64().to_degrees())
+    num(format!("{:.6}", v.value.to_f64().to_degrees()))
 }
 
 /// All tables, and the lines of `separation.csv` and `plane.csv`.
@@ -233,7 +233,7 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
             "contact model",
             "paper",
             "θₛ [rad]",
-            "θₛ [deg]",
+            "θₛ [deg], rounded",
             "closed form",
             "closed form value",
             "agrees",
