@@ -1421,8 +1421,17 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
     for (x, y, t, c) in &direct {
         svg.text(*x, *y, t, NOTE_PX, "start", darker(*c), true, false);
     }
+    // labels that would overlap one already written are left out
+    let mut written: Vec<(f64, f64, f64)> = Vec::new();
     for l in &p.labels {
         if f.inside(l.at.0, l.at.1) {
+            let (x, y, w) = (f.px(l.at.0), f.py(l.at.1), text_width(&l.text, NOTE_PX));
+            if written.iter().any(|&(a, b, v)| {
+                (a - x).abs() < (v + w) / 2.0 + 4.0 && (b - y).abs() < NOTE_PX + 2.0
+            }) {
+                continue;
+            }
+            written.push((x, y, w));
             svg.text(
                 f.px(l.at.0),
                 f.py(l.at.1) + 4.0,
