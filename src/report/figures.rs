@@ -1040,7 +1040,7 @@ fn plane_figures(data: &Data, cfg: &Config) -> Vec<Figure> {
     let flat = flattest_k2(data, cfg);
     let cross = flat
         .as_ref()
-        .map(|f| format!(" The curves cross near k₂ ≈ {} (θₛ ≈ {}°): there θₛ hardly depends on m₂/m₁ (see the heat map).", fmt(f.k2, 2), fmt(f.mean, 1)))
+        .map(|f| format!(" The curves come closest together near k₂ ≈ {} (θₛ ≈ {}°): there θₛ hardly depends on m₂/m₁ (see the heat map).", fmt(f.k2, 2), fmt(f.mean, 1)))
         .unwrap_or_default();
     figs.push(
         Figure::single("plane_k2.svg", "Separation angle over k₂, for several mass ratios".into(), (1100, 600), p, 230).caption(format!(
@@ -1125,17 +1125,8 @@ fn flattest_k2(data: &Data, cfg: &Config) -> Option<Flat> {
         .filter(|(_, v)| v.is_finite())
         .min_by(|a, b| a.1.total_cmp(b.1))?;
     let ks: Vec<f64> = hk.iter().map(|k| text_f64(k)).collect();
-    let mut k2 = ks[j];
-    if j > 0 && j + 1 < ks.len() && spread[j - 1].is_finite() && spread[j + 1].is_finite() {
-        // near its zero the spread is |a (k − k*)|: the crossing of two lines
-        let (a, b, c) = (spread[j - 1], spread[j], spread[j + 1]);
-        let h = ks[j + 1] - ks[j];
-        if a > c {
-            k2 = ks[j] + (b / ((a - b) / h)).min(h);
-        } else {
-            k2 = ks[j] - (b / ((c - b) / h)).min(h);
-        }
-    }
+    // the row itself: the curves come closest there (they need not meet in one point)
+    let k2 = ks[j];
     let f: Vec<f64> = cols
         .iter()
         .map(|&i| z[j][i])
@@ -1217,11 +1208,23 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
         let lines = chain(&contour(&xs, &ys, &z, level));
         for line in lines {
             let pts: Vec<(f64, f64)> = line.iter().map(|&(x, y)| (10f64.powf(x), y)).collect();
-            let kmin = line.iter().map(|q| q.1).fold(f64::INFINITY, f64::min);
-            let kmax = line.iter().map(|q| q.1).fold(f64::NEG_INFINITY, f64::max);
-            let xspan = line.iter().map(|q| q.0).fold(f64::NEG_INFINITY, f64::max)
-                - line.iter().map(|q| q.0).fold(f64::INFINITY, f64::min);
-            level_k2.push((level, kmin, kmax, xspan));
+            // k2 range of the contour over m2/m1 from 0.1 to 10 (the curves θs(k2)),
+            // and its k2 at the ends of the whole range
+            let mid: Vec<f64> = line
+                .iter()
+                .filter(|q| (-1.0 - 1e-9..=1.0 + 1e-9).contains(&q.0))
+                .map(|q| q.1)
+                .collect();
+            let kmin = mid.iter().copied().fold(f64::INFINITY, f64::min);
+            let kmax = mid.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            let xspan = mid.len() as f64;
+            let lo_end = line.iter().min_by(|a, b| a.0.total_cmp(&b.0)).copied();
+            let hi_end = line.iter().max_by(|a, b| a.0.total_cmp(&b.0)).copied();
+            let covers =
+                line.iter().any(|q| q.0 <= -1.0 + 1e-9) && line.iter().any(|q| q.0 >= 1.0 - 1e-9);
+            if covers {
+                level_k2.push((level, kmin, kmax, xspan, lo_end, hi_end));
+            }
             if line.len() >= 4 {
                 // the label at the point of the line nearest to its middle in x
                 let mid = line.iter().map(|q| q.0).sum::<f64>() / line.len() as f64;
@@ -1240,18 +1243,26 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
             p.series.push(s);
         }
     }
-    let full_x = xs[xs.len() - 1] - xs[0];
     // the flattest contour that crosses the whole range of mass ratios
     let flattest = level_k2
         .iter()
-        .filter(|(_, _, _, xspan)| *xspan > 0.95 * full_x)
         .min_by(|a, b| (a.2 - a.1).total_cmp(&(b.2 - b.1)))
-        .copied();
+        .cloned();
     let contour_text = flattest
-        .filter(|(_, a, b, _)| b - a < 0.05)
-        .map(|(l, a, b, _)| {
+        .filter(|f| f.2 - f.1 < 0.05)
+        .map(|(l, a, b, _, lo, hi)| {
+            let ends = match (lo, hi) {
+                (Some(p), Some(q)) => format!(
+                    " (over the whole plot it runs from k₂ = {} at m₂/m₁ = {} to {} at {})",
+                    fmt(p.1, 3),
+                    super::plot::csv_num(10f64.powf(p.0), 3),
+                    fmt(q.1, 3),
+                    super::plot::csv_num(10f64.powf(q.0), 3)
+                ),
+                _ => String::new(),
+            };
             format!(
-                " The {l:.0}° contour is almost flat: it stays between k₂ = {} and {} over the whole range of m₂/m₁, so there θₛ \
+                " The {l:.0}° contour is almost flat: for m₂/m₁ from 0.1 to 10 it stays between k₂ = {} and {}{ends}, so there θₛ \
                  hardly depends on the mass ratio.",
                 fmt(a, 3),
                 fmt(b, 3)
@@ -1262,11 +1273,10 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
         .map(|f| {
             format!(
                 "{contour_text} Over m₂/m₁ from 0.1 to 10, θₛ varies least on the row k₂ = {} of the grid (by {}°, around {}°): the curves \
-                 of θₛ against k₂ for different m₂/m₁ cross near k₂ ≈ {} (figure above).",
+                 of θₛ against k₂ for different m₂/m₁ come closest together there (figure above).",
                 fmt(f.row, 3),
                 fmt(f.spread, 2),
-                fmt(f.mean, 1),
-                fmt(f.k2, 2)
+                fmt(f.mean, 1)
             )
         })
         .unwrap_or(contour_text);
