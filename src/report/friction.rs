@@ -5,7 +5,10 @@
 
 use super::data::{log_grid, text_f64};
 use super::page::Table;
-use super::plot::{viridis, Cell, ColorBar, Dash, Figure, Marker, Panel, Scale, Series, PALETTE};
+use super::plot::{
+    viridis, Cell, ColorBar, Dash, Figure, LegendEntry, Marker, Panel, Scale, Series, Shape,
+    PALETTE,
+};
 use super::Config;
 use crate::error::Result;
 use crate::exact::Exact;
@@ -178,10 +181,10 @@ pub fn table(d: &FrictionData) -> Table {
         id: "friction-events".into(),
         title: "Events of the main case with Coulomb friction".into(),
         intro: format!(
-            "The main case (identical solid cylinders, from rest at θ0 = {THETA0}) with the same coefficient μ \
+            "The main case (identical solid cylinders, from rest at θ₀ = {THETA0}) with the same coefficient μ \
              (static = kinetic) at the floor and between the cylinders. Every time and angle is printed with \
              its verified digits. The floor never slips in these three cases; at μ = 10 no sliding continuation \
-             is consistent when the contact reaches its cone, and the cylinders part there with N12 > 0 just \
+             is consistent when the contact reaches its cone, and the cylinders part there with N₁₂ > 0 just \
              before (project README, \"Friction\")."
         ),
         header: vec![
@@ -218,6 +221,7 @@ fn phases(rows: &[Vec<f64>], modes: &[String], y: (f64, f64)) -> Vec<Cell> {
                 lo: (rows[i][0], y.0),
                 hi: (rows[i + 1][0], y.1),
                 color,
+                title: format!("{m}, t = {:.3} to {:.3}", rows[i][0], rows[i + 1][0]),
             });
         }
         i += 1;
@@ -260,42 +264,71 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
         let s12 = col(rows, "s12");
         let s1 = col(rows, "s1");
         let work = col(rows, "work");
-        let mut p1 = Panel::new("θ(t), events marked", "t  [τ]", "θ  [rad]");
+        let mut p1 = Panel::new("θ, events marked", "t  [τ]", "θ  [rad]");
         p1.yrange = Some(range(&[&th]));
         p1.cells = phases(rows, modes, p1.yrange.unwrap_or((0.0, 1.0)));
         p1.series.push(Series::new("θ", PALETTE[0], th.clone()));
         p1.markers = ev
             .iter()
-            .map(|&(t, theta, _)| Marker {
-                at: (t, theta),
-                color: PALETTE[6],
+            .map(|&(t, theta, k)| {
+                let name = k.replace('_', " ");
+                let mut m = Marker::new(
+                    (t, theta),
+                    PALETTE[6],
+                    format!("{name} at t = {t:.4}, θ = {theta:.4}"),
+                );
+                m.shape = Shape::Diamond;
+                m.label = Some(format!("{name}, θ = {theta:.3}"));
+                m
             })
             .collect();
-        p1.marker_label = Some("events: slip onset,\nseparation, impact".into());
+        p1.legend.push(LegendEntry {
+            label: "event (slip onset, separation, impact)".into(),
+            color: PALETTE[6],
+            dash: None,
+            shape: Some(Shape::Diamond),
+            filled: true,
+        });
+        p1.legend.push(LegendEntry {
+            label: "shaded orange: the contact slips".into(),
+            color: SLIP_SHADE,
+            dash: None,
+            shape: Some(Shape::Square),
+            filled: true,
+        });
+        p1.legend.push(LegendEntry {
+            label: "shaded blue: free flight".into(),
+            color: FLIGHT_SHADE,
+            dash: None,
+            shape: Some(Shape::Square),
+            filled: true,
+        });
         let mut p2 = Panel::new(
-            "Forces between the cylinders and the cone ±μ N12",
+            "Forces between the cylinders, and the cone ±μN₁₂",
             "t  [τ]",
-            "force  [m1 g]",
+            "force  [m₁g]",
         );
         p2.yrange = Some(range(&[&n12, &f21, &ncone]));
         p2.cells = phases(rows, modes, p2.yrange.unwrap_or((0.0, 1.0)));
-        p2.series.push(Series::new("N12", PALETTE[2], n12));
-        p2.series.push(Series::new("F21", PALETTE[1], f21));
         p2.series
-            .push(Series::new("±μ N12 (the cone)", PALETTE[6], cone).dashed(Dash::Dotted));
+            .push(Series::new("N₁₂", PALETTE[2], n12).shape(Shape::Circle));
+        p2.series
+            .push(Series::new("F₂₁", PALETTE[1], f21).dashed(Dash::Dashed));
+        p2.series
+            .push(Series::new("±μN₁₂ (the friction cone)", PALETTE[6], cone).dashed(Dash::Dotted));
         p2.series
             .push(Series::new("", PALETTE[6], ncone).dashed(Dash::Dotted));
-        let mut p3 = Panel::new("Slip speeds", "t  [τ]", "slip speed  [√(r1 g)]");
+        let mut p3 = Panel::new("Slip speeds", "t  [τ]", "slip speed  [√(r₁g)]");
         p3.yrange = Some(range(&[&s12, &s1]));
         p3.cells = phases(rows, modes, p3.yrange.unwrap_or((0.0, 1.0)));
         p3.series
-            .push(Series::new("s12 (contact)", PALETTE[3], s12));
+            .push(Series::new("s₁₂: between the cylinders", PALETTE[3], s12));
         p3.series
-            .push(Series::new("s1 (floor)", PALETTE[4], s1).dashed(Dash::Dashed));
+            .push(Series::new("s₁: at the floor", PALETTE[4], s1).dashed(Dash::Dashed));
         let mut p4 = Panel::new(
-            "Energy dissipated by friction W(t) = E(0) − E(t)",
+            "Energy dissipated by friction, W = E(0) − E(t)",
             "t  [τ]",
-            "W  [m1 g r1]",
+            "W  [m₁gr₁]",
         );
         p4.yrange = Some(range(&[&work]));
         p4.cells = phases(rows, modes, p4.yrange.unwrap_or((0.0, 1.0)));
@@ -304,45 +337,42 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
             .iter()
             .map(|(t, th, k)| format!("{} at t = {t:.4}, θ = {th:.4}", k.replace('_', " ")))
             .collect();
-        figs.push(Figure {
-            file: "friction_main.svg".into(),
-            title: format!(
-                "The main case with μ = 0.3 at both contacts, from rest at θ0 = {THETA0}"
-            ),
-            size: (1400, 900),
-            grid: (2, 2),
-            panels: vec![p1, p2, p3, p4],
-            strip: 210,
-            colorbar: None,
-            caption: format!(
+        figs.push(Figure::new(
+            "friction_main.svg",
+            format!("The main case with μ = 0.3 at both contacts, from rest at θ₀ = {THETA0}"),
+            (1300, 860),
+            (2, 2),
+            vec![p1, p2, p3, p4],
+            230,
+        ).caption(format!(
                 "Unshaded: both contacts roll; orange: the contact between the cylinders slips (s12 > 0, \
                  F21 = −μ N12 on the cone); blue: free flight after separation, to the first impact (cylinder 2 \
                  on the floor). Events: {}. The floor never slips (s1 = 0). In flight F21 = N12 = 0 and W stays \
                  constant. Every point is an oracle value verified to the plotted digits.",
                 evtext.join("; ")
-            ),
-        });
+            )));
     }
     if !d.map.is_empty() {
         let onset: Vec<(f64, f64)> = d.map.iter().filter_map(|m| m.1.map(|o| (m.0, o))).collect();
         let ths: Vec<(f64, f64)> = d.map.iter().map(|m| (m.0, m.2)).collect();
         let (x0, x1) = (0.01, 100.0);
-        let mut p = Panel::new(
-            "Slip onset and separation against the friction coefficient",
-            "μ (both contacts, log scale)",
-            "θ  [rad]",
-        );
+        let mut p = Panel::new("", "μ (both contacts, log scale)", "θ  [rad]");
         p.xscale = Scale::Log;
         p.xrange = Some((x0, x1));
-        p.series
-            .push(Series::new("θs with friction", PALETTE[0], ths));
+        p.series.push(
+            Series::new("θₛ with friction", PALETTE[0], ths)
+                .shape(Shape::Circle)
+                .every(4, 1),
+        );
         p.series.push(
             Series::new("first slip onset (either contact)", PALETTE[1], onset)
+                .shape(Shape::Square)
+                .every(4, 3)
                 .dashed(Dash::Dashed),
         );
         p.series.push(
             Series::new(
-                "θs rolling (μ = ∞)",
+                "θₛ rolling (μ = ∞)",
                 PALETTE[6],
                 vec![(x0, d.ideal[0]), (x1, d.ideal[0])],
             )
@@ -350,7 +380,7 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
         );
         p.series.push(
             Series::new(
-                "θs frictionless (μ = 0)",
+                "θₛ frictionless (μ = 0)",
                 PALETTE[2],
                 vec![(x0, d.ideal[1]), (x1, d.ideal[1])],
             )
@@ -360,13 +390,27 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
             .map
             .iter()
             .filter(|m| m.3)
-            .map(|m| Marker {
-                at: (m.0, m.2),
-                color: PALETTE[3],
+            .map(|m| {
+                let mut k = Marker::new(
+                    (m.0, m.2),
+                    PALETTE[3],
+                    format!(
+                        "μ = {:.3}: the contact opens at θ = {:.4} with N₁₂ > 0",
+                        m.0, m.2
+                    ),
+                );
+                k.shape = Shape::Diamond;
+                k
             })
             .collect();
         if !p.markers.is_empty() {
-            p.marker_label = Some("the contact opens\nat its cone".into());
+            p.legend.push(LegendEntry {
+                label: "the contact opens at an event, N₁₂ > 0".into(),
+                color: PALETTE[3],
+                dash: None,
+                shape: Some(Shape::Diamond),
+                filled: true,
+            });
         }
         let failed = if d.map_failed.is_empty() {
             String::new()
@@ -380,25 +424,22 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
                     .join(", ")
             )
         };
-        figs.push(Figure {
-            file: "friction_map.svg".into(),
-            title: format!("The main case from θ0 = {THETA0}: where slip starts and where the cylinders part"),
-            size: (1200, 700),
-            grid: (1, 1),
-            panels: vec![p],
-            strip: 250,
-            colorbar: None,
-            caption: format!(
+        figs.push(Figure::single(
+            "friction_map.svg",
+            format!("The main case from θ₀ = {THETA0}: where slip starts and where the cylinders part"),
+            (1100, 620),
+            p,
+            250,
+        ).caption(format!(
                 "The same coefficient at both contacts, {} values from 0.01 to 100. As μ → ∞ the slip onset \
-                 and θs approach the rolling model's θs = {:.6}; as μ → 0 slip starts at once and θs approaches \
-                 the frictionless model's {:.6}. Marked: the contact opens at an event while N12 > 0, because no \
+                 and θₛ approach the rolling model's θₛ = {:.6}; as μ → 0 slip starts at once and θₛ approaches \
+                 the frictionless model's {:.6}. Marked: the contact opens at an event while N₁₂ > 0, because no \
                  mode with the contact closed is consistent there — for large μ when the contact reaches its \
-                 cone close to θs, and elsewhere when the floor's slip stops and the floor's force jumps.{failed}",
+                 cone close to θₛ, and elsewhere when the floor's slip stops and the floor's force jumps.{failed}",
                 d.map.len() + d.map_failed.len(),
                 d.ideal[0],
                 d.ideal[1]
-            ),
-        });
+            )));
     }
     let (gx, rows) = &d.plane;
     if !gx.is_empty() {
@@ -420,10 +461,11 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
             (a, b)
         };
         let mut p = Panel::new(
-            "θs over the two coefficients",
-            "log10 μ_floor",
-            "log10 μ_contact",
+            "",
+            "log₁₀ μ_floor (the floor's coefficient)",
+            "log₁₀ μ_contact (between the cylinders)",
         );
+        let mut csv = String::from("mu_floor,mu_contact,theta_s_rad\n");
         for (j, row) in rows.iter().enumerate() {
             for (i, v) in row.iter().enumerate() {
                 let (x0, x1) = half(i);
@@ -436,27 +478,47 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
                     lo: (x0, y0),
                     hi: (x1, y1),
                     color,
+                    title: format!(
+                        "μ_floor = {:.3}, μ_contact = {:.3}: {}",
+                        gx[i],
+                        gx[j],
+                        v.map_or("no unique continuation".to_string(), |v| format!(
+                            "θₛ = {v:.4}"
+                        ))
+                    ),
                 });
+                csv.push_str(&format!(
+                    "{},{},{}\n",
+                    super::plot::csv_num(gx[i], 6),
+                    super::plot::csv_num(gx[j], 6),
+                    v.map_or(String::new(), |v| super::plot::csv_num(v, 12))
+                ));
             }
         }
         p.xrange = Some((half(0).0, half(lg.len() - 1).1));
         p.yrange = p.xrange;
         let missing = rows.iter().flatten().filter(|v| v.is_none()).count();
-        figs.push(Figure {
-            file: "friction_plane.svg".into(),
-            title: format!("Separation angle of the main case over (μ_floor, μ_contact), from θ0 = {THETA0}"),
-            size: (1000, 820),
-            grid: (1, 1),
-            panels: vec![p],
-            strip: 130,
-            colorbar: Some(ColorBar {
-                label: "θs [rad]".into(),
-                range: (lo, hi),
-                marks: vec![d.ideal[0], d.ideal[2]],
-            }),
-            caption: format!(
-                "θs (colour) on a {n} × {n} grid of coefficients from 0.01 to 100 (static = kinetic). The marks \
-                 on the colour bar are the ideal models' θs: both rolling ({:.4}, approached towards the \
+        let mut fig = Figure::single(
+            "friction_plane.svg",
+            format!(
+                "Separation angle of the main case over (μ_floor, μ_contact), from θ₀ = {THETA0}"
+            ),
+            (900, 760),
+            p,
+            150,
+        );
+        fig.csv = Some(csv);
+        fig.colorbar = Some(ColorBar {
+            label: "θₛ [rad]".into(),
+            range: (lo, hi),
+            marks: vec![
+                (d.ideal[0], "roll/roll".into()),
+                (d.ideal[2], "roll/slip".into()),
+            ],
+        });
+        figs.push(fig.caption(format!(
+                "θₛ (colour) on a {n} × {n} grid of coefficients from 0.01 to 100 (static = kinetic). The marks \
+                 on the colour bar are the ideal models' θₛ: both rolling ({:.4}, approached towards the \
                  top-right corner) and a rolling floor under a frictionless contact ({:.4}, the bottom-right \
                  corner).{}",
                 d.ideal[0],
@@ -470,8 +532,7 @@ pub fn figures(d: &FrictionData) -> Vec<Figure> {
                     String::new()
                 },
                 n = gx.len()
-            ),
-        });
+            )));
     }
     figs
 }

@@ -23,6 +23,7 @@
 //! other tools in the directory (e.g. `audit.md`) are left alone.
 
 pub mod data;
+pub mod diagram;
 pub mod figures;
 pub mod friction;
 pub mod page;
@@ -80,9 +81,9 @@ impl Config {
             ratio_range: (-2, 2),
             ratio_per_decade: 8,
             k2_steps: 24,
-            heat_ratio_range: (-1, 1),
+            heat_ratio_range: (-2, 2),
             heat_per_decade: 12,
-            heat_k2_steps: 24,
+            heat_k2_steps: 40,
             plane_table_digits: 15,
             friction_per_decade: 8,
             friction_plane_per_decade: 3,
@@ -178,14 +179,14 @@ fn intro(cfg: &Config) -> Vec<String> {
             cfg.digits, cfg.plot_digits
         ),
         format!(
-            "Units and conventions: unless said otherwise m1 = m2 = r1 = r2 = g = 1 and k1 = k2 = 1/2 (identical \
-             solid cylinders); time in units of {} and forces in units of m1 g (so N1 = 2 and N12 = 1 at rest at \
-             the top). θ is the line of centres measured clockwise from the vertical; φ1 the clockwise rotation of \
-             cylinder 1; φ2 the paper's angle (eq. 2). F1, N1: the floor's force on cylinder 1 (the holder's when \
-             it is fixed); F21: the friction force of cylinder 1 on cylinder 2; N12: the normal force between the \
-             cylinders, which vanishes at separation θs. A start from rest exactly at the top takes infinitely \
-             long, so the plots against time start from rest at θ0 = {}; the plots against θ and the main tables \
-             are the limit θ0 → 0+.",
+            "Units and conventions: unless said otherwise m₁ = m₂ = r₁ = r₂ = g = 1 and k₁ = k₂ = 1/2 (identical \
+             solid cylinders); time in units of {} and forces in units of m₁g (so N₁ = 2 and N₁₂ = 1 at rest at \
+             the top). θ is the line of centres measured clockwise from the vertical; φ₁ the clockwise rotation of \
+             cylinder 1; φ₂ the paper's angle (eq. 2). F₁, N₁: the floor's force on cylinder 1 (the holder's when \
+             it is fixed); F₂₁: the friction force of cylinder 1 on cylinder 2; N₁₂: the normal force between the \
+             cylinders, which vanishes at separation θₛ. A start from rest exactly at the top takes infinitely \
+             long, so the plots against time start from rest at θ₀ = {}; the plots against θ and the main tables \
+             are the limit θ₀ → 0+.",
             figures::TAU,
             data::THETA0_TIME
         ),
@@ -194,25 +195,67 @@ fn intro(cfg: &Config) -> Vec<String> {
     ]
 }
 
+/// The Markdown documents of other tools that the report renders as pages
+/// when they are present in its directory: (Markdown file, HTML file, title).
+pub const DOCUMENTS: [(&str, &str, &str); 2] = [
+    (
+        "audit.md",
+        "audit.html",
+        "the audit of the paper's formulas, with its errata",
+    ),
+    (
+        "engines.md",
+        "engines.html",
+        "physics engines held against the oracle",
+    ),
+];
+
 /// Writes the report into `dir` with the given configuration and returns a
 /// summary: the files written and any problem met (points that could not be
 /// verified, closed forms that disagree).
 pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     let (pb, show) = progress_bar(cfg);
     let data = data::compute(cfg, &pb, show)?;
-    pb.set_message("drawing");
     pb.set_message("friction");
     let fdata = friction::compute(cfg);
+    pb.set_message("drawing");
     let mut figs = figures::figures(&data, cfg);
     figs.extend(friction::figures(&fdata));
     let tabs = tables::tables(&data, cfg)?;
-    let mut svgs = Vec::with_capacity(figs.len());
+
+    // the page, its tables and its figures change as one set
+    let mut files: Vec<(std::path::PathBuf, Vec<u8>)> = Vec::new();
+    let sig = cfg.plot_digits as usize;
     for f in &figs {
-        svgs.push((f.file.clone(), plot::render(f)?));
+        files.push((
+            Path::new("figures").join(&f.file),
+            plot::render_layout(f, plot::Layout::Wide).into_bytes(),
+        ));
+        if let Some(n) = page::narrow_path(f) {
+            files.push((
+                n.into(),
+                plot::render_layout(f, plot::Layout::Narrow).into_bytes(),
+            ));
+        }
+        if let Some(c) = page::csv_path(f) {
+            files.push((c.into(), plot::figure_csv(f, sig).into_bytes()));
+        }
     }
 
     use page::{Block, Section};
+    let fig = |name: &str| figs.iter().find(|f| f.file == name).cloned();
+    let with_prefix = |p: &str| -> Vec<Block> {
+        figs.iter()
+            .filter(|f| f.file.starts_with(p))
+            .cloned()
+            .map(Block::Figure)
+            .collect()
+    };
     let mut blocks = Vec::new();
+    blocks.push(Block::Heading("Sign conventions".into()));
+    if let Some(f) = fig("conventions.svg") {
+        blocks.push(Block::Figure(f));
+    }
     blocks.push(Block::Heading("Tables".into()));
     let mut tables_iter = tabs.tables.iter().cloned();
     for _ in 0..2 {
@@ -228,56 +271,60 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     for t in rest {
         blocks.push(Block::Table(t));
     }
-    for f in figs.iter().filter(|f| f.file.starts_with("main_")) {
-        blocks.push(Block::Figure(f.clone()));
-    }
+    blocks.extend(with_prefix("main_"));
     blocks.push(Block::Heading("All contact models".into()));
-    for f in figs.iter().filter(|f| f.file.starts_with("variant")) {
-        blocks.push(Block::Figure(f.clone()));
-    }
+    blocks.extend(with_prefix("variants_"));
+    blocks.extend(with_prefix("variant_"));
     blocks.push(Block::Heading("The parameter plane".into()));
     if let Some(t) = plane_table {
         blocks.push(Block::Table(t));
     }
-    for f in figs.iter().filter(|f| f.file.starts_with("plane_")) {
-        blocks.push(Block::Figure(f.clone()));
-    }
+    blocks.extend(with_prefix("plane_"));
     blocks.push(Block::Heading("Finite Coulomb friction".into()));
     blocks.push(Block::Table(friction::table(&fdata)));
-    for f in figs.iter().filter(|f| f.file.starts_with("friction_")) {
-        blocks.push(Block::Figure(f.clone()));
-    }
+    blocks.extend(with_prefix("friction_"));
     blocks.push(Block::Heading("Notes and data".into()));
     blocks.push(Block::Section(tabs.notes.clone()));
+    let mut links = vec![
+        (
+            "separation.csv".to_string(),
+            "separation.csv: θₛ, tₛ and F₂₁ at separation per contact model and start, with the closed forms"
+                .to_string(),
+        ),
+        (
+            "plane.csv".to_string(),
+            "plane.csv: θₛ at every point of the parameter plane computed for the figures and the table"
+                .to_string(),
+        ),
+    ];
+    for f in &figs {
+        if let Some(c) = page::csv_path(f) {
+            links.push((c.clone(), format!("{c}: the data of “{}”", f.title)));
+        }
+    }
     blocks.push(Block::Section(Section {
         title: "Data files".into(),
-        paragraphs: vec![
-            "The tables' numbers as CSV (decimal strings with only verified digits), and the figures as SVG."
-                .into(),
-        ],
+        paragraphs: vec![format!(
+            "The tables' numbers as CSV (decimal strings with only verified digits), and beside every figure the data it \
+             plots (`figures/NAME.csv`: one row per plotted point, values to the {} digits verified for the plots).",
+            cfg.plot_digits
+        )],
         items: Vec::new(),
-        links: vec![
-            (
-                "separation.csv".into(),
-                "separation.csv: θs, t_s and F21 at separation per contact model and start, with the closed forms"
-                    .into(),
-            ),
-            (
-                "plane.csv".into(),
-                "plane.csv: θs at every point of the parameter plane computed for the figures and the table".into(),
-            ),
-        ],
+        links,
     }));
 
-    let intro = intro(cfg);
-    let md = page::markdown(TITLE, &intro, &blocks);
-    let html = page::html(TITLE, &intro, &blocks);
+    // other tools' documents, rendered as pages of the report
+    let mut pages: page::Pages = Vec::new();
+    for (md, html, title) in DOCUMENTS {
+        if let Ok(text) = std::fs::read_to_string(dir.join(md)) {
+            files.push((html.into(), page::markdown_page(&text, title).into_bytes()));
+            pages.push((html.to_string(), title.to_string()));
+        }
+    }
 
-    // the page, its tables and its figures change as one set
-    let mut files: Vec<(std::path::PathBuf, Vec<u8>)> = svgs
-        .iter()
-        .map(|(name, svg)| (Path::new("figures").join(name), svg.as_bytes().to_vec()))
-        .collect();
+    let intro = intro(cfg);
+    let md = page::markdown(TITLE, &intro, &blocks, &pages);
+    let html = page::html(TITLE, &intro, &blocks, &pages);
     for (name, text) in [
         ("separation.csv", &tabs.separation_csv),
         ("plane.csv", &tabs.plane_csv),
@@ -290,9 +337,10 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     pb.finish_and_clear();
 
     let mut out = format!(
-        "report written to {}: index.html, README.md, separation.csv, plane.csv and {} figures in figures/\n",
+        "report written to {}: index.html, README.md, {} pages, separation.csv, plane.csv and {} figures (SVG, narrow SVG, CSV) in figures/\n",
         dir.display(),
-        svgs.len()
+        pages.len(),
+        figs.len()
     );
     if tabs.problems.is_empty() {
         out.push_str("every table entry verified; every closed form agrees to all digits shown\n");

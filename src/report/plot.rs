@@ -1,62 +1,31 @@
-//! Figures as plain data, rendered to SVG with plotters.
+//! Figures as plain data ([`Figure`], [`Panel`], [`Series`]), rendered to SVG
+//! by [`render`].
 //!
 //! The one place of the crate where `f64` is used for numbers: the plotted
 //! points are oracle values (already verified to the digits the report asks
 //! for) rounded to `f64`.
 //!
-//! plotters' pitfalls, handled here (see `shared/DESIGN.md`):
-//! - data outside the axis range is drawn along the frame, so every polyline
-//!   is clipped to the axis box here (Liang–Barsky) before it is handed over,
-//!   and markers and cells outside the box are dropped;
-//! - label widths are guessed from UTF-8 byte length, so label areas and the
-//!   legend strip are sized explicitly, never from the guess;
-//! - font sizes are scaled by 1/1.24 in the SVG, so sizes are given as
-//!   multiples of 1.24 ([`px`]).
+//! The SVG is written here directly (no plotting crate): coordinates keep
+//! two decimals of a pixel, so a curve through verified points is drawn as
+//! smooth as the points allow (plotters' SVG backend snaps every coordinate to
+//! a whole pixel, which turned every curve into a staircase). Writing the SVG
+//! ourselves also gives what a reader needs and plotters has no element for:
+//! `<title>` hover text on every curve and marker, marker shapes that differ
+//! per curve (legible in greyscale), direct labels, contour labels, a smooth
+//! colour bar, and typography (Unicode subscripts, a true minus sign).
 //!
-//! Tick positions and tick labels are computed here ([`nice_ticks`]) and
-//! formatted with a fixed number of decimals, so the SVG text is a pure
-//! function of the data: two runs write byte-identical files.
+//! Every figure is rendered in two layouts: [`Layout::Wide`] (panels in the
+//! figure's grid, legend on the right) and [`Layout::Narrow`] (one column,
+//! legend below) for phone-width pages.
+//!
+//! - data outside the axis range is never drawn: every polyline is clipped to
+//!   the axis box (Liang–Barsky) and markers outside it are dropped;
+//! - tick positions and labels are computed here ([`nice_ticks`]) with a
+//!   fixed number of decimals, so the SVG text is a pure function of the
+//!   data: two runs write byte-identical files.
 
-use crate::error::{Error, Result};
-use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
-use plotters::prelude::*;
-
-/// A linear axis over [lo, hi] whose ticks (and grid lines) are exactly the
-/// given values (plotters' own `WithKeyPoints` cannot take a label formatter
-/// for `f64`).
-#[derive(Debug, Clone)]
-struct TickAxis {
-    lo: f64,
-    hi: f64,
-    ticks: Vec<f64>,
-}
-
-impl Ranged for TickAxis {
-    type FormatOption = DefaultFormatting;
-    type ValueType = f64;
-
-    fn map(&self, v: &f64, limit: (i32, i32)) -> i32 {
-        let span = self.hi - self.lo;
-        if span == 0.0 || !v.is_finite() {
-            return (limit.0 + limit.1) / 2;
-        }
-        let u = (v - self.lo) / span;
-        let len = f64::from(limit.1 - limit.0);
-        limit.0 + (len * u).round() as i32
-    }
-
-    fn key_points<H: KeyPointHint>(&self, hint: H) -> Vec<f64> {
-        if hint.weight().allow_light_points() {
-            Vec::new()
-        } else {
-            self.ticks.clone()
-        }
-    }
-
-    fn range(&self) -> std::ops::Range<f64> {
-        self.lo..self.hi
-    }
-}
+use crate::error::Result;
+use std::fmt::Write as _;
 
 /// A colour, as 8-bit RGB.
 pub type Rgb = (u8, u8, u8);
@@ -72,13 +41,8 @@ pub const PALETTE: [Rgb; 7] = [
     (0, 0, 0),       // black
 ];
 
-/// Font family of every text.
-const FONT: &str = "sans-serif";
-
-/// A font size that comes out as `n` px in the SVG (plotters divides by 1.24).
-pub fn px(n: u32) -> f64 {
-    f64::from(n) * 1.24
-}
+/// Font family of every text (the figures and the page use the same).
+pub const FONT: &str = "DejaVu Sans, Verdana, Arial, sans-serif";
 
 /// How a line is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -89,7 +53,48 @@ pub enum Dash {
     Dashed,
     /// Dotted (short dashes).
     Dotted,
+    /// Dash-dot.
+    DashDot,
 }
+
+impl Dash {
+    fn array(self) -> Option<&'static str> {
+        match self {
+            Dash::Solid => None,
+            Dash::Dashed => Some("9 5"),
+            Dash::Dotted => Some("2 3"),
+            Dash::DashDot => Some("10 4 2 4"),
+        }
+    }
+}
+
+/// A marker shape: every curve of a panel gets its own, so that curves stay
+/// apart in greyscale and for colour-blind readers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// ○
+    Circle,
+    /// □
+    Square,
+    /// △
+    Triangle,
+    /// ◇
+    Diamond,
+    /// ▽
+    TriangleDown,
+    /// ×
+    Cross,
+}
+
+/// The shapes in the order curves get them.
+pub const SHAPES: [Shape; 6] = [
+    Shape::Circle,
+    Shape::Square,
+    Shape::Triangle,
+    Shape::Diamond,
+    Shape::TriangleDown,
+    Shape::Cross,
+];
 
 /// One curve.
 #[derive(Debug, Clone)]
@@ -101,9 +106,20 @@ pub struct Series {
     /// Line style.
     pub dash: Dash,
     /// Line width in px.
-    pub width: u32,
+    pub width: f64,
     /// Points in data coordinates (x as given, also for a log axis).
     pub points: Vec<(f64, f64)>,
+    /// Marker shape of the curve (legend, periodic and end markers).
+    pub shape: Option<Shape>,
+    /// A marker every `every` points (0: none), starting at point `phase`.
+    pub every: usize,
+    /// Offset of the periodic markers.
+    pub phase: usize,
+    /// Hover text of a hollow marker at the curve's last point (None: no
+    /// end marker). Used for the values at separation.
+    pub end: Option<String>,
+    /// A label written next to the curve's last point (direct labelling).
+    pub direct: Option<String>,
 }
 
 impl Series {
@@ -113,8 +129,13 @@ impl Series {
             label: label.into(),
             color,
             dash: Dash::Solid,
-            width: 2,
+            width: 2.0,
             points,
+            shape: None,
+            every: 0,
+            phase: 0,
+            end: None,
+            direct: None,
         }
     }
 
@@ -123,9 +144,34 @@ impl Series {
         self.dash = dash;
         self
     }
+
+    /// The same curve with a marker shape.
+    pub fn shape(mut self, s: Shape) -> Self {
+        self.shape = Some(s);
+        self
+    }
+
+    /// The same curve with a hollow marker (its shape) at its last point.
+    pub fn end_marker(mut self, title: impl Into<String>) -> Self {
+        self.end = Some(title.into());
+        self
+    }
+
+    /// The same curve with periodic markers.
+    pub fn every(mut self, every: usize, phase: usize) -> Self {
+        self.every = every;
+        self.phase = phase;
+        self
+    }
+
+    /// The same curve with a direct label at its end.
+    pub fn direct(mut self, text: impl Into<String>) -> Self {
+        self.direct = Some(text.into());
+        self
+    }
 }
 
-/// A filled rectangle in data coordinates (heat maps).
+/// A filled rectangle in data coordinates (shaded phases).
 #[derive(Debug, Clone)]
 pub struct Cell {
     /// Lower-left corner.
@@ -134,15 +180,94 @@ pub struct Cell {
     pub hi: (f64, f64),
     /// Fill colour.
     pub color: Rgb,
+    /// Hover text.
+    pub title: String,
 }
 
-/// A marked point (e.g. separation).
+/// A marked point (an event).
 #[derive(Debug, Clone)]
 pub struct Marker {
     /// Position in data coordinates.
     pub at: (f64, f64),
-    /// Fill colour.
+    /// Colour.
     pub color: Rgb,
+    /// Shape.
+    pub shape: Shape,
+    /// Filled (else hollow: a coloured outline).
+    pub filled: bool,
+    /// Hover text.
+    pub title: String,
+    /// Text written beside the marker.
+    pub label: Option<String>,
+}
+
+impl Marker {
+    /// A filled circle with hover text.
+    pub fn new(at: (f64, f64), color: Rgb, title: impl Into<String>) -> Self {
+        Marker {
+            at,
+            color,
+            shape: Shape::Circle,
+            filled: true,
+            title: title.into(),
+            label: None,
+        }
+    }
+}
+
+/// A vertical or horizontal reference line across the plot area, with a label
+/// at its end.
+#[derive(Debug, Clone)]
+pub struct RefLine {
+    /// x (vertical line) or y (horizontal line), data coordinates.
+    pub at: f64,
+    /// Vertical (x = at) or horizontal (y = at).
+    pub vertical: bool,
+    /// Colour.
+    pub color: Rgb,
+    /// Line style.
+    pub dash: Dash,
+    /// Label (at the top of a vertical line, the right end of a horizontal one).
+    pub label: String,
+}
+
+/// A text in data coordinates on a white halo (contour labels).
+#[derive(Debug, Clone)]
+pub struct Label {
+    /// Centre of the text.
+    pub at: (f64, f64),
+    /// Text.
+    pub text: String,
+}
+
+/// An entry of the legend that no series provides (events, reference lines).
+#[derive(Debug, Clone)]
+pub struct LegendEntry {
+    /// Text.
+    pub label: String,
+    /// Colour.
+    pub color: Rgb,
+    /// A line sample in this style (None: none).
+    pub dash: Option<Dash>,
+    /// A marker sample.
+    pub shape: Option<Shape>,
+    /// Whether the marker sample is filled.
+    pub filled: bool,
+}
+
+/// A raster image over a rectangle of the chart (a heat map), drawn smooth.
+#[derive(Debug, Clone)]
+pub struct Raster {
+    /// x range in chart coordinates (log10 for a log axis).
+    pub x: (f64, f64),
+    /// y range.
+    pub y: (f64, f64),
+    /// Width and height in pixels.
+    pub w: usize,
+    /// Height.
+    pub h: usize,
+    /// Pixels, row by row from the top.
+    pub pixels: Vec<Rgb>,
 }
 
 /// An axis scale.
@@ -157,7 +282,8 @@ pub enum Scale {
 /// One chart: axes, curves, markers.
 #[derive(Debug, Clone)]
 pub struct Panel {
-    /// Title over the chart.
+    /// Title over the chart (empty: none; a figure of one panel has its
+    /// title on the page only).
     pub title: String,
     /// x-axis label.
     pub xlabel: String,
@@ -173,10 +299,18 @@ pub struct Panel {
     pub series: Vec<Series>,
     /// Marked points, drawn over the curves.
     pub markers: Vec<Marker>,
-    /// Legend text of the markers (None: not in the legend).
-    pub marker_label: Option<String>,
+    /// Reference lines.
+    pub lines: Vec<RefLine>,
+    /// Texts on a halo (contour labels).
+    pub labels: Vec<Label>,
+    /// Lines of text in the top-left corner of the plot area.
+    pub notes: Vec<String>,
     /// Filled cells, drawn first.
     pub cells: Vec<Cell>,
+    /// A heat-map raster, drawn first.
+    pub raster: Option<Raster>,
+    /// Legend entries beyond the labelled series.
+    pub legend: Vec<LegendEntry>,
 }
 
 impl Panel {
@@ -195,8 +329,12 @@ impl Panel {
             yrange: None,
             series: Vec::new(),
             markers: Vec::new(),
-            marker_label: None,
+            lines: Vec::new(),
+            labels: Vec::new(),
+            notes: Vec::new(),
             cells: Vec::new(),
+            raster: None,
+            legend: Vec::new(),
         }
     }
 }
@@ -206,43 +344,79 @@ impl Panel {
 pub struct ColorBar {
     /// Label over the bar.
     pub label: String,
-    /// Value range.
+    /// Value range (the data's).
     pub range: (f64, f64),
-    /// Levels marked with a black line across the bar (contour levels).
-    pub marks: Vec<f64>,
+    /// Levels marked with a line across the bar and their text.
+    pub marks: Vec<(f64, String)>,
 }
 
-/// A figure: a grid of panels, a title, and a right strip with the legend
-/// (collected from the panels' labelled series) or a colour bar.
+/// A figure: a grid of panels and a legend (collected from the panels'
+/// labelled series and legend entries) or a colour bar. Its title and caption
+/// are shown by the page, not drawn in the image.
 #[derive(Debug, Clone)]
 pub struct Figure {
     /// File name (no directory), e.g. `theta_t.svg`.
     pub file: String,
-    /// Title at the top.
+    /// Title (the page's heading of the figure).
     pub title: String,
-    /// Width and height in px.
+    /// Width and height in px of the wide layout.
     pub size: (u32, u32),
-    /// Rows and columns of panels.
+    /// Rows and columns of panels (wide layout).
     pub grid: (usize, usize),
     /// Panels, row by row.
     pub panels: Vec<Panel>,
-    /// Width of the right strip in px (0: none).
+    /// Width of the right strip in px of the wide layout (0: none).
     pub strip: u32,
     /// A colour bar in the strip instead of a legend.
     pub colorbar: Option<ColorBar>,
     /// Caption for the page (not drawn).
     pub caption: String,
+    /// The data behind the figure as CSV (None: generated from the curves
+    /// and markers by [`figure_csv`]).
+    pub csv: Option<String>,
+    /// A drawing made elsewhere (a diagram), used for both layouts.
+    pub raw_svg: Option<String>,
 }
 
-fn draw_err(file: &str, e: impl std::fmt::Display) -> Error {
-    Error::Io {
-        path: file.to_string(),
-        what: format!("drawing the figure: {e}"),
+impl Figure {
+    /// A figure of one panel, with a legend strip of `strip` px.
+    pub fn single(file: &str, title: String, size: (u32, u32), panel: Panel, strip: u32) -> Self {
+        Figure::new(file, title, size, (1, 1), vec![panel], strip)
     }
-}
 
-fn rgb(c: Rgb) -> RGBColor {
-    RGBColor(c.0, c.1, c.2)
+    /// A figure of a grid of panels, with a legend strip of `strip` px.
+    pub fn new(
+        file: &str,
+        title: String,
+        size: (u32, u32),
+        grid: (usize, usize),
+        panels: Vec<Panel>,
+        strip: u32,
+    ) -> Self {
+        Figure {
+            file: file.into(),
+            title,
+            size,
+            grid,
+            panels,
+            strip,
+            colorbar: None,
+            caption: String::new(),
+            csv: None,
+            raw_svg: None,
+        }
+    }
+
+    /// The same figure with a caption.
+    pub fn caption(mut self, c: impl Into<String>) -> Self {
+        self.caption = c.into();
+        self
+    }
+
+    /// The CSV file's name, beside the SVG.
+    pub fn csv_file(&self) -> String {
+        format!("{}.csv", self.file.trim_end_matches(".svg"))
+    }
 }
 
 /// "Nice" tick positions covering [lo, hi]: a step of 1, 2, 2.5 or 5 times a
@@ -273,7 +447,8 @@ pub fn decimals_for(step: f64) -> usize {
     10
 }
 
-/// A tick label with `dec` decimals (never "-0").
+/// A tick label with `dec` decimals, with a true minus sign (−) and never
+/// "−0".
 pub fn tick_text(v: f64, dec: usize) -> String {
     let s = format!("{v:.dec$}");
     if s.trim_start_matches('-')
@@ -282,8 +457,13 @@ pub fn tick_text(v: f64, dec: usize) -> String {
     {
         s.trim_start_matches('-').to_string()
     } else {
-        s
+        minus(&s)
     }
+}
+
+/// `s` with ASCII hyphen-minus signs replaced by the minus sign U+2212.
+pub fn minus(s: &str) -> String {
+    s.replace('-', "\u{2212}")
 }
 
 /// The text of a log-axis tick at 10^e: 0.01, 0.2, 1, 50, …
@@ -485,326 +665,1022 @@ fn linear_axis(
     (lo, hi, ticks_with_step(lo, hi, step), decimals_for(step))
 }
 
-/// A one-pixel-thin style with a colour.
-fn thin(c: Rgb, w: u32) -> ShapeStyle {
-    ShapeStyle {
-        color: rgb(c).to_rgba(),
-        filled: false,
-        stroke_width: w,
+// ---------------------------------------------------------------- SVG text
+
+/// Font sizes in px.
+const TICK_PX: f64 = 13.0;
+const AXIS_PX: f64 = 14.0;
+const TITLE_PX: f64 = 15.0;
+const LEGEND_PX: f64 = 13.5;
+const NOTE_PX: f64 = 12.5;
+const GRID: Rgb = (226, 226, 226);
+const AXIS: Rgb = (60, 60, 60);
+
+/// Estimated width of `s` in px at `size` (DejaVu Sans metrics, roughly).
+pub fn text_width(s: &str, size: f64) -> f64 {
+    let em: f64 = s
+        .chars()
+        .map(|c| match c {
+            'i' | 'l' | 'j' | '.' | ',' | ':' | ';' | '\'' | '|' | '!' => 0.3,
+            ' ' | '(' | ')' | '[' | ']' | 'f' | 't' | 'r' | 'I' => 0.39,
+            'm' | 'w' | 'M' | 'W' => 0.92,
+            '\u{2080}'..='\u{209c}' => 0.4,
+            'A'..='Z' => 0.7,
+            '\u{2212}' | '=' | '+' | '<' | '>' | '≈' | '×' => 0.84,
+            _ => 0.62,
+        })
+        .sum();
+    em * size
+}
+
+/// XML escape.
+pub fn xml(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+fn hex(c: Rgb) -> String {
+    format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
+}
+
+/// A number for the SVG: two decimals, no "-0.00".
+fn n(v: f64) -> String {
+    let s = format!("{v:.2}");
+    let s = s.trim_end_matches('0').trim_end_matches('.').to_string();
+    if s == "-0" {
+        "0".into()
+    } else {
+        s
     }
 }
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
+/// An SVG document under construction.
+struct Svg {
+    s: String,
+}
 
-/// Renders the figure to an SVG string.
-pub fn render(fig: &Figure) -> Result<String> {
-    let mut buf = String::new();
-    {
-        let file = fig.file.as_str();
-        let root = SVGBackend::with_string(&mut buf, fig.size).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| draw_err(file, e))?;
-        let body = root
-            .titled(&fig.title, (FONT, px(20)).into_font())
-            .map_err(|e| draw_err(file, e))?;
-        let (charts, strip) = if fig.strip > 0 {
-            let w = body.dim_in_pixel().0;
-            body.split_horizontally(w.saturating_sub(fig.strip))
+impl Svg {
+    fn new(w: f64, h: f64) -> Self {
+        let mut s = String::new();
+        let _ = write!(
+            s,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" font-family=\"{}\" font-size=\"{}\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n",
+            n(w),
+            n(h),
+            n(w),
+            n(h),
+            FONT,
+            n(TICK_PX)
+        );
+        Svg { s }
+    }
+
+    fn finish(mut self) -> String {
+        self.s.push_str("</svg>\n");
+        self.s
+    }
+
+    fn title(t: &str) -> String {
+        if t.is_empty() {
+            String::new()
         } else {
-            let w = body.dim_in_pixel().0;
-            body.split_horizontally(w)
-        };
-        let cells = charts.split_evenly(fig.grid);
-        for (panel, area) in fig.panels.iter().zip(cells.iter()) {
-            draw_panel(file, panel, area)?;
+            format!("<title>{}</title>", xml(t))
         }
-        if fig.strip > 0 {
-            if let Some(cb) = &fig.colorbar {
-                draw_colorbar(file, cb, &strip)?;
-            } else {
-                draw_legend(file, fig, &strip)?;
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn polyline(&mut self, pts: &[(f64, f64)], color: Rgb, width: f64, dash: Dash, title: &str) {
+        if pts.len() < 2 {
+            return;
+        }
+        let mut d = String::new();
+        for (i, p) in pts.iter().enumerate() {
+            let _ = write!(
+                d,
+                "{}{} {}",
+                if i == 0 { "M" } else { " L" },
+                n(p.0),
+                n(p.1)
+            );
+        }
+        let dash = dash
+            .array()
+            .map(|a| format!(" stroke-dasharray=\"{a}\""))
+            .unwrap_or_default();
+        let t = Svg::title(title);
+        let _ = writeln!(
+            self.s,
+            "<path d=\"{d}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-linejoin=\"round\" stroke-linecap=\"round\"{dash}>{t}</path>",
+            hex(color),
+            n(width)
+        );
+    }
+
+    fn line(&mut self, a: (f64, f64), b: (f64, f64), color: Rgb, width: f64, dash: Dash) {
+        self.polyline(&[a, b], color, width, dash, "");
+    }
+
+    fn rect(&mut self, x: f64, y: f64, w: f64, h: f64, fill: &str, stroke: &str) {
+        let _ = writeln!(
+            self.s,
+            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{fill}\" stroke=\"{stroke}\"/>",
+            n(x),
+            n(y),
+            n(w),
+            n(h)
+        );
+    }
+
+    /// Text; `anchor` start/middle/end; `halo` draws a white outline under it.
+    #[allow(clippy::too_many_arguments)]
+    fn text(
+        &mut self,
+        x: f64,
+        y: f64,
+        t: &str,
+        size: f64,
+        anchor: &str,
+        color: Rgb,
+        halo: bool,
+        rotate: bool,
+    ) {
+        let rot = if rotate {
+            format!(" transform=\"rotate(-90 {} {})\"", n(x), n(y))
+        } else {
+            String::new()
+        };
+        let halo = if halo {
+            " stroke=\"#ffffff\" stroke-width=\"3.5\" stroke-linejoin=\"round\" paint-order=\"stroke\""
+        } else {
+            ""
+        };
+        let _ = writeln!(
+            self.s,
+            "<text x=\"{}\" y=\"{}\" font-size=\"{}\" text-anchor=\"{anchor}\" fill=\"{}\"{halo}{rot}>{}</text>",
+            n(x),
+            n(y),
+            n(size),
+            hex(color),
+            xml(t)
+        );
+    }
+
+    /// A marker of `shape` centred at (x, y) with radius `r`.
+    #[allow(clippy::too_many_arguments)]
+    fn marker(
+        &mut self,
+        x: f64,
+        y: f64,
+        r: f64,
+        shape: Shape,
+        color: Rgb,
+        filled: bool,
+        title: &str,
+    ) {
+        let (fill, stroke, sw) = if filled {
+            (hex(color), "#000000".to_string(), 1.0)
+        } else {
+            ("none".to_string(), hex(color), 2.0)
+        };
+        let d = match shape {
+            Shape::Circle => {
+                let t = Svg::title(title);
+                let _ = writeln!(
+                    self.s,
+                    "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\">{t}</circle>",
+                    n(x),
+                    n(y),
+                    n(r),
+                    n(sw)
+                );
+                return;
+            }
+            Shape::Square => {
+                let a = r * 0.88;
+                format!(
+                    "M{} {}h{}v{}h{}z",
+                    n(x - a),
+                    n(y - a),
+                    n(2.0 * a),
+                    n(2.0 * a),
+                    n(-2.0 * a)
+                )
+            }
+            Shape::Triangle | Shape::TriangleDown => {
+                let s = if shape == Shape::Triangle { 1.0 } else { -1.0 };
+                let a = r * 1.15;
+                format!(
+                    "M{} {}L{} {}L{} {}z",
+                    n(x),
+                    n(y - s * a),
+                    n(x + a * 0.866),
+                    n(y + s * a * 0.5),
+                    n(x - a * 0.866),
+                    n(y + s * a * 0.5)
+                )
+            }
+            Shape::Diamond => {
+                let a = r * 1.2;
+                format!(
+                    "M{} {}L{} {}L{} {}L{} {}z",
+                    n(x),
+                    n(y - a),
+                    n(x + a),
+                    n(y),
+                    n(x),
+                    n(y + a),
+                    n(x - a),
+                    n(y)
+                )
+            }
+            Shape::Cross => {
+                let a = r * 0.85;
+                let t = Svg::title(title);
+                let _ = writeln!(
+                    self.s,
+                    "<path d=\"M{} {}L{} {}M{} {}L{} {}\" stroke=\"{}\" stroke-width=\"2.2\">{t}</path>",
+                    n(x - a),
+                    n(y - a),
+                    n(x + a),
+                    n(y + a),
+                    n(x - a),
+                    n(y + a),
+                    n(x + a),
+                    n(y - a),
+                    hex(color)
+                );
+                return;
+            }
+        };
+        let t = Svg::title(title);
+        let _ = writeln!(
+            self.s,
+            "<path d=\"{d}\" fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\" stroke-linejoin=\"round\">{t}</path>",
+            n(sw)
+        );
+    }
+}
+
+// ---------------------------------------------------------------- layout
+
+/// Which arrangement of a figure to draw.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Layout {
+    /// The figure's grid of panels, the legend or colour bar on the right.
+    Wide,
+    /// One column of panels, the legend below (phone-width pages).
+    Narrow,
+}
+
+/// Width of the narrow layout in px.
+pub const NARROW_W: f64 = 460.0;
+
+/// A legend row: label lines and the sample.
+fn legend_entries(fig: &Figure) -> Vec<LegendEntry> {
+    let mut entries: Vec<LegendEntry> = Vec::new();
+    let seen = |e: &LegendEntry, entries: &Vec<LegendEntry>| {
+        entries
+            .iter()
+            .any(|x| x.label == e.label && x.color == e.color)
+    };
+    for p in &fig.panels {
+        for s in &p.series {
+            if s.label.is_empty() {
+                continue;
+            }
+            let e = LegendEntry {
+                label: s.label.clone(),
+                color: s.color,
+                dash: Some(s.dash),
+                shape: s.shape,
+                filled: false,
+            };
+            if !seen(&e, &entries) {
+                entries.push(e);
             }
         }
-        root.present().map_err(|e| draw_err(file, e))?;
     }
-    Ok(buf)
+    for p in &fig.panels {
+        for e in &p.legend {
+            if !seen(e, &entries) {
+                entries.push(e.clone());
+            }
+        }
+    }
+    entries
 }
 
-fn draw_panel(file: &str, p: &Panel, area: &Area<'_>) -> Result<()> {
+/// Wraps `label` (lines split at '\n') to lines of at most `w` px.
+fn wrap(label: &str, size: f64, w: f64) -> Vec<String> {
+    let mut out = Vec::new();
+    for para in label.split('\n') {
+        let mut cur = String::new();
+        for word in para.split(' ') {
+            let cand = if cur.is_empty() {
+                word.to_string()
+            } else {
+                format!("{cur} {word}")
+            };
+            if text_width(&cand, size) > w && !cur.is_empty() {
+                out.push(std::mem::take(&mut cur));
+                cur = word.to_string();
+            } else {
+                cur = cand;
+            }
+        }
+        out.push(cur);
+    }
+    out
+}
+
+const LEGEND_SAMPLE: f64 = 34.0;
+const LEGEND_LINE: f64 = 17.0;
+
+/// Height of the legend laid out `w` px wide.
+fn legend_height(entries: &[LegendEntry], w: f64) -> f64 {
+    entries
+        .iter()
+        .map(|e| {
+            wrap(&e.label, LEGEND_PX, w - LEGEND_SAMPLE - 10.0).len() as f64 * LEGEND_LINE + 8.0
+        })
+        .sum::<f64>()
+        + 8.0
+}
+
+fn draw_legend(svg: &mut Svg, entries: &[LegendEntry], x: f64, y0: f64, w: f64) {
+    let mut y = y0;
+    for e in entries {
+        let lines = wrap(&e.label, LEGEND_PX, w - LEGEND_SAMPLE - 10.0);
+        let cy = y + LEGEND_LINE * 0.5;
+        if let Some(d) = e.dash {
+            svg.line((x, cy), (x + LEGEND_SAMPLE - 4.0, cy), e.color, 2.5, d);
+        }
+        if let Some(s) = e.shape {
+            svg.marker(
+                x + (LEGEND_SAMPLE - 4.0) / 2.0,
+                cy,
+                5.0,
+                s,
+                e.color,
+                e.filled,
+                "",
+            );
+        }
+        for (i, l) in lines.iter().enumerate() {
+            svg.text(
+                x + LEGEND_SAMPLE + 4.0,
+                y + 13.0 + LEGEND_LINE * i as f64,
+                l,
+                LEGEND_PX,
+                "start",
+                (0, 0, 0),
+                false,
+                false,
+            );
+        }
+        y += lines.len() as f64 * LEGEND_LINE + 8.0;
+    }
+}
+
+/// Width, height and legend height of the narrow layout.
+fn narrow_dims(fig: &Figure, entries: &[LegendEntry]) -> (f64, f64, f64) {
+    let rows = fig.panels.len().max(1);
+    let panel_h = (NARROW_W * 0.72).round();
+    let lh = if fig.colorbar.is_some() {
+        70.0
+    } else if entries.is_empty() {
+        0.0
+    } else {
+        legend_height(entries, NARROW_W - 16.0).ceil()
+    };
+    (NARROW_W, panel_h * rows as f64 + lh, lh)
+}
+
+/// Size in whole px of the narrow layout (for the page's aspect ratio).
+pub fn narrow_size(fig: &Figure) -> (u32, u32) {
+    let entries = if fig.colorbar.is_none() {
+        legend_entries(fig)
+    } else {
+        Vec::new()
+    };
+    let (w, h, _) = narrow_dims(fig, &entries);
+    (w.round() as u32, h.round() as u32)
+}
+
+/// Renders the figure in the wide layout.
+pub fn render(fig: &Figure) -> Result<String> {
+    Ok(render_layout(fig, Layout::Wide))
+}
+
+/// Renders the figure in a layout.
+pub fn render_layout(fig: &Figure, layout: Layout) -> String {
+    if let Some(raw) = &fig.raw_svg {
+        return raw.clone();
+    }
+    let entries = if fig.colorbar.is_none() {
+        legend_entries(fig)
+    } else {
+        Vec::new()
+    };
+    let (w, h, grid, strip, legend_h) = match layout {
+        Layout::Wide => (
+            f64::from(fig.size.0),
+            f64::from(fig.size.1),
+            fig.grid,
+            f64::from(fig.strip),
+            0.0,
+        ),
+        Layout::Narrow => {
+            let rows = fig.panels.len().max(1);
+            let (w, h, lh) = narrow_dims(fig, &entries);
+            (w, h, (rows, 1), 0.0, lh)
+        }
+    };
+    let mut svg = Svg::new(w, h);
+    let charts_w = w - strip;
+    let charts_h = h - legend_h;
+    let (rows, cols) = (grid.0.max(1), grid.1.max(1));
+    let (cw, ch) = (charts_w / cols as f64, charts_h / rows as f64);
+    for (k, p) in fig.panels.iter().enumerate() {
+        let (r, c) = (k / cols, k % cols);
+        draw_panel(&mut svg, p, c as f64 * cw, r as f64 * ch, cw, ch);
+    }
+    match layout {
+        Layout::Wide => {
+            if strip > 0.0 {
+                if let Some(cb) = &fig.colorbar {
+                    draw_colorbar(&mut svg, cb, charts_w, 0.0, strip, h, false);
+                } else {
+                    draw_legend(&mut svg, &entries, charts_w + 4.0, 40.0, strip - 8.0);
+                }
+            }
+        }
+        Layout::Narrow => {
+            if let Some(cb) = &fig.colorbar {
+                draw_colorbar(&mut svg, cb, 0.0, charts_h, w, legend_h, true);
+            } else {
+                draw_legend(&mut svg, &entries, 14.0, charts_h + 4.0, w - 16.0);
+            }
+        }
+    }
+    svg.finish()
+}
+
+/// The pixel mapping of a panel.
+struct Frame {
+    ax: f64,
+    ay: f64,
+    aw: f64,
+    ah: f64,
+    x: (f64, f64),
+    y: (f64, f64),
+    log: bool,
+}
+
+impl Frame {
+    fn tx(&self, x: f64) -> f64 {
+        if self.log {
+            x.log10()
+        } else {
+            x
+        }
+    }
+    /// Pixel x of a chart coordinate (log10 already applied).
+    fn cx(&self, c: f64) -> f64 {
+        self.ax + (c - self.x.0) / (self.x.1 - self.x.0) * self.aw
+    }
+    fn px(&self, x: f64) -> f64 {
+        self.cx(self.tx(x))
+    }
+    fn py(&self, y: f64) -> f64 {
+        self.ay + self.ah - (y - self.y.0) / (self.y.1 - self.y.0) * self.ah
+    }
+    fn inside(&self, x: f64, y: f64) -> bool {
+        let c = self.tx(x);
+        c.is_finite()
+            && y.is_finite()
+            && c >= self.x.0 - 1e-12
+            && c <= self.x.1 + 1e-12
+            && y >= self.y.0 - 1e-12
+            && y <= self.y.1 + 1e-12
+    }
+}
+
+fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
     let ((dx0, dx1), (dy0, dy1)) = data_range(p);
     let log = p.xscale == Scale::Log;
-    // x in chart coordinates: log10 for a log axis
     let tx = |x: f64| if log { x.log10() } else { x };
     let (xlo, xhi, xticks, xdec) = if log {
         let (a, b) = p.xrange.unwrap_or((dx0, dx1));
         let t = log_ticks(a, b).into_iter().map(|v| v.log10()).collect();
         (a, b, t, 0)
     } else {
-        linear_axis(p.xrange, (dx0, dx1), 7)
+        linear_axis(p.xrange, (dx0, dx1), (w / 110.0).clamp(4.0, 8.0) as usize)
     };
     let (ylo, yhi, yticks, ydec) = linear_axis(p.yrange, (dy0, dy1), 6);
-    let (cx0, cx1) = (tx(xlo), tx(xhi));
-    let ywidth = yticks
+    let ylabels: Vec<String> = yticks.iter().map(|v| tick_text(*v, ydec)).collect();
+    let ywidth = ylabels
         .iter()
-        .map(|v| tick_text(*v, ydec).len())
-        .max()
-        .unwrap_or(1);
-    // tick labels at 12 px (~7 px per character) + the rotated axis label
-    let y_area = (ywidth as u32) * 8 + 40;
-
-    let mut chart = ChartBuilder::on(area)
-        .caption(&p.title, (FONT, px(16)).into_font())
-        .margin_left(8)
-        .margin_right(18)
-        .margin_top(6)
-        .margin_bottom(6)
-        .x_label_area_size(46)
-        .y_label_area_size(y_area)
-        .build_cartesian_2d(
-            TickAxis {
-                lo: cx0,
-                hi: cx1,
-                ticks: xticks,
-            },
-            TickAxis {
-                lo: ylo,
-                hi: yhi,
-                ticks: yticks,
-            },
-        )
-        .map_err(|e| draw_err(file, e))?;
-
-    let xfmt = move |v: &f64| {
-        if log {
-            log_tick_text(*v)
-        } else {
-            tick_text(*v, xdec)
-        }
+        .map(|t| text_width(t, TICK_PX))
+        .fold(0.0, f64::max);
+    let top = if p.title.is_empty() { 14.0 } else { 30.0 };
+    let left = 10.0 + AXIS_PX + 10.0 + ywidth + 8.0;
+    let bottom = 8.0 + TICK_PX + 8.0 + AXIS_PX + 8.0;
+    let direct_w = p
+        .series
+        .iter()
+        .filter_map(|s| s.direct.as_ref())
+        .map(|t| text_width(t, NOTE_PX) + 12.0)
+        .fold(0.0, f64::max);
+    let right = 16.0 + direct_w;
+    let f = Frame {
+        ax: x0 + left,
+        ay: y0 + top,
+        aw: (w - left - right).max(20.0),
+        ah: (h - top - bottom).max(20.0),
+        x: (tx(xlo), tx(xhi)),
+        y: (ylo, yhi),
+        log,
     };
-    let yfmt = move |v: &f64| tick_text(*v, ydec);
-    chart
-        .configure_mesh()
-        .x_desc(p.xlabel.as_str())
-        .y_desc(p.ylabel.as_str())
-        .x_label_formatter(&xfmt)
-        .y_label_formatter(&yfmt)
-        .label_style((FONT, px(12)).into_font())
-        .axis_desc_style((FONT, px(14)).into_font())
-        .bold_line_style(thin((225, 225, 225), 1))
-        .light_line_style(thin((255, 255, 255), 0))
-        .axis_style(thin((60, 60, 60), 1))
-        .draw()
-        .map_err(|e| draw_err(file, e))?;
-
-    // cells (clipped to the box)
+    if !p.title.is_empty() {
+        svg.text(
+            f.ax + f.aw / 2.0,
+            y0 + 19.0,
+            &p.title,
+            TITLE_PX,
+            "middle",
+            (0, 0, 0),
+            false,
+            false,
+        );
+    }
+    // raster and cells
+    if let Some(r) = &p.raster {
+        let (px0, px1) = (f.cx(r.x.0), f.cx(r.x.1));
+        let (py0, py1) = (f.py(r.y.1), f.py(r.y.0));
+        let _ = writeln!(
+            svg.s,
+            "<image x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" preserveAspectRatio=\"none\" href=\"data:image/png;base64,{}\"><title>colour: the value at each point, interpolated between the computed nodes (their values: the figure's CSV)</title></image>",
+            n(px0),
+            n(py0),
+            n(px1 - px0),
+            n(py1 - py0),
+            base64(&png(r.w, r.h, &r.pixels))
+        );
+    }
     for c in &p.cells {
-        let (a0, a1) = (tx(c.lo.0).max(cx0), tx(c.hi.0).min(cx1));
+        let (a0, a1) = (tx(c.lo.0).max(f.x.0), tx(c.hi.0).min(f.x.1));
         let (b0, b1) = (c.lo.1.max(ylo), c.hi.1.min(yhi));
         if a0 < a1 && b0 < b1 {
-            // filled, and outlined in the same colour so that scaled
-            // renderings show no seams between neighbouring cells
-            chart
-                .draw_series([
-                    Rectangle::new([(a0, b0), (a1, b1)], rgb(c.color).filled()),
-                    Rectangle::new([(a0, b0), (a1, b1)], thin(c.color, 1)),
-                ])
-                .map_err(|e| draw_err(file, e))?;
+            let (px0, px1) = (f.cx(a0), f.cx(a1));
+            let (py0, py1) = (f.py(b1), f.py(b0));
+            let _ = writeln!(
+                svg.s,
+                "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"0.5\">{}</rect>",
+                n(px0),
+                n(py0),
+                n(px1 - px0),
+                n(py1 - py0),
+                hex(c.color),
+                hex(c.color),
+                Svg::title(&c.title)
+            );
         }
     }
-
+    // grid
+    for &t in &xticks {
+        let x = f.cx(t);
+        svg.line((x, f.ay), (x, f.ay + f.ah), GRID, 1.0, Dash::Solid);
+    }
+    for &t in &yticks {
+        let y = f.py(t);
+        svg.line((f.ax, y), (f.ax + f.aw, y), GRID, 1.0, Dash::Solid);
+    }
+    // reference lines
+    for l in &p.lines {
+        if l.vertical {
+            if !f.inside(l.at, ylo) {
+                continue;
+            }
+            let x = f.px(l.at);
+            svg.line((x, f.ay), (x, f.ay + f.ah), l.color, 1.3, l.dash);
+            if !l.label.is_empty() {
+                let right_room = f.ax + f.aw - x;
+                let (tx_, anchor) = if right_room > text_width(&l.label, NOTE_PX) + 8.0 {
+                    (x + 4.0, "start")
+                } else {
+                    (x - 4.0, "end")
+                };
+                svg.text(
+                    tx_,
+                    f.ay + 14.0,
+                    &l.label,
+                    NOTE_PX,
+                    anchor,
+                    l.color,
+                    true,
+                    false,
+                );
+            }
+        } else {
+            if l.at < ylo || l.at > yhi {
+                continue;
+            }
+            let y = f.py(l.at);
+            svg.line((f.ax, y), (f.ax + f.aw, y), l.color, 1.0, l.dash);
+            if !l.label.is_empty() {
+                svg.text(
+                    f.ax + f.aw - 4.0,
+                    y - 4.0,
+                    &l.label,
+                    NOTE_PX - 1.0,
+                    "end",
+                    l.color,
+                    true,
+                    false,
+                );
+            }
+        }
+    }
+    // curves
     for s in &p.series {
         let pts: Vec<(f64, f64)> = s.points.iter().map(|&(x, y)| (tx(x), y)).collect();
-        let style = thin(s.color, s.width);
-        for piece in clip_polyline(&pts, cx0, cx1, ylo, yhi) {
-            match s.dash {
-                Dash::Solid => {
-                    chart
-                        .draw_series(LineSeries::new(piece, style))
-                        .map_err(|e| draw_err(file, e))?;
-                }
-                Dash::Dashed | Dash::Dotted => {
-                    let (len, gap) = if s.dash == Dash::Dashed {
-                        (9, 5)
-                    } else {
-                        (3, 4)
-                    };
-                    chart
-                        .draw_series(DashedLineSeries::new(piece, len, gap, style))
-                        .map_err(|e| draw_err(file, e))?;
+        let title = if s.label.is_empty() {
+            String::new()
+        } else {
+            s.label.replace('\n', " ")
+        };
+        for piece in clip_polyline(&pts, f.x.0, f.x.1, ylo, yhi) {
+            let px: Vec<(f64, f64)> = piece.iter().map(|&(c, y)| (f.cx(c), f.py(y))).collect();
+            svg.polyline(&px, s.color, s.width, s.dash, &title);
+        }
+    }
+    // periodic markers, never on (or under) an event marker or a curve's end
+    let taken: Vec<(f64, f64)> = p
+        .markers
+        .iter()
+        .filter(|m| f.inside(m.at.0, m.at.1))
+        .map(|m| (f.px(m.at.0), f.py(m.at.1)))
+        .chain(p.series.iter().filter_map(|s| {
+            let &(x, y) = s.points.last()?;
+            (s.end.is_some() && f.inside(x, y)).then(|| (f.px(x), f.py(y)))
+        }))
+        .collect();
+    let free = |x: f64, y: f64| taken.iter().all(|q| (q.0 - x).hypot(q.1 - y) > 11.0);
+    for s in &p.series {
+        if let (Some(shape), true) = (s.shape, s.every > 0) {
+            let last = s.points.len().saturating_sub(1);
+            for (i, &(x, y)) in s.points.iter().enumerate() {
+                if i >= s.phase
+                    && (i - s.phase) % s.every == 0
+                    && i + s.every / 2 < last
+                    && f.inside(x, y)
+                    && free(f.px(x), f.py(y))
+                {
+                    svg.marker(
+                        f.px(x),
+                        f.py(y),
+                        4.0,
+                        shape,
+                        s.color,
+                        false,
+                        &s.label.replace('\n', " "),
+                    );
                 }
             }
         }
     }
-
-    for m in &p.markers {
-        let x = tx(m.at.0);
-        let y = m.at.1;
-        if x >= cx0 && x <= cx1 && y >= ylo && y <= yhi && x.is_finite() && y.is_finite() {
-            chart
-                .draw_series(std::iter::once(Circle::new(
-                    (x, y),
-                    5,
-                    rgb(m.color).filled(),
-                )))
-                .map_err(|e| draw_err(file, e))?;
-            chart
-                .draw_series(std::iter::once(Circle::new((x, y), 5, thin((0, 0, 0), 1))))
-                .map_err(|e| draw_err(file, e))?;
+    // end markers (hollow: several at one point stay visible)
+    for s in &p.series {
+        if let (Some(t), Some(&(x, y))) = (&s.end, s.points.last()) {
+            if f.inside(x, y) {
+                svg.marker(
+                    f.px(x),
+                    f.py(y),
+                    6.0,
+                    s.shape.unwrap_or(Shape::Circle),
+                    s.color,
+                    false,
+                    t,
+                );
+            }
         }
     }
-    Ok(())
+    for m in &p.markers {
+        if f.inside(m.at.0, m.at.1) {
+            let (x, y) = (f.px(m.at.0), f.py(m.at.1));
+            svg.marker(x, y, 5.5, m.shape, m.color, m.filled, &m.title);
+            if let Some(l) = &m.label {
+                let room = f.ax + f.aw - x;
+                if room > text_width(l, NOTE_PX) + 12.0 {
+                    svg.text(
+                        x + 9.0,
+                        y - 7.0,
+                        l,
+                        NOTE_PX,
+                        "start",
+                        (0, 0, 0),
+                        true,
+                        false,
+                    );
+                } else {
+                    svg.text(x - 9.0, y - 7.0, l, NOTE_PX, "end", (0, 0, 0), true, false);
+                }
+            }
+        }
+    }
+    // direct labels at the curves' ends, pushed apart vertically
+    let mut direct: Vec<(f64, f64, String, Rgb)> = p
+        .series
+        .iter()
+        .filter_map(|s| {
+            let t = s.direct.as_ref()?;
+            let &(x, y) = s.points.iter().rev().find(|&&(x, y)| f.inside(x, y))?;
+            Some((f.px(x) + 9.0, f.py(y) + 4.5, t.clone(), s.color))
+        })
+        .collect();
+    direct.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let gap = NOTE_PX + 2.0;
+    let mut placed: Vec<(f64, f64, f64)> = Vec::new();
+    for d in &mut direct {
+        let w = text_width(&d.2, NOTE_PX);
+        let clashes = |y: f64, placed: &[(f64, f64, f64)]| {
+            placed
+                .iter()
+                .any(|&(px, py, pw)| (y - py).abs() < gap && d.0 < px + pw && px < d.0 + w)
+        };
+        let mut tries = 0;
+        while clashes(d.1, &placed) && tries < 20 {
+            d.1 += gap / 2.0;
+            tries += 1;
+        }
+        placed.push((d.0, d.1, w));
+    }
+    for (x, y, t, c) in &direct {
+        svg.text(*x, *y, t, NOTE_PX, "start", darker(*c), true, false);
+    }
+    // labels that would overlap one already written are left out
+    let mut written: Vec<(f64, f64, f64)> = Vec::new();
+    for l in &p.labels {
+        if f.inside(l.at.0, l.at.1) {
+            let (x, y, w) = (f.px(l.at.0), f.py(l.at.1), text_width(&l.text, NOTE_PX));
+            if written.iter().any(|&(a, b, v)| {
+                (a - x).abs() < (v + w) / 2.0 + 4.0 && (b - y).abs() < NOTE_PX + 2.0
+            }) {
+                continue;
+            }
+            written.push((x, y, w));
+            svg.text(
+                f.px(l.at.0),
+                f.py(l.at.1) + 4.0,
+                &l.text,
+                NOTE_PX - 0.5,
+                "middle",
+                (0, 0, 0),
+                true,
+                false,
+            );
+        }
+    }
+    for (i, t) in p.notes.iter().enumerate() {
+        svg.text(
+            f.ax + 8.0,
+            f.ay + 18.0 + 16.0 * i as f64,
+            t,
+            NOTE_PX,
+            "start",
+            (40, 40, 40),
+            true,
+            false,
+        );
+    }
+    // frame, ticks, labels
+    svg.rect(f.ax, f.ay, f.aw, f.ah, "none", &hex(AXIS));
+    for &t in &xticks {
+        let x = f.cx(t);
+        svg.line(
+            (x, f.ay + f.ah),
+            (x, f.ay + f.ah + 5.0),
+            AXIS,
+            1.0,
+            Dash::Solid,
+        );
+        let label = if log {
+            log_tick_text(t)
+        } else {
+            tick_text(t, xdec)
+        };
+        svg.text(
+            x,
+            f.ay + f.ah + 8.0 + TICK_PX,
+            &label,
+            TICK_PX,
+            "middle",
+            (0, 0, 0),
+            false,
+            false,
+        );
+    }
+    for (t, label) in yticks.iter().zip(&ylabels) {
+        let y = f.py(*t);
+        svg.line((f.ax - 5.0, y), (f.ax, y), AXIS, 1.0, Dash::Solid);
+        svg.text(
+            f.ax - 8.0,
+            y + TICK_PX * 0.35,
+            label,
+            TICK_PX,
+            "end",
+            (0, 0, 0),
+            false,
+            false,
+        );
+    }
+    svg.text(
+        f.ax + f.aw / 2.0,
+        y0 + h - 9.0,
+        &p.xlabel,
+        AXIS_PX,
+        "middle",
+        (0, 0, 0),
+        false,
+        false,
+    );
+    svg.text(
+        x0 + 10.0 + AXIS_PX,
+        f.ay + f.ah / 2.0,
+        &p.ylabel,
+        AXIS_PX,
+        "middle",
+        (0, 0, 0),
+        false,
+        true,
+    );
 }
 
-/// The legend: every labelled series of the figure once (first occurrence),
-/// then the marker entry.
-fn draw_legend(file: &str, fig: &Figure, area: &Area<'_>) -> Result<()> {
-    let mut entries: Vec<(&str, Rgb, Dash)> = Vec::new();
-    let mut marker: Option<&str> = None;
-    for p in &fig.panels {
-        for s in &p.series {
-            if !s.label.is_empty() && !entries.iter().any(|e| e.0 == s.label) {
-                entries.push((s.label.as_str(), s.color, s.dash));
-            }
-        }
-        if marker.is_none() {
-            marker = p.marker_label.as_deref();
-        }
-    }
-    // the palette's order (variants, forces, families), whatever panel came first
-    let rank = |c: Rgb| {
-        PALETTE
-            .iter()
-            .position(|p| *p == c)
-            .unwrap_or(PALETTE.len())
-    };
-    entries.sort_by_key(|e| rank(e.1));
-    let font = (FONT, px(13)).into_font().color(&BLACK);
-    let x = 4i32;
-    let mut y = 48i32;
-    for (label, color, dash) in entries {
-        let style = thin(color, 3);
-        match dash {
-            Dash::Solid => area
-                .draw(&PathElement::new(vec![(x, y), (x + 30, y)], style))
-                .map_err(|e| draw_err(file, e))?,
-            Dash::Dashed | Dash::Dotted => {
-                let (len, gap) = if dash == Dash::Dashed { (8, 4) } else { (3, 4) };
-                let mut a = x;
-                while a < x + 30 {
-                    let b = (a + len).min(x + 30);
-                    area.draw(&PathElement::new(vec![(a, y), (b, y)], style))
-                        .map_err(|e| draw_err(file, e))?;
-                    a = b + gap;
-                }
-            }
-        }
-        for (i, line) in label.split('\n').enumerate() {
-            area.draw(&Text::new(
-                line.to_string(),
-                (x + 38, y - 8 + 17 * i as i32),
-                font.clone(),
-            ))
-            .map_err(|e| draw_err(file, e))?;
-        }
-        y += 12 + 17 * label.split('\n').count() as i32;
-    }
-    if let Some(m) = marker {
-        area.draw(&Circle::new((x + 15, y), 5, WHITE.filled()))
-            .map_err(|e| draw_err(file, e))?;
-        area.draw(&Circle::new((x + 15, y), 5, thin((0, 0, 0), 1)))
-            .map_err(|e| draw_err(file, e))?;
-        for (i, line) in m.split('\n').enumerate() {
-            area.draw(&Text::new(
-                line.to_string(),
-                (x + 38, y - 8 + 17 * i as i32),
-                font.clone(),
-            ))
-            .map_err(|e| draw_err(file, e))?;
-        }
-    }
-    Ok(())
+/// A darker shade of `c` for text (the palette's light colours are too pale
+/// for text on white).
+fn darker(c: Rgb) -> Rgb {
+    let f = |v: u8| (f64::from(v) * 0.7).round() as u8;
+    (f(c.0), f(c.1), f(c.2))
 }
 
 /// A perceptually ordered colour map (viridis, by 9 anchors), u in [0, 1].
 pub fn viridis(u: f64) -> Rgb {
-    const A: [Rgb; 9] = [
-        (68, 1, 84),
-        (71, 44, 122),
-        (59, 81, 139),
-        (44, 113, 142),
-        (33, 144, 141),
-        (39, 173, 129),
-        (92, 200, 99),
-        (170, 220, 50),
-        (253, 231, 37),
-    ];
     let u = if u.is_finite() {
         u.clamp(0.0, 1.0)
     } else {
         0.0
     };
-    let s = u * (A.len() - 1) as f64;
-    let i = (s.floor() as usize).min(A.len() - 2);
+    let s = u * (VIRIDIS.len() - 1) as f64;
+    let i = (s.floor() as usize).min(VIRIDIS.len() - 2);
     let f = s - i as f64;
+    let a = VIRIDIS[i];
+    let b = VIRIDIS[i + 1];
     let mix = |a: u8, b: u8| (f64::from(a) + f * (f64::from(b) - f64::from(a))).round() as u8;
-    (
-        mix(A[i].0, A[i + 1].0),
-        mix(A[i].1, A[i + 1].1),
-        mix(A[i].2, A[i + 1].2),
-    )
+    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
-fn draw_colorbar(file: &str, cb: &ColorBar, area: &Area<'_>) -> Result<()> {
-    let (w, h) = area.dim_in_pixel();
-    let top = 60i32;
-    let bottom = h as i32 - 70;
-    let x0 = 10i32;
-    let x1 = 34i32;
-    let font = (FONT, px(13)).into_font().color(&BLACK);
-    area.draw(&Text::new(cb.label.clone(), (x0, top - 34), font.clone()))
-        .map_err(|e| draw_err(file, e))?;
-    let n = (bottom - top).max(1);
-    for i in 0..n {
-        let u = 1.0 - (f64::from(i) + 0.5) / f64::from(n);
-        area.draw(&Rectangle::new(
-            [(x0, top + i), (x1, top + i + 1)],
-            rgb(viridis(u)).filled(),
-        ))
-        .map_err(|e| draw_err(file, e))?;
-    }
-    area.draw(&Rectangle::new(
-        [(x0, top), (x1, bottom)],
-        thin((0, 0, 0), 1),
-    ))
-    .map_err(|e| draw_err(file, e))?;
+const VIRIDIS: [Rgb; 9] = [
+    (68, 1, 84),
+    (71, 44, 122),
+    (59, 81, 139),
+    (44, 113, 142),
+    (33, 144, 141),
+    (39, 173, 129),
+    (92, 200, 99),
+    (170, 220, 50),
+    (253, 231, 37),
+];
+
+/// The colour bar: a smooth gradient (the colour map's anchors as stops),
+/// vertical in the right strip or horizontal below the panels.
+fn draw_colorbar(svg: &mut Svg, cb: &ColorBar, x0: f64, y0: f64, w: f64, h: f64, horizontal: bool) {
     let (lo, hi) = cb.range;
-    let ypix = |v: f64| -> i32 {
-        let u = (v - lo) / (hi - lo);
-        (f64::from(bottom) - u * f64::from(bottom - top)).round() as i32
+    let id = if horizontal { "cbh" } else { "cbv" };
+    let (gx2, gy1) = if horizontal {
+        ("100%", "0%")
+    } else {
+        ("0%", "100%")
     };
+    let mut stops = String::new();
+    for (i, c) in VIRIDIS.iter().enumerate() {
+        let _ = write!(
+            stops,
+            "<stop offset=\"{}\" stop-color=\"{}\"/>",
+            n(i as f64 / (VIRIDIS.len() - 1) as f64),
+            hex(*c)
+        );
+    }
+    let _ = writeln!(
+        svg.s,
+        "<defs><linearGradient id=\"{id}\" x1=\"0%\" y1=\"{gy1}\" x2=\"{gx2}\" y2=\"0%\">{stops}</linearGradient></defs>"
+    );
     let (ticks, step) = nice_ticks(lo, hi, 6);
     let dec = decimals_for(step);
-    for t in ticks {
-        let y = ypix(t);
-        area.draw(&PathElement::new(
-            vec![(x1, y), (x1 + 5, y)],
-            thin((0, 0, 0), 1),
-        ))
-        .map_err(|e| draw_err(file, e))?;
-        area.draw(&Text::new(tick_text(t, dec), (x1 + 8, y - 7), font.clone()))
-            .map_err(|e| draw_err(file, e))?;
-    }
-    for m in &cb.marks {
-        if *m > lo && *m < hi {
-            let y = ypix(*m);
-            area.draw(&PathElement::new(
-                vec![(x0, y), (x1, y)],
-                thin((0, 0, 0), 1),
-            ))
-            .map_err(|e| draw_err(file, e))?;
+    if horizontal {
+        let (bx, by, bw, bh) = (x0 + 20.0, y0 + 28.0, w - 40.0, 14.0);
+        svg.text(
+            bx,
+            y0 + 18.0,
+            &cb.label,
+            LEGEND_PX,
+            "start",
+            (0, 0, 0),
+            false,
+            false,
+        );
+        svg.rect(bx, by, bw, bh, &format!("url(#{id})"), "#000000");
+        let xpix = |v: f64| bx + (v - lo) / (hi - lo) * bw;
+        for t in ticks {
+            let x = xpix(t);
+            svg.line(
+                (x, by + bh),
+                (x, by + bh + 4.0),
+                (0, 0, 0),
+                1.0,
+                Dash::Solid,
+            );
+            svg.text(
+                x,
+                by + bh + 17.0,
+                &tick_text(t, dec),
+                TICK_PX,
+                "middle",
+                (0, 0, 0),
+                false,
+                false,
+            );
+        }
+        for (m, _) in &cb.marks {
+            if *m >= lo && *m <= hi {
+                let x = xpix(*m);
+                svg.line((x, by), (x, by + bh), (255, 255, 255), 2.0, Dash::Solid);
+            }
+        }
+    } else {
+        let (bx, by, bw, bh) = (x0 + 12.0, y0 + 60.0, 24.0, h - 140.0);
+        for (i, l) in wrap(&cb.label, LEGEND_PX, w - 12.0).iter().enumerate() {
+            svg.text(
+                x0 + 8.0,
+                y0 + 24.0 + 17.0 * i as f64,
+                l,
+                LEGEND_PX,
+                "start",
+                (0, 0, 0),
+                false,
+                false,
+            );
+        }
+        svg.rect(bx, by, bw, bh, &format!("url(#{id})"), "#000000");
+        let ypix = |v: f64| by + bh - (v - lo) / (hi - lo) * bh;
+        for t in ticks {
+            let y = ypix(t);
+            svg.line(
+                (bx + bw, y),
+                (bx + bw + 5.0, y),
+                (0, 0, 0),
+                1.0,
+                Dash::Solid,
+            );
+            svg.text(
+                bx + bw + 8.0,
+                y + 4.5,
+                &tick_text(t, dec),
+                TICK_PX,
+                "start",
+                (0, 0, 0),
+                false,
+                false,
+            );
+        }
+        for (m, t) in &cb.marks {
+            if *m >= lo && *m <= hi {
+                let y = ypix(*m);
+                svg.line(
+                    (bx - 4.0, y),
+                    (bx + bw, y),
+                    (255, 255, 255),
+                    2.0,
+                    Dash::Solid,
+                );
+                svg.line((bx - 6.0, y), (bx, y), (0, 0, 0), 1.5, Dash::Solid);
+                if !t.is_empty() {
+                    svg.text(
+                        bx - 8.0,
+                        y + 4.0,
+                        t,
+                        NOTE_PX - 1.5,
+                        "end",
+                        (0, 0, 0),
+                        false,
+                        false,
+                    );
+                }
+            }
         }
     }
-    let _ = w;
-    Ok(())
 }
 
 /// Line segments of the contour `level` of values `z[j][i]` given at nodes
@@ -852,6 +1728,210 @@ pub fn contour(xs: &[f64], ys: &[f64], z: &[Vec<f64>], level: f64) -> Vec<[(f64,
     segs
 }
 
+/// Joins contour segments into polylines (segments sharing an end point).
+pub fn chain(segs: &[[(f64, f64); 2]]) -> Vec<Vec<(f64, f64)>> {
+    let close = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0).abs() < 1e-9 && (a.1 - b.1).abs() < 1e-9;
+    let mut used = vec![false; segs.len()];
+    let mut out = Vec::new();
+    for s in 0..segs.len() {
+        if used[s] {
+            continue;
+        }
+        used[s] = true;
+        let mut line = vec![segs[s][0], segs[s][1]];
+        for forward in [true, false] {
+            loop {
+                let end = if forward {
+                    line[line.len() - 1]
+                } else {
+                    line[0]
+                };
+                let next = (0..segs.len())
+                    .find(|&k| !used[k] && (close(segs[k][0], end) || close(segs[k][1], end)));
+                let Some(k) = next else { break };
+                used[k] = true;
+                let p = if close(segs[k][0], end) {
+                    segs[k][1]
+                } else {
+                    segs[k][0]
+                };
+                if forward {
+                    line.push(p);
+                } else {
+                    line.insert(0, p);
+                }
+            }
+        }
+        out.push(line);
+    }
+    out
+}
+
+/// A value with `sig` significant digits for a CSV file (plain decimal
+/// notation unless very large or small).
+pub fn csv_num(v: f64, sig: usize) -> String {
+    if !v.is_finite() {
+        return String::new();
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let e = v.abs().log10().floor() as i32;
+    if !(-6..=9).contains(&e) {
+        return format!("{:.*e}", sig.saturating_sub(1), v);
+    }
+    let dec = (sig as i32 - 1 - e).max(0) as usize;
+    let s = format!("{v:.dec$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+fn csv_field(s: &str) -> String {
+    let s = s.replace('\n', " ");
+    if s.contains(',') || s.contains('"') {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s
+    }
+}
+
+/// The data behind a figure as CSV: one row per plotted point of every curve
+/// and every marker (`panel, curve, x quantity, x, y quantity, y`), values
+/// with `sig` significant digits (the digits verified for the plots).
+pub fn figure_csv(fig: &Figure, sig: usize) -> String {
+    if let Some(c) = &fig.csv {
+        return c.clone();
+    }
+    let mut s = String::from("panel,curve,x_quantity,x,y_quantity,y\n");
+    for (k, p) in fig.panels.iter().enumerate() {
+        let panel = if p.title.is_empty() {
+            format!("{}", k + 1)
+        } else {
+            p.title.clone()
+        };
+        for (i, ser) in p.series.iter().enumerate() {
+            if ser.points.is_empty() {
+                continue;
+            }
+            let name = if ser.label.is_empty() {
+                format!("curve {}", i + 1)
+            } else {
+                ser.label.clone()
+            };
+            for &(x, y) in &ser.points {
+                let _ = writeln!(
+                    s,
+                    "{},{},{},{},{},{}",
+                    csv_field(&panel),
+                    csv_field(&name),
+                    csv_field(&p.xlabel),
+                    csv_num(x, sig),
+                    csv_field(&p.ylabel),
+                    csv_num(y, sig)
+                );
+            }
+        }
+        for m in &p.markers {
+            let _ = writeln!(
+                s,
+                "{},{},{},{},{},{}",
+                csv_field(&panel),
+                csv_field(&format!("marker: {}", m.title)),
+                csv_field(&p.xlabel),
+                csv_num(m.at.0, sig),
+                csv_field(&p.ylabel),
+                csv_num(m.at.1, sig)
+            );
+        }
+    }
+    s
+}
+
+// ---------------------------------------------------------------- PNG
+
+fn crc32(data: &[u8]) -> u32 {
+    let mut c = 0xffff_ffffu32;
+    for &b in data {
+        c ^= u32::from(b);
+        for _ in 0..8 {
+            c = if c & 1 != 0 {
+                0xedb8_8320 ^ (c >> 1)
+            } else {
+                c >> 1
+            };
+        }
+    }
+    !c
+}
+
+fn adler32(data: &[u8]) -> u32 {
+    let (mut a, mut b) = (1u32, 0u32);
+    for &x in data {
+        a = (a + u32::from(x)) % 65521;
+        b = (b + a) % 65521;
+    }
+    (b << 16) | a
+}
+
+/// An RGB PNG (zlib with stored blocks: no compression, no dependency).
+pub fn png(w: usize, h: usize, pixels: &[Rgb]) -> Vec<u8> {
+    let mut raw = Vec::with_capacity(h * (1 + 3 * w));
+    for r in 0..h {
+        raw.push(0u8);
+        for c in 0..w {
+            let p = pixels.get(r * w + c).copied().unwrap_or((255, 255, 255));
+            raw.extend_from_slice(&[p.0, p.1, p.2]);
+        }
+    }
+    let mut z = vec![0x78u8, 0x01];
+    let chunks: Vec<&[u8]> = raw.chunks(65535).collect();
+    for (i, ch) in chunks.iter().enumerate() {
+        z.push(u8::from(i + 1 == chunks.len()));
+        let len = ch.len() as u16;
+        z.extend_from_slice(&len.to_le_bytes());
+        z.extend_from_slice(&(!len).to_le_bytes());
+        z.extend_from_slice(ch);
+    }
+    z.extend_from_slice(&adler32(&raw).to_be_bytes());
+    let mut out = vec![0x89, b'P', b'N', b'G', 0x0d, 0x0a, 0x1a, 0x0a];
+    let mut chunk = |kind: &[u8], data: &[u8]| {
+        out.extend_from_slice(&(data.len() as u32).to_be_bytes());
+        let mut c = kind.to_vec();
+        c.extend_from_slice(data);
+        out.extend_from_slice(&c);
+        out.extend_from_slice(&crc32(&c).to_be_bytes());
+    };
+    let mut ihdr = Vec::new();
+    ihdr.extend_from_slice(&(w as u32).to_be_bytes());
+    ihdr.extend_from_slice(&(h as u32).to_be_bytes());
+    ihdr.extend_from_slice(&[8, 2, 0, 0, 0]);
+    chunk(b"IHDR", &ihdr);
+    chunk(b"IDAT", &z);
+    chunk(b"IEND", &[]);
+    out
+}
+
+/// Standard base64.
+pub fn base64(data: &[u8]) -> String {
+    const A: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut s = String::with_capacity(data.len().div_ceil(3) * 4);
+    for ch in data.chunks(3) {
+        let b = [ch[0], *ch.get(1).unwrap_or(&0), *ch.get(2).unwrap_or(&0)];
+        let v = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
+        for k in 0..4 {
+            if k <= ch.len() {
+                s.push(A[((v >> (18 - 6 * k)) & 63) as usize] as char);
+            } else {
+                s.push('=');
+            }
+        }
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -864,6 +1944,7 @@ mod tests {
         assert_eq!(decimals_for(0.25), 2);
         assert_eq!(decimals_for(5.0), 0);
         assert_eq!(tick_text(-0.0000001, 2), "0.00");
+        assert_eq!(tick_text(-0.5, 1), "\u{2212}0.5");
         assert_eq!(log_tick_text(-2.0), "0.01");
         assert_eq!(log_tick_text(2f64.log10()), "2");
         assert_eq!(log_ticks(0.1, 10.0).len(), 7);
@@ -893,5 +1974,43 @@ mod tests {
         let s = contour(&xs, &ys, &z, 0.5);
         assert_eq!(s.len(), 1);
         assert!((s[0][0].0 - 0.5).abs() < 1e-12);
+        let z3 = vec![vec![0.0, 1.0, 2.0]; 3];
+        let segs = contour(&xs, &[0.0, 1.0, 2.0], &z3, 0.5);
+        assert_eq!(chain(&segs).len(), 1);
+        assert_eq!(chain(&segs)[0].len(), 3);
+    }
+
+    #[test]
+    fn coordinates_keep_sub_pixel_precision() {
+        let mut p = Panel::new("", "x", "y");
+        p.xrange = Some((0.0, 1.0));
+        p.yrange = Some((0.0, 1.0));
+        let pts: Vec<(f64, f64)> = (0..=50)
+            .map(|i| {
+                let x = f64::from(i) / 50.0;
+                (x, x * x)
+            })
+            .collect();
+        p.series.push(Series::new("a", PALETTE[0], pts));
+        let fig = Figure::single("t.svg", "t".into(), (400, 300), p, 0);
+        let svg = render_layout(&fig, Layout::Wide);
+        let path = svg
+            .lines()
+            .find(|l| l.starts_with("<path d=\"M") && l.contains("#0072b2"))
+            .expect("the curve");
+        // some coordinates are not whole pixels
+        assert!(path.contains('.'), "{path}");
+        assert!(svg.contains("<title>a</title>"));
+    }
+
+    #[test]
+    fn png_and_base64_are_well_formed() {
+        assert_eq!(base64(b"Man"), "TWFu");
+        assert_eq!(base64(b"Ma"), "TWE=");
+        assert_eq!(crc32(b"IEND"), 0xae42_6082);
+        let p = png(2, 1, &[(255, 0, 0), (0, 0, 255)]);
+        assert_eq!(&p[1..4], b"PNG");
+        assert_eq!(csv_num(0.000_123_456_789, 4), "0.0001235");
+        assert_eq!(csv_num(-2.5, 12), "-2.5");
     }
 }

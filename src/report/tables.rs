@@ -46,7 +46,7 @@ pub fn closed_form(v: (Floor, Contact), theta0: &str) -> Result<Option<(String, 
             let f = if at_top {
                 "arccos(4/7), eq. (36)".to_string()
             } else {
-                "arccos(4 cos θ0 / 7)".to_string()
+                "arccos(4 cos θ₀ / 7)".to_string()
             };
             Some((f, c.acos()))
         }
@@ -55,7 +55,7 @@ pub fn closed_form(v: (Floor, Contact), theta0: &str) -> Result<Option<(String, 
             let f = if at_top {
                 "arccos(2/3)".to_string()
             } else {
-                "arccos(2 cos θ0 / 3)".to_string()
+                "arccos(2 cos θ₀ / 3)".to_string()
             };
             Some((f, c.acos()))
         }
@@ -89,7 +89,7 @@ fn agrees(v: &Verified, cf: &Float) -> (String, bool) {
 }
 
 fn degrees(v: &Verified) -> String {
-    format!("≈ {:.6}°", v.value.to_f64().to_degrees())
+    num(format!("{:.6}", v.value.to_f64().to_degrees()))
 }
 
 /// All tables, and the lines of `separation.csv` and `plane.csv`.
@@ -221,23 +221,23 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
     }
     let t1 = Table {
         id: "separation-top".into(),
-        title: "Separation from rest at the top (θ0 → 0+)".into(),
+        title: "Separation from rest at the top (θ₀ → 0+)".into(),
         intro: format!(
-            "Identical solid cylinders (m1 = m2, r1 = r2, k1 = k2 = 1/2), every contact model, started from rest \
-             with the upper cylinder on top (the paper's case, the limit θ0 → 0+; the time is then infinite). \
-             θs in radians to {d} verified significant digits; the closed form, where one is known, is evaluated \
-             independently at {CF_PREC} bits and rounded to the same digits. F21 at separation is in units of m1 g: \
-             where it is not zero, the friction coefficient that rolling needs diverges as θ → θs."
+            "Identical solid cylinders (m₁ = m₂, r₁ = r₂, k₁ = k₂ = 1/2), every contact model, started from rest \
+             with the upper cylinder on top (the paper's case, the limit θ₀ → 0+; the time is then infinite). \
+             θₛ in radians to {d} verified significant digits; the closed form, where one is known, is evaluated \
+             independently at {CF_PREC} bits and rounded to the same digits. F₂₁ at separation is in units of m₁g: \
+             where it is not zero, the friction coefficient that rolling needs diverges as θ → θₛ."
         ),
         header: [
             "contact model",
             "paper",
-            "θs [rad]",
-            "θs [deg]",
+            "θₛ [rad]",
+            "θₛ [deg], rounded",
             "closed form",
             "closed form value",
             "agrees",
-            "F21 at θs [m1 g]",
+            "F₂₁ at θₛ [m₁g]",
         ]
         .iter()
         .map(|s| s.to_string())
@@ -246,17 +246,17 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
     };
     let t2 = Table {
         id: "separation-start".into(),
-        title: "Separation from rest at θ0 = 1/100 and θ0 = 1/20".into(),
+        title: "Separation from rest at θ₀ = 1/100 and θ₀ = 1/20".into(),
         intro: format!(
-            "The same cylinders started from rest a little off the top: θs [rad] and the time t_s to separation \
-             [τ = √(r1/g)], {d} verified digits. For the fixed lower cylinder the closed form is \
-             cos θs = 2 cos θ0 / (3 + k2) (rolling contact) or 2 cos θ0 / 3 (frictionless contact)."
+            "The same cylinders started from rest a little off the top: θₛ [rad] and the time tₛ to separation \
+             [τ = √(r₁/g)], {d} verified digits. For the fixed lower cylinder the closed form is \
+             cos θₛ = 2 cos θ₀ / (3 + k₂) (rolling contact) or 2 cos θ₀ / 3 (frictionless contact)."
         ),
         header: [
             "contact model",
-            "θ0 [rad]",
-            "θs [rad]",
-            "t_s [τ]",
+            "θ₀ [rad]",
+            "θₛ [rad]",
+            "tₛ [τ]",
             "closed form",
             "closed form value",
             "agrees",
@@ -269,14 +269,14 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
 
     // --- 3. forces at chosen angles, main case
     let names = [
-        "F1 [m1 g]",
-        "N1 [m1 g]",
-        "F21 [m1 g]",
-        "N12 [m1 g]",
+        "F₁ [m₁g]",
+        "N₁ [m₁g]",
+        "F₂₁ [m₁g]",
+        "N₁₂ [m₁g]",
         "dθ/dt [rad/τ]",
         "d²θ/dt² [rad/τ²]",
-        "μ needed at the floor, |F1|/N1",
-        "μ needed between the cylinders, |F21|/N12",
+        "μ needed at the floor, |F₁|/N₁",
+        "μ needed between the cylinders, |F₂₁|/N₁₂",
     ];
     let mut rows3 = Vec::new();
     for (qi, name) in names.iter().enumerate() {
@@ -308,8 +308,8 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
         id: "forces".into(),
         title: "Forces in the main case at chosen angles".into(),
         intro: format!(
-            "Both contacts rolling, identical solid cylinders, from rest at the top (θ0 → 0+); {d} verified digits; \
-             m1 = m2 = r1 = r2 = g = 1."
+            "Both contacts rolling, identical solid cylinders, from rest at the top (θ₀ → 0+); {d} verified digits; \
+             m₁ = m₂ = r₁ = r₂ = g = 1."
         ),
         header: header3,
         rows: rows3,
@@ -371,11 +371,11 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
         title: "Where rolling first fails, for a friction coefficient μ".into(),
         intro: format!(
             "Main case (both contacts rolling, identical solid cylinders, from rest at the top): the first angle \
-             at which rolling without slipping would need more friction than μ, at the floor (|F1| > μ N1) and \
-             between the cylinders (|F21| > μ N12); {d} verified digits. Past that angle the rolling model no longer \
-             applies. Between the cylinders it always fails before θs, since N12 → 0 while F21 does not."
+             at which rolling without slipping would need more friction than μ, at the floor (|F₁| > μN₁) and \
+             between the cylinders (|F₂₁| > μN₁₂); {d} verified digits. Past that angle the rolling model no longer \
+             applies. Between the cylinders it always fails before θₛ, since N₁₂ → 0 while F₂₁ does not."
         ),
-        header: ["μ", "floor slips at θ [rad]", "cylinders slip at θ [rad]", "slips first", "θs [rad]"]
+        header: ["μ", "floor slips at θ [rad]", "cylinders slip at θ [rad]", "slips first", "θₛ [rad]"]
             .iter()
             .map(|s| s.to_string())
             .collect(),
@@ -397,7 +397,7 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
             row.push(match data.plane.get(&key) {
                 Some(Ok(v)) => num(&v.text),
                 Some(Err(e)) => {
-                    problems.push(format!("plane m2/m1 = {r}, k2 = {k2}: {e}"));
+                    problems.push(format!("plane m₂/m₁ = {r}, k2 = {k2}: {e}"));
                     err_cell(e)
                 }
                 None => "missing".into(),
@@ -441,18 +441,18 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
         }
         rows5.push(row);
     }
-    let mut header5 = vec!["k2".to_string()];
-    header5.extend(PLANE_TABLE_RATIOS.iter().map(|r| format!("m2/m1 = {r}")));
+    let mut header5 = vec!["k₂".to_string()];
+    header5.extend(PLANE_TABLE_RATIOS.iter().map(|r| format!("m₂/m₁ = {r}")));
     header5.push("fixed lower cylinder (oracle)".into());
-    header5.push("arccos(2/(3 + k2))".into());
+    header5.push("arccos(2/(3 + k₂))".into());
     header5.push("agrees".into());
     let t5 = Table {
         id: "plane".into(),
-        title: "θs at chosen points of the parameter plane".into(),
+        title: "θₛ at chosen points of the parameter plane".into(),
         intro: format!(
-            "θs [rad] with both contacts rolling, from rest at the top, m1 = r1 = r2 = g = 1, k1 = 1/2, for \
-             several mass ratios m2/m1 and k2 ({td} verified digits), and for a fixed lower cylinder ({d} verified \
-             digits) next to its closed form, eq. (36). As m2/m1 → 0 the lower cylinder stops moving and θs tends \
+            "θₛ [rad] with both contacts rolling, from rest at the top, m₁ = r₁ = r₂ = g = 1, k₁ = 1/2, for \
+             several mass ratios m₂/m₁ and k₂ ({td} verified digits), and for a fixed lower cylinder ({d} verified \
+             digits) next to its closed form, eq. (36). As m₂/m₁ → 0 the lower cylinder stops moving and θₛ tends \
              to the fixed-lower value."
         ),
         header: header5,
@@ -486,14 +486,7 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
     let mut items = Vec::new();
     for (vi, v) in VARIANTS.iter().enumerate() {
         if let Some(Ok(s)) = data.sep.get(vi).and_then(|s| s.first()) {
-            for n in &s.notes {
-                items.push(format!("{}: {n}", variant_name(*v)));
-            }
-            for x in &s.extra {
-                if x.name != "F21_at_s" {
-                    items.push(format!("{}: {} = {}", variant_name(*v), x.name, x.text));
-                }
-            }
+            items.push(format!("{}: {}", variant_name(*v), reader_notes(*v, s)));
         }
     }
     for (vi, v) in VARIANTS.iter().enumerate() {
@@ -554,9 +547,10 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
     let notes = Section {
         title: "What the oracle reported".into(),
         paragraphs: vec![format!(
-            "The oracle's findings for each contact model from rest at the top ({d} digits): where φ1 and dφ1/dt \
-             change sign, whether the lower cylinder stays on the floor, what happens to the friction at separation. \
-             Any point that could not be verified is listed here too."
+            "What the oracle found for each contact model, started from rest at the top (the limit θ₀ → 0+, where the \
+             time to separation is infinite), with its verified values rounded here to 6 decimals (to {d} digits in \
+             `separation.csv` and from `cylroll separation`). Forces are in units of m₁g. Any point that could not be \
+             verified is listed here too."
         )],
         items,
         links: Vec::new(),
@@ -569,4 +563,136 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
         plane_csv,
         problems,
     })
+}
+
+/// A verified value rounded for prose.
+fn r6(v: &Verified) -> String {
+    let x = v.value.to_f64();
+    super::plot::minus(&format!("{x:.6}"))
+}
+
+/// Plain words for the oracle's technical names in a note it wrote.
+fn plain(note: &str) -> String {
+    let mut t = note.to_string();
+    for (a, b) in [
+        ("theta_s", "θₛ"),
+        ("theta0", "θ₀"),
+        ("phi1_dot", "dφ₁/dt"),
+        ("phi1", "φ₁"),
+        ("phi2", "φ₂"),
+        ("theta", "θ"),
+        ("N12", "N₁₂"),
+        ("N1", "N₁"),
+        ("F21", "F₂₁"),
+        ("F1", "F₁"),
+        ("t_s", "tₛ"),
+        (" != ", " ≠ "),
+        (" -> ", " → "),
+        ("0+", "0⁺"),
+        ("K^2", "K²"),
+    ] {
+        t = t.replace(a, b);
+    }
+    t
+}
+
+/// The oracle's findings for one contact model, written for a reader: the
+/// lower cylinder's normal force, the friction the floor needs, the turning
+/// of cylinder 1, the friction at separation, then any other note.
+pub fn reader_notes(v: (Floor, Contact), s: &Separation) -> String {
+    let mut out: Vec<String> = Vec::new();
+    let held = v.0 == Floor::Fixed;
+    let n1 = extra(s, "N1_min").zip(extra(s, "theta_N1_min"));
+    let lift = extra(s, "theta_N1_zero");
+    match (held, lift, n1) {
+        (_, Some(a), _) => out.push(format!(
+            "N₁ reaches 0 at θ = {} before separation: cylinder 1 would leave {} first",
+            r6(a),
+            if held { "its holder" } else { "the floor" }
+        )),
+        (true, None, Some((m, a))) => out.push(format!(
+            "cylinder 1 is held: the holder's vertical force N₁ stays positive up to separation (checked at every angle), \
+             smallest {} at θ = {}",
+            r6(m),
+            r6(a)
+        )),
+        (false, None, Some((m, a))) => out.push(format!(
+            "cylinder 1 stays on the floor: N₁ > 0 at every angle up to separation (N₁ has no root there), smallest {} at θ = {}",
+            r6(m),
+            r6(a)
+        )),
+        _ => {}
+    }
+    if let (Some(m), Some(a)) = (extra(s, "mu_floor_max"), extra(s, "theta_mu_floor_max")) {
+        out.push(if held {
+            format!(
+                "the holder's horizontal force is at most |F₁|/N₁ = {} of its vertical force (at θ = {})",
+                r6(m),
+                r6(a)
+            )
+        } else {
+            format!(
+                "rolling on the floor needs a friction coefficient of at most |F₁|/N₁ = {} (at θ = {})",
+                r6(m),
+                r6(a)
+            )
+        });
+    }
+    if !held && v != (Floor::Slip, Contact::Slip) {
+        for (key, name) in [("phi1dot", "dφ₁/dt"), ("phi1", "φ₁")] {
+            let before = extra(s, &format!("theta_{key}_zero"));
+            let after = extra(s, &format!("theta_{key}_zero_after_separation"));
+            let ths = s.theta_s.value.to_f64();
+            out.push(match (before, after) {
+                (Some(a), _) if (a.value.to_f64() - ths).abs() < 1e-12 * ths.max(1.0) => {
+                    format!("{name} reaches 0 exactly at separation")
+                }
+                (Some(a), _) => format!("{name} changes sign at θ = {}, before separation", r6(a)),
+                (None, Some(a)) => format!(
+                    "{name} keeps its sign up to separation (continued past θₛ, the formulas would change it at θ = {}, which the \
+                     motion never reaches)",
+                    r6(a)
+                ),
+                (None, None) => format!("{name} keeps its sign up to separation"),
+            });
+        }
+    }
+    if let Some(f) = extra(s, "F21_at_s") {
+        out.push(format!(
+            "at separation F₂₁ = {} while N₁₂ → 0, so the friction a rolling contact needs, |F₂₁|/N₁₂, grows without bound: with \
+             any finite μ the upper cylinder slips before it separates",
+            r6(f)
+        ));
+    }
+    // notes not said above, in plain words
+    let said = ["t_s is infinite", "N1 > 0", "N1 ", "phi1", "F21 != 0"];
+    for n in &s.notes {
+        if !said.iter().any(|p| n.starts_with(p)) {
+            out.push(plain(n));
+        }
+    }
+    // verified values not said above
+    let known = [
+        "F21_at_s",
+        "N1_min",
+        "theta_N1_min",
+        "theta_N1_zero",
+        "mu_floor_max",
+        "theta_mu_floor_max",
+        "theta_phi1dot_zero",
+        "theta_phi1_zero",
+        "theta_phi1dot_zero_after_separation",
+        "theta_phi1_zero_after_separation",
+    ];
+    for x in &s.extra {
+        if !known.contains(&x.name.as_str()) {
+            out.push(format!("{} = {}", plain(&x.name), r6(x)));
+        }
+    }
+    let mut text = out.join("; ");
+    if let Some(first) = text.get(..1) {
+        text = first.to_uppercase() + &text[1..];
+    }
+    text.push('.');
+    text
 }

@@ -1,0 +1,307 @@
+//! The sign-convention diagram: the two cylinders, the angles θ, φ₁, φ₂ and
+//! the four contact forces F₁, N₁, F₂₁, N₁₂ drawn in their positive
+//! directions (the conventions of the project README, "Conventions", and of
+//! `mechanics`: x right, y up, θ clockwise from the vertical, φ₁ clockwise,
+//! φ₂ − θ counter-clockwise, F₂₁ along (cos θ, −sin θ) on cylinder 2).
+
+use super::plot::{xml, Figure, FONT, PALETTE};
+use std::fmt::Write as _;
+
+/// Size of the drawing in px.
+pub const SIZE: (u32, u32) = (560, 640);
+
+fn hex(c: (u8, u8, u8)) -> String {
+    format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
+}
+
+struct D {
+    s: String,
+}
+
+impl D {
+    fn text(&mut self, x: f64, y: f64, t: &str, color: &str, anchor: &str, size: f64) {
+        let _ = writeln!(
+            self.s,
+            "<text x=\"{x:.1}\" y=\"{y:.1}\" font-size=\"{size}\" text-anchor=\"{anchor}\" fill=\"{color}\" stroke=\"#ffffff\" stroke-width=\"4\" stroke-linejoin=\"round\" paint-order=\"stroke\">{}</text>",
+            xml(t)
+        );
+    }
+    fn arrow(
+        &mut self,
+        a: (f64, f64),
+        b: (f64, f64),
+        color: &str,
+        id: &str,
+        title: &str,
+        width: f64,
+    ) {
+        let _ = writeln!(
+            self.s,
+            "<path d=\"M{:.1} {:.1}L{:.1} {:.1}\" stroke=\"{color}\" stroke-width=\"{width}\" fill=\"none\" marker-end=\"url(#{id})\"><title>{}</title></path>",
+            a.0,
+            a.1,
+            b.0,
+            b.1,
+            xml(title)
+        );
+    }
+    /// A circular arc around `c` of radius `r` from angle `a0` to `a1`
+    /// (degrees, clockwise from the upward vertical), with an arrow head at
+    /// its end.
+    #[allow(clippy::too_many_arguments)]
+    fn arc(&mut self, c: (f64, f64), r: f64, a0: f64, a1: f64, color: &str, id: &str, title: &str) {
+        let p = |a: f64| {
+            let t = a.to_radians();
+            (c.0 + r * t.sin(), c.1 - r * t.cos())
+        };
+        let (s, e) = (p(a0), p(a1));
+        let large = u8::from((a1 - a0).abs() > 180.0);
+        let sweep = u8::from(a1 > a0);
+        let _ = writeln!(
+            self.s,
+            "<path d=\"M{:.1} {:.1}A{r:.1} {r:.1} 0 {large} {sweep} {:.1} {:.1}\" stroke=\"{color}\" stroke-width=\"2\" fill=\"none\" marker-end=\"url(#{id})\"><title>{}</title></path>",
+            s.0,
+            s.1,
+            e.0,
+            e.1,
+            xml(title)
+        );
+    }
+}
+
+/// The diagram as SVG text.
+pub fn svg() -> String {
+    let (w, h) = (f64::from(SIZE.0), f64::from(SIZE.1));
+    let mut d = D { s: String::new() };
+    let _ = writeln!(
+        d.s,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\" font-size=\"16\">"
+    );
+    d.s.push_str("<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n<defs>");
+    let colors = [
+        ("ak", (0, 0, 0)),
+        ("a0", PALETTE[0]),
+        ("a1", PALETTE[1]),
+        ("a2", PALETTE[2]),
+        ("a3", PALETTE[3]),
+        ("a4", (110, 110, 110)),
+    ];
+    for (id, c) in colors {
+        let _ = write!(
+            d.s,
+            "<marker id=\"{id}\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M0 0L10 5L0 10z\" fill=\"{}\"/></marker>",
+            hex(c)
+        );
+    }
+    d.s.push_str("</defs>\n");
+    let floor_y = 420.0;
+    let r = 105.0;
+    let th = 32f64.to_radians();
+    let c1 = (210.0, floor_y - r);
+    let c2 = (c1.0 + 2.0 * r * th.sin(), c1.1 - 2.0 * r * th.cos());
+    let p = (c1.0 + r * th.sin(), c1.1 - r * th.cos());
+    let grey = "#6e6e6e";
+    // floor
+    let _ = writeln!(
+        d.s,
+        "<path d=\"M30 {floor_y}H{}\" stroke=\"#000\" stroke-width=\"2\"/>",
+        w - 30.0
+    );
+    let mut hatch = String::new();
+    let mut x = 40.0;
+    while x < w - 30.0 {
+        let _ = write!(hatch, "M{x:.0} {floor_y}l-10 12");
+        x += 18.0;
+    }
+    let _ = writeln!(
+        d.s,
+        "<path d=\"{hatch}\" stroke=\"#999\" stroke-width=\"1\"/>"
+    );
+    // cylinders
+    for (c, name) in [
+        (c1, "cylinder 1 (m₁, r₁, k₁)"),
+        (c2, "cylinder 2 (m₂, r₂, k₂)"),
+    ] {
+        let _ = writeln!(
+            d.s,
+            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"{r}\" fill=\"#f4f4f4\" stroke=\"#000\" stroke-width=\"2\"><title>{}</title></circle><circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3\" fill=\"#000\"/>",
+            c.0,
+            c.1,
+            xml(name),
+            c.0,
+            c.1
+        );
+    }
+    d.text(c1.0 - r - 8.0, c1.1 + 70.0, "1", "#000", "end", 18.0);
+    d.text(c2.0 + r * 0.8, c2.1 - r * 0.8, "2", "#000", "start", 18.0);
+    // θ: vertical through C1 and the line of centres
+    let _ = writeln!(
+        d.s,
+        "<path d=\"M{:.1} {:.1}V{:.1}\" stroke=\"{grey}\" stroke-width=\"1.2\" stroke-dasharray=\"5 4\"/><path d=\"M{:.1} {:.1}L{:.1} {:.1}\" stroke=\"{grey}\" stroke-width=\"1.2\" stroke-dasharray=\"5 4\"/>",
+        c1.0,
+        c1.1,
+        c1.1 - 2.0 * r - 20.0,
+        c1.0,
+        c1.1,
+        c2.0,
+        c2.1
+    );
+    d.arc(
+        c1,
+        48.0,
+        0.0,
+        32.0,
+        "#000",
+        "ak",
+        "θ: the line of centres, clockwise from the vertical",
+    );
+    d.text(c1.0 + 20.0, c1.1 - 56.0, "θ", "#000", "middle", 19.0);
+    // φ1: clockwise rotation of cylinder 1
+    d.arc(
+        c1,
+        62.0,
+        200.0,
+        290.0,
+        "#000",
+        "ak",
+        "φ₁: clockwise rotation of cylinder 1",
+    );
+    d.text(c1.0 - 36.0, c1.1 + 12.0, "φ₁", "#000", "middle", 18.0);
+    // φ2 − θ: counter-clockwise rotation of cylinder 2
+    d.arc(
+        c2,
+        62.0,
+        120.0,
+        30.0,
+        "#000",
+        "ak",
+        "φ₂ − θ: counter-clockwise rotation of cylinder 2",
+    );
+    d.text(c2.0 + 10.0, c2.1 + 30.0, "φ₂ − θ", "#000", "middle", 17.0);
+    // forces, positive directions
+    let len = 75.0;
+    let fp = (c1.0, floor_y);
+    d.arrow(
+        fp,
+        (fp.0 + len, fp.1),
+        &hex(PALETTE[0]),
+        "a0",
+        "F₁ > 0: the floor pushes cylinder 1 to +x",
+        3.0,
+    );
+    d.text(
+        fp.0 + len + 6.0,
+        fp.1 - 6.0,
+        "F₁",
+        &hex(PALETTE[0]),
+        "start",
+        18.0,
+    );
+    d.arrow(
+        fp,
+        (fp.0, fp.1 - len),
+        &hex(PALETTE[1]),
+        "a1",
+        "N₁ > 0: the floor pushes cylinder 1 up",
+        3.0,
+    );
+    d.text(
+        fp.0 - 8.0,
+        fp.1 - len + 4.0,
+        "N₁",
+        &hex(PALETTE[1]),
+        "end",
+        18.0,
+    );
+    // on cylinder 2 at the contact point
+    let n = (th.sin(), -th.cos());
+    let t = (th.cos(), th.sin());
+    d.arrow(
+        p,
+        (p.0 + len * t.0, p.1 + len * t.1),
+        &hex(PALETTE[2]),
+        "a2",
+        "F₂₁ > 0: cylinder 1's tangential force on cylinder 2 along (cos θ, −sin θ)",
+        3.0,
+    );
+    d.text(
+        p.0 + len * t.0 + 6.0,
+        p.1 + len * t.1 + 16.0,
+        "F₂₁",
+        &hex(PALETTE[2]),
+        "start",
+        18.0,
+    );
+    d.arrow(
+        p,
+        (p.0 + len * n.0, p.1 + len * n.1),
+        &hex(PALETTE[3]),
+        "a3",
+        "N₁₂ > 0: cylinder 1 pushes cylinder 2 away along the line of centres",
+        3.0,
+    );
+    d.text(
+        p.0 + len * n.0 - 8.0,
+        p.1 + len * n.1 - 4.0,
+        "N₁₂",
+        &hex(PALETTE[3]),
+        "end",
+        18.0,
+    );
+    let _ = writeln!(
+        d.s,
+        "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3.5\" fill=\"#000\"/>",
+        p.0, p.1
+    );
+    // axes
+    let o = (40.0, 60.0);
+    d.arrow(o, (o.0 + 50.0, o.1), "#000", "ak", "x", 1.5);
+    d.arrow(o, (o.0, o.1 - 45.0), "#000", "ak", "y", 1.5);
+    d.text(o.0 + 56.0, o.1 + 5.0, "x", "#000", "start", 16.0);
+    d.text(o.0, o.1 - 50.0, "y", "#000", "middle", 16.0);
+    // key
+    let kx = 30.0;
+    let lines = [
+        ("Positive directions:", "#000"),
+        ("F₁, N₁: floor on cylinder 1 (x, y)", "#000"),
+        ("N₁₂, F₂₁: cylinder 1 on cylinder 2,", "#000"),
+        ("   normal and tangential", "#000"),
+        ("(on cylinder 1: equal and opposite)", "#000"),
+        ("θ: clockwise from the vertical", "#000"),
+        ("φ₁: clockwise; φ₂ − θ: anticlockwise", "#000"),
+        ("rolling: x₁ = r₁φ₁, r₂φ₂ = r₁(φ₁ − θ)", "#000"),
+    ];
+    for (i, (l, c)) in lines.iter().enumerate() {
+        let _ = writeln!(
+            d.s,
+            "<text x=\"{kx}\" y=\"{}\" font-size=\"15\" fill=\"{c}\"{}>{}</text>",
+            466.0 + 21.0 * i as f64,
+            if i == 0 { " font-weight=\"bold\"" } else { "" },
+            xml(l)
+        );
+    }
+    d.s.push_str("</svg>\n");
+    d.s
+}
+
+/// The diagram as a figure of the report (the same drawing in both layouts).
+pub fn figure() -> Figure {
+    let mut f = Figure::new(
+        "conventions.svg",
+        "Sign conventions: angles and forces in their positive directions".into(),
+        SIZE,
+        (1, 1),
+        Vec::new(),
+        0,
+    );
+    f.raw_svg = Some(svg());
+    f.csv = Some(String::new());
+    f.caption = "The two cylinders with θ, φ₁, φ₂ and the four contact forces drawn in their positive directions (x right, y up). \
+                 θ is the line of centres measured clockwise from the vertical; φ₁ is cylinder 1's clockwise rotation; φ₂ is the \
+                 paper's angle (eq. 2), so φ₂ − θ is cylinder 2's counter-clockwise rotation. F₁ and N₁ are the floor's force on \
+                 cylinder 1 (the holder's when cylinder 1 is held fixed); N₁₂ and F₂₁ are cylinder 1's force on cylinder 2, normal \
+                 (along the line of centres, positive while they press) and tangential (along (cos θ, −sin θ)). A negative value in \
+                 a plot points the other way."
+        .into();
+    f
+}
