@@ -8,6 +8,11 @@ use cylroll::model::{Contact, Floor, Model, Params, Start};
 use cylroll::oracle::Oracle;
 use cylroll::Error;
 use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
+
+/// A fixed seed: the same cases on every run (CI is reproducible); change it
+/// to explore new ones, and keep what they find as explicit regression tests.
+const SEED: u64 = 0x5eed_c71e_0001;
 use rug::{Float, Rational};
 
 fn rat(n: i64, d: i64) -> Rational {
@@ -42,7 +47,7 @@ fn num(v: &cylroll::numeric::verify::Verified) -> f64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 48, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 48, rng_seed: RngSeed::Fixed(SEED), .. ProptestConfig::default() })]
 
     #[test]
     fn invariants_of_the_motion(model in any_model()) {
@@ -139,7 +144,7 @@ fn token() -> impl Strategy<Value = String> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 64, rng_seed: RngSeed::Fixed(SEED), .. ProptestConfig::default() })]
 
     #[test]
     fn the_command_line_never_panics(
@@ -184,7 +189,7 @@ prop_compose! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 24, rng_seed: RngSeed::Fixed(SEED), .. ProptestConfig::default() })]
 
     /// Over random models with Coulomb friction: events in time order, the
     /// dissipated work never decreasing from event to event, the energy

@@ -407,7 +407,11 @@ pub fn run_with<I: Stepper>(
                 projections += 1;
             }
         }
-        let next = sample(sys, &t1, &y1)?;
+        let mut next = sample(sys, &t1, &y1)?;
+        if !sys.has_slips() {
+            // no sliding contact: the work is not integrated, it stays that of the start
+            next.work.assign(&start.work);
+        }
         let mut rates_next: Option<Vec<Float>> = None;
         let g1: Vec<Float> = events
             .iter()
@@ -419,6 +423,28 @@ pub fn run_with<I: Stepper>(
             let a = &gprev[i];
             let b = &g1[i];
             if a.is_zero() {
+                // the watch starts the step at 0 (a slip velocity at its
+                // onset): it leaves 0 with the sign of its rate (or, where
+                // that vanishes, of its value a little into the step); ending
+                // the step on the other side, it came back through 0 inside
+                if b.is_zero() {
+                    continue;
+                }
+                if let Some((smp, gx)) = left_zero(
+                    sys,
+                    gbs,
+                    (&y, &f0, &t, &step.h, step.column),
+                    &ev.watch,
+                    &cur,
+                    &mut rates_cur,
+                )? {
+                    if gx.is_sign_negative() != b.is_sign_negative() {
+                        let ends = [(&smp, &gx), (&next, b)];
+                        let (s, at, err) =
+                            locate(sys, gbs, &y, &f0, &t, &step.h, step.column, &ev.watch, ends)?;
+                        found.push((s, i, at, err));
+                    }
+                }
                 continue;
             }
             if b.is_zero() || a.is_sign_negative() != b.is_sign_negative() {
@@ -444,7 +470,10 @@ pub fn run_with<I: Stepper>(
         }
         found.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
         let mut terminal = None;
-        for (_, i, at, err) in found {
+        for (_, i, mut at, err) in found {
+            if !sys.has_slips() {
+                at.work.assign(&start.work);
+            }
             let term = events[i].terminal;
             hits.push(Hit {
                 event: i,
@@ -554,6 +583,41 @@ fn lambda_rates(sys: &mut System, s: &Sample) -> Result<Vec<Float>> {
         .zip(&am.lambda)
         .map(|(a, b)| Float::with_val(p, a - b) / &two_eps)
         .collect())
+}
+
+/// For a watch that is 0 at the step's start: a state a little into the
+/// step where it is nonzero with the sign it leaves 0 with, and its value
+/// there — at h·2^−k (k = 6, 10, 14, 18) the first point whose sign is that
+/// of the rate at the start (or, where the rate vanishes, the first nonzero
+/// value). `None` if the watch stays 0 that long.
+fn left_zero<I: Stepper>(
+    sys: &mut System,
+    gbs: &mut I,
+    (y0, f0, t, h, column): (&[Float], &[Float], &Float, &Float, usize),
+    watch: &Watch,
+    cur: &Sample,
+    cache: &mut Option<Vec<Float>>,
+) -> Result<Option<(Sample, Float)>> {
+    let p = gbs.prec();
+    let d0 = rate_cached(sys, watch, cur, cache)?;
+    for k in [6u32, 10, 14, 18] {
+        let x = Float::with_val(p, h >> k);
+        let yx = {
+            let nq = sys.nq();
+            let mut dae = Dae { sys, nq };
+            gbs.fixed_step(&mut dae, y0, f0, &x, column)?
+        };
+        let tx = Float::with_val(p, t + &x);
+        let smp = sample(sys, &tx, &yx)?;
+        let gx = watch_value(watch, &smp);
+        if gx.is_zero() {
+            continue;
+        }
+        if d0.is_zero() || gx.is_sign_negative() == d0.is_sign_negative() {
+            return Ok(Some((smp, gx)));
+        }
+    }
+    Ok(None)
 }
 
 /// dg/dt as [`rate_of`], with the multipliers' rates of the sample computed
@@ -720,15 +784,17 @@ fn locate<I: Stepper>(
     let tol = Float::with_val(p, Float::with_val(p, t + h).abs() + 1u32) * gbs.tol() / 16u32;
     // bracket [a, b] with g(a) of the sign of ga
     let neg_a = ga.is_sign_negative();
-    let mut a = Float::new(p);
+    // the bracket starts where the first end's sample is (0, or inside the
+    // step for a watch that started at 0)
+    let mut a = Float::with_val(p, &s0.t - t);
     let mut b = h.clone();
     let d0 = rate_of(sys, watch, s0)?;
     let d1 = rate_of(sys, watch, s1)?;
-    let hf = h.to_f64();
+    let hf = Float::with_val(p, &b - &a).to_f64();
     let guess = hermite_root(hf, ga.to_f64(), d0.to_f64(), gb.to_f64(), d1.to_f64());
-    let mut x = Float::with_val(p, guess);
+    let mut x = Float::with_val(p, guess) + &a;
     if !(x > a && x < b) {
-        x = Float::with_val(p, h / 2u32);
+        x = Float::with_val(p, &a + &b) / 2u32;
     }
     for _ in 0..200 {
         let (gx, smp) = eval(sys, gbs, &x)?;
