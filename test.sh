@@ -8,6 +8,12 @@
 # (default target/pytest-venv, recreated on every run).
 set -euo pipefail
 cd "$(dirname "$0")"
+# the report's browser check (tests/report_figures.rs) runs wherever Chromium is installed
+# (.ci/run installs it, and fails loudly if it cannot)
+if [ -z "${CYLROLL_BROWSER_CHECK:-}" ] &&
+  { command -v chromium || command -v chromium-browser; } >/dev/null 2>&1; then
+  export CYLROLL_BROWSER_CHECK=1
+fi
 cargo test "$@"
 
 PY="${PYTHON:-python3}"
