@@ -36,7 +36,7 @@ from ._check import CheckReport, ColumnStats, FirstFailure, check
 from ._errors import (CylrollError, InputFileError, InternalError, InvalidParameterError,
                       NotPhysicalError, VerificationError)
 from ._model import FRICTION_KEYS, MAX_DIGITS, MODEL_KEYS, Model
-from ._results import Event, Forces, Separation, Trajectory, Value
+from ._results import Enclosure, Event, Forces, Separation, Trajectory, Value
 from . import golden, testing
 
 __version__ = "0.1.0"
@@ -47,7 +47,7 @@ TRAJECTORY_COLUMNS = tuple(_cylroll.TRAJECTORY_COLUMNS)
 FRICTION_COLUMNS = tuple(_cylroll.FRICTION_COLUMNS)
 
 __all__ = [
-    "Model", "Value", "Separation", "Event", "Forces", "Trajectory",
+    "Model", "Value", "Separation", "Event", "Forces", "Trajectory", "Enclosure",
     "check", "CheckReport", "ColumnStats", "FirstFailure",
     "CylrollError", "InvalidParameterError", "NotPhysicalError", "VerificationError",
     "InputFileError", "InternalError",

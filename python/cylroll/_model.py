@@ -8,7 +8,7 @@ from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
 
 from . import _cylroll
 from ._exact import Number, _invalid, exact_text, mu_text, time_text
-from ._results import Forces, Separation, Trajectory, Value
+from ._results import Enclosure, Forces, Separation, Trajectory, Value
 
 #: The model keys, in the library's order.
 MODEL_KEYS: Tuple[str, ...] = tuple(_cylroll.MODEL_KEYS)
@@ -224,6 +224,24 @@ class Model:
         mu_t = None if mu is None else exact_text("mu", mu)
         d = _cylroll.separation(self._pairs, _digits(digits), mu_t)
         return Separation._build(self, digits, d)
+
+    def enclose(self, what: str = "separation", theta: Optional[Number] = None,
+                digits: int = 30) -> List[Enclosure]:
+        """Proved enclosures (the command line's ``--rigorous``), ideal models only.
+
+        ``what="separation"``: ``theta_s`` and, when finite and enclosed,
+        ``t_s``; ``what="time"`` with ``theta``: ``t``; ``what="forces"``
+        with ``theta``: the forces, rates and needed friction that can be
+        enclosed. Each :class:`Enclosure` holds ``[mid ± rad]`` and the digits
+        it proves (interval arithmetic with directed rounding; see the README,
+        "Guarantees"). A quantity that cannot be enclosed is left out.
+
+        Raises :class:`InvalidParameterError` with friction, or for ``what``
+        other than these.
+        """
+        th = None if theta is None else time_text("theta", theta)
+        rows = _cylroll.enclose(self._pairs, _digits(digits), what, th)
+        return [Enclosure(*r) for r in rows]
 
     def time(self, theta: Number, digits: int = 30) -> Value:
         """t(θ): the time from the start until θ first reaches ``theta``

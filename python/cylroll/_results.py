@@ -4,8 +4,8 @@ forces at an angle, and trajectory tables."""
 from __future__ import annotations
 
 from decimal import Decimal
-from typing import (TYPE_CHECKING, Any, Dict, Iterator, List, Mapping, Optional, Sequence,
-                    Tuple)
+from typing import (TYPE_CHECKING, Any, Dict, Iterator, List, Mapping, NamedTuple, Optional,
+                    Sequence, Tuple)
 
 import numpy as np
 
@@ -384,3 +384,34 @@ class Trajectory:
         return "\n".join(lines)
 
     __repr__ = __str__
+
+
+class Enclosure(NamedTuple):
+    """A proved enclosure (:meth:`Model.enclose`): the true value lies in
+    ``[mid − rad, mid + rad]`` (decimal strings, ``rad`` rounded up), and
+    ``text`` holds the ``digits`` significant digits every point of it
+    shares."""
+
+    #: quantity name (``theta_s``, ``t_s``, ``t``, ``F1``, …)
+    name: str
+    #: the proved digits
+    text: str
+    #: how many significant digits are proved
+    digits: int
+    #: the midpoint, as a decimal string
+    mid: str
+    #: the radius, as a decimal string (rounded up)
+    rad: str
+
+    def interval(self) -> Tuple[Decimal, Decimal]:
+        """``(mid − rad, mid + rad)`` as exact ``decimal.Decimal`` ends."""
+        from decimal import localcontext
+
+        with localcontext() as ctx:
+            ctx.prec = len(self.mid) + 40
+            m, r = Decimal(self.mid), Decimal(self.rad)
+            return (m - r, m + r)
+
+    def __contains__(self, x: object) -> bool:
+        lo, hi = self.interval()
+        return lo <= Decimal(str(x)) <= hi

@@ -451,6 +451,71 @@ fn trajectory(py: Python<'_>, pairs: Pairs, digits: u32, times: Vec<String>) -> 
     })
 }
 
+/// An enclosure as the Python side takes it: (name, proved text, proved
+/// digits, mid, rad), the printed [mid ± rad] containing the enclosure.
+type Enclosure = (String, String, u32, String, String);
+
+/// `enclose`: proved enclosures (`--rigorous`) of the ideal models'
+/// `separation` (θs, t_s), `time` (t) or `forces` at `theta`; a quantity that
+/// cannot be enclosed is left out (its verified value is elsewhere).
+#[pyfunction]
+#[pyo3(signature = (pairs, digits, what, theta=None))]
+fn enclose(
+    py: Python<'_>,
+    pairs: Pairs,
+    digits: u32,
+    what: String,
+    theta: Option<String>,
+) -> PyResult<Vec<Enclosure>> {
+    detached(py, move || {
+        let (model, fr) = spec(&pairs)?;
+        if fr.is_some() {
+            return Err(cylroll::oracle::rigorous::unsupported("with friction"));
+        }
+        let mut o = Oracle::new(&model, digits)?;
+        let th = theta.map(|t| parse_angle("theta", &t)).transpose()?;
+        let p0 = cylroll::numeric::bits_for_digits(digits) + 32;
+        let mut out = Vec::new();
+        for p in [p0, 2 * p0] {
+            let proved: Vec<cylroll::oracle::rigorous::Proved> = match (what.as_str(), &th) {
+                ("separation", None) => {
+                    let (a, b) = o.rigorous_separation(p)?;
+                    std::iter::once(a).chain(b.ok()).collect()
+                }
+                ("time", Some(t)) => vec![o.rigorous_time(t, p)?],
+                ("forces", Some(t)) => o.rigorous_forces(t, p)?.into_iter().flatten().collect(),
+                _ => {
+                    return Err(Error::invalid(
+                        "what",
+                        &what,
+                        "expected separation (no theta), or time or forces with theta",
+                    ))
+                }
+            };
+            let short = proved
+                .iter()
+                .any(|v| v.shown.digits < digits && v.shown.text != "0");
+            out = proved
+                .iter()
+                .map(|v| {
+                    let (mid, rad) = v.texts(digits);
+                    (
+                        v.name.clone(),
+                        v.shown.text.clone(),
+                        v.shown.digits,
+                        mid,
+                        rad,
+                    )
+                })
+                .collect();
+            if !short {
+                break;
+            }
+        }
+        Ok(out)
+    })
+}
+
 /// The one call into the library's candidate judge (`cylroll check`).
 fn run_check(
     csv: &str,
@@ -554,5 +619,6 @@ fn _cylroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(forces, m)?)?;
     m.add_function(wrap_pyfunction!(trajectory, m)?)?;
     m.add_function(wrap_pyfunction!(check, m)?)?;
+    m.add_function(wrap_pyfunction!(enclose, m)?)?;
     Ok(())
 }

@@ -237,3 +237,31 @@ def test_at_separation_the_contact_friction_is_only_bounded_below():
     # an ordinary value is not
     assert not f["N1"].is_lower_bound and f["N1"].lower_bound is None
     assert abs(float(f["N1"]) - 7 / 6) < 1e-11
+
+
+def test_enclosures_contain_the_closed_forms_and_the_verified_values():
+    # theta_s = pi/3 for identical solid cylinders from the top: proved
+    (th,) = cylroll.Model().enclose("separation", digits=40)
+    assert th.name == "theta_s" and th.digits == 40
+    with localcontext() as ctx:
+        ctx.prec = 80
+        assert pi(80) / 3 in th
+    # fixed lower cylinder: cos theta_s = 2/(3 + k2)
+    (th,) = cylroll.Model(floor="fixed", k2="2/5").enclose("separation", digits=30)
+    lo, hi = th.interval()
+    with localcontext() as ctx:
+        ctx.prec = 60
+        # cos decreases on [0, pi]: theta_s in [lo, hi] <=> cos(hi) <= 10/17 <= cos(lo)
+        assert cos(hi, 60) <= Decimal(10) / 17 <= cos(lo, 60)
+    # t and the forces at an angle contain the values verified at more digits
+    m = cylroll.Model(theta0="1/10")
+    (t,) = m.enclose("time", theta="9/10", digits=25)
+    assert t.digits == 25 and m.time("9/10", digits=50).text in t
+    f = m.forces("1/2", digits=50)
+    for e in m.enclose("forces", theta="1/2", digits=25):
+        assert f[e.name].text in e, e.name
+    # with friction nothing is enclosed: refused, not approximated
+    with pytest.raises(cylroll.InvalidParameterError, match="rigorous"):
+        cylroll.Model(theta0="1/10", mu_contact="0.3").enclose("separation")
+    with pytest.raises(cylroll.InvalidParameterError):
+        m.enclose("time")
