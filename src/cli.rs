@@ -268,18 +268,9 @@ impl Common {
     /// The model and its friction laws. With only ideal laws (`inf`, `0`)
     /// the model is the equal ideal one and the friction `None`.
     pub fn model_friction(&self) -> Result<(Model, Option<Friction>)> {
-        let vals = self.pairs()?;
-        let model = input::model_from_pairs(&vals)?;
-        let fr = input::friction_for(&vals, &model)?;
-        // the laws must fit the model; a start at the top is the ideal
-        // models' limit θ0 → 0+ and is judged by the command that runs
-        cylroll::friction::check_laws(&model, &fr)?;
-        let eff = cylroll::friction::effective_model(&model, &fr)?;
-        if fr.floor.is_coulomb() || fr.contact.is_coulomb() {
-            Ok((eff, Some(fr)))
-        } else {
-            Ok((eff, None))
-        }
+        // a start at the top is the ideal models' limit θ0 → 0+ and is
+        // judged by the command that runs
+        input::model_and_friction(&self.pairs()?)
     }
 }
 

@@ -85,6 +85,23 @@ pub fn friction_for(vals: &Pairs, model: &Model) -> Result<crate::friction::Fric
 /// are ignored there.
 pub const CASE_KEYS: [&str; 2] = ["description", "steps"];
 
+/// The model and its friction laws from key/value pairs, as every entry
+/// point builds them (flags, `--params`, golden cases, the Python package):
+/// the laws checked against the model, the model made the equal ideal one
+/// where a law is an ideal limit, and the friction `None` when no contact has
+/// a finite coefficient.
+///
+/// Errors: as [`model_from_pairs`], [`friction_for`] and
+/// [`crate::friction::check_laws`].
+pub fn model_and_friction(vals: &Pairs) -> Result<(Model, Option<crate::friction::Friction>)> {
+    let model = model_from_pairs(vals)?;
+    let fr = friction_for(vals, &model)?;
+    crate::friction::check_laws(&model, &fr)?;
+    let eff = crate::friction::effective_model(&model, &fr)?;
+    let coulomb = fr.floor.is_coulomb() || fr.contact.is_coulomb();
+    Ok((eff, coulomb.then_some(fr)))
+}
+
 /// Key → exact text.
 pub type Pairs = BTreeMap<String, String>;
 

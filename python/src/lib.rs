@@ -207,15 +207,7 @@ fn spec(vals: &Pairs) -> cylroll::Result<(Model, Option<Friction>)> {
             ));
         }
     }
-    let model = input::model_from_pairs(vals)?;
-    let fr = input::friction_for(vals, &model)?;
-    friction::check_laws(&model, &fr)?;
-    let eff = friction::effective_model(&model, &fr)?;
-    if fr.floor.is_coulomb() || fr.contact.is_coulomb() {
-        Ok((eff, Some(fr)))
-    } else {
-        Ok((eff, None))
-    }
+    input::model_and_friction(vals)
 }
 
 /// Validates a model; returns its exact echo (key, text) in the library's
@@ -271,7 +263,7 @@ fn golden_case(py: Python<'_>, name: &str) -> PyResult<(String, Pairs, String, u
     })
 }
 
-/// The parts of a case file (as `cylroll::record::load_case` reads them).
+/// The parts of a case file, as the library reads them.
 fn case_parts(name: &str, text: &str) -> cylroll::Result<(Pairs, String, u32)> {
     let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
         Error::invalid(
@@ -280,23 +272,7 @@ fn case_parts(name: &str, text: &str) -> cylroll::Result<(Pairs, String, u32)> {
             format!("not valid TOML: {}", e.message().trim()),
         )
     })?;
-    let pairs = input::pairs_from_toml(&table, "case", &["description", "steps"])?;
-    let description = match table.get("description") {
-        Some(toml::Value::String(s)) => s.clone(),
-        _ => String::new(),
-    };
-    let steps = match table.get("steps") {
-        None => 40,
-        Some(toml::Value::Integer(n)) if (1..=10_000).contains(n) => *n as u32,
-        Some(v) => {
-            return Err(Error::invalid(
-                "steps",
-                v,
-                "must be an integer between 1 and 10000",
-            ))
-        }
-    };
-    Ok((pairs, description, steps))
+    cylroll::record::case_parts(&table)
 }
 
 fn parse_angle(name: &str, text: &str) -> cylroll::Result<Exact> {

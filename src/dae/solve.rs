@@ -585,6 +585,25 @@ fn lambda_rates(sys: &mut System, s: &Sample) -> Result<Vec<Float>> {
         .collect())
 }
 
+/// The watched function and the state at t + x, re-integrated from the
+/// step's start (y0, f0 at t) with one step of size x at `column`.
+fn watch_after<I: Stepper>(
+    sys: &mut System,
+    gbs: &mut I,
+    (y0, f0, t, column): (&[Float], &[Float], &Float, usize),
+    x: &Float,
+    watch: &Watch,
+) -> Result<(Float, Sample)> {
+    let y = {
+        let nq = sys.nq();
+        let mut dae = Dae { sys, nq };
+        gbs.fixed_step(&mut dae, y0, f0, x, column)?
+    };
+    let tx = Float::with_val(gbs.prec(), t + x);
+    let smp = sample(sys, &tx, &y)?;
+    Ok((watch_value(watch, &smp), smp))
+}
+
 /// For a watch that is 0 at the step's start: a state a little into the
 /// step where it is nonzero with the sign it leaves 0 with, and its value
 /// there — at h·2^−k (k = 6, 10, 14, 18) the first point whose sign is that
@@ -602,14 +621,7 @@ fn left_zero<I: Stepper>(
     let d0 = rate_cached(sys, watch, cur, cache)?;
     for k in [6u32, 10, 14, 18] {
         let x = Float::with_val(p, h >> k);
-        let yx = {
-            let nq = sys.nq();
-            let mut dae = Dae { sys, nq };
-            gbs.fixed_step(&mut dae, y0, f0, &x, column)?
-        };
-        let tx = Float::with_val(p, t + &x);
-        let smp = sample(sys, &tx, &yx)?;
-        let gx = watch_value(watch, &smp);
+        let (gx, smp) = watch_after(sys, gbs, (y0, f0, t, column), &x, watch)?;
         if gx.is_zero() {
             continue;
         }
@@ -707,14 +719,7 @@ fn dip<I: Stepper>(
     }
     let p = gbs.prec();
     let x = Float::with_val(p, xm);
-    let yx = {
-        let nq = sys.nq();
-        let mut dae = Dae { sys, nq };
-        gbs.fixed_step(&mut dae, y0, f0, &x, column)?
-    };
-    let tx = Float::with_val(p, t + &x);
-    let smp = sample(sys, &tx, &yx)?;
-    let gx = watch_value(watch, &smp);
+    let (gx, smp) = watch_after(sys, gbs, (y0, f0, t, column), &x, watch)?;
     if !gx.is_zero() && gx.is_sign_negative() != pos {
         return Ok(None);
     }
@@ -769,15 +774,8 @@ fn locate<I: Stepper>(
     ends: [(&Sample, &Float); 2],
 ) -> Result<(Float, Sample, Float)> {
     let p = gbs.prec();
-    let nq = sys.nq();
     let eval = |sys: &mut System, gbs: &mut I, s: &Float| -> Result<(Float, Sample)> {
-        let y = {
-            let mut dae = Dae { sys, nq };
-            gbs.fixed_step(&mut dae, y0, f0, s, column)?
-        };
-        let ts = Float::with_val(p, t + s);
-        let smp = sample(sys, &ts, &y)?;
-        Ok((watch_value(watch, &smp), smp))
+        watch_after(sys, gbs, (y0, f0, t, column), s, watch)
     };
     let (s0, ga) = ends[0];
     let (s1, gb) = ends[1];

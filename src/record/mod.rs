@@ -11,7 +11,7 @@ pub mod fileset;
 use crate::error::{Error, Result};
 use crate::exact::{rational_text, Exact};
 use crate::friction::Friction;
-use crate::input::{model_from_pairs, pairs_from_toml, read_toml};
+use crate::input::{pairs_from_toml, read_toml};
 use crate::model::Model;
 use crate::numeric::verify::Verified;
 use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
@@ -42,16 +42,12 @@ pub struct Case {
     pub steps: u32,
 }
 
-/// Reads one case file: `description`, `steps` (optional, default 40) and the
-/// model keys of `--params`.
-pub fn load_case(path: &Path) -> Result<Case> {
-    let table = read_toml(path, "case")?;
-    let pairs = pairs_from_toml(&table, "case", &crate::input::CASE_KEYS)?;
-    let model = model_from_pairs(&pairs)?;
-    let fr = crate::input::friction_for(&pairs, &model)?;
-    crate::friction::check_laws(&model, &fr)?;
-    let model = crate::friction::effective_model(&model, &fr)?;
-    let friction = (fr.floor.is_coulomb() || fr.contact.is_coulomb()).then_some(fr);
+/// The parts of a case file's table: its model keys, `description` and
+/// `steps` (optional, default 40).
+///
+/// Errors: an unknown key or a value out of range.
+pub fn case_parts(table: &toml::Table) -> Result<(crate::input::Pairs, String, u32)> {
+    let pairs = pairs_from_toml(table, "case", &crate::input::CASE_KEYS)?;
     let description = match table.get("description") {
         Some(toml::Value::String(s)) => s.clone(),
         _ => String::new(),
@@ -67,6 +63,15 @@ pub fn load_case(path: &Path) -> Result<Case> {
             ))
         }
     };
+    Ok((pairs, description, steps))
+}
+
+/// Reads one case file: `description`, `steps` (optional, default 40) and the
+/// model keys of `--params`.
+pub fn load_case(path: &Path) -> Result<Case> {
+    let table = read_toml(path, "case")?;
+    let (pairs, description, steps) = case_parts(&table)?;
+    let (model, friction) = crate::input::model_and_friction(&pairs)?;
     let name = path
         .file_stem()
         .and_then(|s| s.to_str())
