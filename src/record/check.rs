@@ -327,10 +327,7 @@ pub fn check_reader<R: BufRead>(
         })
         .collect();
     let mut first = None;
-    let mut oracle = match &case.friction {
-        Some(_) => None,
-        None => Some(Oracle::new(&case.model, digits)?),
-    };
+    let mut oracle: Option<Oracle> = None;
     let mut rows = 0usize;
     let mut chunk: Vec<(Exact, Vec<Cell>)> = Vec::with_capacity(CHUNK_ROWS);
     loop {
@@ -355,12 +352,18 @@ pub fn check_reader<R: BufRead>(
         }
         if chunk.len() == CHUNK_ROWS || (done && !chunk.is_empty()) {
             let times: Vec<Exact> = chunk.iter().map(|d| d.0.clone()).collect();
-            let orows = match (&case.friction, oracle.as_mut()) {
-                (Some(fr), _) => {
+            let orows = match &case.friction {
+                Some(fr) => {
                     crate::friction::answer::trajectory(&case.model, fr, digits, &times)?.rows
                 }
-                (None, Some(o)) => o.trajectory(&times)?,
-                (None, None) => unreachable!("an ideal case has an oracle"),
+                None => {
+                    // one oracle for every chunk (it keeps its per-precision constants)
+                    let o = match &mut oracle {
+                        Some(o) => o,
+                        None => oracle.insert(Oracle::new(&case.model, digits)?),
+                    };
+                    o.trajectory(&times)?
+                }
             };
             let row0 = rows - chunk.len();
             for (r, ((t, vals), orow)) in chunk.iter().zip(&orows).enumerate() {
