@@ -454,6 +454,11 @@ impl HalfAngleTime {
         self.h0_zero
     }
 
+    /// cos(θ0/2).
+    pub fn cos_half0(&self) -> &Float {
+        &self.c0h
+    }
+
     /// σ = sin(θ/2) − sin(θ0/2) = 2 cos(θ0/2 + δ/4) sin(δ/4) for θ = θ0 + δ
     /// (no cancellation for small δ).
     pub fn sigma_of(&self, delta: &Float) -> Float {
@@ -598,6 +603,28 @@ impl HalfAngleTime {
         *out *= cos;
         if !self.h0_zero {
             *out *= sin;
+        }
+    }
+
+    /// The integrand in v = √σ (σ = v², dσ = 2v dv): writes
+    /// 2√(K / ((1 − s²)(σ + 2s0))) from rest (the 1/√σ of the start cancels
+    /// against 2v), 2v√(K / ((1 − s²) H')) otherwise, s = s0 + v²; the time
+    /// is [`HalfAngleTime::factor`] times its integral over [0, √Δσ]. Both
+    /// are analytic on the interval. No allocation.
+    pub fn eval_v(&mut self, v: &Float, out: &mut Float) {
+        let [s, a, b] = &mut self.w;
+        a.assign(v.square_ref());
+        s.assign(&self.s0 + &*a);
+        // H' = σ (s + s0) + h0', or s + s0 = σ + 2 s0 from rest (÷ σ)
+        b.assign(&*s + &self.s0);
+        if !self.h0_zero {
+            *b *= &*a;
+            *b += &self.h0r;
+        }
+        sqrt_k_over(&self.q, self.q1_zero, self.q2_zero, [s, a, b], out);
+        *out <<= 1;
+        if !self.h0_zero {
+            *out *= v;
         }
     }
 

@@ -5,6 +5,7 @@ use crate::error::Result;
 use crate::mechanics::dynamics::{Dyn, HalfAngleTime, Scratch, TinyStart};
 use crate::mechanics::{Reduced, PHI1};
 use crate::model::Model;
+use crate::numeric::cheb::{self, ChebFit, Roots};
 use crate::numeric::gauss::{self, GaussLegendre, HalfPiRule};
 use crate::numeric::quad::{QuadResult, Stop, TanhSinh};
 use crate::numeric::root;
@@ -30,7 +31,21 @@ pub(super) struct Engine {
     /// Multiplications spent on tanh-sinh integrals that a Gauss–Legendre
     /// rule could have done (decides when building a rule pays off).
     ts_work: f64,
+    /// Whether t(θ) is integrated by Chebyshev interpolation
+    /// ([`Engine::time_cheb`]); by default from [`CHEB_MIN_BITS`] on.
+    pub use_cheb: bool,
+    /// Chebyshev point tables built so far, by number of points.
+    roots: HashMap<usize, Roots>,
 }
+
+/// From this working precision on (about 70 digits), t(θ) is integrated by
+/// Chebyshev interpolation of the half-angle integrand in v = √σ
+/// ([`Engine::time_cheb`]): N ≈ bits/log2 ρ points, built without a
+/// transcendental each, against ~2.4 times as many tanh-sinh nodes costing an
+/// `exp` each. Below it tanh-sinh stays (its warm node caches are cheapest
+/// there, and the golden data, at 30 digits, keep the rules they were
+/// recorded with).
+pub const CHEB_MIN_BITS: u32 = 256;
 
 /// The largest Gauss–Legendre rule considered, per bit of precision.
 const GL_MAX_POINTS_PER_BIT: usize = 2;
@@ -44,6 +59,8 @@ pub enum Rule {
     TanhSinh,
     /// Gauss–Legendre on the half-angle form.
     GaussLegendre,
+    /// Chebyshev interpolation of the half-angle form in v = √σ.
+    Chebyshev,
 }
 
 impl Engine {
@@ -61,6 +78,8 @@ impl Engine {
             gl: HashMap::new(),
             tiny: None,
             ts_work: 0.0,
+            use_cheb: prec >= CHEB_MIN_BITS,
+            roots: HashMap::new(),
         })
     }
 
@@ -76,6 +95,12 @@ impl Engine {
         }
         if let Some(r) = self.time_tiny(delta) {
             return r;
+        }
+        if self.use_cheb && *delta <= self.half_limit {
+            let sigma = self.half.sigma_of(delta);
+            if let Some(r) = self.time_cheb(&sigma) {
+                return r;
+            }
         }
         let d = Float::with_val(p, delta);
         let dynm = &self.dynm;
@@ -111,6 +136,11 @@ impl Engine {
             return (v, e, Rule::TanhSinh);
         }
         let sigma = self.half.sigma_of(delta);
+        if self.use_cheb {
+            if let Some((v, e)) = self.time_cheb(&sigma) {
+                return (v, e, Rule::Chebyshev);
+            }
+        }
         if high {
             let rho = gauss::rho_sin2(&self.half.singular_sin2(&sigma));
             let max_n = GL_MAX_POINTS_PER_BIT * p as usize;
@@ -179,6 +209,140 @@ impl Engine {
     /// (see [`HalfAngleTime::singular_sin2`]).
     pub fn half_singular_sin2(&self, dsig: &Float) -> Vec<gauss::C64> {
         self.half.singular_sin2(dsig)
+    }
+
+    /// The half-angle integrand's Chebyshev interpolant over v ∈ [0, √Δσ]
+    /// (σ = v²: the start's 1/√σ is gone, the integrand is analytic on the
+    /// interval), with N from the Bernstein ρ of its nearest singularity
+    /// ([`HalfAngleTime::singular_sin2`], mapped by v = ±√σ) so that the
+    /// coefficients fall ~20 bits below the working precision; `None` when
+    /// the singularity is so close that N would pass 2p + 64 (a start very
+    /// near the top: tanh-sinh then) or the tail does not fall.
+    pub fn cheb_fit(&mut self, dsig: &Float) -> Option<ChebFit> {
+        let p = self.prec();
+        let sing = self.half.singular_sin2(dsig);
+        let rho = sing
+            .iter()
+            .flat_map(|z| {
+                let r = z.sqrt();
+                [r, gauss::C64::new(-r.re, -r.im)]
+            })
+            .map(|y| gauss::bernstein_rho(0.0, 1.0, y))
+            .fold(f64::INFINITY, f64::min)
+            .min(64.0);
+        if rho.is_nan() || rho <= 1.02 {
+            return None;
+        }
+        let vmax = Float::with_val(p, dsig.sqrt_ref());
+        let zero = Float::new(p);
+        let mut need = ((p as f64 + 20.0) / rho.log2()).ceil() as usize + 12;
+        for _ in 0..3 {
+            if need > 2 * p as usize + 64 {
+                return None;
+            }
+            let n = cheb::smooth_at_least(need);
+            let roots = self.roots.entry(n).or_insert_with(|| Roots::new(n, p));
+            let half = &mut self.half;
+            let fit = ChebFit::new(&zero, &vmax, roots, p, |v, out| half.eval_v(v, out));
+            // the tail must sit below the working precision
+            let tail = fit.tail();
+            if tail <= Float::with_val(p, &fit.fmax >> (p as i32 - 4)) {
+                return Some(fit);
+            }
+            need = need * 3 / 2;
+        }
+        None
+    }
+
+    /// t(Δσ) by Chebyshev interpolation ([`Engine::cheb_fit`]), with its
+    /// error estimate: the interpolant's uniform error (twice the neglected
+    /// coefficients, bounded by the last ones, [`ChebFit::tail`]) times the
+    /// interval, plus the transform's rounding (a few units per level of the
+    /// FFT, relative to max |f|).
+    pub fn time_cheb(&mut self, dsig: &Float) -> Option<(Float, Float)> {
+        let fit = self.cheb_fit(dsig)?;
+        Some(self.cheb_answer(&fit, fit.integral()))
+    }
+
+    /// θ(t) for every t in [0, t(δ_end)] from one Chebyshev interpolant of
+    /// the half-angle integrand over v ∈ [0, √Δσ(δ_end)] ([`Engine::cheb_fit`])
+    /// and its antiderivative: `None` where [`Engine::cheb_fit`] declines or
+    /// δ_end is beyond the half-angle form's range.
+    pub fn inverse(&mut self, delta_end: &Float) -> Option<Inverse> {
+        if *delta_end > self.half_limit || delta_end.is_zero() {
+            return None;
+        }
+        let p = self.prec();
+        let dsig = self.half.sigma_of(delta_end);
+        let f = self.cheb_fit(&dsig)?;
+        let prim = f.antiderivative();
+        // the antiderivative's uniform error: ∫|f − p| ≤ (v − a)·‖f − p‖, plus
+        // the roundings of the transform and of Clenshaw's recurrence
+        let n = f.c.len() as f64;
+        let len = Float::with_val(p, &f.b - &f.a);
+        let mut err_tau = Float::with_val(p, f.tail() * 4u32);
+        err_tau += Float::with_val(p, &f.fmax * (16.0 + 4.0 * n.log2())) >> (p as i32);
+        err_tau *= &len;
+        let mut abs_sum = Float::new(p);
+        for c in &prim.c {
+            abs_sum += Float::with_val(p, c.abs_ref());
+        }
+        err_tau += Float::with_val(p, abs_sum * (4.0 * n)) >> (p as i32);
+        // the Newton steps' precisions, halving down from p/2 + 32 to ≥ 96
+        // (each step doubles the correct bits from the f64 seed's ~50)
+        let mut qs = Vec::new();
+        let mut q = p / 2 + 32;
+        while q < p && q >= 96 {
+            qs.push(q);
+            q = q / 2 + 32;
+        }
+        qs.push(96.min(p));
+        qs.dedup();
+        let lower = qs
+            .into_iter()
+            .rev()
+            .map(|q| (q, prim.rounded(q), f.rounded(q / 2 + 32)))
+            .collect();
+        // |f'/2f| over the interval (for the last Newton step's quadratic
+        // error), from the f64 copies at 256 points, ×4
+        let cf: Vec<f64> = f.c.iter().map(|c| c.to_f64()).collect();
+        let dc = derivative64(&cf);
+        let mut kappa = 0.0f64;
+        for i in 0..=256 {
+            let x = -1.0 + i as f64 / 128.0;
+            let k = (clenshaw64(&dc, x) / (2.0 * clenshaw64(&cf, x))).abs();
+            kappa = kappa.max(k);
+        }
+        let kappa = 4.0 * kappa * 2.0 / len.to_f64();
+        let seed = (prim.c.iter().map(|c| c.to_f64()).collect(), cf);
+        Some(Inverse {
+            s0: self.half.s0.clone(),
+            c0h: Float::with_val(p, self.half.cos_half0()),
+            factor: self.half.factor.clone(),
+            f,
+            prim,
+            lower,
+            seed,
+            err_tau,
+            kappa,
+        })
+    }
+
+    /// The value `integral` of `fit` as a time, with the error of
+    /// [`Engine::time_cheb`].
+    pub fn cheb_answer(&self, fit: &ChebFit, integral: Float) -> (Float, Float) {
+        let p = self.prec();
+        let len = Float::with_val(p, &fit.b - &fit.a);
+        let n = fit.c.len() as f64;
+        let mut e = Float::with_val(p, fit.tail() * 4u32);
+        let rounding = Float::with_val(p, &fit.fmax * (16.0 + 4.0 * n.log2())) >> (p as i32);
+        e += rounding;
+        e *= &len;
+        let v = Float::with_val(p, integral * &self.half.factor);
+        e *= &self.half.factor;
+        let ulps = Float::with_val(p, v.abs_ref()) >> (p as i32 - 4);
+        e += ulps;
+        (v, e)
     }
 
     /// Gauss–Legendre with `n` points on the half-angle form in u.
@@ -266,6 +430,122 @@ impl Engine {
     }
 }
 
+/// θ as a function of t by Newton's method on the Chebyshev antiderivative
+/// T(v) of the half-angle integrand (t = F·T(v), σ = v², s = sin(θ/2) = s0 +
+/// σ), built by [`Engine::inverse`]. One inversion costs about three
+/// Clenshaw evaluations of N terms at the working precision (the first Newton
+/// steps at lower precisions, each doubling the correct bits from an `f64`
+/// seed), against a Taylor run whose cost grows like the cube of the
+/// precision: the trajectory's route at high precision.
+pub struct Inverse {
+    s0: Float,
+    c0h: Float,
+    factor: Float,
+    f: ChebFit,
+    prim: ChebFit,
+    /// (precision, T's and f's coefficients rounded to it) for the first steps.
+    lower: Vec<(u32, ChebFit, ChebFit)>,
+    /// T's and f's coefficients as `f64`, for the seed.
+    seed: (Vec<f64>, Vec<f64>),
+    /// Bound on |T − T_true| over the interval (estimated, see
+    /// [`Engine::inverse`]).
+    err_tau: Float,
+    /// max |f'/(2f)| over the interval (in v), ×4: Newton's step from an
+    /// error e leaves κ e².
+    kappa: f64,
+}
+
+/// The Chebyshev coefficients of the derivative (in x) of the series `c`.
+fn derivative64(c: &[f64]) -> Vec<f64> {
+    let n = c.len();
+    let mut d = vec![0.0; n.max(1)];
+    // d_{k−1} = d_{k+1} + 2k c_k, d_0 halved
+    for k in (1..n).rev() {
+        let next = if k + 1 < n { d[k + 1] } else { 0.0 };
+        d[k - 1] = next + 2.0 * k as f64 * c[k];
+    }
+    d[0] /= 2.0;
+    d
+}
+
+fn clenshaw64(c: &[f64], x: f64) -> f64 {
+    let (mut b1, mut b2) = (0.0, 0.0);
+    for ck in c.iter().skip(1).rev() {
+        let b = ck + 2.0 * x * b1 - b2;
+        b2 = b1;
+        b1 = b;
+    }
+    c[0] + x * b1 - b2
+}
+
+impl Inverse {
+    /// δ = θ − θ0 at time `t` (0 ≤ t ≤ t(δ_end)) and its error bound, at
+    /// the working precision.
+    pub fn delta_at(&self, t: &Float) -> (Float, Float) {
+        let p = self.f.prec();
+        let tau = Float::with_val(p, t / &self.factor);
+        if tau.is_zero() {
+            return (Float::new(p), Float::new(p));
+        }
+        // the seed: T is increasing on [0, V] (f > 0): Newton in x ∈ [−1, 1]
+        // safeguarded by bisection, in f64
+        let v_max = self.f.b.to_f64();
+        let tau64 = tau.to_f64();
+        let (cp, cf) = (&self.seed.0, &self.seed.1);
+        let (mut lo, mut hi) = (-1.0f64, 1.0f64);
+        let mut x = 2.0 * tau64 / clenshaw64(cp, 1.0) - 1.0;
+        for _ in 0..200 {
+            let r = clenshaw64(cp, x) - tau64;
+            if r > 0.0 {
+                hi = x;
+            } else {
+                lo = x;
+            }
+            let d = clenshaw64(cf, x) * v_max / 2.0;
+            let mut nx = x - r / d;
+            if !(nx > lo && nx < hi) {
+                nx = 0.5 * (lo + hi);
+            }
+            if (nx - x).abs() <= 1e-15 * (1.0 + x.abs()) {
+                x = nx;
+                break;
+            }
+            x = nx;
+        }
+        let mut v = Float::with_val(p, (x + 1.0) * v_max / 2.0);
+        // Newton steps, each doubling the correct bits
+        for (q, prim, f) in &self.lower {
+            let vq = Float::with_val(*q, &v);
+            let r = Float::with_val(*q, prim.eval(&vq, *q) - &tau);
+            let d = f.eval(&vq, f.prec());
+            v -= Float::with_val(*q, r / d);
+        }
+        let half = p / 2 + 32;
+        let fh = self.f.eval(&Float::with_val(half, &v), half);
+        let r = Float::with_val(p, self.prim.eval(&v, p) - &tau);
+        let step = Float::with_val(p, &r / &fh);
+        v -= &step;
+        // the last step leaves κ·step² of Newton's error, and T's own error
+        // moves the root by err_T/f
+        let mut err_v = Float::with_val(p, &self.err_tau / &fh);
+        err_v += Float::with_val(p, step.square_ref()) * self.kappa.max(1.0);
+        err_v += Float::with_val(p, &err_v >> 8);
+        err_v += Float::with_val(p, v.abs_ref()) >> (p as i32 - 2);
+        // δ = 2 asin(s c0 − s0 c), s c0 − s0 c = σ(σ + 2s0)/(s c0 + s0 c)
+        let sigma = Float::with_val(p, v.square_ref());
+        let s = Float::with_val(p, &self.s0 + &sigma);
+        let c = Float::with_val(p, 1u32 - Float::with_val(p, s.square_ref())).sqrt();
+        let num = Float::with_val(p, &sigma + Float::with_val(p, &self.s0 * 2u32)) * &sigma;
+        let den = Float::with_val(p, &s * &self.c0h) + Float::with_val(p, &self.s0 * &c);
+        let delta = Float::with_val(p, num / den).asin() * 2u32;
+        // dδ/dv = (dδ/dσ)(2v) = 4v/cos(θ/2), cos(θ/2) = c
+        let mut err = Float::with_val(p, &err_v * &v) * 4u32;
+        err /= &c;
+        err += Float::with_val(p, delta.abs_ref()) >> (p as i32 - 6);
+        (delta, err)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -281,6 +561,7 @@ mod tests {
         let reference = Float::with_val(800, Float::parse(T1).unwrap());
         for p in [128u32, 400, 600] {
             let mut e = Engine::new(&m, &red, p).unwrap();
+            e.use_cheb = false;
             let d = Float::with_val(p, 8u32) / 10u32;
             let (v_ts, e_ts, r_ts) = e.time_fast(&d, true, false);
             assert_eq!(r_ts, Rule::TanhSinh);
@@ -301,6 +582,63 @@ mod tests {
             let (v_th, _) = e.time(&d);
             let diff = Float::with_val(p, &v_th - &v_ts).abs();
             assert!(diff < Float::with_val(p, 1u32) >> (p as i32 - 12), "{p}");
+        }
+    }
+
+    /// The Chebyshev route against Arb's T1 and against tanh-sinh on every
+    /// contact variant, from rest and from a moving start (θ̇0 ≠ 0, where the
+    /// integrand in v carries the factor v), at several precisions: the
+    /// estimate covers the true error and is near the working precision.
+    #[test]
+    fn chebyshev_route_agrees_with_arb_and_tanh_sinh() {
+        let reference = Float::with_val(800, Float::parse(T1).unwrap());
+        let m = Model::paper_default(Exact::parse("t", "1/10", false).unwrap());
+        let red = Reduced::new(&m).unwrap();
+        for p in [256u32, 400, 700] {
+            let mut e = Engine::new(&m, &red, p).unwrap();
+            let d = Float::with_val(p, 8u32) / 10u32;
+            let (v, err, rule) = e.time_fast(&d, false, false);
+            assert_eq!(rule, Rule::Chebyshev);
+            let true_err = Float::with_val(p, &v - &reference).abs();
+            assert!(true_err <= err, "{p}: true {true_err:e} > estimate {err:e}");
+            assert!(
+                err < Float::with_val(p, 1u32) >> (p as i32 - 12),
+                "{p}: {err:e}"
+            );
+        }
+        use crate::model::{Contact, Floor, Params, Start};
+        let q = |s: &str| Exact::parse("x", s, false).unwrap();
+        for (floor, contact) in [
+            (Floor::Roll, Contact::Roll),
+            (Floor::Slip, Contact::Roll),
+            (Floor::Roll, Contact::Slip),
+            (Floor::Slip, Contact::Slip),
+            (Floor::Fixed, Contact::Roll),
+        ] {
+            for start in [
+                Start::rest(q("3/10")),
+                Start {
+                    theta0: q("1/5"),
+                    thetadot0: rug::Rational::from((1, 4)),
+                    omega0: rug::Rational::new(),
+                },
+            ] {
+                let model = Model::new(Params::identical_solid(), floor, contact, start).unwrap();
+                let red = Reduced::new(&model).unwrap();
+                let p = 300;
+                let mut e = Engine::new(&model, &red, p).unwrap();
+                let d = Float::with_val(p, 7u32) / 10u32;
+                let (v, err, rule) = e.time_fast(&d, false, false);
+                assert_eq!(rule, Rule::Chebyshev, "{floor:?} {contact:?}");
+                e.use_cheb = false;
+                let (w, werr, _) = e.time_fast(&d, false, false);
+                let diff = Float::with_val(p, &v - &w).abs();
+                assert!(
+                    diff <= Float::with_val(p, &err + &werr),
+                    "{floor:?} {contact:?}: diff {diff:e}, estimates {err:e} {werr:e}"
+                );
+                assert!(err < Float::with_val(p, 1u32) >> (p as i32 - 16));
+            }
         }
     }
 }

@@ -50,6 +50,13 @@ pub const TRAJECTORY_COLUMNS: [&str; 13] = [
     "N12",
 ];
 
+/// From this working precision on (about 170 digits) the trajectory's θ(t)
+/// comes from inverting t(θ) on a Chebyshev interpolant
+/// ([`engine::Inverse`]) rather than from a Taylor run of θ̈ = F(θ): the
+/// Taylor run's cost grows like the cube of the precision, an inversion's
+/// like its square times the interpolant's size.
+pub const TRAJECTORY_CHEB_MIN_BITS: u32 = 600;
+
 /// Names of the quantities of [`Oracle::forces_at`], in order.
 pub const FORCE_KEYS: [&str; 8] = [
     "F1",
@@ -1248,32 +1255,15 @@ impl Oracle {
             let zero = Float::new(p);
             return Ok(vec![(zero.clone(), zero); times.len()]);
         };
-        let rhs = self.taylor_rhs(p)?;
-        let th0 = self.work.start().theta0.to_float(p);
-        let td0 = Float::with_val(p, &self.work.start().thetadot0);
-        let t_end = tt_all[i_max].clone();
-        let mut traj = taylor::integrate(&rhs, &th0, &td0, &t_end, p, extra)?;
-        let mut out = Vec::with_capacity(times.len());
-        let mut floor = Float::new(p);
-        for (t, tt) in times.iter().zip(tt_all) {
-            if t.is_zero() {
-                out.push((Float::new(p), Float::new(p)));
-                continue;
-            }
-            let (d, mut e) = traj.delta_at(tt).ok_or_else(|| Error::NotConverged {
-                quantity: "theta(t)".into(),
-                requested: self.digits,
-                reached: format!("no Taylor output at {p} bits"),
-                detail: format!("t = {}", crate::numeric::decimal::to_sig(tt, 20)),
-            })?;
-            floor.assign(d.abs_ref());
-            floor >>= p as i32 - 8;
-            if e < floor {
-                e.assign(&floor);
-            }
-            e <<= 1;
-            out.push((d, e));
+        let by_cheb = p >= TRAJECTORY_CHEB_MIN_BITS;
+        let mut out = match by_cheb {
+            true => self.deltas_cheb(times, tt_all, p, extra)?,
+            false => None,
+        };
+        if out.is_none() {
+            out = Some(self.deltas_taylor(times, tt_all, i_max, p, extra)?);
         }
+        let mut out = out.expect("one route");
         let t_last = Float::with_val(tq, &tt_all[i_max]);
         let (d, eps) = out[i_max].clone();
         // certify at the last time: t(δ − ε) ≤ t ≤ t(δ + ε) by the energy
@@ -1282,6 +1272,10 @@ impl Oracle {
         // otherwise both ends are integrated.
         let high = run == Run::High;
         let e = self.engine(p)?;
+        // the check is an independent route: tanh-sinh (or Gauss–Legendre),
+        // never the Chebyshev interpolant the rows may come from
+        let cheb_before = e.use_cheb;
+        e.use_cheb = false;
         let (tm, tm_err, _) = e.time_fast(&d, high, false);
         let gap = Float::with_val(p, &tm - &t_last).abs() + &tm_err;
         let thetadot = e.inv_thetadot(&d).recip();
@@ -1298,6 +1292,7 @@ impl Oracle {
             let thi = e.time_fast(&dhi, high, false).0;
             tlo <= t_last && t_last <= thi
         };
+        self.engine(p)?.use_cheb = cheb_before;
         if !certified {
             // The bracket is too narrow for the quadrature at this precision
             // to decide: widen every ε by the same factor until the one-integral
@@ -1324,6 +1319,78 @@ impl Oracle {
             });
         }
         Ok(out)
+    }
+
+    /// δ and its error at each time by one Taylor run to the last time
+    /// ([`crate::numeric::taylor`], dense output), `extra` fixed-point bits.
+    fn deltas_taylor(
+        &mut self,
+        times: &[Exact],
+        tt_all: &[Float],
+        i_max: usize,
+        p: u32,
+        extra: u32,
+    ) -> Result<Vec<(Float, Float)>> {
+        let rhs = self.taylor_rhs(p)?;
+        let th0 = self.work.start().theta0.to_float(p);
+        let td0 = Float::with_val(p, &self.work.start().thetadot0);
+        let t_end = tt_all[i_max].clone();
+        let mut traj = taylor::integrate(&rhs, &th0, &td0, &t_end, p, extra)?;
+        let mut out = Vec::with_capacity(times.len());
+        let mut floor = Float::new(p);
+        for (t, tt) in times.iter().zip(tt_all) {
+            if t.is_zero() {
+                out.push((Float::new(p), Float::new(p)));
+                continue;
+            }
+            let (d, mut e) = traj.delta_at(tt).ok_or_else(|| Error::NotConverged {
+                quantity: "theta(t)".into(),
+                requested: self.digits,
+                reached: format!("no Taylor output at {p} bits"),
+                detail: format!("t = {}", crate::numeric::decimal::to_sig(tt, 20)),
+            })?;
+            floor.assign(d.abs_ref());
+            floor >>= p as i32 - 8;
+            if e < floor {
+                e.assign(&floor);
+            }
+            e <<= 1;
+            out.push((d, e));
+        }
+        Ok(out)
+    }
+
+    /// δ and its error at each time by inverting t(θ) on one Chebyshev
+    /// interpolant over [θ0, θs] ([`engine::Inverse`]), at `p` + `extra`
+    /// bits (the extra bits keep δ's relative accuracy at small times, as
+    /// the Taylor route's fixed-point bits do), rounded to `p`. `None` where
+    /// the interpolant does not apply (θs beyond 2π/3, a start so near the
+    /// top that the integrand's singularity crowds the interval).
+    fn deltas_cheb(
+        &mut self,
+        times: &[Exact],
+        tt_all: &[Float],
+        p: u32,
+        extra: u32,
+    ) -> Result<Option<Vec<(Float, Float)>>> {
+        let pe = p + extra;
+        let (ds, _) = self.delta_s(pe)?;
+        let Some(inv) = self.engine(pe)?.inverse(&ds) else {
+            return Ok(None);
+        };
+        let mut out = Vec::with_capacity(times.len());
+        for (t, tt) in times.iter().zip(tt_all) {
+            if t.is_zero() {
+                out.push((Float::new(p), Float::new(p)));
+                continue;
+            }
+            let (d, e) = inv.delta_at(&Float::with_val(pe, tt));
+            let d = Float::with_val(p, d);
+            let mut e = Float::with_val(p, e);
+            e += Float::with_val(p, d.abs_ref()) >> (p as i32 - 2);
+            out.push((d, e));
+        }
+        Ok(Some(out))
     }
 
     /// The per-run constants of the trajectory rows at precision `p`.
