@@ -26,6 +26,7 @@
 //! coefficient is rounded to the fit's precision.
 
 use rug::float::Constant;
+use rug::ops::NegAssign;
 use rug::{Assign, Float};
 
 /// The smallest N ≥ `n` whose only prime factors are 2, 3 and 5.
@@ -127,34 +128,40 @@ impl Roots {
     }
 }
 
-/// z ← z·e^(−2πi m/N) (a twiddle of the length-N transform) at `p` bits.
-fn rotate(re: &mut Float, im: &mut Float, roots: &Roots, m: usize, t: &mut [Float; 2]) {
+/// z ← z·e^(−2πi m/N) (a twiddle of the length-N transform), with three
+/// scratch Floats (no allocation).
+fn rotate(re: &mut Float, im: &mut Float, roots: &Roots, m: usize, t: &mut [Float; 3]) {
     if m % roots.n == 0 {
         return;
     }
-    // e^(−iφ) with φ = 4m·π/(2N): (c, −s)
+    // e^(−iφ), φ = 4m·π/(2N): (a + ib)(c' − i s') with c' = ±c, s' = ±s
     let (c, nc, s, ns) = roots.cis(4 * m);
-    // (a + ib)(c' − i s') with c' = ±c, s' = ±s
-    t[0].assign(&*re * c);
-    t[1].assign(&*im * s);
-    let (c_sign, s_sign) = (if nc { -1 } else { 1 }, if ns { -1 } else { 1 });
+    let [t0, t1, t2] = t;
     // real: a c' + b s'
-    let mut real = Float::with_val(re.prec(), &t[0] * c_sign);
-    if s_sign > 0 {
-        real += &t[1];
-    } else {
-        real -= &t[1];
+    t0.assign(&*re * c);
+    t1.assign(&*im * s);
+    match (nc, ns) {
+        (false, false) => t2.assign(&*t0 + &*t1),
+        (false, true) => t2.assign(&*t0 - &*t1),
+        (true, false) => t2.assign(&*t1 - &*t0),
+        (true, true) => {
+            t2.assign(&*t0 + &*t1);
+            t2.neg_assign();
+        }
     }
     // imag: b c' − a s'
-    t[0].assign(&*im * c);
-    t[1].assign(&*re * s);
-    im.assign(&t[0] * c_sign);
-    if s_sign > 0 {
-        *im -= &t[1];
-    } else {
-        *im += &t[1];
+    t0.assign(&*im * c);
+    t1.assign(&*re * s);
+    match (nc, ns) {
+        (false, false) => im.assign(&*t0 - &*t1),
+        (false, true) => im.assign(&*t0 + &*t1),
+        (true, false) => {
+            im.assign(&*t0 + &*t1);
+            im.neg_assign();
+        }
+        (true, true) => im.assign(&*t1 - &*t0),
     }
-    *re = real;
+    std::mem::swap(re, t2);
 }
 
 /// In place: X_k = Σ_j x_j e^(−2πi jk/n) for the n = len entries, where n
@@ -186,9 +193,10 @@ fn fft(re: &mut [Float], im: &mut [Float], roots: &Roots, p: u32) {
     }
     // the table's N is a multiple of n: e^(−2πi e/n) = e^(−2πi (e N/n)/N)
     let scale = roots.n / n;
-    let mut t = [Float::new(p), Float::new(p)];
+    let mut t = [Float::new(p), Float::new(p), Float::new(p)];
     let mut zr: Vec<Float> = vec![Float::new(p); r];
     let mut zi: Vec<Float> = vec![Float::new(p); r];
+    let (mut a, mut b) = (Float::new(p), Float::new(p));
     let mut acc_r = Float::new(p);
     let mut acc_i = Float::new(p);
     for k in 0..m {
@@ -210,8 +218,8 @@ fn fft(re: &mut [Float], im: &mut [Float], roots: &Roots, p: u32) {
             acc_r.assign(&zr[0]);
             acc_i.assign(&zi[0]);
             for q in 1..r {
-                let mut a = zr[q].clone();
-                let mut b = zi[q].clone();
+                a.assign(&zr[q]);
+                b.assign(&zi[q]);
                 rotate(&mut a, &mut b, roots, (q * s * m * scale) % roots.n, &mut t);
                 acc_r += &a;
                 acc_i += &b;
@@ -220,6 +228,54 @@ fn fft(re: &mut [Float], im: &mut [Float], roots: &Roots, p: u32) {
             im[k + s * m].assign(&acc_i);
         }
     }
+}
+
+/// The DFT V_k = Σ_j v_j e^(−2πi jk/N) of N real values (N = the table's),
+/// as (Re V, Im V) for k = 0..N: for even N by one complex transform of
+/// length N/2 of z_j = v_{2j} + i v_{2j+1}, then
+/// V_k = E_k + e^(−2πik/N) O_k, V_{k+N/2} = E_k − e^(−2πik/N) O_k with
+/// E_k = (Z_k + conj Z_{N/2−k})/2, O_k = (Z_k − conj Z_{N/2−k})/2i.
+fn real_fft(v: Vec<Float>, roots: &Roots, p: u32) -> (Vec<Float>, Vec<Float>) {
+    let n = v.len();
+    if n % 2 == 1 {
+        let mut re = v;
+        let mut im = vec![Float::new(p); n];
+        fft(&mut re, &mut im, roots, p);
+        return (re, im);
+    }
+    let m = n / 2;
+    let mut zr = Vec::with_capacity(m);
+    let mut zi = Vec::with_capacity(m);
+    let mut it = v.into_iter();
+    while let (Some(a), Some(b)) = (it.next(), it.next()) {
+        zr.push(a);
+        zi.push(b);
+    }
+    fft(&mut zr, &mut zi, roots, p);
+    let mut re = vec![Float::new(p); n];
+    let mut im = vec![Float::new(p); n];
+    let mut t = [Float::new(p), Float::new(p), Float::new(p)];
+    let (mut er, mut ei, mut or, mut oi) =
+        (Float::new(p), Float::new(p), Float::new(p), Float::new(p));
+    for k in 0..m {
+        let j = (m - k) % m;
+        // E = (Z_k + conj Z_j)/2, O = (Z_k − conj Z_j)/2i
+        er.assign(&zr[k] + &zr[j]);
+        er >>= 1;
+        ei.assign(&zi[k] - &zi[j]);
+        ei >>= 1;
+        // (Z_k − conj Z_j) = (zr_k − zr_j) + i(zi_k + zi_j); ÷ 2i: (a + ib)/2i = (b − ia)/2
+        or.assign(&zi[k] + &zi[j]);
+        or >>= 1;
+        oi.assign(&zr[j] - &zr[k]);
+        oi >>= 1;
+        rotate(&mut or, &mut oi, roots, k, &mut t);
+        re[k].assign(&er + &or);
+        im[k].assign(&ei + &oi);
+        re[k + m].assign(&er - &or);
+        im[k + m].assign(&ei - &oi);
+    }
+    (re, im)
 }
 
 /// A Chebyshev interpolant on [a, b]: p(v) = Σ_k c_k T_k(x), x = (2v − a − b)/(b − a).
@@ -247,8 +303,7 @@ impl ChebFit {
         let half = Float::with_val(p, b - a) / 2u32;
         // values in Makhoul's order: f_j (point j) goes to 2j → slot j/2,
         // odd j → slot N − 1 − (j − 1)/2
-        let mut re: Vec<Float> = vec![Float::new(p); n];
-        let mut im: Vec<Float> = vec![Float::new(p); n];
+        let mut vals: Vec<Float> = vec![Float::new(p); n];
         let mut v = Float::new(p);
         let mut fx = Float::new(p);
         let mut fmax = Float::new(p);
@@ -265,9 +320,9 @@ impl ChebFit {
             } else {
                 n - 1 - (j - 1) / 2
             };
-            re[slot].assign(&fx);
+            vals[slot].assign(&fx);
         }
-        fft(&mut re, &mut im, roots, p);
+        let (re, im) = real_fft(vals, roots, p);
         // c_k = (2/N) Re(e^(−iπk/2N) V_k), c_0 halved
         let mut c = Vec::with_capacity(n);
         let mut t = Float::new(p);
