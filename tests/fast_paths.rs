@@ -3,7 +3,9 @@
 //! quadrature, the trajectory's θ column), the polynomial separation root
 //! (against `separation()`'s scan-and-refine), and the time integral by
 //! tanh-sinh at p1 and Gauss–Legendre at p2 (against the Arb reference, and
-//! the same digits before and after the rule is built).
+//! the same digits before and after the rule is built); from 256 bits on the
+//! Chebyshev time integral and from 600 bits on the Chebyshev inversion for
+//! θ(t) (against Arb and against the Taylor route).
 //!
 //! Reference values are the Arb balls of `../shared/bench/results`
 //! (reference.json, T3_reference.txt), copied here.
@@ -236,4 +238,104 @@ fn taylor_is_independent_of_the_time_unit() {
     for t in &thetas[1..] {
         assert_eq!(t[..14], thetas[0][..14], "{thetas:?}");
     }
+}
+
+/// From 256 bits on (here 300 digits) t(θ) is integrated by Chebyshev
+/// interpolation: every digit of Arb's T1.
+#[test]
+fn chebyshev_time_matches_arb_t1_at_300_digits() {
+    let mut o = Oracle::new(&t3_model(), 300).unwrap();
+    let v = o.time_at(&q("9/10")).unwrap();
+    assert_eq!(v.digits, 300);
+    assert_eq!(v.text, rounded(T1, 300));
+}
+
+/// From 600 bits on (here 200 digits) θ(t) comes from Newton's method on
+/// the Chebyshev antiderivative: the bench T3 rows (110 digits of Arb).
+#[test]
+fn chebyshev_inversion_matches_the_bench_t3_rows() {
+    let mut o = Oracle::new(&t3_model(), 200).unwrap();
+    let times: Vec<Exact> = T3_ROWS.iter().map(|&(i, _)| t3_time(i)).collect();
+    let th = o.theta_at_times(&times).unwrap();
+    for ((i, want), v) in T3_ROWS.iter().zip(&th) {
+        assert_eq!(v.digits, 200, "row {i}");
+        let got = to_sig(&Float::with_val(900, Float::parse(&v.text).unwrap()), 105);
+        assert_eq!(got, rounded(want, 105), "row {i}");
+    }
+}
+
+/// The trajectory by the Taylor route (130 digits: both working precisions
+/// below 600 bits) and by the Chebyshev route (200 digits: both above)
+/// agree in every column to 130 digits, on models whose integrands differ:
+/// a moving start (the integrand in v carries a factor v), a slipping
+/// floor, a slipping contact, a held lower cylinder, a hollow upper one.
+#[test]
+fn chebyshev_and_taylor_trajectories_agree() {
+    let moving = Start {
+        theta0: q("1/5"),
+        thetadot0: Rational::from((1, 4)),
+        omega0: Rational::new(),
+    };
+    let mut hollow = Params::identical_solid();
+    hollow.k2 = Rational::from(1);
+    let models = [
+        Model::new(
+            Params::identical_solid(),
+            Floor::Roll,
+            Contact::Roll,
+            moving,
+        )
+        .unwrap(),
+        Model::new(
+            Params::identical_solid(),
+            Floor::Slip,
+            Contact::Roll,
+            Start::rest(q("3/10")),
+        )
+        .unwrap(),
+        Model::new(
+            Params::identical_solid(),
+            Floor::Roll,
+            Contact::Slip,
+            Start::rest(q("1/4")),
+        )
+        .unwrap(),
+        Model::new(
+            Params::identical_solid(),
+            Floor::Fixed,
+            Contact::Roll,
+            Start::rest(q("1/5")),
+        )
+        .unwrap(),
+        Model::new(hollow, Floor::Roll, Contact::Roll, Start::rest(q("1/10"))).unwrap(),
+    ];
+    let mut compared = 0;
+    for (mi, m) in models.iter().enumerate() {
+        let ts = {
+            let mut o = Oracle::new(m, 20).unwrap();
+            o.separation().unwrap().t_s.expect("finite").value.to_f64()
+        };
+        // three times inside the motion, the last close to separation
+        let times: Vec<Exact> = [0.01, 0.5, 0.97]
+            .iter()
+            .map(|f| Exact::rational(Rational::from_f64(ts * f).unwrap()))
+            .collect();
+        let mut lo = Oracle::new(m, 130).unwrap();
+        let a = lo.trajectory(&times).unwrap();
+        let mut hi = Oracle::new(m, 200).unwrap();
+        let b = hi.trajectory(&times).unwrap();
+        for (ra, rb) in a.iter().zip(&b) {
+            for (va, vb) in ra.iter().zip(rb).skip(1) {
+                if va.digits < 130 || vb.digits < 200 || va.text.starts_with(">=") {
+                    continue;
+                }
+                let got = to_sig(&Float::with_val(900, Float::parse(&vb.text).unwrap()), 130);
+                assert_eq!(got, va.text, "model {mi}, column {}", va.name);
+                compared += 1;
+            }
+        }
+    }
+    // 5 models × 3 times × 12 columns, less the exact zeros of frictionless
+    // contacts and held cylinders
+    assert!(compared >= 120, "compared {compared}");
 }
