@@ -339,3 +339,30 @@ fn chebyshev_and_taylor_trajectories_agree() {
     // contacts and held cylinders
     assert!(compared >= 120, "compared {compared}");
 }
+
+/// From rest at θ0 = 1e-100 the motion stays linear for a long time:
+/// θ(t) = θ0 cosh(λt), λ² = θ̈/θ at the top = 6/17 for identical solid
+/// cylinders, with a relative correction O(θ²) far below the digits asked.
+/// The trajectory takes the graded Chebyshev route there at every precision
+/// (the Taylor run could not follow: exit 3 after 26 s).
+#[test]
+fn trajectory_from_very_near_the_top_is_the_linear_motion() {
+    let m = Model::paper_default(q("1e-100"));
+    for (digits, times) in [(30u32, vec!["97", "194"]), (100, vec!["97"])] {
+        let mut o = Oracle::new(&m, digits).unwrap();
+        let ts: Vec<Exact> = times.iter().map(|t| q(t)).collect();
+        let rows = o.trajectory(&ts).unwrap();
+        for (t, row) in times.iter().zip(&rows) {
+            let p = 800;
+            let lambda = Float::with_val(p, Rational::from((6, 17))).sqrt();
+            let arg = lambda * Float::with_val(p, Float::parse(t).unwrap());
+            let want = Float::with_val(p, Float::parse("1e-100").unwrap()) * arg.cosh();
+            assert_eq!(row[1].digits, digits, "t = {t}");
+            assert_eq!(
+                row[1].text,
+                to_sig(&want, digits),
+                "t = {t} at {digits} digits"
+            );
+        }
+    }
+}

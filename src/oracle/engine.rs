@@ -292,21 +292,26 @@ impl Engine {
         let p = self.prec();
         let dsig = self.half.sigma_of(delta_end);
         let fits = self.cheb_fit(&dsig)?;
-        // the antiderivatives' uniform error: ∫|f − p| over everything left
-        // of v, plus the roundings of Clenshaw's recurrence in each piece
-        let (_, mut err_tau) = self.cheb_answer_raw(&fits);
+        // T's error at v in piece i: the interpolants' errors over the
+        // pieces up to i (∫|f − p| over [0, v]) and the roundings of
+        // Clenshaw's recurrence in piece i; so a v in a short first piece
+        // near the start keeps its relative accuracy
         let mut pieces = Vec::with_capacity(fits.len());
         let mut offset = Float::new(p);
+        let mut err_left = Float::new(p);
         for f in fits {
+            let (_, e_f) = self.cheb_answer_raw(std::slice::from_ref(&f));
+            err_left += e_f;
             let prim = f.antiderivative();
             let n = prim.c.len() as f64;
             let mut abs_sum = Float::new(p);
             for c in &prim.c {
                 abs_sum += Float::with_val(p, c.abs_ref());
             }
-            err_tau += Float::with_val(p, abs_sum * (4.0 * n)) >> (p as i32);
+            let err = Float::with_val(p, abs_sum * (4.0 * n)) >> (p as i32);
+            let err = Float::with_val(p, &err + &err_left);
             let next = Float::with_val(p, &offset + prim.eval(&f.b, p));
-            pieces.push(Piece::new(f, prim, offset));
+            pieces.push(Piece::new(f, prim, offset, err));
             offset = next;
         }
         Some(Inverse {
@@ -314,7 +319,6 @@ impl Engine {
             c0h: Float::with_val(p, self.half.cos_half0()),
             factor: self.half.factor.clone(),
             pieces,
-            err_tau,
         })
     }
 
@@ -434,9 +438,11 @@ impl Engine {
     }
 }
 
-/// Most pieces of a graded Chebyshev interpolation (a start within ~10^-12
-/// of the top's singularity needs about 40; beyond, tanh-sinh).
-pub const MAX_PIECES: usize = 64;
+/// Most pieces of a graded Chebyshev interpolation. Near a singularity at
+/// distance d from the start, pieces of ρ = 3 grow by ((ρ+1)/(ρ−1))² = 4
+/// each, so a start from rest at θ0 needs about log4(1/√θ0) pieces: 83 for
+/// θ0 = 1e-100, 250 for 1e-300.
+pub const MAX_PIECES: usize = 256;
 
 /// The pieces' right ends over [0, v_max] and each piece's ρ: one piece
 /// where ρ of the whole interval is at least 2.5 (the common case), else
@@ -462,21 +468,23 @@ fn breakpoints(v_max: f64, rho_of: &dyn Fn(f64, f64) -> f64) -> Option<Vec<(f64,
             cuts.push((v_max, r));
             return Some(cuts);
         }
-        // ρ(a, b) falls as b grows: bisect for ρ = TARGET
-        let (mut lo, mut hi) = (a, v_max);
-        for _ in 0..60 {
+        // ρ(a, a + L) falls as L grows: bisect for ρ = TARGET on log L
+        // (the first piece near a close singularity may be 1e-50 long)
+        let (mut lo, mut hi) = (f64::MIN_POSITIVE.ln(), (v_max - a).ln());
+        for _ in 0..80 {
             let m = 0.5 * (lo + hi);
-            if rho_of(a, m) >= TARGET {
+            if rho_of(a, a + m.exp()) >= TARGET {
                 lo = m;
             } else {
                 hi = m;
             }
         }
-        if lo <= a * (1.0 + 1e-12) || rho_of(a, lo).is_nan() {
+        let b = a + lo.exp();
+        if b <= a || lo <= f64::MIN_POSITIVE.ln() + 1.0 || rho_of(a, b).is_nan() {
             return None;
         }
-        cuts.push((lo, rho_of(a, lo)));
-        a = lo;
+        cuts.push((b, rho_of(a, b)));
+        a = b;
     }
     None
 }
@@ -493,13 +501,16 @@ struct Piece {
     /// T's and f's coefficients as `f64`, for the seed.
     seed: (Vec<f64>, Vec<f64>),
     offset64: f64,
+    /// Bound on |T − T_true| over the piece (estimated, see
+    /// [`Engine::inverse`]).
+    err_tau: Float,
     /// max |f'/(2f)| over the piece (in v), ×4: Newton's step from an
     /// error e leaves κ e².
     kappa: f64,
 }
 
 impl Piece {
-    fn new(f: ChebFit, prim: ChebFit, offset: Float) -> Self {
+    fn new(f: ChebFit, prim: ChebFit, offset: Float, err_tau: Float) -> Self {
         let p = f.prec();
         // the Newton steps' precisions, halving down from p/2 + 32 to ≥ 96
         // (each step doubles the correct bits from the f64 seed's ~50)
@@ -535,6 +546,7 @@ impl Piece {
             offset,
             lower,
             seed,
+            err_tau,
             kappa,
         }
     }
@@ -552,9 +564,6 @@ pub struct Inverse {
     c0h: Float,
     factor: Float,
     pieces: Vec<Piece>,
-    /// Bound on |T − T_true| over the interval (estimated, see
-    /// [`Engine::inverse`]).
-    err_tau: Float,
 }
 
 /// The Chebyshev coefficients of the derivative (in x) of the series `c`.
@@ -639,7 +648,7 @@ impl Inverse {
         v -= &step;
         // the last step leaves κ·step² of Newton's error, and T's own error
         // moves the root by err_T/f
-        let mut err_v = Float::with_val(p, &self.err_tau / &fh);
+        let mut err_v = Float::with_val(p, &pc.err_tau / &fh);
         err_v += Float::with_val(p, step.square_ref()) * pc.kappa.max(1.0);
         err_v += Float::with_val(p, &err_v >> 8);
         err_v += Float::with_val(p, v.abs_ref()) >> (p as i32 - 2);

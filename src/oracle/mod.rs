@@ -57,6 +57,11 @@ pub const TRAJECTORY_COLUMNS: [&str; 13] = [
 /// like its square times the interpolant's size.
 pub const TRAJECTORY_CHEB_MIN_BITS: u32 = 600;
 
+/// Below this |θ0| the trajectory takes the Chebyshev route at every
+/// precision: its pieces grade towards the start's singularity, where a
+/// Taylor run needs ever shorter steps (θ0 = 1e-100 failed after 26 s).
+pub const NEAR_TOP: f64 = 1e-6;
+
 /// Names of the quantities of [`Oracle::forces_at`], in order.
 pub const FORCE_KEYS: [&str; 8] = [
     "F1",
@@ -1255,7 +1260,11 @@ impl Oracle {
             let zero = Float::new(p);
             return Ok(vec![(zero.clone(), zero); times.len()]);
         };
-        let by_cheb = p >= TRAJECTORY_CHEB_MIN_BITS;
+        // the Chebyshev route at high precision, and from a start near the
+        // top at any (its pieces are graded towards the start; the Taylor
+        // run crawls there)
+        let near_top = self.work.start().theta0.to_f64().abs() < NEAR_TOP;
+        let by_cheb = p >= TRAJECTORY_CHEB_MIN_BITS || near_top;
         let mut out = match by_cheb {
             true => self.deltas_cheb(times, tt_all, p, extra)?,
             false => None,
