@@ -241,8 +241,11 @@ class Separation(_Values):
 class Forces(_Values):
     """The answer of :meth:`Model.forces`: a mapping name -> :class:`Value`
     (``F1``, ``N1``, ``F21``, ``N12``, ``theta_dot``, ``theta_ddot``,
-    ``mu_floor``, ``mu_contact``; with friction ``s1``, ``s12``, ``work``)
-    and, with friction, the mode there (``mode``, else ``None``)."""
+    ``mu_floor``, ``mu_contact``; for the ideal models also the most friction
+    each rolling contact needs over [θ0, θ] and where: ``mu_floor_max``,
+    ``theta_mu_floor_max``, ``mu_contact_max``, ``theta_mu_contact_max``;
+    with friction ``s1``, ``s12``, ``work``) and, with friction, the mode
+    there (``mode``, else ``None``)."""
 
     mode: Optional[str]
 

@@ -374,7 +374,8 @@ fn time(
 }
 
 /// `forces`: the forces and rates where θ first reaches `theta` (the keys
-/// of the command line's `forces`), and with friction the mode there.
+/// of the command line's `forces`, with the ideal models the most friction
+/// needed so far), and with friction the mode there.
 #[pyfunction]
 fn forces(
     py: Python<'_>,
@@ -391,8 +392,11 @@ fn forces(
                 Ok((values(&v), Some(mode)))
             }
             None => {
-                let v = Oracle::new(&model, digits)?.forces_at(&th)?;
+                let mut o = Oracle::new(&model, digits)?;
+                let mut v = o.forces_at(&th)?;
                 debug_assert_eq!(v.len(), FORCE_KEYS.len());
+                // the most friction each rolling contact needs over [θ0, θ]
+                v.extend(o.friction_needed(&th)?);
                 Ok((values(&v), None))
             }
         }

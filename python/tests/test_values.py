@@ -53,7 +53,25 @@ def test_fixed_lower_cylinder_forces_closed_form():
     assert f["F1"].text == "0" or f.F1.digits > 0
     assert f.mode is None
     assert list(f) == ["F1", "N1", "F21", "N12", "theta_dot", "theta_ddot", "mu_floor",
-                       "mu_contact"]
+                       "mu_contact", "theta_mu_floor_max", "mu_floor_max",
+                       "theta_mu_contact_max", "mu_contact_max"]
+
+
+def test_friction_needed_so_far_bounds_a_scan():
+    # the most friction the held floor and the rolling contact need over [θ0, θ]: no
+    # sampled |F|/N exceeds it, the best sample comes close, and it is reached where said
+    m = cylroll.Model(floor="fixed", theta0="1/10", k2="1/2")
+    f = m.forces("0.7", digits=25)
+    samples = [m.forces(f"{k / 100}", digits=12) for k in range(10, 71)]
+    for key in ("mu_floor", "mu_contact"):
+        best = max(s[key].decimal() for s in samples)
+        top = f[f"{key}_max"].decimal()
+        assert best <= top + Decimal("1e-11")
+        assert top - best < Decimal("2e-3")
+        at = m.forces(f[f"theta_{key}_max"].text, digits=25)
+        assert abs(at[key].decimal() - top) < Decimal("1e-23")
+    # the contact's need grows to the end here: reached at θ itself
+    assert f["theta_mu_contact_max"].text == "0.7" + "0" * 24
 
 
 def test_time_and_trajectory_agree():
