@@ -32,6 +32,7 @@ use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::mechanics::{PHI1, PSI2, X1};
 use crate::model::{Contact, Floor};
+use crate::numeric::ccrig;
 use crate::numeric::interval::{not_enclosed, Cx, Iv};
 use crate::numeric::verify::Verified;
 use rug::float::Round;
@@ -353,100 +354,139 @@ impl Oracle {
         }
         let gr4 = k.gr.mul(&Iv::int(p, 4));
         let h0r = k.h0.div(&gr4)?;
-        let ig = Integrand {
-            s0: s0.clone(),
+        let ig = XForm {
+            s0,
             dsig: dsig.clone(),
             q: k.q.clone(),
-            h0r: h0r.clone(),
+            h0r,
             from_rest: k.from_rest,
         };
-        // the ellipse: below the nearest singularity (the verified engine's
-        // estimate, f64), then proved by the box covering
-        let rho_max = {
+        // where the integrand of x is singular: x² = sin²u at the singular
+        // points of the half-angle form (an f64 estimate; the covering proves)
+        let x2_sing = {
             let e = self.engine(64)?;
             let ds = Float::with_val(64, &dsig.lo);
-            crate::numeric::gauss::rho_sin2(&e.half_singular_sin2(&ds))
+            e.half_singular_sin2(&ds)
         };
-        let rho_max = if rho_max.is_finite() {
-            rho_max.min(50.0)
-        } else {
-            50.0
-        };
-        let mut last = None;
-        for frac in [0.9, 0.75, 0.5, 0.25, 0.1] {
-            let rho = 1.0 + (rho_max - 1.0) * frac;
-            if rho <= 1.0 + 1e-6 {
-                break;
-            }
-            match ig.bound_on_ellipse(rho) {
-                Ok(m) => {
-                    last = Some(self.cc_integral(&ig, rho, m, p)?);
-                    break;
-                }
-                Err(e) => {
-                    last = None;
-                    let _ = e;
-                }
-            }
-        }
-        let integral = last.ok_or_else(|| {
-            not_enclosed("t(theta): analyticity of the integrand on an ellipse could not be proved")
-        })?;
-        // t = factor · ∫_0^{π/2} g du, factor = 2√Δσ/√(g/r) (from rest) or 2Δσ/√(g/r)
+        let x_sing: Vec<(f64, f64)> = x2_sing
+            .iter()
+            .flat_map(|w| {
+                let r = w.sqrt();
+                [(r.re, r.im), (-r.re, -r.im)]
+            })
+            .filter(|(a, b)| a.is_finite() && b.is_finite())
+            .collect();
+        let lo64 = ig.at_bits(64);
+        let integral = integrate_x(&ig, &lo64, &x_sing, p)?;
+        // t = factor · ∫_0^1 G dx, factor = 2√Δσ/√(g/r) (from rest) or 2Δσ/√(g/r)
         let f = if k.from_rest { dsig.sqrt()? } else { dsig };
         let factor = f.mul(&Iv::int(p, 2)).div(&k.gr.sqrt()?)?;
         Ok(integral.mul(&factor))
     }
+}
 
-    /// ∫_0^{π/2} g(u) du by Clenshaw–Curtis with the number of points the
-    /// bound 8Mρ^(−n)/(ρ − 1)·(π/4) needs for `p` bits, plus that bound.
-    fn cc_integral(&self, ig: &Integrand, rho: f64, m: f64, p: u32) -> Result<Iv> {
-        // n from the bound, relative to the integral's size (≥ π/4·min g ~ 1e-3·M)
-        let target = (p as f64 + 8.0) * std::f64::consts::LN_2;
-        let num = (8.0 * m * std::f64::consts::FRAC_PI_4 / (rho - 1.0)).ln() + target;
-        let mut n = (num / rho.ln()).ceil().max(8.0) as usize;
-        n += n % 2;
-        if n > 8 * p as usize + 64 {
-            return Err(not_enclosed(
-                "t(theta): too many quadrature points for the bound",
-            ));
+/// ∫_0^1 G(x) dx enclosed: [0, 1] split where a singularity is close to 0
+/// (geometric pieces [0, h], [h, 2h], [2h, 4h], …), each piece by
+/// Clenshaw–Curtis with the ellipse bound ([`crate::numeric::ccrig`]).
+fn integrate_x(ig: &XForm, lo64: &XForm, x_sing: &[(f64, f64)], p: u32) -> Result<Iv> {
+    // the nearest singularity's distance from 0 sets the first piece
+    let dist0 = x_sing
+        .iter()
+        .map(|(a, b)| a.hypot(*b))
+        .fold(f64::INFINITY, f64::min);
+    let mut cuts: Vec<Rational> = vec![Rational::from(1)];
+    if dist0 < 0.01 {
+        // pieces [2^-(k+1), 2^-k] down to about the distance, then [0, 2^-K]
+        let mut e = 1i64;
+        while (0.5f64).powi(e as i32) > 2.0 * dist0 && e < 60 {
+            cuts.push(Rational::from((1, 1i64 << e)));
+            e += 1;
         }
-        let pi = Iv::pi(p);
-        // cos(2π m / (2n)) for m = 0..2n: nodes x_j = cos(jπ/n) and the
-        // weights' cosines cos(2π kj/n) = table[2 (kj mod n)]
-        let table: Vec<Iv> = (0..2 * n)
-            .map(|m| pi.mul_q(&Rational::from((m as i64, n as i64))).cos())
-            .collect();
-        let mut sum = Iv::int(p, 0);
-        let quarter_pi = pi.mul_q(&Rational::from((1, 4)));
-        // b_k/(4k² − 1), enclosed once
-        let coefs: Vec<Iv> = (1..=n / 2)
-            .map(|kk| {
-                let b = if 2 * kk == n { 1i64 } else { 2 };
-                Iv::rational(p, &Rational::from((b, 4 * (kk * kk) as i64 - 1)))
-            })
-            .collect();
-        for j in 0..=n {
-            // w_j = (c_j/n)(1 − Σ_{k=1}^{n/2} b_k/(4k²−1) cos(2πkj/n))
-            let mut acc = Iv::int(p, 1);
-            for (i, coef) in coefs.iter().enumerate() {
-                let kk = i + 1;
-                let cosv = &table[(2 * ((kk * j) % n)) % (2 * n)];
-                acc = acc.sub(&cosv.mul(coef));
-            }
-            let cj = if j == 0 || j == n { 1i64 } else { 2 };
-            let w = acc.mul_q(&Rational::from((cj, n as i64)));
-            let x = &table[j]; // cos(jπ/n)
-            let u = quarter_pi.mul(&x.add_q(&Rational::from(1)));
-            sum = sum.add(&w.mul(&ig.eval(&u)?));
-        }
-        let integral = sum.mul(&quarter_pi);
-        // + the truncation bound (π/4)·8Mρ^(−n)/(ρ−1), rounded up
-        let ln_b = (8.0 * m * std::f64::consts::FRAC_PI_4 / (rho - 1.0)).ln() - n as f64 * rho.ln();
-        let bound = Float::with_val(p, ln_b * 1.0000001 + 1e-9).exp();
-        let b = Iv::new(Float::with_val(p, -&bound), bound);
-        Ok(integral.add(&b))
     }
+    cuts.push(Rational::from(0));
+    cuts.reverse();
+    let mut total = Iv::int(p, 0);
+    for w in cuts.windows(2) {
+        total = total.add(&integrate_piece(ig, lo64, x_sing, &w[0], &w[1], p)?);
+    }
+    Ok(total)
+}
+
+/// ∫_a^b G(x) dx enclosed by Clenshaw–Curtis: ρ below the nearest
+/// singularity (f64 estimate), M proved on E_ρ by the box covering, n from
+/// the bound for about p + 8 bits relative to the integral, then
+/// Q_n ± h·8Mρ^(−n)/(ρ − 1).
+fn integrate_piece(
+    ig: &XForm,
+    lo64: &XForm,
+    x_sing: &[(f64, f64)],
+    a: &Rational,
+    b: &Rational,
+    p: u32,
+) -> Result<Iv> {
+    let (af, bf) = (a.to_f64(), b.to_f64());
+    let (mf, hf) = ((af + bf) / 2.0, (bf - af) / 2.0);
+    let rho_max = x_sing
+        .iter()
+        .map(|(re, im)| ccrig::rho_through((re - mf) / hf, im / hf))
+        .filter(|r| r.is_finite())
+        .fold(f64::INFINITY, f64::min)
+        .min(60.0);
+    // the integral's size: h·2·G(m), for the relative tolerance
+    let mid64 = Iv::rational(64, &(Rational::from(a + b) / 2u32));
+    let g_mid = lo64
+        .eval(&mid64)
+        .map(|v| v.lo.to_f64())
+        .unwrap_or(1e-3)
+        .max(1e-300);
+    // the tolerance 2^-(p+8) relative to the integral, as a log2
+    let tol_log2 = p as f64 + 8.0 - (2.0 * hf * g_mid).log2();
+    let (a64, b64) = (Iv::rational(64, a), Iv::rational(64, b));
+    let half = Iv::rational(64, &Rational::from((1, 2)));
+    let (m64, h64) = (a64.add(&b64).mul(&half), b64.sub(&a64).mul(&half));
+    let mut best: Option<(f64, Float, usize)> = None;
+    for frac in [0.95, 0.85, 0.7, 0.5, 0.3, 0.15] {
+        let rho = 1.0 + (rho_max - 1.0) * frac;
+        if rho <= 1.0 + 1e-6 || !rho.is_finite() {
+            break;
+        }
+        let Some(m) = ccrig::ellipse_max(rho, |z| {
+            // x = m + h z
+            let x = Cx {
+                re: z.re.mul(&h64).add(&m64),
+                im: z.im.mul(&h64),
+            };
+            lo64.abs_bound(&x)
+        }) else {
+            continue;
+        };
+        let n = ccrig::n_for(hf, m.to_f64(), rho, tol_log2);
+        if best.as_ref().is_none_or(|b| n < b.2) {
+            best = Some((rho, m, n));
+        } else {
+            // a smaller ρ needing more points: the best is found
+            break;
+        }
+        if p < 600 {
+            // low precision: the first proved ellipse is near enough
+            break;
+        }
+    }
+    let (rho, m, n) = best.ok_or_else(|| {
+        not_enclosed("t(theta): analyticity of the integrand on an ellipse could not be proved")
+    })?;
+    if n > 8 * p as usize + 64 {
+        return Err(not_enclosed(
+            "t(theta): too many quadrature points for the bound",
+        ));
+    }
+    let rule = ccrig::rule(ccrig::round_n(n), p);
+    let (ai, bi) = (Iv::rational(p, a), Iv::rational(p, b));
+    let q = rule.apply(&ai, &bi, |x| ig.eval(x))?;
+    let h_hi = Float::with_val_round(64, &h64.hi, Round::Up).0;
+    let bound = ccrig::truncation_bound(&h_hi, &m, rho, rule.n);
+    let bound = Float::with_val_round(p, &bound, Round::Up).0;
+    Ok(q.add(&Iv::new(Float::with_val(p, -&bound), bound)))
 }
 
 impl Oracle {
@@ -540,7 +580,12 @@ impl Oracle {
     ///
     /// Errors: as [`Oracle::rigorous_time_iv`]; θ outside the motion.
     pub fn rigorous_time(&mut self, theta: &Exact, p: u32) -> Result<Proved> {
-        self.time_at(theta)?;
+        // inside the motion (decided as the verified answer decides it, at
+        // the scan's precision; the verified time itself is not needed)
+        if self.work.starts_at_equilibrium() {
+            return Err(self.infinite_time_error("the time to any angle"));
+        }
+        self.delta_of("to", theta, 64)?;
         let th = Iv::exact(p, &self.to_work(theta));
         let t = self.rigorous_time_iv(&th, p)?;
         Ok(Proved::new("t", t, self.digits))
@@ -568,9 +613,14 @@ impl Oracle {
     }
 }
 
-/// The half-angle integrand in u of [`crate::mechanics::dynamics::HalfAngleTime::eval_u`]
-/// over intervals and complex boxes.
-struct Integrand {
+/// The half-angle integrand in x = sin u (σ = Δσ x², s = sin(θ/2) = s0 + σ,
+/// c = cos θ = 1 − 2s²): ∫_0^{π/2} g(u) du = ∫_0^1 G(x) dx with
+/// G = √(K(c)/((1 − s²)(s + s0))) from rest and
+/// G = x·√(K(c)/((1 − s²)(σ(s + s0) + h0r))) otherwise — no trigonometric
+/// function at the nodes, and G is analytic wherever the factors under the
+/// root do not vanish (their zeros are the singularities of
+/// [`crate::mechanics::dynamics::HalfAngleTime::singular_sin2`], x² = sin²u).
+struct XForm {
     s0: Iv,
     dsig: Iv,
     q: [Iv; 3],
@@ -578,119 +628,73 @@ struct Integrand {
     from_rest: bool,
 }
 
-impl Integrand {
-    /// g(u) for a real interval u.
-    fn eval(&self, u: &Iv) -> Result<Iv> {
-        let p = u.prec();
-        let (su, cu) = (u.sin(), u.cos());
-        let sig = self.dsig.mul(&su.sqr());
+impl XForm {
+    /// The same integrand with every constant rounded outwards to `p` bits.
+    fn at_bits(&self, p: u32) -> XForm {
+        XForm {
+            s0: self.s0.outward(p),
+            dsig: self.dsig.outward(p),
+            q: [
+                self.q[0].outward(p),
+                self.q[1].outward(p),
+                self.q[2].outward(p),
+            ],
+            h0r: self.h0r.outward(p),
+            from_rest: self.from_rest,
+        }
+    }
+
+    /// G(x) for a real interval x.
+    fn eval(&self, x: &Iv) -> Result<Iv> {
+        let p = x.prec();
+        let sig = self.dsig.mul(&x.sqr());
         let s = self.s0.add(&sig);
+        let s2 = s.sqr();
         let one = Iv::int(p, 1);
-        let c = one.sub(&s.sqr().mul(&Iv::int(p, 2)));
+        let c = one.sub(&s2.mul(&Iv::int(p, 2)));
         let k = Iv::horner(&self.q, &c);
-        let a = one.sub(&s.sqr());
+        let a = one.sub(&s2);
         let b = if self.from_rest {
             s.add(&self.s0)
         } else {
             sig.mul(&s.add(&self.s0)).add(&self.h0r)
         };
-        let g = k.div(&a.mul(&b))?.sqrt()?.mul(&cu);
-        Ok(if self.from_rest { g } else { g.mul(&su) })
+        let g = k.div(&a.mul(&b))?.sqrt()?;
+        Ok(if self.from_rest { g } else { g.mul(x) })
     }
 
-    /// An upper bound M of |g| on the closed Bernstein ellipse E_ρ of
-    /// [0, π/2], after proving that no factor under the root vanishes on it
-    /// (a covering by complex boxes, at 64 bits).
-    ///
-    /// Errors: a box on which a factor may vanish.
-    fn bound_on_ellipse(&self, rho: f64) -> Result<f64> {
-        let p = 64;
-        let iv = |x: &Iv| {
-            Iv::new(
-                Float::with_val_round(p, &x.lo, Round::Down).0,
-                Float::with_val_round(p, &x.hi, Round::Up).0,
-            )
+    /// An upper bound of |G| over the complex box x, or `None` when a factor
+    /// under the root may vanish on it (so that no analytic branch is
+    /// proved). |G| = √(|K|/(|1 − s²||B|)) (·|x|) for any branch of the root.
+    fn abs_bound(&self, x: &Cx) -> Option<Float> {
+        let p = x.re.prec();
+        let one = Iv::int(p, 1);
+        let sig = x.sqr().scale(&self.dsig);
+        let s = sig.add_real(&self.s0);
+        let s2 = s.sqr();
+        let c = s2.scale(&Iv::int(p, -2)).add_real(&one);
+        let k = c
+            .scale(&self.q[2])
+            .add_real(&self.q[1])
+            .mul(&c)
+            .add_real(&self.q[0]);
+        let fa = s2.scale(&Iv::int(p, -1)).add_real(&one);
+        let fb = if self.from_rest {
+            s.add_real(&self.s0)
+        } else {
+            sig.mul(&s.add_real(&self.s0)).add_real(&self.h0r)
         };
-        let s0 = Cx::real(iv(&self.s0));
-        let dsig = iv(&self.dsig);
-        let q: Vec<Cx> = self.q.iter().map(|x| Cx::real(iv(x))).collect();
-        let h0r = Cx::real(iv(&self.h0r));
-        let a = (rho + 1.0 / rho) / 2.0;
-        let b = (rho - 1.0 / rho) / 2.0;
-        let (nx, ny) = (64usize, 24usize);
-        let quarter_pi = Iv::pi(p).mul_q(&Rational::from((1, 4)));
-        let one = Cx::real(Iv::int(p, 1));
-        let two = Iv::int(p, 2);
-        let mut m = 0.0f64;
-        for ix in 0..nx {
-            for iy in 0..ny {
-                let x0 = -a + 2.0 * a * ix as f64 / nx as f64;
-                let x1 = -a + 2.0 * a * (ix + 1) as f64 / nx as f64;
-                let y0 = -b + 2.0 * b * iy as f64 / ny as f64;
-                let y1 = -b + 2.0 * b * (iy + 1) as f64 / ny as f64;
-                // skip boxes wholly outside the ellipse
-                let cx = if x0 > 0.0 {
-                    x0
-                } else if x1 < 0.0 {
-                    x1
-                } else {
-                    0.0
-                };
-                let cy = if y0 > 0.0 {
-                    y0
-                } else if y1 < 0.0 {
-                    y1
-                } else {
-                    0.0
-                };
-                if (cx / a).powi(2) + (cy / b).powi(2) > 1.0 + 1e-9 {
-                    continue;
-                }
-                let zx = Iv::new(
-                    Float::with_val_round(p, x0, Round::Down).0,
-                    Float::with_val_round(p, x1, Round::Up).0,
-                );
-                let zy = Iv::new(
-                    Float::with_val_round(p, y0, Round::Down).0,
-                    Float::with_val_round(p, y1, Round::Up).0,
-                );
-                // u = π/4 (1 + z)
-                let u = Cx {
-                    re: zx.add_q(&Rational::from(1)).mul(&quarter_pi),
-                    im: zy.mul(&quarter_pi),
-                };
-                let (su, cu) = (u.sin(), u.cos());
-                let sig = su.mul(&su).scale(&dsig);
-                let s = s0.add(&sig);
-                let s2 = s.mul(&s);
-                let c = one.sub(&s2.scale(&two));
-                let k = q[0].add(&q[1].mul(&c)).add(&q[2].mul(&c).mul(&c));
-                let fa = one.sub(&s2);
-                let fb = if self.from_rest {
-                    s.add(&s0)
-                } else {
-                    sig.mul(&s.add(&s0)).add(&h0r)
-                };
-                let (klo, alo, blo) = (k.abs_lo(), fa.abs_lo(), fb.abs_lo());
-                if klo.is_zero() || alo.is_zero() || blo.is_zero() {
-                    return Err(not_enclosed(
-                        "a factor of the integrand may vanish on the ellipse",
-                    ));
-                }
-                let mut g = k.abs_hi().to_f64_round(Round::Up)
-                    / (alo.to_f64_round(Round::Down) * blo.to_f64_round(Round::Down));
-                g = g.sqrt() * cu.abs_hi().to_f64_round(Round::Up);
-                if !self.from_rest {
-                    g *= su.abs_hi().to_f64_round(Round::Up);
-                }
-                // f64 roundings: a relative margin far above their size
-                m = m.max(g * (1.0 + 1e-9));
-            }
+        let (klo, alo, blo) = (k.abs_lo(), fa.abs_lo(), fb.abs_lo());
+        if klo.is_zero() || alo.is_zero() || blo.is_zero() {
+            return None;
         }
-        if !m.is_finite() {
-            return Err(not_enclosed("an unbounded integrand on the ellipse"));
+        let den = Float::with_val_round(p, &alo * &blo, Round::Down).0;
+        let r = Float::with_val_round(p, &k.abs_hi() / &den, Round::Up).0;
+        let mut g = Float::with_val_round(p, r.sqrt_ref(), Round::Up).0;
+        if !self.from_rest {
+            g = Float::with_val_round(p, &g * &x.abs_hi(), Round::Up).0;
         }
-        Ok(m)
+        Some(g)
     }
 }
 
