@@ -178,14 +178,27 @@ impl Oracle {
     /// Errors: no enclosure (the signs or the positivity could not be
     /// proved at this precision).
     pub fn rigorous_theta_s(&mut self, p: u32) -> Result<Iv> {
-        let v = self.separation_angle()?;
+        use crate::numeric::poly;
+        // isolation as the verified answer does it (64 bits), then Newton on
+        // the midpoints at p bits: only a starting point, the proof follows
+        const ISO: u32 = 64;
+        let c0_iso = self.engine(ISO)?.dynm.c0.clone();
+        let coef_iso = self.n12_coefficients(ISO)?;
+        let roots = poly::sign_change_roots(&coef_iso, &Float::with_val(ISO, -1), &c0_iso);
+        let start = roots
+            .into_iter()
+            .rev()
+            .find(|c| *c < c0_iso)
+            .ok_or_else(|| {
+                Error::not_physical(
+                    "N12 stays positive up to theta = pi: the cylinders never separate",
+                )
+            })?;
         let k = self.consts(p);
-        let c_star = Float::with_val(p, self.odd(v.value.clone()).cos_ref());
         let coef = self.n12_interval_coefficients(&k)?;
-        // the verified root refined at p bits (Newton on the midpoints)
         let mids: Vec<Float> = coef.iter().map(|c| c.mid_rad().0).collect();
-        let (c_star, eps0) = crate::numeric::poly::refine_root("theta_s", &mids, &c_star, p)
-            .unwrap_or((c_star, Float::with_val(p, &v.err_bound)));
+        let (c_star, eps0) = poly::refine_root("theta_s", &mids, &start, p)
+            .unwrap_or_else(|_| (Float::with_val(p, &start), Float::with_val(p, 1e-12)));
         let c0 = k.th0.cos();
         let mut eps = Float::with_val(p, eps0 * 4u32);
         let min_eps = Float::with_val(p, 1u32) >> (p as i32 - 8);
@@ -197,7 +210,7 @@ impl Oracle {
             let hi = Float::with_val_round(p, &c_star + &eps, Round::Up).0;
             let plo = Iv::horner(&coef, &Iv::point(p, &lo));
             let phi = Iv::horner(&coef, &Iv::point(p, &hi));
-            if plo.is_negative() && phi.is_positive() && prove_positive(&coef, &hi, &c0.hi)? {
+            if plo.is_negative() && phi.is_positive() && positive_above(&coef, &hi, &c0.hi)? {
                 let th = Iv::new(lo, hi).acos()?;
                 return Ok(self.odd_iv(th));
             }
@@ -696,6 +709,53 @@ impl XForm {
         }
         Some(g)
     }
+}
+
+/// Proves P > 0 on (a, b] given P(a) > 0 (a ≤ b): P' > 0 on
+/// [a, a + δ] (δ = 2^-24·max(1, |a|), interval Horner of P' at 64 bits) makes
+/// P increasing there, so P > P(a) > 0 on (a, a + δ]; then P > 0 on
+/// [a + δ, b] by [`prove_positive`] at 64 bits, where P is far from 0
+/// compared with 64-bit rounding. Both steps use the coefficients rounded
+/// outwards, so they hold for the exact ones. Falls back to
+/// [`prove_positive`] at full precision if the derivative's sign is not
+/// proved.
+fn positive_above(coef: &[Iv], a: &Float, b: &Float) -> Result<bool> {
+    if a > b {
+        return Ok(true);
+    }
+    let p = 64;
+    let c64: Vec<Iv> = coef.iter().map(|c| c.outward(p)).collect();
+    let deriv: Vec<Iv> = c64
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, c)| c.mul(&Iv::int(p, i as i64)))
+        .collect();
+    let scale = if Float::with_val(p, a.abs_ref()) > 1 {
+        Float::with_val_round(p, a.abs_ref(), Round::Up).0
+    } else {
+        Float::with_val(p, 1)
+    };
+    let delta = scale >> 24u32;
+    let a_dn = Float::with_val_round(p, a, Round::Down).0;
+    let a_up = Float::with_val_round(p, a, Round::Up).0;
+    let end = Float::with_val_round(p, &a_up + &delta, Round::Up).0;
+    let end = if &end > b {
+        Float::with_val_round(p, b, Round::Up).0
+    } else {
+        end
+    };
+    if Iv::horner(&deriv, &Iv::new(a_dn, end.clone())).is_positive() {
+        // [a, end] ⊂ the monotone piece (end rounded up)
+        if end >= *b {
+            return Ok(true);
+        }
+        let b64 = Float::with_val_round(p, b, Round::Up).0;
+        if prove_positive(&c64, &end, &b64)? {
+            return Ok(true);
+        }
+    }
+    prove_positive(coef, a, b)
 }
 
 /// Proves P > 0 on [a, b] (a ≤ b) by bisection: on each piece, interval
