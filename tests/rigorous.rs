@@ -144,6 +144,61 @@ fn time_encloses_the_verified_value_at_higher_precision() {
     }
 }
 
+#[test]
+fn time_enclosures_shrink_with_precision_and_near_singular_starts_are_enclosed() {
+    // T1 (from rest at 1/10 to 9/10): width ~ 2^-p, containing the value
+    // verified at 320 digits
+    let m = model(&[("theta0", "1/10")]);
+    let want = Oracle::new(&m, 320).unwrap().time_at(&ex("9/10")).unwrap();
+    let mut o = Oracle::new(&m, 30).unwrap();
+    let mut last_w: Option<Float> = None;
+    for p in [128u32, 256, 512, 1024] {
+        let th = cylroll::numeric::interval::Iv::exact(p, &ex("9/10"));
+        let iv = o.rigorous_time_iv(&th, p).unwrap();
+        assert!(iv.contains(&want.value), "at {p}: [{}, {}]", iv.lo, iv.hi);
+        let w = iv.width();
+        assert!(w < Float::with_val(64, 1) >> (p - 16), "width {w} at {p}");
+        if let Some(l) = last_w {
+            assert!(w < l);
+        }
+        last_w = Some(w);
+    }
+    // a start very near the top (the singularity of the integrand in
+    // x = sin u is at |x| ≈ 0.0015: [0, 1] is split) and a slow start
+    for (pairs, to) in [
+        (&[("theta0", "1/1000000")][..], "1/2"),
+        (&[("theta0", "1/10"), ("thetadot0", "1/100000")], "1"),
+        (
+            &[("theta0", "-1/5"), ("floor", "slip"), ("contact", "slip")],
+            "-7/10",
+        ),
+    ] {
+        let m = model(pairs);
+        let want = Oracle::new(&m, 60).unwrap().time_at(&ex(to)).unwrap();
+        let mut o = Oracle::new(&m, 30).unwrap();
+        let pv = o
+            .rigorous_time(&ex(to), 160)
+            .unwrap_or_else(|e| panic!("{pairs:?}: {e}"));
+        assert!(
+            pv.iv.contains(&want.value),
+            "{pairs:?}: {} not in [{}, {}]",
+            want.value,
+            pv.iv.lo,
+            pv.iv.hi
+        );
+        assert!(pv.shown.digits >= 30, "{pairs:?}: {}", pv.shown.digits);
+    }
+}
+
+#[test]
+fn the_time_outside_the_motion_is_refused() {
+    let mut o = Oracle::new(&model(&[("theta0", "1/10")]), 20).unwrap();
+    assert!(o.rigorous_time(&ex("2"), 128).is_err());
+    assert!(o.rigorous_time(&ex("1/20"), 128).is_err());
+    let mut top = Oracle::new(&model(&[]), 20).unwrap();
+    assert!(top.rigorous_time(&ex("1/2"), 128).is_err());
+}
+
 fn cli(args: &[&str]) -> (i32, String, String) {
     let out = assert_cmd::Command::cargo_bin("cylroll")
         .unwrap()
