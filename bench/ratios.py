@@ -208,7 +208,8 @@ def main():
                 cells.append("-")
             else:
                 cells.append(fmt(c) + (f" (×{c / oc:.2g})" if oc else ""))
-        print(f"| {task} | {d} | " + " | ".join(cells) + " |")
+        name = {"T1r": "T1 proved", "T2r": "T2 proved"}.get(task, task)
+        print(f"| {name} | {d} | " + " | ".join(cells) + " |")
     print()
     print("Anchor methods shown (fastest correct):")
     for (task, d, tool), b in sorted(best.items(), key=lambda x: (x[0][0], x[0][1], x[0][2])):

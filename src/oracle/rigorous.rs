@@ -4,26 +4,34 @@
 //!
 //! - θs: N12·K²/m2 is a polynomial P(c) in c = cos θ whose coefficients are
 //!   exact rationals and A_H (an interval). P(c_hi) > 0 > P(c_lo) at two
-//!   points around the verified root, and P > 0 on [c_hi, cos θ0] (proved by
-//!   bisection with interval Horner and its mean-value form), so by the
-//!   intermediate value theorem the first zero of N12 after θ0 has cos θs in
-//!   [c_lo, c_hi], and θs = arccos of it.
+//!   points around the root (isolated at 64 bits, refined by Newton at the
+//!   working precision), and P > 0 on (c_hi, cos θ0] — P' > 0 on a short
+//!   piece [c_hi, c_hi + δ] (so P > P(c_hi) > 0 there), then bisection with
+//!   interval Horner and its mean-value form on the rest, both at 64 bits
+//!   with the coefficients rounded outwards — so by the intermediate value
+//!   theorem the first zero of N12 after θ0 has cos θs in [c_lo, c_hi], and
+//!   θs = arccos of it.
 //! - forces, θ̇, θ̈ at a given θ: the closed forms of
 //!   [`crate::mechanics::dynamics::Dyn`] evaluated in interval arithmetic,
 //!   θ̇² = H/K with H = K(θ0)θ̇0² + 4(g/r) sin((θ+θ0)/2) sin((θ−θ0)/2).
-//! - t(θ): the half-angle integral in u (σ = Δσ sin²u, analytic on
-//!   [0, π/2]) by Clenshaw–Curtis quadrature with n + 1 points, which
-//!   integrates exactly the polynomial interpolating g in the Chebyshev
-//!   points. Theorem (Trefethen, *Approximation Theory and Approximation
-//!   Practice*, Thm 8.2): if g is analytic in the open Bernstein ellipse
-//!   E_ρ of the interval and |g| ≤ M there, the interpolant p_n satisfies
-//!   ‖g − p_n‖∞ ≤ 4Mρ^(−n)/(ρ − 1); so |∫g − Q_n| ≤ (b − a)/2 · 8Mρ^(−n)/(ρ − 1).
-//!   Analyticity and M are proved by covering the closed ellipse with complex
-//!   boxes on which every factor under the square root is bounded away from
-//!   0 (no zero, no pole, hence an analytic branch of the root) and bounding
-//!   |g| above; nodes, weights and the sum are enclosed by interval
-//!   arithmetic.
-//!
+//! - t(θ): the half-angle integral written in x = sin u (σ = Δσ x², so
+//!   t = factor·∫_0^1 G(x) dx with G built from +, ×, ÷ and one square root:
+//!   no trigonometric function at the nodes, `XForm`) by Clenshaw–Curtis
+//!   quadrature ([`crate::numeric::ccrig`]: rules cached per (n, precision)).
+//!   Theorem (Trefethen, *Approximation Theory and Approximation Practice*,
+//!   Thm 8.2): if g is analytic in the open Bernstein ellipse E_ρ of the
+//!   interval and |g| ≤ M there, the interpolant p_n in the n + 1 Chebyshev
+//!   points satisfies ‖g − p_n‖∞ ≤ 4Mρ^(−n)/(ρ − 1); Clenshaw–Curtis
+//!   integrates p_n exactly, so |∫g − Q_n| ≤ (b − a)/2 · 8Mρ^(−n)/(ρ − 1).
+//!   Analyticity and M are proved by covering the closed ellipse (its upper
+//!   half: the factors have real coefficients) with complex boxes at 64 bits
+//!   on which every factor under the square root is bounded away from 0 (no
+//!   zero, no pole, hence an analytic branch of the root) and bounding |G|
+//!   above; ρ is taken just below the nearest singularity (closed forms in
+//!   f64, only a choice: the covering proves), n from the bound; [0, 1] is
+//!   split geometrically when a singularity is within 0.01 of x = 0. Nodes,
+//!   weights (with an a-priori bound on their rounding) and the sum are
+//!   enclosed.
 //! - with friction, from a start where both contacts stick: the angle where
 //!   sticking ends (the first slip onset, or the contact's abrupt opening)
 //!   is the first root of R = μ²Ñ² − (1 − c²)F̃², a polynomial in c = cos θ
@@ -725,7 +733,7 @@ impl Oracle {
     /// While both contacts stick, the motion is the ideal rolling model's:
     /// θ̇² = H/K > 0 past the start (H = A_H − 2(g/r)c decreases in c and
     /// A_H ≥ 2(g/r) cos θ0), and the forces are the closed forms
-    /// F = sin θ·F̃(c)/K², N = Ñ(c)/K² ([`Oracle::contact_polys`]); with
+    /// F = sin θ·F̃(c)/K², N = Ñ(c)/K² (`Oracle::contact_polys`); with
     /// sin θ ≥ 0 and Ñ > 0, |F| ≤ μN ⟺ R = μ²Ñ² − (1 − c²)F̃² ≥ 0, a
     /// polynomial in c. `mu` holds μs at the floor and at the contact (None:
     /// that contact never slips); `floor_first` says which contact's
