@@ -15,7 +15,9 @@
 # The anchors write their results into their own folder, so they run in a copy of
 # it: ../shared/bench/results is never touched. The machine may be shared: the
 # table uses CPU-time medians (best-of for the C anchor, as it reports), and
-# `uptime` is printed before and after.
+# `uptime` is printed before and after. T1r and T2r are cylroll's proved T1 and
+# θs (`--rigorous`: interval enclosures proving every digit), set beside Arb, the
+# one anchor that proves its result.
 set -eu
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -66,7 +68,7 @@ if want ours; then
     echo "== cylroll" >&2
     (cd "$ROOT" && cargo bench --bench tasks --no-run -q 2>/dev/null || cargo bench --bench tasks --no-run)
     (cd "$ROOT" && CYLROLL_BENCH=cpu CYLROLL_BENCH_REF="$ANCH/results" CYLROLL_BENCH_DIGITS="$DIGITS" \
-        cargo bench --bench tasks -q -- T1 T2 T2b T3 T3rows) > "$R/cylroll.jsonl"
+        cargo bench --bench tasks -q -- T1 T2 T2b T1r T2r T3 T3rows) > "$R/cylroll.jsonl"
 fi
 if want c-mpfr; then
     echo "== ts_mpfr.c" >&2

@@ -12,7 +12,16 @@ For each anchor the fastest method whose value is correct to at least d - 5
 digits is shown (methods that fail or lose digits are left out and listed).
 cylroll's values were checked digit by digit against the references before
 being timed (benches/tasks.rs), so every cylroll cell is correct.
+
+T1r and T2r are cylroll's *proved* T1 and T2 (interval enclosures proving every
+digit, `--rigorous`), compared with Arb's T1 and T2 (the only anchor whose
+results are balls, i.e. proved); the other anchors are shown as n/a there.
 """
+
+# proved tasks: the anchor task they are compared with, and the one anchor
+# that proves its result
+PROVED = {"T1r": "T1", "T2r": "T2"}
+PROVED_TOOL = "flint"
 import json
 import os
 import sys
@@ -107,6 +116,17 @@ def floor_ms(r):
     return {d: counts[d] * cost[d] for d in counts if d in cost}
 
 
+ORDER = ["T1", "T2", "T2b", "T1r", "T2r", "T3", "T3rows"]
+
+
+def anchor(best, task, d, tool):
+    """The anchor's row for our task: for a proved task, Arb's row of the
+    task it proves (None for the other tools)."""
+    if task in PROVED:
+        return best.get((PROVED[task], d, tool)) if tool == PROVED_TOOL else None
+    return best.get((task, d, tool))
+
+
 def print_header(cols):
     """A markdown table's header and rule."""
     print("| " + " | ".join(cols) + " |")
@@ -142,14 +162,14 @@ def main():
     print()
     print_header(["task", "digits", "cylroll"] + [name for _, name in TOOLS] + ["T1 tanh-sinh floor"])
     tasks = sorted({(t, d) for (t, d) in ours} | {(k[0], k[1]) for k in best},
-                   key=lambda x: (["T1", "T2", "T2b", "T3", "T3rows"].index(x[0]), x[1]))
+                   key=lambda x: (ORDER.index(x[0]), x[1]))
     for task, d in tasks:
         o = ours.get((task, d))
         ot = o["cpu_median_s"] if o else None
         cells = [fmt(ot)]
         for tool, _ in TOOLS:
-            b = best.get((task, d, tool))
-            if task == "T3rows":
+            b = anchor(best, task, d, tool)
+            if task == "T3rows" or (task in PROVED and tool != PROVED_TOOL):
                 # the anchors tabulate θ only; these rows add 12 verified columns
                 cells.append("n/a")
             elif b is None:
@@ -159,8 +179,12 @@ def main():
                 cells.append(fmt(b["cpu_median_s"]) + ratio)
         fl = floors.get(d) if task == "T1" else None
         cells.append(f"{fmt(fl)} (×{fl / ot:.2g})" if fl and ot else "-")
-        name = {"T3": "T3 (θ only)", "T3rows": "T3 rows (13 columns)"}.get(task, task)
+        name = {"T3": "T3 (θ only)", "T3rows": "T3 rows (13 columns)",
+                "T1r": "T1 proved", "T2r": "T2 proved"}.get(task, task)
         print(f"| {name} | {d} | " + " | ".join(cells) + " |")
+    print()
+    print("T1 proved, T2 proved: cylroll's interval enclosures (`--rigorous`, every digit proved)")
+    print("beside Arb's balls for T1 and T2; the other anchors prove nothing (n/a).")
     print()
     print("T3 rows: `Oracle::trajectory`, all 13 columns of `cylroll trajectory` (t, θ, θ̇, θ̈,")
     print("positions, F1, N1, F21, N12, energy…) verified at 1000 times; no anchor computes them,")
@@ -178,13 +202,14 @@ def main():
         oc = o["cold_cpu_s"] if o else None
         cells = [fmt(oc)]
         for tool, _ in TOOLS:
-            b = best.get((task, d, tool))
+            b = anchor(best, task, d, tool)
             c = (b.get("cold_s") or None) if b else None
             if c is None:
                 cells.append("-")
             else:
                 cells.append(fmt(c) + (f" (×{c / oc:.2g})" if oc else ""))
-        print(f"| {task} | {d} | " + " | ".join(cells) + " |")
+        name = {"T1r": "T1 proved", "T2r": "T2 proved"}.get(task, task)
+        print(f"| {name} | {d} | " + " | ".join(cells) + " |")
     print()
     print("Anchor methods shown (fastest correct):")
     for (task, d, tool), b in sorted(best.items(), key=lambda x: (x[0][0], x[0][1], x[0][2])):

@@ -21,6 +21,7 @@ use cylroll::exact::Exact;
 use cylroll::model::{Contact, Floor, Model, Params, Start};
 use cylroll::numeric::decimal::to_sig;
 use cylroll::numeric::verify::Verified;
+use cylroll::oracle::rigorous::Proved;
 use cylroll::oracle::Oracle;
 use rug::{Float, Rational};
 use std::path::PathBuf;
@@ -99,6 +100,22 @@ fn check(task: &str, v: &Verified, reference: &str, digits: u32) {
     );
 }
 
+/// A proved value: all `digits` digits proved, the text the reference
+/// rounded, and the enclosure containing the (1100-digit) reference.
+fn check_proved(task: &str, v: &Proved, reference: &str, digits: u32) {
+    check(task, &v.shown, reference, digits);
+    let p = v.iv.prec();
+    let want = Float::with_val(p.max(4000), Float::parse(reference).expect("decimal"));
+    // the reference's own last digit: a margin of 10^-1050
+    let tol = Float::with_val(64, Float::i_pow_u(10, 1050)).recip();
+    let lo = Float::with_val(p.max(4000), &v.iv.lo - &tol);
+    let hi = Float::with_val(p.max(4000), &v.iv.hi + &tol);
+    assert!(
+        lo <= want && want <= hi,
+        "{task} at {digits} digits: the enclosure misses the reference"
+    );
+}
+
 fn t3_times() -> Vec<Exact> {
     t3_times_n(T3_POINTS)
 }
@@ -125,8 +142,8 @@ struct Task {
 impl Task {
     fn new(name: &'static str, digits: u32) -> Task {
         let (m2, theta0) = match name {
-            "T1" | "T3" | "T3rows" => (1, "1/10"),
-            "T2" => (1, "0"),
+            "T1" | "T1r" | "T3" | "T3rows" => (1, "1/10"),
+            "T2" | "T2r" => (1, "0"),
             "T2b" => (2, "0"),
             _ => panic!("unknown task {name}"),
         };
@@ -147,6 +164,8 @@ impl Task {
         match self.name {
             "T1" => self.oracle.time_at(&q("9/10")).expect("T1").text,
             "T2" | "T2b" => self.oracle.separation_angle().expect("T2").text,
+            "T1r" => self.proved_t1().shown.text,
+            "T2r" => self.proved_t2().shown.text,
             "T3" => {
                 let th = self.oracle.theta_at_times(&self.times).expect("T3");
                 th[T3_POINTS - 1].text.clone()
@@ -157,6 +176,23 @@ impl Task {
             }
             _ => unreachable!(),
         }
+    }
+
+    /// The working precision of `--rigorous` (the command line's first try).
+    fn rigorous_prec(&self) -> u32 {
+        cylroll::numeric::bits_for_digits(self.oracle.digits()) + 32
+    }
+
+    /// T1 proved: the enclosure of t(9/10) (`time --rigorous`).
+    fn proved_t1(&mut self) -> Proved {
+        let p = self.rigorous_prec();
+        self.oracle.rigorous_time(&q("9/10"), p).expect("T1r")
+    }
+
+    /// T2 proved: the enclosure of θs (`separation --rigorous`).
+    fn proved_t2(&mut self) -> Proved {
+        let p = self.rigorous_prec();
+        self.oracle.rigorous_separation(p).expect("T2r").0
     }
 
     /// Runs once and checks every value against the references.
@@ -171,6 +207,14 @@ impl Task {
                 d,
             ),
             "T2" => check("T2", &self.oracle.separation_angle().expect("T2"), &r.t2, d),
+            "T1r" => {
+                let v = self.proved_t1();
+                check_proved("T1r", &v, &r.t1, d);
+            }
+            "T2r" => {
+                let v = self.proved_t2();
+                check_proved("T2r", &v, &r.t2, d);
+            }
             "T2b" => check(
                 "T2b",
                 &self.oracle.separation_angle().expect("T2b"),
@@ -217,6 +261,16 @@ fn t2(bencher: divan::Bencher, digits: u32) {
 #[divan::bench(args = DIGITS, sample_count = 20, sample_size = 1)]
 fn t2b(bencher: divan::Bencher, digits: u32) {
     divan_task(bencher, "T2b", digits);
+}
+
+#[divan::bench(args = DIGITS, sample_count = 10, sample_size = 1)]
+fn t1_rigorous(bencher: divan::Bencher, digits: u32) {
+    divan_task(bencher, "T1r", digits);
+}
+
+#[divan::bench(args = DIGITS, sample_count = 20, sample_size = 1)]
+fn t2_rigorous(bencher: divan::Bencher, digits: u32) {
+    divan_task(bencher, "T2r", digits);
 }
 
 #[divan::bench(args = T3_DIGITS, sample_count = 5, sample_size = 1)]
@@ -384,7 +438,7 @@ fn cpu_main() {
             }
         }
     }
-    for name in ["T1", "T2", "T2b", "T3", "T3rows"] {
+    for name in ["T1", "T2", "T2b", "T1r", "T2r", "T3", "T3rows"] {
         if !wanted(name) {
             continue;
         }

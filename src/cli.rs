@@ -729,6 +729,106 @@ fn enclosure_why(e: &Error) -> String {
     }
 }
 
+/// With friction, from a start where both contacts stick: the angle where
+/// sticking ends ([`Oracle::rigorous_stick_end`]) and the time to it, proved.
+/// For a first slip onset they are new values `theta_slip_onset` and
+/// `t_slip_onset` (the verified event's, renamed); for an abrupt opening of
+/// the contact (the first event a separation) they are theta_s and t_s.
+/// Returns (index in `values` or None to append, verified value, proof) per
+/// value, or why nothing is enclosed.
+type ProvedSlots = Vec<(Option<usize>, Verified, Option<Proved>)>;
+
+fn stick_end_proved(
+    model: &Model,
+    fr: &Friction,
+    ans: &cylroll::friction::answer::SeparationAnswer,
+    digits: u32,
+) -> std::result::Result<ProvedSlots, String> {
+    use cylroll::friction::{Kind, Law, Which};
+    if ans.start_mode != "floor stick, contact stick" {
+        return Err(format!(
+            "the start mode is {}: only a start where both contacts stick has closed forms",
+            ans.start_mode
+        ));
+    }
+    let ev = ans.events.first().ok_or("no event")?;
+    let floor_first = match (ev.kind, ev.which) {
+        (Kind::SlipOnset, Some(w)) => w == Which::Floor,
+        (Kind::Separation, Some(Which::Contact)) => false,
+        _ => return Err("the first event is neither a slip onset nor the contact opening".into()),
+    };
+    let mu = |l: &Law| match l {
+        Law::Coulomb { mu_s, .. } => Ok(Some(mu_s.clone())),
+        Law::Roll => Ok(None),
+        Law::Slip => Err("a frictionless contact".to_string()),
+    };
+    let (mf, mc) = (mu(&fr.floor)?, mu(&fr.contact)?);
+    let mut o = Oracle::new(model, digits).map_err(|e| e.to_string())?;
+    let mut th_iv = None;
+    let th = prove_with(
+        digits,
+        |p| {
+            let iv =
+                o.rigorous_stick_end([mf.as_ref(), mc.as_ref()], floor_first, &ev.theta.value, p)?;
+            th_iv = Some(iv.clone());
+            Ok(Proved::new("theta", iv, digits))
+        },
+        |v| v.shown.digits < digits,
+    )
+    .map_err(|e| enclosure_why(&e))?;
+    let th_iv = th_iv.unwrap_or_else(|| th.iv.clone());
+    let t = prove_with(
+        digits,
+        |p| {
+            let x = th_iv.outward(p.min(th_iv.prec()));
+            let x = cylroll::numeric::interval::Iv::new(
+                rug::Float::with_val(p, &x.lo),
+                rug::Float::with_val(p, &x.hi),
+            );
+            o.rigorous_time_user(&x, p)
+                .map(|iv| Proved::new("t", iv, digits))
+        },
+        |v| v.shown.digits < digits,
+    )
+    .ok();
+    let find = |name: &str| ans.values.iter().position(|v| v.name == name);
+    let renamed = |v: &Verified, name: &str| {
+        let mut v = v.clone();
+        v.name = name.into();
+        v
+    };
+    let with_name = |p: Option<Proved>, name: &str| {
+        p.map(|mut p| {
+            p.name = name.into();
+            p.shown.name = name.into();
+            p
+        })
+    };
+    Ok(if ev.kind == Kind::SlipOnset {
+        vec![
+            (
+                None,
+                renamed(&ev.theta, "theta_slip_onset"),
+                with_name(Some(th), "theta_slip_onset"),
+            ),
+            (
+                None,
+                renamed(&ev.t, "t_slip_onset"),
+                with_name(t, "t_slip_onset"),
+            ),
+        ]
+    } else {
+        vec![
+            (
+                find("theta_s"),
+                renamed(&ev.theta, "theta_s"),
+                with_name(Some(th), "theta_s"),
+            ),
+            (find("t_s"), renamed(&ev.t, "t_s"), with_name(t, "t_s")),
+        ]
+    })
+}
+
 /// `--rigorous` is for the ideal models only.
 fn rigorous_supported(common: &Common, friction: bool) -> Result<()> {
     if common.rigorous && friction {
@@ -815,7 +915,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
         }
         Command::Separation { common, mu } => {
             let (model, fr) = common.model_friction()?;
-            rigorous_supported(&common, fr.is_some())?;
+            // with friction, --rigorous encloses the first slip onset only
             if let Some(fr) = fr {
                 if let Some(m) = mu {
                     return Err(Error::invalid(
@@ -826,20 +926,56 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                     ));
                 }
                 let ans = cylroll::friction::answer::separation(&model, &fr, common.digits)?;
-                let mut notes = ans.notes;
+                let mut values = ans.values.clone();
+                let mut proved = Vec::new();
+                let mut notes = ans.notes.clone();
                 notes.insert(
                     0,
                     format!("the first impact is on the {}", ans.impact_surface),
                 );
+                if common.rigorous {
+                    match stick_end_proved(&model, &fr, &ans, common.digits) {
+                        Ok(slots) => {
+                            proved.resize(values.len(), None);
+                            let mut names = Vec::new();
+                            for (at, v, pv) in slots {
+                                if pv.is_none() {
+                                    notes.push(format!(
+                                        "{} is not enclosed: verified digits only",
+                                        v.name
+                                    ));
+                                }
+                                names.push(v.name.clone());
+                                match at {
+                                    Some(i) => proved[i] = pv,
+                                    None => {
+                                        values.push(v);
+                                        proved.push(pv);
+                                    }
+                                }
+                            }
+                            notes.push(format!(
+                                "--rigorous encloses {}: where sticking ends, a root of a \
+                                 polynomial in cos theta while both contacts stick (the rolling \
+                                 model's closed forms), and the time to it; the phases after it \
+                                 are integrated and verified only",
+                                names.join(" and ")
+                            ));
+                        }
+                        Err(why) => notes.push(format!(
+                            "--rigorous: nothing is enclosed ({why}); every value is verified only"
+                        )),
+                    }
+                }
                 let a = Answer {
                     command: "separation",
                     model,
                     digits: common.digits,
-                    values: ans.values,
+                    values,
                     notes,
                     table: None,
                     friction: Some((fr, ans.start_mode, ans.events)),
-                    proved: Vec::new(),
+                    proved,
                     proved_rows: Vec::new(),
                 };
                 return Ok((a.render(common.format), 0));

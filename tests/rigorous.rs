@@ -144,6 +144,61 @@ fn time_encloses_the_verified_value_at_higher_precision() {
     }
 }
 
+#[test]
+fn time_enclosures_shrink_with_precision_and_near_singular_starts_are_enclosed() {
+    // T1 (from rest at 1/10 to 9/10): width ~ 2^-p, containing the value
+    // verified at 320 digits
+    let m = model(&[("theta0", "1/10")]);
+    let want = Oracle::new(&m, 320).unwrap().time_at(&ex("9/10")).unwrap();
+    let mut o = Oracle::new(&m, 30).unwrap();
+    let mut last_w: Option<Float> = None;
+    for p in [128u32, 256, 512, 1024] {
+        let th = cylroll::numeric::interval::Iv::exact(p, &ex("9/10"));
+        let iv = o.rigorous_time_iv(&th, p).unwrap();
+        assert!(iv.contains(&want.value), "at {p}: [{}, {}]", iv.lo, iv.hi);
+        let w = iv.width();
+        assert!(w < Float::with_val(64, 1) >> (p - 16), "width {w} at {p}");
+        if let Some(l) = last_w {
+            assert!(w < l);
+        }
+        last_w = Some(w);
+    }
+    // a start very near the top (the singularity of the integrand in
+    // x = sin u is at |x| ≈ 0.0015: [0, 1] is split) and a slow start
+    for (pairs, to) in [
+        (&[("theta0", "1/1000000")][..], "1/2"),
+        (&[("theta0", "1/10"), ("thetadot0", "1/100000")], "1"),
+        (
+            &[("theta0", "-1/5"), ("floor", "slip"), ("contact", "slip")],
+            "-7/10",
+        ),
+    ] {
+        let m = model(pairs);
+        let want = Oracle::new(&m, 60).unwrap().time_at(&ex(to)).unwrap();
+        let mut o = Oracle::new(&m, 30).unwrap();
+        let pv = o
+            .rigorous_time(&ex(to), 160)
+            .unwrap_or_else(|e| panic!("{pairs:?}: {e}"));
+        assert!(
+            pv.iv.contains(&want.value),
+            "{pairs:?}: {} not in [{}, {}]",
+            want.value,
+            pv.iv.lo,
+            pv.iv.hi
+        );
+        assert!(pv.shown.digits >= 30, "{pairs:?}: {}", pv.shown.digits);
+    }
+}
+
+#[test]
+fn the_time_outside_the_motion_is_refused() {
+    let mut o = Oracle::new(&model(&[("theta0", "1/10")]), 20).unwrap();
+    assert!(o.rigorous_time(&ex("2"), 128).is_err());
+    assert!(o.rigorous_time(&ex("1/20"), 128).is_err());
+    let mut top = Oracle::new(&model(&[]), 20).unwrap();
+    assert!(top.rigorous_time(&ex("1/2"), 128).is_err());
+}
+
 fn cli(args: &[&str]) -> (i32, String, String) {
     let out = assert_cmd::Command::cargo_bin("cylroll")
         .unwrap()
@@ -231,7 +286,132 @@ fn the_flag_prints_proved_digits_and_enclosures_that_hold() {
 }
 
 #[test]
-fn friction_is_not_enclosed_and_says_so() {
+fn friction_phases_are_not_enclosed_and_say_so() {
+    for cmd in [
+        &["forces", "--rigorous", "--theta0", "1/10", "--theta", "1/2"][..],
+        &[
+            "trajectory",
+            "--rigorous",
+            "--theta0",
+            "1/10",
+            "--times",
+            "0,1",
+        ],
+    ] {
+        let mut args = cmd.to_vec();
+        args.extend(["--mu-contact", "0.3"]);
+        let (code, out, err) = cli(&args);
+        assert_eq!(code, 2, "{cmd:?}");
+        assert!(out.is_empty());
+        assert!(
+            err.contains("rigorous") && err.contains("friction"),
+            "{err}"
+        );
+    }
+    // a start that slips at once has no closed-form phase: verified only
+    let (code, out, _) = cli(&[
+        "separation",
+        "--rigorous",
+        "--theta0",
+        "1/10",
+        "--mu-floor",
+        "0.01",
+        "--digits",
+        "12",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("note: --rigorous: nothing is enclosed"),
+        "{out}"
+    );
+}
+
+#[test]
+fn where_sticking_ends_is_proved_with_friction() {
+    // (pairs, μ floor, μ contact, floor slips first)
+    type Case<'a> = (
+        &'a [(&'a str, &'a str)],
+        Option<&'a str>,
+        Option<&'a str>,
+        bool,
+    );
+    let cases: [Case; 4] = [
+        (&[("theta0", "1/10")], Some("3/10"), Some("3/10"), false),
+        (&[("theta0", "1/10")], Some("1/20"), Some("3/10"), true),
+        (
+            &[("theta0", "-1/10"), ("m2", "2")],
+            None,
+            Some("1/4"),
+            false,
+        ),
+        (
+            &[("theta0", "1/10"), ("thetadot0", "1/2")],
+            None,
+            Some("1/4"),
+            false,
+        ),
+    ];
+    for (pairs, mf, mc, floor_first) in cases {
+        let m = model(pairs);
+        fn law(x: Option<&str>) -> &str {
+            x.unwrap_or("inf")
+        }
+        let fr = cylroll::friction::Friction {
+            floor: cylroll::friction::Law::parse("mu_floor", law(mf)).unwrap(),
+            contact: cylroll::friction::Law::parse("mu_contact", law(mc)).unwrap(),
+        };
+        // the verified event at 60 digits
+        let ans = cylroll::friction::answer::separation(&m, &fr, 60).unwrap();
+        let ev = &ans.events[0];
+        assert_eq!(
+            ev.which,
+            Some(if floor_first {
+                cylroll::friction::Which::Floor
+            } else {
+                cylroll::friction::Which::Contact
+            }),
+            "{pairs:?}"
+        );
+        let q = |x: Option<&str>| x.map(|s| s.parse::<rug::Rational>().unwrap());
+        let (qf, qc) = (q(mf), q(mc));
+        let mut o = Oracle::new(&m, 20).unwrap();
+        let mut last_w: Option<Float> = None;
+        for p in [96u32, 192, 384] {
+            let iv = o
+                .rigorous_stick_end([qf.as_ref(), qc.as_ref()], floor_first, &ev.theta.value, p)
+                .unwrap_or_else(|e| panic!("{pairs:?} at {p}: {e}"));
+            // the verified value's own error bar (60 digits) meets the enclosure
+            let (v, e) = (&ev.theta.value, &ev.theta.err_bound);
+            assert!(
+                Float::with_val(512, v + e) >= iv.lo && Float::with_val(512, v - e) <= iv.hi,
+                "{pairs:?} at {p}: {} not in [{}, {}]",
+                ev.theta.value,
+                iv.lo,
+                iv.hi
+            );
+            let w = iv.width();
+            assert!(w < Float::with_val(64, 1) >> (p - 24), "{pairs:?}: {w}");
+            if let Some(l) = last_w {
+                assert!(w < l);
+            }
+            last_w = Some(w);
+            if p == 192 {
+                let t = o.rigorous_time_user(&iv, p).unwrap();
+                assert!(t.contains(&ev.t.value), "{pairs:?}: t");
+            }
+        }
+        // a wrong μ moves the root: its enclosure misses the verified angle
+        let wrong = qc.as_ref().map(|x| x * rug::Rational::from((101, 100)));
+        if !floor_first {
+            if let Ok(iv) =
+                o.rigorous_stick_end([qf.as_ref(), wrong.as_ref()], false, &ev.theta.value, 128)
+            {
+                assert!(!iv.contains(&ev.theta.value), "{pairs:?}");
+            }
+        }
+    }
+    // the command line: proved digits and an enclosure that holds; an
+    // abrupt opening of the contact (μ = 2) proves theta_s and t_s
     let (code, out, err) = cli(&[
         "separation",
         "--rigorous",
@@ -239,11 +419,36 @@ fn friction_is_not_enclosed_and_says_so() {
         "1/10",
         "--mu-contact",
         "0.3",
+        "--digits",
+        "25",
+        "--format",
+        "json",
     ]);
-    assert_eq!(code, 2);
-    assert!(out.is_empty());
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["digits_rigorous"]["theta_slip_onset"], "25");
+    assert_eq!(v["digits_rigorous"]["t_slip_onset"], "25");
+    assert_eq!(
+        v["theta_slip_onset"], v["events"][0]["theta"],
+        "the proved value is the verified event's"
+    );
+    let (code, out, _) = cli(&[
+        "separation",
+        "--rigorous",
+        "--theta0",
+        "1/10",
+        "--mu-contact",
+        "2",
+        "--digits",
+        "20",
+    ]);
+    assert_eq!(code, 0);
     assert!(
-        err.contains("rigorous") && err.contains("friction"),
-        "{err}"
+        out.contains("theta_s         = 0.97940577704441384659  [proved: 20 digits"),
+        "{out}"
+    );
+    assert!(
+        out.contains("t_s             = 5.0770825589179347206  [proved: 20 digits"),
+        "{out}"
     );
 }

@@ -9,6 +9,7 @@
 //! No Rust crate integrates or root-solves on MPFR numbers; these are ours and
 //! are tested against closed forms in their own unit tests.
 
+pub mod ccrig;
 pub mod cheb;
 pub mod decimal;
 pub mod fixed;

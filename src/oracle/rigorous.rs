@@ -4,34 +4,50 @@
 //!
 //! - θs: N12·K²/m2 is a polynomial P(c) in c = cos θ whose coefficients are
 //!   exact rationals and A_H (an interval). P(c_hi) > 0 > P(c_lo) at two
-//!   points around the verified root, and P > 0 on [c_hi, cos θ0] (proved by
-//!   bisection with interval Horner and its mean-value form), so by the
-//!   intermediate value theorem the first zero of N12 after θ0 has cos θs in
-//!   [c_lo, c_hi], and θs = arccos of it.
+//!   points around the root (isolated at 64 bits, refined by Newton at the
+//!   working precision), and P > 0 on (c_hi, cos θ0] — P' > 0 on a short
+//!   piece [c_hi, c_hi + δ] (so P > P(c_hi) > 0 there), then bisection with
+//!   interval Horner and its mean-value form on the rest, both at 64 bits
+//!   with the coefficients rounded outwards — so by the intermediate value
+//!   theorem the first zero of N12 after θ0 has cos θs in [c_lo, c_hi], and
+//!   θs = arccos of it.
 //! - forces, θ̇, θ̈ at a given θ: the closed forms of
 //!   [`crate::mechanics::dynamics::Dyn`] evaluated in interval arithmetic,
 //!   θ̇² = H/K with H = K(θ0)θ̇0² + 4(g/r) sin((θ+θ0)/2) sin((θ−θ0)/2).
-//! - t(θ): the half-angle integral in u (σ = Δσ sin²u, analytic on
-//!   [0, π/2]) by Clenshaw–Curtis quadrature with n + 1 points, which
-//!   integrates exactly the polynomial interpolating g in the Chebyshev
-//!   points. Theorem (Trefethen, *Approximation Theory and Approximation
-//!   Practice*, Thm 8.2): if g is analytic in the open Bernstein ellipse
-//!   E_ρ of the interval and |g| ≤ M there, the interpolant p_n satisfies
-//!   ‖g − p_n‖∞ ≤ 4Mρ^(−n)/(ρ − 1); so |∫g − Q_n| ≤ (b − a)/2 · 8Mρ^(−n)/(ρ − 1).
-//!   Analyticity and M are proved by covering the closed ellipse with complex
-//!   boxes on which every factor under the square root is bounded away from
-//!   0 (no zero, no pole, hence an analytic branch of the root) and bounding
-//!   |g| above; nodes, weights and the sum are enclosed by interval
-//!   arithmetic.
+//! - t(θ): the half-angle integral written in x = sin u (σ = Δσ x², so
+//!   t = factor·∫_0^1 G(x) dx with G built from +, ×, ÷ and one square root:
+//!   no trigonometric function at the nodes, `XForm`) by Clenshaw–Curtis
+//!   quadrature ([`crate::numeric::ccrig`]: rules cached per (n, precision)).
+//!   Theorem (Trefethen, *Approximation Theory and Approximation Practice*,
+//!   Thm 8.2): if g is analytic in the open Bernstein ellipse E_ρ of the
+//!   interval and |g| ≤ M there, the interpolant p_n in the n + 1 Chebyshev
+//!   points satisfies ‖g − p_n‖∞ ≤ 4Mρ^(−n)/(ρ − 1); Clenshaw–Curtis
+//!   integrates p_n exactly, so |∫g − Q_n| ≤ (b − a)/2 · 8Mρ^(−n)/(ρ − 1).
+//!   Analyticity and M are proved by covering the closed ellipse (its upper
+//!   half: the factors have real coefficients) with complex boxes at 64 bits
+//!   on which every factor under the square root is bounded away from 0 (no
+//!   zero, no pole, hence an analytic branch of the root) and bounding |G|
+//!   above; ρ is taken just below the nearest singularity (closed forms in
+//!   f64, only a choice: the covering proves), n from the bound; [0, 1] is
+//!   split geometrically when a singularity is within 0.01 of x = 0. Nodes,
+//!   weights (with an a-priori bound on their rounding) and the sum are
+//!   enclosed.
+//! - with friction, from a start where both contacts stick: the angle where
+//!   sticking ends (the first slip onset, or the contact's abrupt opening)
+//!   is the first root of R = μ²Ñ² − (1 − c²)F̃², a polynomial in c = cos θ
+//!   built from the rolling model's closed forms; it is isolated like θs
+//!   ([`Oracle::rigorous_stick_end`]), and t to it follows by the quadrature.
 //!
-//! Everything else (friction, a start from rest exactly at the top, angles
-//! beyond 2π/3 for t) is not enclosed and says so.
+//! Everything else (the integrated friction phases, a start from rest
+//! exactly at the top, angles beyond 2π/3 for t) is not enclosed and says
+//! so.
 
 use super::{Oracle, FORCE_KEYS};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::mechanics::{PHI1, PSI2, X1};
 use crate::model::{Contact, Floor};
+use crate::numeric::ccrig;
 use crate::numeric::interval::{not_enclosed, Cx, Iv};
 use crate::numeric::verify::Verified;
 use rug::float::Round;
@@ -51,7 +67,9 @@ pub struct Proved {
 }
 
 impl Proved {
-    fn new(name: &str, iv: Iv, digits: u32) -> Proved {
+    /// The proved value `name` with enclosure `iv`, showing the digits (up
+    /// to `digits`) that every point of `iv` shares.
+    pub fn new(name: &str, iv: Iv, digits: u32) -> Proved {
         let (mid, rad) = iv.mid_rad();
         if iv.lo.is_zero() && iv.hi.is_zero() {
             // exactly 0 (a frictionless contact's force)
@@ -177,14 +195,27 @@ impl Oracle {
     /// Errors: no enclosure (the signs or the positivity could not be
     /// proved at this precision).
     pub fn rigorous_theta_s(&mut self, p: u32) -> Result<Iv> {
-        let v = self.separation_angle()?;
+        use crate::numeric::poly;
+        // isolation as the verified answer does it (64 bits), then Newton on
+        // the midpoints at p bits: only a starting point, the proof follows
+        const ISO: u32 = 64;
+        let c0_iso = self.engine(ISO)?.dynm.c0.clone();
+        let coef_iso = self.n12_coefficients(ISO)?;
+        let roots = poly::sign_change_roots(&coef_iso, &Float::with_val(ISO, -1), &c0_iso);
+        let start = roots
+            .into_iter()
+            .rev()
+            .find(|c| *c < c0_iso)
+            .ok_or_else(|| {
+                Error::not_physical(
+                    "N12 stays positive up to theta = pi: the cylinders never separate",
+                )
+            })?;
         let k = self.consts(p);
-        let c_star = Float::with_val(p, self.odd(v.value.clone()).cos_ref());
         let coef = self.n12_interval_coefficients(&k)?;
-        // the verified root refined at p bits (Newton on the midpoints)
         let mids: Vec<Float> = coef.iter().map(|c| c.mid_rad().0).collect();
-        let (c_star, eps0) = crate::numeric::poly::refine_root("theta_s", &mids, &c_star, p)
-            .unwrap_or((c_star, Float::with_val(p, &v.err_bound)));
+        let (c_star, eps0) = poly::refine_root("theta_s", &mids, &start, p)
+            .unwrap_or_else(|_| (Float::with_val(p, &start), Float::with_val(p, 1e-12)));
         let c0 = k.th0.cos();
         let mut eps = Float::with_val(p, eps0 * 4u32);
         let min_eps = Float::with_val(p, 1u32) >> (p as i32 - 8);
@@ -196,7 +227,7 @@ impl Oracle {
             let hi = Float::with_val_round(p, &c_star + &eps, Round::Up).0;
             let plo = Iv::horner(&coef, &Iv::point(p, &lo));
             let phi = Iv::horner(&coef, &Iv::point(p, &hi));
-            if plo.is_negative() && phi.is_positive() && prove_positive(&coef, &hi, &c0.hi)? {
+            if plo.is_negative() && phi.is_positive() && positive_above(&coef, &hi, &c0.hi)? {
                 let th = Iv::new(lo, hi).acos()?;
                 return Ok(self.odd_iv(th));
             }
@@ -353,100 +384,139 @@ impl Oracle {
         }
         let gr4 = k.gr.mul(&Iv::int(p, 4));
         let h0r = k.h0.div(&gr4)?;
-        let ig = Integrand {
-            s0: s0.clone(),
+        let ig = XForm {
+            s0,
             dsig: dsig.clone(),
             q: k.q.clone(),
-            h0r: h0r.clone(),
+            h0r,
             from_rest: k.from_rest,
         };
-        // the ellipse: below the nearest singularity (the verified engine's
-        // estimate, f64), then proved by the box covering
-        let rho_max = {
+        // where the integrand of x is singular: x² = sin²u at the singular
+        // points of the half-angle form (an f64 estimate; the covering proves)
+        let x2_sing = {
             let e = self.engine(64)?;
             let ds = Float::with_val(64, &dsig.lo);
-            crate::numeric::gauss::rho_sin2(&e.half_singular_sin2(&ds))
+            e.half_singular_sin2(&ds)
         };
-        let rho_max = if rho_max.is_finite() {
-            rho_max.min(50.0)
-        } else {
-            50.0
-        };
-        let mut last = None;
-        for frac in [0.9, 0.75, 0.5, 0.25, 0.1] {
-            let rho = 1.0 + (rho_max - 1.0) * frac;
-            if rho <= 1.0 + 1e-6 {
-                break;
-            }
-            match ig.bound_on_ellipse(rho) {
-                Ok(m) => {
-                    last = Some(self.cc_integral(&ig, rho, m, p)?);
-                    break;
-                }
-                Err(e) => {
-                    last = None;
-                    let _ = e;
-                }
-            }
-        }
-        let integral = last.ok_or_else(|| {
-            not_enclosed("t(theta): analyticity of the integrand on an ellipse could not be proved")
-        })?;
-        // t = factor · ∫_0^{π/2} g du, factor = 2√Δσ/√(g/r) (from rest) or 2Δσ/√(g/r)
+        let x_sing: Vec<(f64, f64)> = x2_sing
+            .iter()
+            .flat_map(|w| {
+                let r = w.sqrt();
+                [(r.re, r.im), (-r.re, -r.im)]
+            })
+            .filter(|(a, b)| a.is_finite() && b.is_finite())
+            .collect();
+        let lo64 = ig.at_bits(64);
+        let integral = integrate_x(&ig, &lo64, &x_sing, p)?;
+        // t = factor · ∫_0^1 G dx, factor = 2√Δσ/√(g/r) (from rest) or 2Δσ/√(g/r)
         let f = if k.from_rest { dsig.sqrt()? } else { dsig };
         let factor = f.mul(&Iv::int(p, 2)).div(&k.gr.sqrt()?)?;
         Ok(integral.mul(&factor))
     }
+}
 
-    /// ∫_0^{π/2} g(u) du by Clenshaw–Curtis with the number of points the
-    /// bound 8Mρ^(−n)/(ρ − 1)·(π/4) needs for `p` bits, plus that bound.
-    fn cc_integral(&self, ig: &Integrand, rho: f64, m: f64, p: u32) -> Result<Iv> {
-        // n from the bound, relative to the integral's size (≥ π/4·min g ~ 1e-3·M)
-        let target = (p as f64 + 8.0) * std::f64::consts::LN_2;
-        let num = (8.0 * m * std::f64::consts::FRAC_PI_4 / (rho - 1.0)).ln() + target;
-        let mut n = (num / rho.ln()).ceil().max(8.0) as usize;
-        n += n % 2;
-        if n > 8 * p as usize + 64 {
-            return Err(not_enclosed(
-                "t(theta): too many quadrature points for the bound",
-            ));
+/// ∫_0^1 G(x) dx enclosed: [0, 1] split where a singularity is close to 0
+/// (geometric pieces [0, h], [h, 2h], [2h, 4h], …), each piece by
+/// Clenshaw–Curtis with the ellipse bound ([`crate::numeric::ccrig`]).
+fn integrate_x(ig: &XForm, lo64: &XForm, x_sing: &[(f64, f64)], p: u32) -> Result<Iv> {
+    // the nearest singularity's distance from 0 sets the first piece
+    let dist0 = x_sing
+        .iter()
+        .map(|(a, b)| a.hypot(*b))
+        .fold(f64::INFINITY, f64::min);
+    let mut cuts: Vec<Rational> = vec![Rational::from(1)];
+    if dist0 < 0.01 {
+        // pieces [2^-(k+1), 2^-k] down to about the distance, then [0, 2^-K]
+        let mut e = 1i64;
+        while (0.5f64).powi(e as i32) > 2.0 * dist0 && e < 60 {
+            cuts.push(Rational::from((1, 1i64 << e)));
+            e += 1;
         }
-        let pi = Iv::pi(p);
-        // cos(2π m / (2n)) for m = 0..2n: nodes x_j = cos(jπ/n) and the
-        // weights' cosines cos(2π kj/n) = table[2 (kj mod n)]
-        let table: Vec<Iv> = (0..2 * n)
-            .map(|m| pi.mul_q(&Rational::from((m as i64, n as i64))).cos())
-            .collect();
-        let mut sum = Iv::int(p, 0);
-        let quarter_pi = pi.mul_q(&Rational::from((1, 4)));
-        // b_k/(4k² − 1), enclosed once
-        let coefs: Vec<Iv> = (1..=n / 2)
-            .map(|kk| {
-                let b = if 2 * kk == n { 1i64 } else { 2 };
-                Iv::rational(p, &Rational::from((b, 4 * (kk * kk) as i64 - 1)))
-            })
-            .collect();
-        for j in 0..=n {
-            // w_j = (c_j/n)(1 − Σ_{k=1}^{n/2} b_k/(4k²−1) cos(2πkj/n))
-            let mut acc = Iv::int(p, 1);
-            for (i, coef) in coefs.iter().enumerate() {
-                let kk = i + 1;
-                let cosv = &table[(2 * ((kk * j) % n)) % (2 * n)];
-                acc = acc.sub(&cosv.mul(coef));
-            }
-            let cj = if j == 0 || j == n { 1i64 } else { 2 };
-            let w = acc.mul_q(&Rational::from((cj, n as i64)));
-            let x = &table[j]; // cos(jπ/n)
-            let u = quarter_pi.mul(&x.add_q(&Rational::from(1)));
-            sum = sum.add(&w.mul(&ig.eval(&u)?));
-        }
-        let integral = sum.mul(&quarter_pi);
-        // + the truncation bound (π/4)·8Mρ^(−n)/(ρ−1), rounded up
-        let ln_b = (8.0 * m * std::f64::consts::FRAC_PI_4 / (rho - 1.0)).ln() - n as f64 * rho.ln();
-        let bound = Float::with_val(p, ln_b * 1.0000001 + 1e-9).exp();
-        let b = Iv::new(Float::with_val(p, -&bound), bound);
-        Ok(integral.add(&b))
     }
+    cuts.push(Rational::from(0));
+    cuts.reverse();
+    let mut total = Iv::int(p, 0);
+    for w in cuts.windows(2) {
+        total = total.add(&integrate_piece(ig, lo64, x_sing, &w[0], &w[1], p)?);
+    }
+    Ok(total)
+}
+
+/// ∫_a^b G(x) dx enclosed by Clenshaw–Curtis: ρ below the nearest
+/// singularity (f64 estimate), M proved on E_ρ by the box covering, n from
+/// the bound for about p + 8 bits relative to the integral, then
+/// Q_n ± h·8Mρ^(−n)/(ρ − 1).
+fn integrate_piece(
+    ig: &XForm,
+    lo64: &XForm,
+    x_sing: &[(f64, f64)],
+    a: &Rational,
+    b: &Rational,
+    p: u32,
+) -> Result<Iv> {
+    let (af, bf) = (a.to_f64(), b.to_f64());
+    let (mf, hf) = ((af + bf) / 2.0, (bf - af) / 2.0);
+    let rho_max = x_sing
+        .iter()
+        .map(|(re, im)| ccrig::rho_through((re - mf) / hf, im / hf))
+        .filter(|r| r.is_finite())
+        .fold(f64::INFINITY, f64::min)
+        .min(60.0);
+    // the integral's size: h·2·G(m), for the relative tolerance
+    let mid64 = Iv::rational(64, &(Rational::from(a + b) / 2u32));
+    let g_mid = lo64
+        .eval(&mid64)
+        .map(|v| v.lo.to_f64())
+        .unwrap_or(1e-3)
+        .max(1e-300);
+    // the tolerance 2^-(p+8) relative to the integral, as a log2
+    let tol_log2 = p as f64 + 8.0 - (2.0 * hf * g_mid).log2();
+    let (a64, b64) = (Iv::rational(64, a), Iv::rational(64, b));
+    let half = Iv::rational(64, &Rational::from((1, 2)));
+    let (m64, h64) = (a64.add(&b64).mul(&half), b64.sub(&a64).mul(&half));
+    let mut best: Option<(f64, Float, usize)> = None;
+    for frac in [0.95, 0.85, 0.7, 0.5, 0.3, 0.15] {
+        let rho = 1.0 + (rho_max - 1.0) * frac;
+        if rho <= 1.0 + 1e-6 || !rho.is_finite() {
+            break;
+        }
+        let Some(m) = ccrig::ellipse_max(rho, |z| {
+            // x = m + h z
+            let x = Cx {
+                re: z.re.mul(&h64).add(&m64),
+                im: z.im.mul(&h64),
+            };
+            lo64.abs_bound(&x)
+        }) else {
+            continue;
+        };
+        let n = ccrig::n_for(hf, m.to_f64(), rho, tol_log2);
+        if best.as_ref().is_none_or(|b| n < b.2) {
+            best = Some((rho, m, n));
+        } else {
+            // a smaller ρ needing more points: the best is found
+            break;
+        }
+        if p < 600 {
+            // low precision: the first proved ellipse is near enough
+            break;
+        }
+    }
+    let (rho, m, n) = best.ok_or_else(|| {
+        not_enclosed("t(theta): analyticity of the integrand on an ellipse could not be proved")
+    })?;
+    if n > 8 * p as usize + 64 {
+        return Err(not_enclosed(
+            "t(theta): too many quadrature points for the bound",
+        ));
+    }
+    let rule = ccrig::rule(ccrig::round_n(n), p);
+    let (ai, bi) = (Iv::rational(p, a), Iv::rational(p, b));
+    let q = rule.apply(&ai, &bi, |x| ig.eval(x))?;
+    let h_hi = Float::with_val_round(64, &h64.hi, Round::Up).0;
+    let bound = ccrig::truncation_bound(&h_hi, &m, rho, rule.n);
+    let bound = Float::with_val_round(p, &bound, Round::Up).0;
+    Ok(q.add(&Iv::new(Float::with_val(p, -&bound), bound)))
 }
 
 impl Oracle {
@@ -536,11 +606,25 @@ impl Oracle {
         Ok(out)
     }
 
+    /// t(θ) proved for an angle enclosure in the user's frame (see
+    /// [`Oracle::rigorous_time_iv`]; the enclosure holds for every θ in it).
+    ///
+    /// Errors: as [`Oracle::rigorous_time_iv`].
+    pub fn rigorous_time_user(&mut self, th: &Iv, p: u32) -> Result<Iv> {
+        let w = self.odd_iv(th.clone());
+        self.rigorous_time_iv(&w, p)
+    }
+
     /// The time to the exact angle θ, proved.
     ///
     /// Errors: as [`Oracle::rigorous_time_iv`]; θ outside the motion.
     pub fn rigorous_time(&mut self, theta: &Exact, p: u32) -> Result<Proved> {
-        self.time_at(theta)?;
+        // inside the motion (decided as the verified answer decides it, at
+        // the scan's precision; the verified time itself is not needed)
+        if self.work.starts_at_equilibrium() {
+            return Err(self.infinite_time_error("the time to any angle"));
+        }
+        self.delta_of("to", theta, 64)?;
         let th = Iv::exact(p, &self.to_work(theta));
         let t = self.rigorous_time_iv(&th, p)?;
         Ok(Proved::new("t", t, self.digits))
@@ -568,9 +652,175 @@ impl Oracle {
     }
 }
 
-/// The half-angle integrand in u of [`crate::mechanics::dynamics::HalfAngleTime::eval_u`]
-/// over intervals and complex boxes.
-struct Integrand {
+/// a·b for polynomials with interval coefficients (ascending).
+fn pmul(a: &[Iv], b: &[Iv]) -> Vec<Iv> {
+    let p = a[0].prec();
+    let mut out = vec![Iv::int(p, 0); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] = out[i + j].add(&x.mul(y));
+        }
+    }
+    out
+}
+
+/// a + b for polynomials with interval coefficients (ascending).
+fn padd(a: &[Iv], b: &[Iv]) -> Vec<Iv> {
+    let p = a[0].prec();
+    (0..a.len().max(b.len()))
+        .map(|i| {
+            let z = Iv::int(p, 0);
+            a.get(i).unwrap_or(&z).add(b.get(i).unwrap_or(&z))
+        })
+        .collect()
+}
+
+/// x·a for a polynomial a.
+fn pscale(a: &[Iv], x: &Iv) -> Vec<Iv> {
+    a.iter().map(|c| c.mul(x)).collect()
+}
+
+impl Oracle {
+    /// The numerators of the tangential and normal force at the floor
+    /// (`floor` true) or the contact, in the rolling phase, as interval
+    /// polynomials in c = cos θ: F = sin θ·F̃(c)/K², N = Ñ(c)/K², from the
+    /// exact polynomials of [`crate::mechanics::dynamics::ForcePolys`] and
+    /// [`crate::mechanics::dynamics::N12Poly`] (P0 + A_H·P1, A_H enclosed).
+    fn contact_polys(&mut self, k: &Consts, floor: bool) -> Result<(Vec<Iv>, Vec<Iv>)> {
+        let a_h = k.h0.add(&k.gr.mul(&k.th0.cos()).mul(&Iv::int(k.p, 2)));
+        let split = |(p0, p1): &(Vec<Rational>, Vec<Rational>)| -> Vec<Iv> {
+            (0..p0.len().max(p1.len()).max(1))
+                .map(|i| {
+                    let mut v = Iv::int(k.p, 0);
+                    if let Some(x) = p1.get(i) {
+                        v = a_h.mul_q(x);
+                    }
+                    if let Some(x) = p0.get(i) {
+                        v = v.add_q(x);
+                    }
+                    v
+                })
+                .collect()
+        };
+        let fp = self.force_polys();
+        if floor {
+            Ok((split(&fp.f1), split(&fp.n1)))
+        } else {
+            let n12 = self.n12_interval_coefficients(k)?;
+            Ok((split(&fp.f21), pscale(&n12, &k.m2)))
+        }
+    }
+
+    /// The stick condition of one contact as a polynomial in c = cos θ:
+    /// R = μ²Ñ² − (1 − c²)F̃², so that (with Ñ > 0 and sin θ ≥ 0)
+    /// |F| ≤ μN ⟺ R ≥ 0.
+    fn stick_poly(&mut self, k: &Consts, floor: bool, mu: &Rational) -> Result<Vec<Iv>> {
+        let p = k.p;
+        let (ft, nt) = self.contact_polys(k, floor)?;
+        let mu2 = Iv::rational(p, &Rational::from(mu * mu));
+        let one_m_c2 = vec![Iv::int(p, 1), Iv::int(p, 0), Iv::int(p, -1)];
+        Ok(padd(
+            &pscale(&pmul(&nt, &nt), &mu2),
+            &pscale(&pmul(&one_m_c2, &pmul(&ft, &ft)), &Iv::int(p, -1)),
+        ))
+    }
+
+    /// The angle where a motion that starts with both contacts sticking
+    /// (rolling) stops sticking — the first slip onset, or the contact's
+    /// abrupt opening where |F21| reaches μN12 but no slipping mode is
+    /// consistent — proved (user's frame), at `p` bits.
+    ///
+    /// While both contacts stick, the motion is the ideal rolling model's:
+    /// θ̇² = H/K > 0 past the start (H = A_H − 2(g/r)c decreases in c and
+    /// A_H ≥ 2(g/r) cos θ0), and the forces are the closed forms
+    /// F = sin θ·F̃(c)/K², N = Ñ(c)/K² (`Oracle::contact_polys`); with
+    /// sin θ ≥ 0 and Ñ > 0, |F| ≤ μN ⟺ R = μ²Ñ² − (1 − c²)F̃² ≥ 0, a
+    /// polynomial in c. `mu` holds μs at the floor and at the contact (None:
+    /// that contact never slips); `floor_first` says which contact's
+    /// condition fails first (from the verified answer, as `theta_guess`,
+    /// the verified angle).
+    ///
+    /// Theorem (intermediate value): if R_w(c_lo) < 0 < R_w(c_hi) for that
+    /// contact w, R_w > 0 on (c_hi, cos θ0], and the other contact's R and
+    /// Ñ1, Ñ12 are > 0 on [c_lo, cos θ0], then both contacts stick with
+    /// N1, N12 > 0 up to θ = arccos c_hi, and sticking ends at w at some θ
+    /// in [arccos c_hi, arccos c_lo] (the first zero of R_w).
+    ///
+    /// Errors: a model that is not the rolling one, a start that does not
+    /// stick, or a proof that fails at this precision.
+    pub fn rigorous_stick_end(
+        &mut self,
+        mu: [Option<&Rational>; 2],
+        floor_first: bool,
+        theta_guess: &Float,
+        p: u32,
+    ) -> Result<Iv> {
+        use crate::numeric::poly;
+        if self.work.floor() != Floor::Roll || self.work.contact() != Contact::Roll {
+            return Err(not_enclosed(
+                "stick end: the sticking phase must be the rolling model",
+            ));
+        }
+        let Some(mu_w) = mu[if floor_first { 0 } else { 1 }] else {
+            return Err(not_enclosed("stick end: that contact never slips"));
+        };
+        let k = self.consts(p);
+        let r_w = self.stick_poly(&k, floor_first, mu_w)?;
+        let c0 = k.th0.cos();
+        let mids: Vec<Float> = r_w.iter().map(|c| c.mid_rad().0).collect();
+        let guess = Float::with_val(p, self.odd(theta_guess.clone()).cos_ref());
+        let (c_star, eps0) = poly::refine_root("stick end", &mids, &guess, p)?;
+        let mut eps = Float::with_val(p, eps0 * 4u32);
+        let min_eps = Float::with_val(p, 1u32) >> (p as i32 - 8);
+        if eps < min_eps {
+            eps = min_eps;
+        }
+        // the other conditions hold on [c_lo, c0], at 64 bits
+        let mut others: Vec<Vec<Iv>> = vec![
+            self.contact_polys(&k, true)?.1,
+            self.contact_polys(&k, false)?.1,
+        ];
+        if let Some(mu_o) = mu[if floor_first { 1 } else { 0 }] {
+            others.push(self.stick_poly(&k, !floor_first, mu_o)?);
+        }
+        let others: Vec<Vec<Iv>> = others
+            .iter()
+            .map(|c| c.iter().map(|x| x.outward(64)).collect())
+            .collect();
+        for _ in 0..24 {
+            let lo = Float::with_val_round(p, &c_star - &eps, Round::Down).0;
+            let hi = Float::with_val_round(p, &c_star + &eps, Round::Up).0;
+            let plo = Iv::horner(&r_w, &Iv::point(p, &lo));
+            let phi = Iv::horner(&r_w, &Iv::point(p, &hi));
+            if plo.is_negative() && phi.is_positive() && positive_above(&r_w, &hi, &c0.hi)? {
+                let lo64 = Float::with_val_round(64, &lo, Round::Down).0;
+                let c0_64 = Float::with_val_round(64, &c0.hi, Round::Up).0;
+                for o in &others {
+                    if !prove_positive(o, &lo64, &c0_64)? {
+                        return Err(not_enclosed(
+                            "stick end: another event may come first (not proved)",
+                        ));
+                    }
+                }
+                let th = Iv::new(lo, hi).acos()?;
+                return Ok(self.odd_iv(th));
+            }
+            eps <<= 2u32;
+        }
+        Err(not_enclosed(
+            "stick end: the sign change of the stick condition could not be proved",
+        ))
+    }
+}
+
+/// The half-angle integrand in x = sin u (σ = Δσ x², s = sin(θ/2) = s0 + σ,
+/// c = cos θ = 1 − 2s²): ∫_0^{π/2} g(u) du = ∫_0^1 G(x) dx with
+/// G = √(K(c)/((1 − s²)(s + s0))) from rest and
+/// G = x·√(K(c)/((1 − s²)(σ(s + s0) + h0r))) otherwise — no trigonometric
+/// function at the nodes, and G is analytic wherever the factors under the
+/// root do not vanish (their zeros are the singularities of
+/// [`crate::mechanics::dynamics::HalfAngleTime::singular_sin2`], x² = sin²u).
+struct XForm {
     s0: Iv,
     dsig: Iv,
     q: [Iv; 3],
@@ -578,120 +828,121 @@ struct Integrand {
     from_rest: bool,
 }
 
-impl Integrand {
-    /// g(u) for a real interval u.
-    fn eval(&self, u: &Iv) -> Result<Iv> {
-        let p = u.prec();
-        let (su, cu) = (u.sin(), u.cos());
-        let sig = self.dsig.mul(&su.sqr());
+impl XForm {
+    /// The same integrand with every constant rounded outwards to `p` bits.
+    fn at_bits(&self, p: u32) -> XForm {
+        XForm {
+            s0: self.s0.outward(p),
+            dsig: self.dsig.outward(p),
+            q: [
+                self.q[0].outward(p),
+                self.q[1].outward(p),
+                self.q[2].outward(p),
+            ],
+            h0r: self.h0r.outward(p),
+            from_rest: self.from_rest,
+        }
+    }
+
+    /// G(x) for a real interval x.
+    fn eval(&self, x: &Iv) -> Result<Iv> {
+        let p = x.prec();
+        let sig = self.dsig.mul(&x.sqr());
         let s = self.s0.add(&sig);
+        let s2 = s.sqr();
         let one = Iv::int(p, 1);
-        let c = one.sub(&s.sqr().mul(&Iv::int(p, 2)));
+        let c = one.sub(&s2.mul(&Iv::int(p, 2)));
         let k = Iv::horner(&self.q, &c);
-        let a = one.sub(&s.sqr());
+        let a = one.sub(&s2);
         let b = if self.from_rest {
             s.add(&self.s0)
         } else {
             sig.mul(&s.add(&self.s0)).add(&self.h0r)
         };
-        let g = k.div(&a.mul(&b))?.sqrt()?.mul(&cu);
-        Ok(if self.from_rest { g } else { g.mul(&su) })
+        let g = k.div(&a.mul(&b))?.sqrt()?;
+        Ok(if self.from_rest { g } else { g.mul(x) })
     }
 
-    /// An upper bound M of |g| on the closed Bernstein ellipse E_ρ of
-    /// [0, π/2], after proving that no factor under the root vanishes on it
-    /// (a covering by complex boxes, at 64 bits).
-    ///
-    /// Errors: a box on which a factor may vanish.
-    fn bound_on_ellipse(&self, rho: f64) -> Result<f64> {
-        let p = 64;
-        let iv = |x: &Iv| {
-            Iv::new(
-                Float::with_val_round(p, &x.lo, Round::Down).0,
-                Float::with_val_round(p, &x.hi, Round::Up).0,
-            )
+    /// An upper bound of |G| over the complex box x, or `None` when a factor
+    /// under the root may vanish on it (so that no analytic branch is
+    /// proved). |G| = √(|K|/(|1 − s²||B|)) (·|x|) for any branch of the root.
+    fn abs_bound(&self, x: &Cx) -> Option<Float> {
+        let p = x.re.prec();
+        let one = Iv::int(p, 1);
+        let sig = x.sqr().scale(&self.dsig);
+        let s = sig.add_real(&self.s0);
+        let s2 = s.sqr();
+        let c = s2.scale(&Iv::int(p, -2)).add_real(&one);
+        let k = c
+            .scale(&self.q[2])
+            .add_real(&self.q[1])
+            .mul(&c)
+            .add_real(&self.q[0]);
+        let fa = s2.scale(&Iv::int(p, -1)).add_real(&one);
+        let fb = if self.from_rest {
+            s.add_real(&self.s0)
+        } else {
+            sig.mul(&s.add_real(&self.s0)).add_real(&self.h0r)
         };
-        let s0 = Cx::real(iv(&self.s0));
-        let dsig = iv(&self.dsig);
-        let q: Vec<Cx> = self.q.iter().map(|x| Cx::real(iv(x))).collect();
-        let h0r = Cx::real(iv(&self.h0r));
-        let a = (rho + 1.0 / rho) / 2.0;
-        let b = (rho - 1.0 / rho) / 2.0;
-        let (nx, ny) = (64usize, 24usize);
-        let quarter_pi = Iv::pi(p).mul_q(&Rational::from((1, 4)));
-        let one = Cx::real(Iv::int(p, 1));
-        let two = Iv::int(p, 2);
-        let mut m = 0.0f64;
-        for ix in 0..nx {
-            for iy in 0..ny {
-                let x0 = -a + 2.0 * a * ix as f64 / nx as f64;
-                let x1 = -a + 2.0 * a * (ix + 1) as f64 / nx as f64;
-                let y0 = -b + 2.0 * b * iy as f64 / ny as f64;
-                let y1 = -b + 2.0 * b * (iy + 1) as f64 / ny as f64;
-                // skip boxes wholly outside the ellipse
-                let cx = if x0 > 0.0 {
-                    x0
-                } else if x1 < 0.0 {
-                    x1
-                } else {
-                    0.0
-                };
-                let cy = if y0 > 0.0 {
-                    y0
-                } else if y1 < 0.0 {
-                    y1
-                } else {
-                    0.0
-                };
-                if (cx / a).powi(2) + (cy / b).powi(2) > 1.0 + 1e-9 {
-                    continue;
-                }
-                let zx = Iv::new(
-                    Float::with_val_round(p, x0, Round::Down).0,
-                    Float::with_val_round(p, x1, Round::Up).0,
-                );
-                let zy = Iv::new(
-                    Float::with_val_round(p, y0, Round::Down).0,
-                    Float::with_val_round(p, y1, Round::Up).0,
-                );
-                // u = π/4 (1 + z)
-                let u = Cx {
-                    re: zx.add_q(&Rational::from(1)).mul(&quarter_pi),
-                    im: zy.mul(&quarter_pi),
-                };
-                let (su, cu) = (u.sin(), u.cos());
-                let sig = su.mul(&su).scale(&dsig);
-                let s = s0.add(&sig);
-                let s2 = s.mul(&s);
-                let c = one.sub(&s2.scale(&two));
-                let k = q[0].add(&q[1].mul(&c)).add(&q[2].mul(&c).mul(&c));
-                let fa = one.sub(&s2);
-                let fb = if self.from_rest {
-                    s.add(&s0)
-                } else {
-                    sig.mul(&s.add(&s0)).add(&h0r)
-                };
-                let (klo, alo, blo) = (k.abs_lo(), fa.abs_lo(), fb.abs_lo());
-                if klo.is_zero() || alo.is_zero() || blo.is_zero() {
-                    return Err(not_enclosed(
-                        "a factor of the integrand may vanish on the ellipse",
-                    ));
-                }
-                let mut g = k.abs_hi().to_f64_round(Round::Up)
-                    / (alo.to_f64_round(Round::Down) * blo.to_f64_round(Round::Down));
-                g = g.sqrt() * cu.abs_hi().to_f64_round(Round::Up);
-                if !self.from_rest {
-                    g *= su.abs_hi().to_f64_round(Round::Up);
-                }
-                // f64 roundings: a relative margin far above their size
-                m = m.max(g * (1.0 + 1e-9));
-            }
+        let (klo, alo, blo) = (k.abs_lo(), fa.abs_lo(), fb.abs_lo());
+        if klo.is_zero() || alo.is_zero() || blo.is_zero() {
+            return None;
         }
-        if !m.is_finite() {
-            return Err(not_enclosed("an unbounded integrand on the ellipse"));
+        let den = Float::with_val_round(p, &alo * &blo, Round::Down).0;
+        let r = Float::with_val_round(p, &k.abs_hi() / &den, Round::Up).0;
+        let mut g = Float::with_val_round(p, r.sqrt_ref(), Round::Up).0;
+        if !self.from_rest {
+            g = Float::with_val_round(p, &g * &x.abs_hi(), Round::Up).0;
         }
-        Ok(m)
+        Some(g)
     }
+}
+
+/// Proves P > 0 on (a, b] given P(a) > 0 (a ≤ b): P' > 0 on
+/// [a, a + δ] (δ = 2^-24·max(1, |a|), interval Horner of P' at 64 bits) makes
+/// P increasing there, so P > P(a) > 0 on (a, a + δ]; then P > 0 on
+/// [a + δ, b] by [`prove_positive`] at 64 bits, where P is far from 0
+/// compared with 64-bit rounding. Both steps use the coefficients rounded
+/// outwards, so they hold for the exact ones. Falls back to
+/// [`prove_positive`] at full precision if the derivative's sign is not
+/// proved.
+fn positive_above(coef: &[Iv], a: &Float, b: &Float) -> Result<bool> {
+    if a > b {
+        return Ok(true);
+    }
+    let p = 64;
+    let c64: Vec<Iv> = coef.iter().map(|c| c.outward(p)).collect();
+    let deriv: Vec<Iv> = c64
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, c)| c.mul(&Iv::int(p, i as i64)))
+        .collect();
+    let scale = if Float::with_val(p, a.abs_ref()) > 1 {
+        Float::with_val_round(p, a.abs_ref(), Round::Up).0
+    } else {
+        Float::with_val(p, 1)
+    };
+    let delta = scale >> 24u32;
+    let a_dn = Float::with_val_round(p, a, Round::Down).0;
+    let a_up = Float::with_val_round(p, a, Round::Up).0;
+    let end = Float::with_val_round(p, &a_up + &delta, Round::Up).0;
+    let end = if &end > b {
+        Float::with_val_round(p, b, Round::Up).0
+    } else {
+        end
+    };
+    if Iv::horner(&deriv, &Iv::new(a_dn, end.clone())).is_positive() {
+        // [a, end] ⊂ the monotone piece (end rounded up)
+        if end >= *b {
+            return Ok(true);
+        }
+        let b64 = Float::with_val_round(p, b, Round::Up).0;
+        if prove_positive(&c64, &end, &b64)? {
+            return Ok(true);
+        }
+    }
+    prove_positive(coef, a, b)
 }
 
 /// Proves P > 0 on [a, b] (a ≤ b) by bisection: on each piece, interval
@@ -742,7 +993,7 @@ pub fn unsupported(what: &str) -> Error {
     Error::invalid(
         "rigorous",
         what,
-        "proved enclosures cover the ideal models' theta_s, forces and t(theta) up to 2 pi/3; \
-         friction phases are verified only",
+        "proved enclosures cover the ideal models' theta_s, forces and t(theta) up to 2 pi/3, \
+         and with friction (separation) where sticking ends; friction phases are verified only",
     )
 }
