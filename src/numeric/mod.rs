@@ -3,8 +3,10 @@
 //! polynomial roots ([`poly`]), a Taylor-series ODE integrator with dense
 //! output ([`taylor`], on the fixed-point kernel of [`fixed`]), decimal
 //! output ([`decimal`]), the precision ladder that turns two runs into
-//! verified digits ([`verify`]), and interval arithmetic with directed
-//! rounding for proved digits ([`interval`]).
+//! verified digits ([`verify`]), Chebyshev interpolation with a fast cosine
+//! transform for the high-precision routes ([`cheb`]), and interval
+//! arithmetic with directed rounding for proved digits ([`interval`]), with
+//! its proved Clenshaw–Curtis rules ([`ccrig`]).
 //!
 //! No Rust crate integrates or root-solves on MPFR numbers; these are ours and
 //! are tested against closed forms in their own unit tests.
