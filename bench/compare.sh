@@ -9,6 +9,7 @@
 #   bench/compare.sh --quick         # digits 30,100 only, no mpmath T3
 #   bench/compare.sh --tools ours,c-mpfr,boost   # a subset
 #   bench/compare.sh --out DIR       # keep the raw results in DIR (default: a temp dir)
+#   NO_COLD=1 bench/compare.sh       # without the whole-process rows (bench/cold.sh)
 #
 # Needs: cargo; gcc, g++, libmpfr-dev, libgmp-dev, libboost-dev (Boost 1.74 headers);
 # python3 with mpmath, python-flint, heyoka, numpy. See ../shared/bench/README.md.
@@ -100,4 +101,16 @@ if want heyoka && [ -n "$T3_RUN" ]; then
 fi
 echo "end: $(date -u '+%Y-%m-%d %H:%M UTC'), uptime:$(uptime | sed 's/.*up[^,]*,//')" >> "$R/machine.txt"
 python3 "$ROOT/bench/ratios.py" "$R"
+# whole-process rows: the command run once per process against the C
+# tanh-sinh run once per process (bench/cold.sh, issue 17's goals)
+if want ours && want c-mpfr && [ -z "${NO_COLD:-}" ]; then
+    echo
+    echo "### Whole process"
+    echo
+    if command -v hyperfine >/dev/null; then
+        "$ROOT/bench/cold.sh" --out "$OUT/cold"
+    else
+        echo "(skipped: bench/cold.sh needs hyperfine)"
+    fi
+fi
 echo "raw results: $R" >&2
