@@ -457,6 +457,7 @@ impl Answer {
         let mut errs = serde_json::Map::new();
         let mut rig = serde_json::Map::new();
         let mut encl = serde_json::Map::new();
+        let mut lower = serde_json::Map::new();
         for (i, v) in self.values.iter().enumerate() {
             match self.proved.get(i) {
                 Some(Some(pv)) => {
@@ -474,6 +475,13 @@ impl Answer {
             }
             verified.insert(v.name.clone(), v.digits.to_string().into());
             errs.insert(v.name.clone(), v.err_text().into());
+            if let Some(b) = v.text.strip_prefix(">=") {
+                lower.insert(v.name.clone(), b.into());
+            }
+        }
+        if !lower.is_empty() {
+            // values known only from below (text ">=X"): the number X, typed
+            o.insert("lower_bounds".into(), lower.into());
         }
         if let Some((cols, rows)) = &self.table {
             o.insert(

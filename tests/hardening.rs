@@ -753,3 +753,33 @@ fn help_names_every_flag_with_its_range_and_default() {
         "{text}"
     );
 }
+
+/// A value known only from below is typed in JSON: `lower_bounds` gives the
+/// number X of its text ">=X" (|F21|/N12 at θs = π/3, where N12 = 0).
+#[test]
+fn json_types_the_lower_bounds() {
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .args([
+            "forces", "--theta", "pi/3", "--digits", "20", "--format", "json",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let text = j["mu_contact"].as_str().unwrap();
+    let x = j["lower_bounds"]["mu_contact"].as_str().unwrap();
+    assert_eq!(text, format!(">={x}"));
+    assert!(x.parse::<f64>().unwrap() > 1e10, "{x}");
+    // a value known to its digits is not listed
+    assert!(j["lower_bounds"].get("F1").is_none());
+    let ok = Command::cargo_bin("cylroll")
+        .unwrap()
+        .args([
+            "forces", "--theta", "1/2", "--digits", "20", "--format", "json",
+        ])
+        .output()
+        .unwrap();
+    let j: serde_json::Value = serde_json::from_slice(&ok.stdout).unwrap();
+    assert!(j.get("lower_bounds").is_none());
+}
