@@ -8,7 +8,7 @@ use cylroll::friction::Friction;
 use cylroll::input::{self, FRICTION_KEYS, MODEL_KEYS};
 use cylroll::model::Model;
 use cylroll::numeric::verify::Verified;
-use cylroll::oracle::rigorous::Proved;
+use cylroll::oracle::rigorous::{enclosure_why, prove_with, stick_end_proved, Proved};
 use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
 use rug::Rational;
 use std::io::Write;
@@ -708,133 +708,9 @@ fn zero_cells(cols: &[&str], rows: &[Vec<Verified>]) -> Vec<String> {
     out
 }
 
-/// Runs a proof at a working precision of the digits asked plus 32 bits,
-/// then, if it proves fewer digits than asked (`short` of the result),
-/// once more at twice that.
-fn prove_with<T>(
-    digits: u32,
-    mut f: impl FnMut(u32) -> Result<T>,
-    short: impl Fn(&T) -> bool,
-) -> Result<T> {
-    let p0 = cylroll::numeric::bits_for_digits(digits) + 32;
-    let first = f(p0)?;
-    if !short(&first) {
-        return Ok(first);
-    }
-    f(2 * p0).or(Ok(first))
-}
-
 fn proves_less(v: &[Proved], digits: u32) -> bool {
     v.iter()
         .any(|x| x.shown.digits < digits && x.shown.text != "0")
-}
-
-/// Why an enclosure failed, in a few words.
-fn enclosure_why(e: &Error) -> String {
-    match e {
-        Error::NotConverged { detail, .. } => detail.clone(),
-        other => other.to_string(),
-    }
-}
-
-/// With friction, from a start where both contacts stick: the angle where
-/// sticking ends ([`Oracle::rigorous_stick_end`]) and the time to it, proved.
-/// For a first slip onset they are new values `theta_slip_onset` and
-/// `t_slip_onset` (the verified event's, renamed); for an abrupt opening of
-/// the contact (the first event a separation) they are theta_s and t_s.
-/// Returns (index in `values` or None to append, verified value, proof) per
-/// value, or why nothing is enclosed.
-type ProvedSlots = Vec<(Option<usize>, Verified, Option<Proved>)>;
-
-fn stick_end_proved(
-    model: &Model,
-    fr: &Friction,
-    ans: &cylroll::friction::answer::SeparationAnswer,
-    digits: u32,
-) -> std::result::Result<ProvedSlots, String> {
-    use cylroll::friction::{Kind, Law, Which};
-    if ans.start_mode != "floor stick, contact stick" {
-        return Err(format!(
-            "the start mode is {}: only a start where both contacts stick has closed forms",
-            ans.start_mode
-        ));
-    }
-    let ev = ans.events.first().ok_or("no event")?;
-    let floor_first = match (ev.kind, ev.which) {
-        (Kind::SlipOnset, Some(w)) => w == Which::Floor,
-        (Kind::Separation, Some(Which::Contact)) => false,
-        _ => return Err("the first event is neither a slip onset nor the contact opening".into()),
-    };
-    let mu = |l: &Law| match l {
-        Law::Coulomb { mu_s, .. } => Ok(Some(mu_s.clone())),
-        Law::Roll => Ok(None),
-        Law::Slip => Err("a frictionless contact".to_string()),
-    };
-    let (mf, mc) = (mu(&fr.floor)?, mu(&fr.contact)?);
-    let mut o = Oracle::new(model, digits).map_err(|e| e.to_string())?;
-    let mut th_iv = None;
-    let th = prove_with(
-        digits,
-        |p| {
-            let iv =
-                o.rigorous_stick_end([mf.as_ref(), mc.as_ref()], floor_first, &ev.theta.value, p)?;
-            th_iv = Some(iv.clone());
-            Ok(Proved::new("theta", iv, digits))
-        },
-        |v| v.shown.digits < digits,
-    )
-    .map_err(|e| enclosure_why(&e))?;
-    let th_iv = th_iv.unwrap_or_else(|| th.iv.clone());
-    let t = prove_with(
-        digits,
-        |p| {
-            let x = th_iv.outward(p.min(th_iv.prec()));
-            let x = cylroll::numeric::interval::Iv::new(
-                rug::Float::with_val(p, &x.lo),
-                rug::Float::with_val(p, &x.hi),
-            );
-            o.rigorous_time_user(&x, p)
-                .map(|iv| Proved::new("t", iv, digits))
-        },
-        |v| v.shown.digits < digits,
-    )
-    .ok();
-    let find = |name: &str| ans.values.iter().position(|v| v.name == name);
-    let renamed = |v: &Verified, name: &str| {
-        let mut v = v.clone();
-        v.name = name.into();
-        v
-    };
-    let with_name = |p: Option<Proved>, name: &str| {
-        p.map(|mut p| {
-            p.name = name.into();
-            p.shown.name = name.into();
-            p
-        })
-    };
-    Ok(if ev.kind == Kind::SlipOnset {
-        vec![
-            (
-                None,
-                renamed(&ev.theta, "theta_slip_onset"),
-                with_name(Some(th), "theta_slip_onset"),
-            ),
-            (
-                None,
-                renamed(&ev.t, "t_slip_onset"),
-                with_name(t, "t_slip_onset"),
-            ),
-        ]
-    } else {
-        vec![
-            (
-                find("theta_s"),
-                renamed(&ev.theta, "theta_s"),
-                with_name(Some(th), "theta_s"),
-            ),
-            (find("t_s"), renamed(&ev.t, "t_s"), with_name(t, "t_s")),
-        ]
-    })
 }
 
 /// `--rigorous` is for the ideal models only.

@@ -227,17 +227,23 @@ class Model:
 
     def enclose(self, what: str = "separation", theta: Optional[Number] = None,
                 digits: int = 30) -> List[Enclosure]:
-        """Proved enclosures (the command line's ``--rigorous``), ideal models only.
+        """Proved enclosures (the command line's ``--rigorous``).
 
         ``what="separation"``: ``theta_s`` and, when finite and enclosed,
         ``t_s``; ``what="time"`` with ``theta``: ``t``; ``what="forces"``
         with ``theta``: the forces, rates and needed friction that can be
-        enclosed. Each :class:`Enclosure` holds ``[mid ± rad]`` and the digits
-        it proves (interval arithmetic with directed rounding; see the README,
+        enclosed. With friction only ``what="separation"``, from a start where
+        both contacts stick: where sticking ends, ``theta_slip_onset`` and
+        ``t_slip_onset`` (or ``theta_s`` and ``t_s`` when the contact opens
+        there); the phases after it are verified only. Each
+        :class:`Enclosure` holds ``[mid ± rad]`` and the digits it proves
+        (interval arithmetic with directed rounding; see the README,
         "Guarantees"). A quantity that cannot be enclosed is left out.
 
-        Raises :class:`InvalidParameterError` with friction, or for ``what``
-        other than these.
+        Raises :class:`InvalidParameterError` for ``what`` other than these
+        (with friction: other than ``"separation"``), :class:`NotPhysicalError`
+        with friction when nothing can be enclosed (a start that slips at
+        once).
         """
         th = None if theta is None else time_text("theta", theta)
         rows = _cylroll.enclose(self._pairs, _digits(digits), what, th)

@@ -436,7 +436,9 @@ fn trajectory(py: Python<'_>, pairs: Pairs, digits: u32, times: Vec<String>) -> 
 type Enclosure = (String, String, u32, String, String);
 
 /// `enclose`: proved enclosures (`--rigorous`) of the ideal models'
-/// `separation` (θs, t_s), `time` (t) or `forces` at `theta`; a quantity that
+/// `separation` (θs, t_s), `time` (t) or `forces` at `theta`, and with
+/// friction of where sticking ends (`separation`: θ and t of the first slip
+/// onset, or θs and t_s when the contact opens there); a quantity that
 /// cannot be enclosed is left out (its verified value is elsewhere).
 #[pyfunction]
 #[pyo3(signature = (pairs, digits, what, theta=None))]
@@ -449,8 +451,31 @@ fn enclose(
 ) -> PyResult<Vec<Enclosure>> {
     detached(py, move || {
         let (model, fr) = spec(&pairs)?;
-        if fr.is_some() {
-            return Err(cylroll::oracle::rigorous::unsupported("with friction"));
+        if let Some(fr) = fr {
+            // with friction: where sticking ends, from a start where both
+            // contacts stick (the command line's separation --rigorous)
+            if what != "separation" || theta.is_some() {
+                return Err(cylroll::oracle::rigorous::unsupported("with friction"));
+            }
+            let ans = friction::answer::separation(&model, &fr, digits)?;
+            let slots = cylroll::oracle::rigorous::stick_end_proved(&model, &fr, &ans, digits)
+                .map_err(|why| {
+                    Error::not_physical(format!("with friction nothing is enclosed: {why}"))
+                })?;
+            return Ok(slots
+                .into_iter()
+                .filter_map(|(_, _, pv)| pv)
+                .map(|v| {
+                    let (mid, rad) = v.texts(digits);
+                    (
+                        v.name.clone(),
+                        v.shown.text.clone(),
+                        v.shown.digits,
+                        mid,
+                        rad,
+                    )
+                })
+                .collect());
         }
         let mut o = Oracle::new(&model, digits)?;
         let th = theta.map(|t| parse_angle("theta", &t)).transpose()?;

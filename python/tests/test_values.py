@@ -278,8 +278,26 @@ def test_enclosures_contain_the_closed_forms_and_the_verified_values():
     f = m.forces("1/2", digits=50)
     for e in m.enclose("forces", theta="1/2", digits=25):
         assert f[e.name].text in e, e.name
-    # with friction nothing is enclosed: refused, not approximated
-    with pytest.raises(cylroll.InvalidParameterError, match="rigorous"):
-        cylroll.Model(theta0="1/10", mu_contact="0.3").enclose("separation")
     with pytest.raises(cylroll.InvalidParameterError):
         m.enclose("time")
+
+
+def test_where_sticking_ends_is_enclosed_with_friction():
+    # from rest both contacts stick until |F21|/N12 of the rolling model reaches mu:
+    # the enclosures contain the verified event at more digits, and the rolling
+    # model needs exactly mu = 3/10 there
+    fm = cylroll.Model(theta0="1/10", mu_floor="0.3", mu_contact="0.3")
+    th, t = fm.enclose("separation", digits=25)
+    assert (th.name, t.name) == ("theta_slip_onset", "t_slip_onset")
+    assert th.digits == 25 and t.digits == 25
+    ev = fm.separation(digits=40).events[0]
+    assert ev.kind == "slip_onset" and ev.contact == "contact"
+    assert ev.theta.text in th and ev.t.text in t
+    need = cylroll.Model(theta0="1/10").forces(th.text, digits=30)["mu_contact"].decimal()
+    assert abs(need - Decimal("0.3")) < Decimal("1e-22")
+    # the phases after it are integrated, verified only: refused, not approximated
+    with pytest.raises(cylroll.InvalidParameterError, match="rigorous"):
+        fm.enclose("time", theta="1/2")
+    # a start that slips at once has nothing enclosed, and says so
+    with pytest.raises(cylroll.NotPhysicalError, match="nothing is enclosed"):
+        cylroll.Model(theta0="1/10", mu_contact="0.001").enclose("separation")
