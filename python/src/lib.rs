@@ -435,6 +435,12 @@ fn trajectory(py: Python<'_>, pairs: Pairs, digits: u32, times: Vec<String>) -> 
 /// digits, mid, rad), the printed [mid ± rad] containing the enclosure.
 type Enclosure = (String, String, u32, String, String);
 
+/// One proved value as the Python side takes it.
+fn enclosure(v: &cylroll::oracle::rigorous::Proved, digits: u32) -> Enclosure {
+    let (mid, rad) = v.texts(digits);
+    (v.name.clone(), v.shown.text.clone(), v.shown.digits, mid, rad)
+}
+
 /// `enclose`: proved enclosures (`--rigorous`) of the ideal models'
 /// `separation` (θs, t_s), `time` (t) or `forces` at `theta`, and with
 /// friction of where sticking ends (`separation`: θ and t of the first slip
@@ -465,16 +471,7 @@ fn enclose(
             return Ok(slots
                 .into_iter()
                 .filter_map(|(_, _, pv)| pv)
-                .map(|v| {
-                    let (mid, rad) = v.texts(digits);
-                    (
-                        v.name.clone(),
-                        v.shown.text.clone(),
-                        v.shown.digits,
-                        mid,
-                        rad,
-                    )
-                })
+                .map(|v| enclosure(&v, digits))
                 .collect());
         }
         let mut o = Oracle::new(&model, digits)?;
@@ -502,16 +499,7 @@ fn enclose(
                 .any(|v| v.shown.digits < digits && v.shown.text != "0");
             out = proved
                 .iter()
-                .map(|v| {
-                    let (mid, rad) = v.texts(digits);
-                    (
-                        v.name.clone(),
-                        v.shown.text.clone(),
-                        v.shown.digits,
-                        mid,
-                        rad,
-                    )
-                })
+                .map(|v| enclosure(v, digits))
                 .collect();
             if !short {
                 break;
