@@ -213,6 +213,18 @@ impl Marker {
             label: None,
         }
     }
+
+    /// The same marker with another shape.
+    pub fn shape(mut self, s: Shape) -> Self {
+        self.shape = s;
+        self
+    }
+
+    /// The same marker with a text beside it.
+    pub fn label(mut self, t: impl Into<String>) -> Self {
+        self.label = Some(t.into());
+        self
+    }
 }
 
 /// A vertical or horizontal reference line across the plot area, with a label
@@ -253,6 +265,30 @@ pub struct LegendEntry {
     pub shape: Option<Shape>,
     /// Whether the marker sample is filled.
     pub filled: bool,
+}
+
+impl LegendEntry {
+    /// A line sample.
+    pub fn line(label: impl Into<String>, color: Rgb, dash: Dash) -> Self {
+        LegendEntry {
+            label: label.into(),
+            color,
+            dash: Some(dash),
+            shape: None,
+            filled: false,
+        }
+    }
+
+    /// A marker sample, filled or hollow.
+    pub fn marker(label: impl Into<String>, color: Rgb, shape: Shape, filled: bool) -> Self {
+        LegendEntry {
+            label: label.into(),
+            color,
+            dash: None,
+            shape: Some(shape),
+            filled,
+        }
+    }
 }
 
 /// A raster image over a rectangle of the chart (a heat map), drawn smooth.
