@@ -1155,35 +1155,9 @@ fn flattest_k2(data: &Data, cfg: &Config) -> Option<Flat> {
     })
 }
 
-/// θs over (m₂/m₁, k₂): a smooth raster interpolated bilinearly between the
-/// oracle's nodes, labelled contours, the colour scale fitted to the data.
-fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> Option<Figure> {
-    let (hr, hk, z) = heat_grid(data, cfg);
-    let xs: Vec<f64> = hr.iter().map(|r| text_f64(r).log10()).collect();
-    let ys: Vec<f64> = hk.iter().map(|k| text_f64(k)).collect();
-    let finite: Vec<f64> = z
-        .iter()
-        .flatten()
-        .copied()
-        .filter(|v| v.is_finite())
-        .collect();
-    let zlo = finite.iter().copied().fold(f64::INFINITY, f64::min);
-    let zhi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    if !(zlo.is_finite() && zhi.is_finite() && xs.len() > 1 && ys.len() > 1) {
-        return None;
-    }
-    let lo = zlo;
-    let hi = zhi.max(zlo + 1e-9);
-    // contour levels every 5° inside the data
-    let step = 5.0;
-    let levels: Vec<f64> = ((lo / step).ceil() as i64..=(hi / step).floor() as i64)
-        .map(|i| i as f64 * step)
-        .collect();
-    let mut p = Panel::new("", "m₂/m₁  (log scale)", K2_DEF);
-    p.xscale = Scale::Log;
-    p.xrange = Some((10f64.powf(xs[0]), 10f64.powf(xs[xs.len() - 1])));
-    p.yrange = Some((ys[0], ys[ys.len() - 1]));
-    // raster: bilinear in (log10 ratio, k2)
+/// A smooth raster of the grid `z` over nodes `xs` × `ys`, interpolated
+/// bilinearly and coloured over [lo, hi].
+fn heat_raster(xs: &[f64], ys: &[f64], z: &[Vec<f64>], lo: f64, hi: f64) -> Raster {
     let (w, h) = (200usize, 150usize);
     let bil = |u: f64, v: f64| -> f64 {
         let fi = u * (xs.len() - 1) as f64;
@@ -1210,20 +1184,33 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
             });
         }
     }
-    p.raster = Some(Raster {
+    Raster {
         x: (xs[0], xs[xs.len() - 1]),
         y: (ys[0], ys[ys.len() - 1]),
         w,
         h,
         pixels,
-    });
-    let mut level_k2 = Vec::new();
-    for &level in &levels {
-        let lines = chain(&contour(&xs, &ys, &z, level));
-        for line in lines {
+    }
+}
+
+/// A contour line that crosses the whole range of mass ratios of the curves
+/// θs(k2) (0.1 to 10): its level, its k2 range there, and its ends over the
+/// whole plot (log10 ratio, k2).
+type Crossing = (f64, f64, f64, Option<(f64, f64)>, Option<(f64, f64)>);
+
+/// The contour lines at `levels` as series and labels on `p` (x in log10);
+/// returns the lines that cross 0.1 to 10.
+fn heat_contours(
+    p: &mut Panel,
+    xs: &[f64],
+    ys: &[f64],
+    z: &[Vec<f64>],
+    levels: &[f64],
+) -> Vec<Crossing> {
+    let mut crossing = Vec::new();
+    for &level in levels {
+        for line in chain(&contour(xs, ys, z, level)) {
             let pts: Vec<(f64, f64)> = line.iter().map(|&(x, y)| (10f64.powf(x), y)).collect();
-            // k2 range of the contour over m2/m1 from 0.1 to 10 (the curves θs(k2)),
-            // and its k2 at the ends of the whole range
             let mid: Vec<f64> = line
                 .iter()
                 .filter(|q| (-1.0 - 1e-9..=1.0 + 1e-9).contains(&q.0))
@@ -1231,13 +1218,12 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
                 .collect();
             let kmin = mid.iter().copied().fold(f64::INFINITY, f64::min);
             let kmax = mid.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            let xspan = mid.len() as f64;
             let lo_end = line.iter().min_by(|a, b| a.0.total_cmp(&b.0)).copied();
             let hi_end = line.iter().max_by(|a, b| a.0.total_cmp(&b.0)).copied();
             let covers =
                 line.iter().any(|q| q.0 <= -1.0 + 1e-9) && line.iter().any(|q| q.0 >= 1.0 - 1e-9);
             if covers {
-                level_k2.push((level, kmin, kmax, xspan, lo_end, hi_end));
+                crossing.push((level, kmin, kmax, lo_end, hi_end));
             }
             if line.len() >= 4 {
                 // the label at the point of the line nearest to its middle in x
@@ -1257,14 +1243,17 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
             p.series.push(s);
         }
     }
-    // the flattest contour that crosses the whole range of mass ratios
-    let flattest = level_k2
+    crossing
+}
+
+/// The caption's sentences on the flattest contour and the flattest row.
+fn flat_text(crossing: &[Crossing], flat: Option<&Flat>) -> String {
+    let flattest = crossing
         .iter()
-        .min_by(|a, b| (a.2 - a.1).total_cmp(&(b.2 - b.1)))
-        .cloned();
+        .min_by(|a, b| (a.2 - a.1).total_cmp(&(b.2 - b.1)));
     let contour_text = flattest
         .filter(|f| f.2 - f.1 < 0.05)
-        .map(|(l, a, b, _, lo, hi)| {
+        .map(|&(l, a, b, lo, hi)| {
             let ends = match (lo, hi) {
                 (Some(p), Some(q)) => format!(
                     " (over the whole plot it runs from k₂ = {} at m₂/m₁ = {} to {} at {})",
@@ -1283,33 +1272,52 @@ fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> 
             )
         })
         .unwrap_or_default();
-    let flat_text = flat
-        .map(|f| {
-            format!(
-                "{contour_text} Over m₂/m₁ from 0.1 to 10, θₛ varies least on the row k₂ = {} of the grid (by {}°, around {}°): the curves \
-                 of θₛ against k₂ for different m₂/m₁ come closest together there (figure above).",
-                fmt(f.row, 3),
-                fmt(f.spread, 2),
-                fmt(f.mean, 1)
-            )
-        })
-        .unwrap_or(contour_text);
+    match flat {
+        Some(f) => format!(
+            "{contour_text} Over m₂/m₁ from 0.1 to 10, θₛ varies least on the row k₂ = {} of the grid (by {}°, around {}°): the curves \
+             of θₛ against k₂ for different m₂/m₁ come closest together there (figure above).",
+            fmt(f.row, 3),
+            fmt(f.spread, 2),
+            fmt(f.mean, 1)
+        ),
+        None => contour_text,
+    }
+}
+
+/// θs over (m₂/m₁, k₂): a smooth raster interpolated bilinearly between the
+/// oracle's nodes, labelled contours, the colour scale fitted to the data.
+fn heatmap(data: &Data, cfg: &Config, flat: Option<&Flat>, plane_text: &str) -> Option<Figure> {
+    let (hr, hk, z) = heat_grid(data, cfg);
+    let xs: Vec<f64> = hr.iter().map(|r| text_f64(r).log10()).collect();
+    let ys: Vec<f64> = hk.iter().map(|k| text_f64(k)).collect();
+    let finite = z.iter().flatten().copied().filter(|v| v.is_finite());
+    let zlo = finite.clone().fold(f64::INFINITY, f64::min);
+    let zhi = finite.fold(f64::NEG_INFINITY, f64::max);
+    if !(zlo.is_finite() && zhi.is_finite() && xs.len() > 1 && ys.len() > 1) {
+        return None;
+    }
+    let (lo, hi) = (zlo, zhi.max(zlo + 1e-9));
+    // contour levels every 5° inside the data
+    let step = 5.0;
+    let levels: Vec<f64> = ((lo / step).ceil() as i64..=(hi / step).floor() as i64)
+        .map(|i| i as f64 * step)
+        .collect();
+    let mut p = Panel::new("", "m₂/m₁  (log scale)", K2_DEF);
+    p.xscale = Scale::Log;
+    p.xrange = Some((10f64.powf(xs[0]), 10f64.powf(xs[xs.len() - 1])));
+    p.yrange = Some((ys[0], ys[ys.len() - 1]));
+    p.raster = Some(heat_raster(&xs, &ys, &z, lo, hi));
+    let crossing = heat_contours(&mut p, &xs, &ys, &z, &levels);
+    let flat_text = flat_text(&crossing, flat);
     let mut csv = String::from("m2_over_m1,k2,theta_s_deg\n");
     for (j, k) in hk.iter().enumerate() {
         for (i, r) in hr.iter().enumerate() {
-            csv.push_str(&format!(
-                "{r},{k},{}\n",
-                super::plot::csv_num(z[j][i], cfg.plot_digits as usize)
-            ));
+            let v = super::plot::csv_num(z[j][i], cfg.plot_digits as usize);
+            csv.push_str(&format!("{r},{k},{v}\n"));
         }
     }
-    let mut fig = Figure::single(
-        "plane_heatmap.svg",
-        "Separation angle θₛ over the parameter plane".into(),
-        (1000, 660),
-        p,
-        130,
-    );
+    let title = "Separation angle θₛ over the parameter plane".to_string();
+    let mut fig = Figure::single("plane_heatmap.svg", title, (1000, 660), p, 130);
     fig.colorbar = Some(ColorBar {
         label: "θₛ [deg]".into(),
         range: (lo, hi),
