@@ -5,6 +5,7 @@ use super::checks_main::{over, res_text, separation_rows};
 use super::corrected;
 use super::ctx::Ctx;
 use super::finding::{Finding, Tally};
+use super::forms::{calls, definitions};
 use super::truth::{self, lagrange_lhs, momentum, random_state, Case, Scales, StartKind, Sys};
 use crate::error::Result;
 use crate::model::{Contact, Floor};
@@ -128,46 +129,6 @@ fn jacobian_row(
     Ok(f)
 }
 
-pub fn eq56(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "Lagrange's equations: the method, not a formula of this problem",
-    ))
-}
-
-pub fn eq57(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "the method of multipliers; its instances (66)–(68), (75)–(77), (84)–(87), (93)–(95), (103)–(108) are checked",
-    ))
-}
-
-pub fn eq58(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the constraint f1 (rolling on the floor, eq. 1)",
-    ))
-}
-
-pub fn eq59(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the constraint f2 (rolling contact, eq. 2)",
-    ))
-}
-
-pub fn eq60(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the constraint f3 (the cylinders touch)",
-    ))
-}
-
-pub fn eq61(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the constraint f4 (cylinder 1 on the floor)",
-    ))
-}
-
-pub fn eq62(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, Sys::A1, app::eq62, false)
-}
-
 /// A named physical quantity of a state (label, value).
 type Named = (&'static str, fn(&Sym) -> X);
 
@@ -196,10 +157,6 @@ fn conjugate(
         }
     }
     Ok(f)
-}
-
-pub fn eq63(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A1, QX1, app::eq63, Some(("= P_x", truth::px)))
 }
 
 pub fn eq64(cx: &mut Ctx) -> Result<Finding> {
@@ -238,22 +195,6 @@ pub fn eq64(cx: &mut Ctx) -> Result<Finding> {
     ));
     f.note("a misplaced bracket: the middle form multiplies r θ̇ by k2 m2 twice (it is not even dimensionally consistent); the first and last forms are right");
     Ok(f)
-}
-
-pub fn eq65(cx: &mut Ctx) -> Result<Finding> {
-    jacobian_row(cx, 0, &[QX1, QP1, QTH], |y| app::eq65(y).to_vec())
-}
-
-pub fn eq66(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A1, QX1, &["λ1 ∂f1/∂x1", "λ1"], app::eq66, false)
-}
-
-pub fn eq67(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A1, QP1, &["λ1 ∂f1/∂φ1", "−r1 λ1"], app::eq67, true)
-}
-
-pub fn eq68(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A1, QTH, &["λ1 ∂f1/∂θ", "0"], app::eq68, true)
 }
 
 /// A combination of momenta: printed forms vs the true value, constancy, and
@@ -300,15 +241,6 @@ fn momentum_sum(
     Ok(f)
 }
 
-pub fn eq69(cx: &mut Ctx) -> Result<Finding> {
-    momentum_sum(
-        cx,
-        |y| app::eq69(y, &truth::px(y), &truth::l1(y), &truth::l2(y)).to_vec(),
-        &["p_x1 + p_φ1/r1 (63, 64)", "P_x + L1/r1 + L2/r2"],
-        |y| momentum(Sys::A1, y, QX1) + momentum(Sys::A1, y, QP1) / &y.r1,
-    )
-}
-
 pub fn eq70(cx: &mut Ctx) -> Result<Finding> {
     let mut f = Finding::default();
     gen(cx, |c, y, _| {
@@ -334,51 +266,6 @@ pub fn eq70(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq71(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, Sys::A2, app::eq71, false)
-}
-
-pub fn eq72(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A2, QP1, app::eq72, None)
-}
-
-pub fn eq73(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A2, QP2, app::eq73, None)
-}
-
-pub fn eq74(cx: &mut Ctx) -> Result<Finding> {
-    jacobian_row(cx, 1, &[QP1, QP2, QTH], |y| app::eq74(y).to_vec())
-}
-
-pub fn eq75(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A2, QP1, &["λ2 ∂f2/∂φ1", "−r1 λ2"], app::eq75, true)
-}
-
-pub fn eq76(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A2, QP2, &["λ2 ∂f2/∂φ2", "r2 λ2"], app::eq76, true)
-}
-
-pub fn eq77(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A2, QTH, &["λ2 ∂f2/∂θ", "r1 λ2"], app::eq77, true)
-}
-
-pub fn eq78(cx: &mut Ctx) -> Result<Finding> {
-    momentum_sum(
-        cx,
-        |y| {
-            vec![
-                app::eq78(y),
-                truth::px(y) + truth::l1(y) / &y.r1 + truth::l2(y) / &y.r2,
-            ]
-        },
-        &[
-            "p_φ1/r1 + p_φ2/r2 (72, 73)",
-            "= P_x + L1/r1 + L2/r2 once (59) holds",
-        ],
-        |y| momentum(Sys::A2, y, QP1) / &y.r1 + momentum(Sys::A2, y, QP2) / &y.r2,
-    )
-}
-
 pub fn eq79(cx: &mut Ctx) -> Result<Finding> {
     let mut f = Finding::default();
     gen(cx, |c, y, _| {
@@ -392,10 +279,6 @@ pub fn eq79(cx: &mut Ctx) -> Result<Finding> {
     })?;
     f.note("λ2 is F21 of (28) with the same convention (along (cos θ, −sin θ))");
     Ok(f)
-}
-
-pub fn eq80(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, Sys::A3, app::eq80, false)
 }
 
 pub fn a3_v(cx: &mut Ctx) -> Result<Finding> {
@@ -451,10 +334,6 @@ pub fn eq82(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq83(cx: &mut Ctx) -> Result<Finding> {
-    jacobian_row(cx, 2, &[QP1, QP2, QTH, QR], |y| app::eq83(y).to_vec())
-}
-
 fn eq84_86(cx: &mut Ctx, u: usize, k: usize, members: fn(&Sym, &Jac) -> [X; 2]) -> Result<Finding> {
     let mut f = Finding::default();
     let mut corr = Tally::default();
@@ -508,22 +387,6 @@ fn eq84_86(cx: &mut Ctx, u: usize, k: usize, members: fn(&Sym, &Jac) -> [X; 2]) 
         ));
     }
     Ok(f)
-}
-
-pub fn eq84(cx: &mut Ctx) -> Result<Finding> {
-    eq84_86(cx, QP1, 0, app::eq84)
-}
-
-pub fn eq85(cx: &mut Ctx) -> Result<Finding> {
-    eq84_86(cx, QP2, 1, app::eq85)
-}
-
-pub fn eq86(cx: &mut Ctx) -> Result<Finding> {
-    eq84_86(cx, QTH, 2, app::eq86)
-}
-
-pub fn eq87(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A3, QR, &["λ3 ∂f3/∂r", "λ3"], app::eq87, false)
 }
 
 pub fn eq88(cx: &mut Ctx) -> Result<Finding> {
@@ -605,22 +468,10 @@ pub fn eq91(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq92(cx: &mut Ctx) -> Result<Finding> {
-    jacobian_row(cx, 3, &[QP1, QTH, QY1], |y| app::eq92(y).to_vec())
-}
-
 pub fn eq93(cx: &mut Ctx) -> Result<Finding> {
     let mut f = lagrange(cx, Sys::A4, QP1, &["λ4 ∂f3/∂φ1", "0"], app::eq93, true)?;
     f.note("a slip that changes no value: ∂f3/∂φ1 should read ∂f4/∂φ1 (both are 0); the text also announces 'four Lagrange equations' where there are three");
     Ok(f)
-}
-
-pub fn eq94(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A4, QTH, &["λ4 ∂f4/∂θ", "0"], app::eq94, true)
-}
-
-pub fn eq95(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A4, QY1, &["λ4 ∂f4/∂y1", "λ4"], app::eq95, false)
 }
 
 fn lam_expr(
@@ -644,17 +495,6 @@ fn lam_expr(
     Ok(f)
 }
 
-pub fn eq96(cx: &mut Ctx) -> Result<Finding> {
-    lam_expr(
-        cx,
-        Sys::A4,
-        QY1,
-        &["λ4", "(m1 + m2) ÿ1 − …"],
-        |y| app::eq96(y).to_vec(),
-        false,
-    )
-}
-
 fn n1_forms(cx: &mut Ctx, forms: fn(&Sym) -> [X; 2]) -> Result<Finding> {
     let mut f = Finding::default();
     gen(cx, |c, y, _| {
@@ -670,10 +510,6 @@ fn n1_forms(cx: &mut Ctx, forms: fn(&Sym) -> [X; 2]) -> Result<Finding> {
             .add("(m1 + m2) g + m2 ÿ2", &c.name, &b, &y.n1, &c.scales.force);
     })?;
     Ok(f)
-}
-
-pub fn eq97(cx: &mut Ctx) -> Result<Finding> {
-    n1_forms(cx, app::eq97)
 }
 
 pub fn eq98(cx: &mut Ctx) -> Result<Finding> {
@@ -727,22 +563,6 @@ pub fn eq99(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq100(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A5, QX1, app::eq100, Some(("= P_x", truth::px)))
-}
-
-pub fn eq101(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A5, QP1, app::eq101, Some(("= L1", truth::l1)))
-}
-
-pub fn eq102(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A5, QP2, app::eq102, Some(("= L2", truth::l2)))
-}
-
-pub fn eq103(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A5, QX1, &["Σ λj ∂fj/∂x1", "λ1"], app::eq103, false)
-}
-
 pub fn eq104(cx: &mut Ctx) -> Result<Finding> {
     let mut f = lagrange(
         cx,
@@ -754,71 +574,6 @@ pub fn eq104(cx: &mut Ctx) -> Result<Finding> {
     )?;
     f.note("I1 φ̈1 = −r1 (F1 + F21): the torque balance that the printed (29) gets wrong");
     Ok(f)
-}
-
-pub fn eq105(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(
-        cx,
-        Sys::A5,
-        QP2,
-        &["Σ λj ∂fj/∂φ2", "r2 λ2"],
-        app::eq105,
-        true,
-    )
-}
-
-pub fn eq106(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(
-        cx,
-        Sys::A5,
-        QTH,
-        &["Σ λj ∂fj/∂θ", "r1 λ2"],
-        app::eq106,
-        true,
-    )
-}
-
-pub fn eq107(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A5, QR, &["Σ λj ∂fj/∂r", "λ3"], app::eq107, false)
-}
-
-pub fn eq108(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A5, QY1, &["Σ λj ∂fj/∂y1", "λ4"], app::eq108, false)
-}
-
-pub fn eq109(cx: &mut Ctx) -> Result<Finding> {
-    momentum_sum(
-        cx,
-        |y| app::eq109(y, &truth::px(y), &truth::l1(y), &truth::l2(y)).to_vec(),
-        &["p_x1 + p_φ1/r1 + p_φ2/r2 (100–102)", "P_x + L1/r1 + L2/r2"],
-        |y| {
-            momentum(Sys::A5, y, QX1)
-                + momentum(Sys::A5, y, QP1) / &y.r1
-                + momentum(Sys::A5, y, QP2) / &y.r2
-        },
-    )
-}
-
-pub fn eq110(cx: &mut Ctx) -> Result<Finding> {
-    lam_expr(
-        cx,
-        Sys::A5,
-        QX1,
-        &["λ1", "(m1 + m2) ẍ1 + m2 (…)"],
-        |y| app::eq110(y).to_vec(),
-        false,
-    )
-}
-
-pub fn eq111(cx: &mut Ctx) -> Result<Finding> {
-    lam_expr(
-        cx,
-        Sys::A5,
-        QP2,
-        &["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"],
-        |y| app::eq111(y).to_vec(),
-        true,
-    )
 }
 
 pub fn eq112(cx: &mut Ctx) -> Result<Finding> {
@@ -834,33 +589,6 @@ pub fn eq112(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq113(cx: &mut Ctx) -> Result<Finding> {
-    lam_expr(
-        cx,
-        Sys::A5,
-        QY1,
-        &["λ4", "(m1 + m2) ÿ1 − …"],
-        |y| app::eq113(y).to_vec(),
-        false,
-    )
-}
-
-pub fn eq114(cx: &mut Ctx) -> Result<Finding> {
-    n1_forms(cx, app::eq114)
-}
-
-pub fn fn1(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "a remark on the admissible k (the mechanics takes any k ≥ 0; k2 > 1 is audited at P2, k1 > 1 at P4)",
-    ))
-}
-
-pub fn fn3(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "a count, not a formula: 3n − n − n = n coordinates, one cyclic (φ1); consistent",
-    ))
-}
-
 pub fn fn15(cx: &mut Ctx) -> Result<Finding> {
     let mut f = Finding::default();
     gen(cx, |c, y, _| {
@@ -873,4 +601,93 @@ pub fn fn15(cx: &mut Ctx) -> Result<Finding> {
     })?;
     f.note("λ2 = (θ equation)/r1, λ1 = −(φ1 equation)/r1 − λ2, against the multiplier system's F21 and F1");
     Ok(f)
+}
+
+pub fn eq69(cx: &mut Ctx) -> Result<Finding> {
+    momentum_sum(
+        cx,
+        |y| app::eq69(y, &truth::px(y), &truth::l1(y), &truth::l2(y)).to_vec(),
+        &["p_x1 + p_φ1/r1 (63, 64)", "P_x + L1/r1 + L2/r2"],
+        |y| momentum(Sys::A1, y, QX1) + momentum(Sys::A1, y, QP1) / &y.r1,
+    )
+}
+
+pub fn eq78(cx: &mut Ctx) -> Result<Finding> {
+    momentum_sum(
+        cx,
+        |y| {
+            vec![
+                app::eq78(y),
+                truth::px(y) + truth::l1(y) / &y.r1 + truth::l2(y) / &y.r2,
+            ]
+        },
+        &[
+            "p_φ1/r1 + p_φ2/r2 (72, 73)",
+            "= P_x + L1/r1 + L2/r2 once (59) holds",
+        ],
+        |y| momentum(Sys::A2, y, QP1) / &y.r1 + momentum(Sys::A2, y, QP2) / &y.r2,
+    )
+}
+
+pub fn eq109(cx: &mut Ctx) -> Result<Finding> {
+    momentum_sum(
+        cx,
+        |y| app::eq109(y, &truth::px(y), &truth::l1(y), &truth::l2(y)).to_vec(),
+        &["p_x1 + p_φ1/r1 + p_φ2/r2 (100–102)", "P_x + L1/r1 + L2/r2"],
+        |y| {
+            momentum(Sys::A5, y, QX1)
+                + momentum(Sys::A5, y, QP1) / &y.r1
+                + momentum(Sys::A5, y, QP2) / &y.r2
+        },
+    )
+}
+
+definitions! {
+    eq56: "Lagrange's equations: the method, not a formula of this problem";
+    eq57: "the method of multipliers; its instances (66)–(68), (75)–(77), (84)–(87), (93)–(95), (103)–(108) are checked";
+    eq58: "defines the constraint f1 (rolling on the floor, eq. 1)";
+    eq59: "defines the constraint f2 (rolling contact, eq. 2)";
+    eq60: "defines the constraint f3 (the cylinders touch)";
+    eq61: "defines the constraint f4 (cylinder 1 on the floor)";
+    fn1: "a remark on the admissible k (the mechanics takes any k ≥ 0; k2 > 1 is audited at P2, k1 > 1 at P4)";
+    fn3: "a count, not a formula: 3n − n − n = n coordinates, one cyclic (φ1); consistent";
+}
+
+calls! {
+    eq62 => kinetic(Sys::A1, app::eq62, false);
+    eq63 => conjugate(Sys::A1, QX1, app::eq63, Some(("= P_x", truth::px)));
+    eq65 => jacobian_row(0, &[QX1, QP1, QTH], |y| app::eq65(y).to_vec());
+    eq66 => lagrange(Sys::A1, QX1, &["λ1 ∂f1/∂x1", "λ1"], app::eq66, false);
+    eq67 => lagrange(Sys::A1, QP1, &["λ1 ∂f1/∂φ1", "−r1 λ1"], app::eq67, true);
+    eq68 => lagrange(Sys::A1, QTH, &["λ1 ∂f1/∂θ", "0"], app::eq68, true);
+    eq71 => kinetic(Sys::A2, app::eq71, false);
+    eq72 => conjugate(Sys::A2, QP1, app::eq72, None);
+    eq73 => conjugate(Sys::A2, QP2, app::eq73, None);
+    eq74 => jacobian_row(1, &[QP1, QP2, QTH], |y| app::eq74(y).to_vec());
+    eq75 => lagrange(Sys::A2, QP1, &["λ2 ∂f2/∂φ1", "−r1 λ2"], app::eq75, true);
+    eq76 => lagrange(Sys::A2, QP2, &["λ2 ∂f2/∂φ2", "r2 λ2"], app::eq76, true);
+    eq77 => lagrange(Sys::A2, QTH, &["λ2 ∂f2/∂θ", "r1 λ2"], app::eq77, true);
+    eq80 => kinetic(Sys::A3, app::eq80, false);
+    eq83 => jacobian_row(2, &[QP1, QP2, QTH, QR], |y| app::eq83(y).to_vec());
+    eq84 => eq84_86(QP1, 0, app::eq84);
+    eq85 => eq84_86(QP2, 1, app::eq85);
+    eq86 => eq84_86(QTH, 2, app::eq86);
+    eq87 => lagrange(Sys::A3, QR, &["λ3 ∂f3/∂r", "λ3"], app::eq87, false);
+    eq92 => jacobian_row(3, &[QP1, QTH, QY1], |y| app::eq92(y).to_vec());
+    eq94 => lagrange(Sys::A4, QTH, &["λ4 ∂f4/∂θ", "0"], app::eq94, true);
+    eq95 => lagrange(Sys::A4, QY1, &["λ4 ∂f4/∂y1", "λ4"], app::eq95, false);
+    eq96 => lam_expr(Sys::A4, QY1, &["λ4", "(m1 + m2) ÿ1 − …"], |y| app::eq96(y).to_vec(), false);
+    eq97 => n1_forms(app::eq97);
+    eq100 => conjugate(Sys::A5, QX1, app::eq100, Some(("= P_x", truth::px)));
+    eq101 => conjugate(Sys::A5, QP1, app::eq101, Some(("= L1", truth::l1)));
+    eq102 => conjugate(Sys::A5, QP2, app::eq102, Some(("= L2", truth::l2)));
+    eq103 => lagrange(Sys::A5, QX1, &["Σ λj ∂fj/∂x1", "λ1"], app::eq103, false);
+    eq105 => lagrange(Sys::A5, QP2, &["Σ λj ∂fj/∂φ2", "r2 λ2"], app::eq105, true);
+    eq106 => lagrange(Sys::A5, QTH, &["Σ λj ∂fj/∂θ", "r1 λ2"], app::eq106, true);
+    eq107 => lagrange(Sys::A5, QR, &["Σ λj ∂fj/∂r", "λ3"], app::eq107, false);
+    eq108 => lagrange(Sys::A5, QY1, &["Σ λj ∂fj/∂y1", "λ4"], app::eq108, false);
+    eq110 => lam_expr(Sys::A5, QX1, &["λ1", "(m1 + m2) ẍ1 + m2 (…)"], |y| app::eq110(y).to_vec(), false);
+    eq111 => lam_expr(Sys::A5, QP2, &["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"], |y| app::eq111(y).to_vec(), true);
+    eq113 => lam_expr(Sys::A5, QY1, &["λ4", "(m1 + m2) ÿ1 − …"], |y| app::eq113(y).to_vec(), false);
+    eq114 => n1_forms(app::eq114);
 }

@@ -4,6 +4,7 @@
 use super::corrected;
 use super::ctx::Ctx;
 use super::finding::{Finding, RootRow, Tally};
+use super::forms::{calls, definitions};
 use super::forms::{
     check, corrected, other, printed, sample, On, Sampled, GENERAL, REST, REST_KICK,
 };
@@ -71,12 +72,6 @@ pub(super) fn res_text(x: &X) -> String {
     short(&x.0)
 }
 
-pub fn eq1(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "the rolling constraint of the lower cylinder: a model assumption, which the mechanics imposes",
-    ))
-}
-
 pub fn eq2(cx: &mut Ctx) -> Result<Finding> {
     let f = check(cx, rest_kick, |_, y| {
         let [a, b, d] = sec2::eq2(y);
@@ -107,12 +102,6 @@ pub fn eq3(cx: &mut Ctx) -> Result<Finding> {
         }
     }
     Ok(f)
-}
-
-pub fn eq4(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the canonical momentum of φ1; its value is checked as eq. (12)",
-    ))
 }
 
 pub fn eq5(cx: &mut Ctx) -> Result<Finding> {
@@ -213,12 +202,6 @@ pub fn eq13(cx: &mut Ctx) -> Result<Finding> {
     Ok(f.with_note("true P_x = m1 ẋ1 + m2 ẋ2"))
 }
 
-pub fn eq14(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines L1 = I1 φ̇1, the spin angular momentum of cylinder 1",
-    ))
-}
-
 pub fn eq15(cx: &mut Ctx) -> Result<Finding> {
     check(cx, gen, |c, y| {
         let [a, b] = sec2::eq15(y);
@@ -259,10 +242,6 @@ pub fn eq18(cx: &mut Ctx) -> Result<Finding> {
     check(cx, gen, |c, y| {
         vec![printed("φ̈1", sec2::eq18(y), &y.phi1dd, &c.scales.accel)]
     })
-}
-
-pub fn eq19(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition("defines the constant A"))
 }
 
 pub fn eq20(cx: &mut Ctx) -> Result<Finding> {
@@ -538,14 +517,6 @@ fn eq31_32(cx: &mut Ctx, which: usize) -> Result<Finding> {
     Ok(f.with_note("N12 and F21 from the Lagrange-multiplier system; the last member holds with F21 as in (28)"))
 }
 
-pub fn eq31(cx: &mut Ctx) -> Result<Finding> {
-    eq31_32(cx, 31)
-}
-
-pub fn eq32(cx: &mut Ctx) -> Result<Finding> {
-    eq31_32(cx, 32)
-}
-
 pub fn eq33(cx: &mut Ctx) -> Result<Finding> {
     let s = sample(cx, gen, |c, y| {
         let s = &c.scales.force;
@@ -804,4 +775,16 @@ pub fn fn8(cx: &mut Ctx) -> Result<Finding> {
         }
     }
     Ok(f)
+}
+
+definitions! {
+    eq1: "the rolling constraint of the lower cylinder: a model assumption, which the mechanics imposes";
+    eq4: "defines the canonical momentum of φ1; its value is checked as eq. (12)";
+    eq14: "defines L1 = I1 φ̇1, the spin angular momentum of cylinder 1";
+    eq19: "defines the constant A";
+}
+
+calls! {
+    eq31 => eq31_32(31);
+    eq32 => eq31_32(32);
 }

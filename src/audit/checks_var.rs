@@ -5,6 +5,7 @@ use super::checks_main::{fixed_points, separation_rows};
 use super::corrected;
 use super::ctx::Ctx;
 use super::finding::{Finding, RootRow, Tally};
+use super::forms::calls;
 use super::forms::{check, printed, On, REST};
 use super::points::{with_k, Point};
 use super::separation::{first_root_below, first_root_cos};
@@ -85,10 +86,6 @@ fn sep_form(cx: &mut Ctx, fc: (Floor, Contact), forms: fn(&Sym) -> [X; 3]) -> Re
     Ok(f.with_note("each member equals N12/m2 + r θ̇² at every angle, so the condition is N12 = 0; its root equals the oracle's θs"))
 }
 
-pub fn eq38(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, SS, sec3::eq38)
-}
-
 pub fn eq39(cx: &mut Ctx) -> Result<Finding> {
     check(cx, rest(SS), |c, y| {
         let p = sec3::eq39(y);
@@ -104,23 +101,6 @@ pub fn eq39(cx: &mut Ctx) -> Result<Finding> {
             printed("= 0", p, &y.r1.zero(), m),
         ]
     })
-}
-
-pub fn eq40(cx: &mut Ctx) -> Result<Finding> {
-    energy_zero(cx, SS, sec3::eq40)
-}
-
-pub fn eq41(cx: &mut Ctx) -> Result<Finding> {
-    geff(
-        cx,
-        SS,
-        |y| sec3::eq41(y).to_vec(),
-        &["−ẍ1", "(m2 r/(m1 + m2))(…)"],
-    )
-}
-
-pub fn eq42(cx: &mut Ctx) -> Result<Finding> {
-    sep_form(cx, SS, sec3::eq42)
 }
 
 pub fn eq43(cx: &mut Ctx) -> Result<Finding> {
@@ -180,10 +160,6 @@ pub fn eq43(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq44(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, SR, sec3::eq44)
-}
-
 pub fn eq45(cx: &mut Ctx) -> Result<Finding> {
     check(cx, rest(SR), |c, y| {
         let p = sec3::eq45(y);
@@ -206,19 +182,6 @@ pub fn eq46(cx: &mut Ctx) -> Result<Finding> {
             printed("= 0", a, &y.r1.zero(), s),
         ]
     })
-}
-
-pub fn eq47(cx: &mut Ctx) -> Result<Finding> {
-    energy_zero(cx, SR, sec3::eq47)
-}
-
-pub fn eq48(cx: &mut Ctx) -> Result<Finding> {
-    geff(
-        cx,
-        SR,
-        |y| sec3::eq48(y).to_vec(),
-        &["−ẍ1", "(m2 r/(m1 + m2))(…)"],
-    )
 }
 
 pub fn eq49(cx: &mut Ctx) -> Result<Finding> {
@@ -274,10 +237,6 @@ pub fn eq50(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq51(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, RS, sec3::eq51)
-}
-
 pub fn eq52(cx: &mut Ctx) -> Result<Finding> {
     check(cx, rest(RS), |c, y| {
         let p = sec3::eq52(y);
@@ -287,23 +246,6 @@ pub fn eq52(cx: &mut Ctx) -> Result<Finding> {
             printed("= 0", p, &y.r1.zero(), s),
         ]
     })
-}
-
-pub fn eq53(cx: &mut Ctx) -> Result<Finding> {
-    energy_zero(cx, RS, sec3::eq53)
-}
-
-pub fn eq54(cx: &mut Ctx) -> Result<Finding> {
-    geff(
-        cx,
-        RS,
-        |y| sec3::eq54(y).to_vec(),
-        &["−ẍ1", "−r1 φ̈1", "(m2 r/((1 + k1) m1 + m2))(…)"],
-    )
-}
-
-pub fn eq55(cx: &mut Ctx) -> Result<Finding> {
-    sep_form(cx, RS, sec3::eq55)
 }
 
 pub fn fn11(cx: &mut Ctx) -> Result<Finding> {
@@ -672,4 +614,18 @@ pub fn p_fixed_roll(cx: &mut Ctx) -> Result<Finding> {
     }
     f.note("the same statement as eq. (36), repeated at the end of sec. 3.2");
     Ok(f)
+}
+
+calls! {
+    eq38 => kinetic(SS, sec3::eq38);
+    eq40 => energy_zero(SS, sec3::eq40);
+    eq41 => geff(SS, |y| sec3::eq41(y).to_vec(), &["−ẍ1", "(m2 r/(m1 + m2))(…)"]);
+    eq42 => sep_form(SS, sec3::eq42);
+    eq44 => kinetic(SR, sec3::eq44);
+    eq47 => energy_zero(SR, sec3::eq47);
+    eq48 => geff(SR, |y| sec3::eq48(y).to_vec(), &["−ẍ1", "(m2 r/(m1 + m2))(…)"]);
+    eq51 => kinetic(RS, sec3::eq51);
+    eq53 => energy_zero(RS, sec3::eq53);
+    eq54 => geff(RS, |y| sec3::eq54(y).to_vec(), &["−ẍ1", "−r1 φ̈1", "(m2 r/((1 + k1) m1 + m2))(…)"]);
+    eq55 => sep_form(RS, sec3::eq55);
 }

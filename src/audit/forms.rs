@@ -146,3 +146,29 @@ impl Finding {
         self
     }
 }
+
+/// Checks that are one call of a shared check: `name => helper(args…);`
+/// defines `pub fn name(cx)` returning `helper(cx, args…)`.
+macro_rules! calls {
+    ($($name:ident => $f:ident($($arg:expr),* $(,)?);)*) => {
+        $(
+            pub fn $name(cx: &mut Ctx) -> Result<Finding> {
+                $f(cx, $($arg),*)
+            }
+        )*
+    };
+}
+pub(super) use calls;
+
+/// Entries with nothing to check: `name: "why";` defines `pub fn name(cx)`
+/// returning a definition with that reason.
+macro_rules! definitions {
+    ($($name:ident: $why:literal;)*) => {
+        $(
+            pub fn $name(_: &mut Ctx) -> Result<Finding> {
+                Ok(Finding::definition($why))
+            }
+        )*
+    };
+}
+pub(super) use definitions;

@@ -1386,10 +1386,13 @@ fn box_hits(b: (f64, f64, f64, f64), curves: &[Vec<(f64, f64)>], points: &[(f64,
         })
 }
 
+/// What a label must not cover: polylines and marked points, in pixels.
+type Obstacles = (Vec<Vec<(f64, f64)>>, Vec<(f64, f64)>);
+
 /// What a label placed in the plot area must not cover: the curves (and
 /// horizontal reference lines) as polylines in pixels, and the marked points
 /// (event markers, curves' ends).
-fn obstacles(p: &Panel, f: &Frame) -> (Vec<Vec<(f64, f64)>>, Vec<(f64, f64)>) {
+fn obstacles(p: &Panel, f: &Frame) -> Obstacles {
     let mut curves = curve_pixels(p, f);
     for l in p.lines.iter().filter(|l| !l.vertical) {
         if l.at >= f.y.0 && l.at <= f.y.1 {
@@ -1416,7 +1419,7 @@ fn vertical_label_place(
     f: &Frame,
     x: f64,
     label: &str,
-    obstacles: &(Vec<Vec<(f64, f64)>>, Vec<(f64, f64)>),
+    obstacles: &Obstacles,
 ) -> (f64, f64, &'static str) {
     let hits = |b| box_hits(b, &obstacles.0, &obstacles.1);
     let w = text_width(label, NOTE_PX);
