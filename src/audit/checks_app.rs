@@ -5,7 +5,7 @@ use super::checks_main::{over, res_text, separation_rows};
 use super::corrected;
 use super::ctx::Ctx;
 use super::finding::{Finding, Tally};
-use super::forms::{calls, definitions};
+use super::forms::{calls, corrected, definitions, other, printed, Sampled};
 use super::truth::{self, lagrange_lhs, momentum, random_state, Case, Scales, StartKind, Sys};
 use crate::error::Result;
 use crate::model::{Contact, Floor};
@@ -160,41 +160,28 @@ fn conjugate(
 }
 
 pub fn eq64(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
+    let mut s = Sampled::default();
     for (at, y, sc) in random_states(cx, Sys::A1)? {
         let m = momentum(Sys::A1, &y, QP1);
-        let forms = app::eq64(&y, &truth::l1(&y), &truth::l2(&y));
-        f.printed.add(
-            "(k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇",
+        let [a, b, c] = app::eq64(&y, &truth::l1(&y), &truth::l2(&y));
+        let w = &sc.angmom;
+        s.add(
             &at,
-            &forms[0],
-            &m,
-            &sc.angmom,
-        );
-        f.printed.add(
-            "k1 m1 r1² φ̇1 + r1[k2 m2 (r1 φ̇1 − k2 m2 r θ̇)]",
-            &at,
-            &forms[1],
-            &m,
-            &sc.angmom,
-        );
-        f.printed
-            .add("L1 + (r1/r2) L2", &at, &forms[2], &m, &sc.angmom);
-        corr.add(
-            "k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇)",
-            &at,
-            &corrected::eq64(&y),
-            &m,
-            &sc.angmom,
+            vec![
+                printed("(k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇", a, &m, w),
+                printed("k1 m1 r1² φ̇1 + r1[k2 m2 (r1 φ̇1 − k2 m2 r θ̇)]", b, &m, w),
+                printed("L1 + (r1/r2) L2", c, &m, w),
+                corrected(
+                    "k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇)",
+                    corrected::eq64(&y),
+                    &m,
+                    w,
+                ),
+            ],
         );
     }
-    f.corrected = Some((
-        "p_φ1 = (k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇ = k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇) = L1 + (r1/r2) L2".into(),
-        corr,
-    ));
-    f.note("a misplaced bracket: the middle form multiplies r θ̇ by k2 m2 twice (it is not even dimensionally consistent); the first and last forms are right");
-    Ok(f)
+    Ok(s.corrected("p_φ1 = (k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇ = k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇) = L1 + (r1/r2) L2")
+        .with_note("a misplaced bracket: the middle form multiplies r θ̇ by k2 m2 twice (it is not even dimensionally consistent); the first and last forms are right"))
 }
 
 /// A combination of momenta: printed forms vs the true value, constancy, and
@@ -513,48 +500,46 @@ fn n1_forms(cx: &mut Ctx, forms: fn(&Sym) -> [X; 2]) -> Result<Finding> {
 }
 
 pub fn eq98(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = kinetic(cx, Sys::A5, app::eq98, true)?;
-    let mut corr = Tally::default();
+    let mut s = Sampled {
+        f: kinetic(cx, Sys::A5, app::eq98, true)?,
+        ..Default::default()
+    };
     for (at, y, sc) in random_states(cx, Sys::A5)? {
-        corr.add(
+        let form = corrected(
             "T with m1 k1 r1²",
-            &at,
-            &corrected::eq98(&y),
+            corrected::eq98(&y),
             &truth::t(&y),
             &sc.energy,
         );
+        s.add(&at, vec![form]);
     }
-    f.corrected = Some((
-        "the spin term of cylinder 1 is (m1 k1 r1²/2) φ̇1² (printed m1 k2 r1²)".into(),
-        corr,
-    ));
-    f.note("(101) has the right m1 k1 r1² φ̇1, which contradicts the printed (98); (101) is right");
-    Ok(f)
+    Ok(s.corrected("the spin term of cylinder 1 is (m1 k1 r1²/2) φ̇1² (printed m1 k2 r1²)")
+        .with_note("(101) has the right m1 k1 r1² φ̇1, which contradicts the printed (98); (101) is right"))
 }
 
 pub fn eq99(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
-    let mut on = Tally::default();
+    let mut s = Sampled::default();
     for (at, y, sc) in random_states(cx, Sys::A5)? {
         let t = truth::v(&y);
-        f.printed.add("V", &at, &app::eq99(&y), &t, &sc.energy);
-        corr.add("V", &at, &corrected::eq99(&y), &t, &sc.energy);
         let mut ym = y.clone();
         ym.r = &y.r1 + &y.r2;
-        on.add(
-            "V on r = r1 + r2",
+        s.add(
             &at,
-            &app::eq99(&ym),
-            &truth::v(&ym),
-            &sc.energy,
+            vec![
+                printed("V", app::eq99(&y), &t, &sc.energy),
+                corrected("V", corrected::eq99(&y), &t, &sc.energy),
+                other(
+                    "V on r = r1 + r2",
+                    app::eq99(&ym),
+                    &truth::v(&ym),
+                    &sc.energy,
+                ),
+            ],
         );
     }
-    f.corrected = Some((
-        "V = m2 g (r cos θ − r1 − r2) + (m1 + m2) g (y1 − r1)".into(),
-        corr,
-    ));
-    if let Some(m) = on.max() {
+    let on = s.other.max();
+    let mut f = s.corrected("V = m2 g (r cos θ − r1 − r2) + (m1 + m2) g (y1 − r1)");
+    if let Some(m) = on {
         f.note(format!(
             "with r a coordinate, −m2 g r (1 − cos θ) has ∂V/∂r = −m2 g (1 − cos θ) instead of m2 g cos θ; on r = r1 + r2 it is right (residual {}) but (107) differentiates in r; the paper's own (112) uses the correct + m2 g cos θ and A.3 writes the correct V, so (99) is the slip",
             res_text(&m)
