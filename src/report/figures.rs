@@ -168,16 +168,9 @@ fn force_series(
         .collect()
 }
 
-fn ok_time(data: &Data) -> Vec<(usize, &TimeCurve)> {
-    data.time
-        .iter()
-        .enumerate()
-        .filter_map(|(v, r)| r.as_ref().ok().map(|c| (v, c)))
-        .collect()
-}
-
-fn ok_theta(data: &Data) -> Vec<(usize, &ThetaCurve)> {
-    data.theta
+/// The curves that could be computed, with their variant.
+fn computed<T>(curves: &[crate::error::Result<T>]) -> Vec<(usize, &T)> {
+    curves
         .iter()
         .enumerate()
         .filter_map(|(v, r)| r.as_ref().ok().map(|c| (v, c)))
@@ -324,8 +317,8 @@ impl<'a> Src<'a> {
 pub fn figures(data: &Data, cfg: &Config) -> Vec<Figure> {
     let src = Src {
         data,
-        times: ok_time(data),
-        thetas: ok_theta(data),
+        times: computed(&data.time),
+        thetas: computed(&data.theta),
     };
     let mut figs = vec![super::diagram::figure()];
     figs.extend(main_kinematics(&src));
@@ -450,11 +443,13 @@ fn onset_markers(c: &ThetaCurve, data: &Data) -> Vec<Marker> {
                 "μ = {mu}: rolling {on} first needs more friction than μ at θ = {}",
                 fmt(a, 4)
             );
-            out.push(
-                Marker::new((a, y), (0, 0, 0), title)
-                    .shape(Shape::TriangleDown)
-                    .label(format!("μ={mu}")),
-            );
+            out.push(Marker::shaped(
+                Shape::TriangleDown,
+                (a, y),
+                (0, 0, 0),
+                title,
+                Some(format!("μ={mu}")),
+            ));
         }
     }
     out
@@ -858,11 +853,13 @@ fn friction_needed(c: &ThetaCurve, data: &Data, main_sep: Option<&Separation>) -
             fmt(m, 4),
             fmt(a, 4)
         );
-        p.markers.push(
-            Marker::new((a, m), PALETTE[0], title)
-                .shape(Shape::Diamond)
-                .label(format!("max {}", fmt(m, 4))),
-        );
+        p.markers.push(Marker::shaped(
+            Shape::Diamond,
+            (a, m),
+            PALETTE[0],
+            title,
+            Some(format!("max {}", fmt(m, 4))),
+        ));
     }
     p.legend.push(LegendEntry::line(
         "separation θₛ (N₁₂ = 0)",
@@ -916,14 +913,24 @@ fn mu_onsets(p: &mut Panel, data: &Data) -> (Vec<String>, Vec<String>) {
                 "μ = {mu}: the contact between the cylinders starts to slip at θ = {}",
                 fmt(a, 4)
             );
-            p.markers
-                .push(Marker::new((a, m), PALETTE[1], title).shape(Shape::TriangleDown));
+            p.markers.push(Marker::shaped(
+                Shape::TriangleDown,
+                (a, m),
+                PALETTE[1],
+                title,
+                None,
+            ));
         }
         if let Some(a) = extra_f(s, "theta_slip_floor") {
             floor.push(format!("{mu}: {}", fmt(a, 3)));
             let title = format!("μ = {mu}: the floor starts to slip at θ = {}", fmt(a, 4));
-            p.markers
-                .push(Marker::new((a, m), PALETTE[0], title).shape(Shape::Triangle));
+            p.markers.push(Marker::shaped(
+                Shape::Triangle,
+                (a, m),
+                PALETTE[0],
+                title,
+                None,
+            ));
         }
     }
     let label = "slip onset between the cylinders, at μ";

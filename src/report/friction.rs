@@ -299,9 +299,13 @@ fn friction_main(rows: &[Vec<f64>], modes: &[String], sep: &SeparationAnswer) ->
         .map(|&(t, theta, k)| {
             let name = k.replace('_', " ");
             let title = format!("{name} at t = {t:.4}, θ = {theta:.4}");
-            Marker::new((t, theta), PALETTE[6], title)
-                .shape(Shape::Diamond)
-                .label(format!("{name}, θ = {theta:.3}"))
+            Marker::shaped(
+                Shape::Diamond,
+                (t, theta),
+                PALETTE[6],
+                title,
+                Some(format!("{name}, θ = {theta:.3}")),
+            )
         })
         .collect();
     p1.legend = vec![
@@ -391,7 +395,7 @@ fn friction_map(d: &FrictionData) -> Figure {
                 "μ = {:.3}: the contact opens at θ = {:.4} with N₁₂ > 0",
                 m.0, m.2
             );
-            Marker::new((m.0, m.2), PALETTE[3], title).shape(Shape::Diamond)
+            Marker::shaped(Shape::Diamond, (m.0, m.2), PALETTE[3], title, None)
         })
         .collect();
     if !p.markers.is_empty() {

@@ -95,7 +95,6 @@ impl Config {
     /// A small configuration for tests: the same files, coarser curves.
     pub fn quick() -> Self {
         Config {
-            digits: 20,
             plot_digits: 8,
             time_points: 8,
             theta_points: 10,
@@ -108,8 +107,7 @@ impl Config {
             plane_table_digits: 12,
             friction_per_decade: 1,
             friction_plane_per_decade: 1,
-            threads: default_threads(),
-            progress: false,
+            ..Config::full()
         }
     }
 }

@@ -214,16 +214,19 @@ impl Marker {
         }
     }
 
-    /// The same marker with another shape.
-    pub fn shape(mut self, s: Shape) -> Self {
-        self.shape = s;
-        self
-    }
-
-    /// The same marker with a text beside it.
-    pub fn label(mut self, t: impl Into<String>) -> Self {
-        self.label = Some(t.into());
-        self
+    /// A filled marker of `shape`, with a text beside it if `label`.
+    pub fn shaped(
+        shape: Shape,
+        at: (f64, f64),
+        color: Rgb,
+        title: String,
+        label: Option<String>,
+    ) -> Self {
+        Marker {
+            shape,
+            label,
+            ..Marker::new(at, color, title)
+        }
     }
 }
 

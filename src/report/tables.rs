@@ -42,25 +42,23 @@ pub fn closed_form(v: (Floor, Contact), theta0: &str) -> Result<Option<(String, 
             Some(("arccos(√3 − 1), eq. (43) corrected".to_string(), c.acos()))
         }
         (Floor::Fixed, Contact::Roll) => {
-            let c = Float::with_val(p, &c0 * 4u32) / 7u32;
-            let f = if at_top {
-                "arccos(4/7), eq. (36)".to_string()
-            } else {
-                "arccos(4 cos θ₀ / 7)".to_string()
-            };
-            Some((f, c.acos()))
+            Some(fixed_form(&c0, 4, 7, at_top, "arccos(4/7), eq. (36)"))
         }
-        (Floor::Fixed, Contact::Slip) => {
-            let c = Float::with_val(p, &c0 * 2u32) / 3u32;
-            let f = if at_top {
-                "arccos(2/3)".to_string()
-            } else {
-                "arccos(2 cos θ₀ / 3)".to_string()
-            };
-            Some((f, c.acos()))
-        }
+        (Floor::Fixed, Contact::Slip) => Some(fixed_form(&c0, 2, 3, at_top, "arccos(2/3)")),
         _ => None,
     })
+}
+
+/// A fixed lower cylinder's cos θs = (num/den) cos θ0: (formula, θs), the
+/// formula `at_top` when θ0 = 0.
+fn fixed_form(c0: &Float, num: u32, den: u32, at_top: bool, top: &str) -> (String, Float) {
+    let c = Float::with_val(CF_PREC, c0 * num) / den;
+    let f = if at_top {
+        top.to_string()
+    } else {
+        format!("arccos({num} cos θ₀ / {den})")
+    };
+    (f, c.acos())
 }
 
 /// arccos(2/(3 + k2)) for an exact k2 (the fixed lower cylinder, eq. 36).
