@@ -883,9 +883,9 @@ impl Svg {
         } else {
             ("none".to_string(), hex(color), 2.0)
         };
-        let d = match shape {
+        let t = Svg::title(title);
+        match shape {
             Shape::Circle => {
-                let t = Svg::title(title);
                 let _ = writeln!(
                     self.s,
                     "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\">{t}</circle>",
@@ -894,49 +894,9 @@ impl Svg {
                     n(r),
                     n(sw)
                 );
-                return;
-            }
-            Shape::Square => {
-                let a = r * 0.88;
-                format!(
-                    "M{} {}h{}v{}h{}z",
-                    n(x - a),
-                    n(y - a),
-                    n(2.0 * a),
-                    n(2.0 * a),
-                    n(-2.0 * a)
-                )
-            }
-            Shape::Triangle | Shape::TriangleDown => {
-                let s = if shape == Shape::Triangle { 1.0 } else { -1.0 };
-                let a = r * 1.15;
-                format!(
-                    "M{} {}L{} {}L{} {}z",
-                    n(x),
-                    n(y - s * a),
-                    n(x + a * 0.866),
-                    n(y + s * a * 0.5),
-                    n(x - a * 0.866),
-                    n(y + s * a * 0.5)
-                )
-            }
-            Shape::Diamond => {
-                let a = r * 1.2;
-                format!(
-                    "M{} {}L{} {}L{} {}L{} {}z",
-                    n(x),
-                    n(y - a),
-                    n(x + a),
-                    n(y),
-                    n(x),
-                    n(y + a),
-                    n(x - a),
-                    n(y)
-                )
             }
             Shape::Cross => {
                 let a = r * 0.85;
-                let t = Svg::title(title);
                 let _ = writeln!(
                     self.s,
                     "<path d=\"M{} {}L{} {}M{} {}L{} {}\" stroke=\"{}\" stroke-width=\"2.2\">{t}</path>",
@@ -950,15 +910,61 @@ impl Svg {
                     n(y - a),
                     hex(color)
                 );
-                return;
             }
-        };
-        let t = Svg::title(title);
-        let _ = writeln!(
-            self.s,
-            "<path d=\"{d}\" fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\" stroke-linejoin=\"round\">{t}</path>",
-            n(sw)
-        );
+            _ => {
+                let d = shape_path(shape, x, y, r);
+                let _ = writeln!(
+                    self.s,
+                    "<path d=\"{d}\" fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\" stroke-linejoin=\"round\">{t}</path>",
+                    n(sw)
+                );
+            }
+        }
+    }
+}
+
+/// The outline of a square, triangle or diamond marker as an SVG path.
+fn shape_path(shape: Shape, x: f64, y: f64, r: f64) -> String {
+    match shape {
+        Shape::Square => {
+            let a = r * 0.88;
+            format!(
+                "M{} {}h{}v{}h{}z",
+                n(x - a),
+                n(y - a),
+                n(2.0 * a),
+                n(2.0 * a),
+                n(-2.0 * a)
+            )
+        }
+        Shape::Triangle | Shape::TriangleDown => {
+            let s = if shape == Shape::Triangle { 1.0 } else { -1.0 };
+            let a = r * 1.15;
+            format!(
+                "M{} {}L{} {}L{} {}z",
+                n(x),
+                n(y - s * a),
+                n(x + a * 0.866),
+                n(y + s * a * 0.5),
+                n(x - a * 0.866),
+                n(y + s * a * 0.5)
+            )
+        }
+        // a diamond (circles and crosses are not paths of this kind)
+        _ => {
+            let a = r * 1.2;
+            format!(
+                "M{} {}L{} {}L{} {}L{} {}z",
+                n(x),
+                n(y - a),
+                n(x + a),
+                n(y),
+                n(x),
+                n(y + a),
+                n(x - a),
+                n(y)
+            )
+        }
     }
 }
 
@@ -1799,7 +1805,6 @@ const VIRIDIS: [Rgb; 9] = [
 /// The colour bar: a smooth gradient (the colour map's anchors as stops),
 /// vertical in the right strip or horizontal below the panels.
 fn draw_colorbar(svg: &mut Svg, cb: &ColorBar, x0: f64, y0: f64, w: f64, h: f64, horizontal: bool) {
-    let (lo, hi) = cb.range;
     let id = if horizontal { "cbh" } else { "cbv" };
     let (gx2, gy1) = if horizontal {
         ("100%", "0%")
@@ -1819,107 +1824,107 @@ fn draw_colorbar(svg: &mut Svg, cb: &ColorBar, x0: f64, y0: f64, w: f64, h: f64,
         svg.s,
         "<defs><linearGradient id=\"{id}\" x1=\"0%\" y1=\"{gy1}\" x2=\"{gx2}\" y2=\"0%\">{stops}</linearGradient></defs>"
     );
+    let fill = format!("url(#{id})");
+    if horizontal {
+        colorbar_horizontal(svg, cb, &fill, x0, y0, w);
+    } else {
+        colorbar_vertical(svg, cb, &fill, x0, y0, w, h);
+    }
+}
+
+/// A colour bar across the bottom of a narrow layout.
+fn colorbar_horizontal(svg: &mut Svg, cb: &ColorBar, fill: &str, x0: f64, y0: f64, w: f64) {
+    let (lo, hi) = cb.range;
     let (ticks, step) = nice_ticks(lo, hi, 6);
     let dec = decimals_for(step);
-    if horizontal {
-        let (bx, by, bw, bh) = (x0 + 20.0, y0 + 28.0, w - 40.0, 14.0);
+    let black = (0, 0, 0);
+    let (bx, by, bw, bh) = (x0 + 20.0, y0 + 28.0, w - 40.0, 14.0);
+    svg.text(
+        bx,
+        y0 + 18.0,
+        &cb.label,
+        LEGEND_PX,
+        "start",
+        black,
+        false,
+        false,
+    );
+    svg.rect(bx, by, bw, bh, fill, "#000000");
+    let xpix = |v: f64| bx + (v - lo) / (hi - lo) * bw;
+    for t in ticks {
+        let x = xpix(t);
+        svg.line((x, by + bh), (x, by + bh + 4.0), black, 1.0, Dash::Solid);
+        let text = tick_text(t, dec);
         svg.text(
-            bx,
-            y0 + 18.0,
-            &cb.label,
-            LEGEND_PX,
-            "start",
-            (0, 0, 0),
+            x,
+            by + bh + 17.0,
+            &text,
+            TICK_PX,
+            "middle",
+            black,
             false,
             false,
         );
-        svg.rect(bx, by, bw, bh, &format!("url(#{id})"), "#000000");
-        let xpix = |v: f64| bx + (v - lo) / (hi - lo) * bw;
-        for t in ticks {
-            let x = xpix(t);
+    }
+    for (m, _) in &cb.marks {
+        if *m >= lo && *m <= hi {
+            let x = xpix(*m);
+            svg.line((x, by), (x, by + bh), (255, 255, 255), 2.0, Dash::Solid);
+        }
+    }
+}
+
+/// A colour bar in the right strip of a wide layout, with its marks named.
+#[allow(clippy::too_many_arguments)]
+fn colorbar_vertical(svg: &mut Svg, cb: &ColorBar, fill: &str, x0: f64, y0: f64, w: f64, h: f64) {
+    let (lo, hi) = cb.range;
+    let (ticks, step) = nice_ticks(lo, hi, 6);
+    let dec = decimals_for(step);
+    let black = (0, 0, 0);
+    let (bx, by, bw, bh) = (x0 + 12.0, y0 + 60.0, 24.0, h - 140.0);
+    for (i, l) in wrap(&cb.label, LEGEND_PX, w - 12.0).iter().enumerate() {
+        let y = y0 + 24.0 + 17.0 * i as f64;
+        svg.text(x0 + 8.0, y, l, LEGEND_PX, "start", black, false, false);
+    }
+    svg.rect(bx, by, bw, bh, fill, "#000000");
+    let ypix = |v: f64| by + bh - (v - lo) / (hi - lo) * bh;
+    for t in ticks {
+        let y = ypix(t);
+        svg.line((bx + bw, y), (bx + bw + 5.0, y), black, 1.0, Dash::Solid);
+        let text = tick_text(t, dec);
+        svg.text(
+            bx + bw + 8.0,
+            y + 4.5,
+            &text,
+            TICK_PX,
+            "start",
+            black,
+            false,
+            false,
+        );
+    }
+    for (m, t) in &cb.marks {
+        if *m >= lo && *m <= hi {
+            let y = ypix(*m);
             svg.line(
-                (x, by + bh),
-                (x, by + bh + 4.0),
-                (0, 0, 0),
-                1.0,
-                Dash::Solid,
-            );
-            svg.text(
-                x,
-                by + bh + 17.0,
-                &tick_text(t, dec),
-                TICK_PX,
-                "middle",
-                (0, 0, 0),
-                false,
-                false,
-            );
-        }
-        for (m, _) in &cb.marks {
-            if *m >= lo && *m <= hi {
-                let x = xpix(*m);
-                svg.line((x, by), (x, by + bh), (255, 255, 255), 2.0, Dash::Solid);
-            }
-        }
-    } else {
-        let (bx, by, bw, bh) = (x0 + 12.0, y0 + 60.0, 24.0, h - 140.0);
-        for (i, l) in wrap(&cb.label, LEGEND_PX, w - 12.0).iter().enumerate() {
-            svg.text(
-                x0 + 8.0,
-                y0 + 24.0 + 17.0 * i as f64,
-                l,
-                LEGEND_PX,
-                "start",
-                (0, 0, 0),
-                false,
-                false,
-            );
-        }
-        svg.rect(bx, by, bw, bh, &format!("url(#{id})"), "#000000");
-        let ypix = |v: f64| by + bh - (v - lo) / (hi - lo) * bh;
-        for t in ticks {
-            let y = ypix(t);
-            svg.line(
+                (bx - 4.0, y),
                 (bx + bw, y),
-                (bx + bw + 5.0, y),
-                (0, 0, 0),
-                1.0,
+                (255, 255, 255),
+                2.0,
                 Dash::Solid,
             );
-            svg.text(
-                bx + bw + 8.0,
-                y + 4.5,
-                &tick_text(t, dec),
-                TICK_PX,
-                "start",
-                (0, 0, 0),
-                false,
-                false,
-            );
-        }
-        for (m, t) in &cb.marks {
-            if *m >= lo && *m <= hi {
-                let y = ypix(*m);
-                svg.line(
-                    (bx - 4.0, y),
-                    (bx + bw, y),
-                    (255, 255, 255),
-                    2.0,
-                    Dash::Solid,
+            svg.line((bx - 6.0, y), (bx, y), black, 1.5, Dash::Solid);
+            if !t.is_empty() {
+                svg.text(
+                    bx - 8.0,
+                    y + 4.0,
+                    t,
+                    NOTE_PX - 1.5,
+                    "end",
+                    black,
+                    false,
+                    false,
                 );
-                svg.line((bx - 6.0, y), (bx, y), (0, 0, 0), 1.5, Dash::Solid);
-                if !t.is_empty() {
-                    svg.text(
-                        bx - 8.0,
-                        y + 4.0,
-                        t,
-                        NOTE_PX - 1.5,
-                        "end",
-                        (0, 0, 0),
-                        false,
-                        false,
-                    );
-                }
             }
         }
     }
