@@ -1595,8 +1595,8 @@ struct Placed {
 /// down until it is free; if that leaves one outside [lo, hi] (or two still
 /// clash), the labels are placed again: those that clash are stacked in a
 /// block centred on their wishes and kept inside [lo, hi], written as one
-/// column right of the block's rightmost curve end, and blocks that then
-/// clash are merged.
+/// column right of the block's rightmost curve end, and any two blocks that
+/// then clash are merged with those between them.
 fn spread_labels(items: &mut [Placed], gap: f64, lo: f64, hi: f64) {
     let clash = |a: &Placed, b: &Placed| {
         (a.y - b.y).abs() < gap - 1e-9 && a.x < b.x + b.w && b.x < a.x + a.w
@@ -1641,15 +1641,19 @@ fn spread_labels(items: &mut [Placed], gap: f64, lo: f64, hi: f64) {
                 items[i].x = if n > 1.0 { x } else { items[i].x0 };
             }
         }
-        let merge = (0..blocks.len().saturating_sub(1)).find(|&k| {
-            blocks[k]
-                .iter()
-                .any(|&i| blocks[k + 1].iter().any(|&j| clash(&items[i], &items[j])))
-        });
+        // any two blocks that clash are merged with every block between them
+        let n = blocks.len();
+        let merge = (0..n)
+            .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+            .find(|&(i, j)| {
+                blocks[i]
+                    .iter()
+                    .any(|&a| blocks[j].iter().any(|&b| clash(&items[a], &items[b])))
+            });
         match merge {
-            Some(k) => {
-                let next = blocks.remove(k + 1);
-                blocks[k].extend(next);
+            Some((i, j)) => {
+                let rest: Vec<usize> = blocks.drain(i + 1..=j).flatten().collect();
+                blocks[i].extend(rest);
             }
             None => break,
         }
