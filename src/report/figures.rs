@@ -902,53 +902,43 @@ fn friction_needed(c: &ThetaCurve, data: &Data, main_sep: Option<&Separation>) -
 /// entries); returns the onsets between the cylinders and at the floor as
 /// text ("μ: θ").
 fn mu_onsets(p: &mut Panel, data: &Data) -> (Vec<String>, Vec<String>) {
-    let mut contact = Vec::new();
-    let mut floor = Vec::new();
-    for (mu, r) in MU_VALUES.iter().zip(&data.mu) {
-        let Ok(s) = r else { continue };
-        let m = text_f64(mu);
-        if let Some(a) = extra_f(s, "theta_slip_contact") {
-            contact.push(format!("{mu}: {}", fmt(a, 3)));
-            let title = format!(
-                "μ = {mu}: the contact between the cylinders starts to slip at θ = {}",
-                fmt(a, 4)
-            );
-            p.markers.push(Marker::shaped(
-                Shape::TriangleDown,
-                (a, m),
-                PALETTE[1],
-                title,
-                None,
-            ));
-        }
-        if let Some(a) = extra_f(s, "theta_slip_floor") {
-            floor.push(format!("{mu}: {}", fmt(a, 3)));
-            let title = format!("μ = {mu}: the floor starts to slip at θ = {}", fmt(a, 4));
-            p.markers.push(Marker::shaped(
-                Shape::Triangle,
-                (a, m),
-                PALETTE[0],
-                title,
-                None,
-            ));
-        }
-    }
-    let label = "slip onset between the cylinders, at μ";
-    p.legend.push(LegendEntry::marker(
-        label,
-        PALETTE[1],
-        Shape::TriangleDown,
-        true,
-    ));
-    if !floor.is_empty() {
-        let label = "slip onset at the floor, at μ";
-        p.legend.push(LegendEntry::marker(
-            label,
+    // (verified angle, colour, marker, what starts to slip, legend)
+    let kinds = [
+        (
+            "theta_slip_contact",
+            PALETTE[1],
+            Shape::TriangleDown,
+            "the contact between the cylinders",
+            "slip onset between the cylinders, at μ",
+        ),
+        (
+            "theta_slip_floor",
             PALETTE[0],
             Shape::Triangle,
-            true,
-        ));
+            "the floor",
+            "slip onset at the floor, at μ",
+        ),
+    ];
+    let mut onsets = [Vec::new(), Vec::new()];
+    for (mu, r) in MU_VALUES.iter().zip(&data.mu) {
+        let Ok(s) = r else { continue };
+        for (k, &(name, color, shape, what, _)) in kinds.iter().enumerate() {
+            if let Some(a) = extra_f(s, name) {
+                onsets[k].push(format!("{mu}: {}", fmt(a, 3)));
+                let title = format!("μ = {mu}: {what} starts to slip at θ = {}", fmt(a, 4));
+                p.markers
+                    .push(Marker::shaped(shape, (a, text_f64(mu)), color, title, None));
+            }
+        }
     }
+    for (k, &(_, color, shape, _, legend)) in kinds.iter().enumerate() {
+        // the contact always slips before separation; the floor may not
+        if k == 0 || !onsets[k].is_empty() {
+            p.legend
+                .push(LegendEntry::marker(legend, color, shape, true));
+        }
+    }
+    let [contact, floor] = onsets;
     (contact, floor)
 }
 

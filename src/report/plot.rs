@@ -1829,19 +1829,25 @@ fn draw_colorbar(svg: &mut Svg, cb: &ColorBar, x0: f64, y0: f64, w: f64, h: f64,
         "<defs><linearGradient id=\"{id}\" x1=\"0%\" y1=\"{gy1}\" x2=\"{gx2}\" y2=\"0%\">{stops}</linearGradient></defs>"
     );
     let fill = format!("url(#{id})");
+    let (ticks, step) = nice_ticks(cb.range.0, cb.range.1, 6);
+    let dec = decimals_for(step);
+    let ticks: Vec<(f64, String)> = ticks.into_iter().map(|t| (t, tick_text(t, dec))).collect();
     if horizontal {
-        colorbar_horizontal(svg, cb, &fill, x0, y0, w);
+        colorbar_horizontal(svg, cb, &ticks, &fill, (x0, y0, w));
     } else {
-        colorbar_vertical(svg, cb, &fill, x0, y0, w, h);
+        colorbar_vertical(svg, cb, &ticks, &fill, (x0, y0, w, h));
     }
 }
 
 /// A colour bar across the bottom of a narrow layout.
-fn colorbar_horizontal(svg: &mut Svg, cb: &ColorBar, fill: &str, x0: f64, y0: f64, w: f64) {
-    let (lo, hi) = cb.range;
-    let (ticks, step) = nice_ticks(lo, hi, 6);
-    let dec = decimals_for(step);
-    let black = (0, 0, 0);
+fn colorbar_horizontal(
+    svg: &mut Svg,
+    cb: &ColorBar,
+    ticks: &[(f64, String)],
+    fill: &str,
+    (x0, y0, w): (f64, f64, f64),
+) {
+    let ((lo, hi), black) = (cb.range, (0, 0, 0));
     let (bx, by, bw, bh) = (x0 + 20.0, y0 + 28.0, w - 40.0, 14.0);
     svg.text(
         bx,
@@ -1855,20 +1861,11 @@ fn colorbar_horizontal(svg: &mut Svg, cb: &ColorBar, fill: &str, x0: f64, y0: f6
     );
     svg.rect(bx, by, bw, bh, fill, "#000000");
     let xpix = |v: f64| bx + (v - lo) / (hi - lo) * bw;
-    for t in ticks {
-        let x = xpix(t);
+    for (t, text) in ticks {
+        let x = xpix(*t);
         svg.line((x, by + bh), (x, by + bh + 4.0), black, 1.0, Dash::Solid);
-        let text = tick_text(t, dec);
-        svg.text(
-            x,
-            by + bh + 17.0,
-            &text,
-            TICK_PX,
-            "middle",
-            black,
-            false,
-            false,
-        );
+        let ty = by + bh + 17.0;
+        svg.text(x, ty, text, TICK_PX, "middle", black, false, false);
     }
     for (m, _) in &cb.marks {
         if *m >= lo && *m <= hi {
@@ -1879,12 +1876,14 @@ fn colorbar_horizontal(svg: &mut Svg, cb: &ColorBar, fill: &str, x0: f64, y0: f6
 }
 
 /// A colour bar in the right strip of a wide layout, with its marks named.
-#[allow(clippy::too_many_arguments)]
-fn colorbar_vertical(svg: &mut Svg, cb: &ColorBar, fill: &str, x0: f64, y0: f64, w: f64, h: f64) {
-    let (lo, hi) = cb.range;
-    let (ticks, step) = nice_ticks(lo, hi, 6);
-    let dec = decimals_for(step);
-    let black = (0, 0, 0);
+fn colorbar_vertical(
+    svg: &mut Svg,
+    cb: &ColorBar,
+    ticks: &[(f64, String)],
+    fill: &str,
+    (x0, y0, w, h): (f64, f64, f64, f64),
+) {
+    let ((lo, hi), black) = (cb.range, (0, 0, 0));
     let (bx, by, bw, bh) = (x0 + 12.0, y0 + 60.0, 24.0, h - 140.0);
     for (i, l) in wrap(&cb.label, LEGEND_PX, w - 12.0).iter().enumerate() {
         let y = y0 + 24.0 + 17.0 * i as f64;
@@ -1892,20 +1891,11 @@ fn colorbar_vertical(svg: &mut Svg, cb: &ColorBar, fill: &str, x0: f64, y0: f64,
     }
     svg.rect(bx, by, bw, bh, fill, "#000000");
     let ypix = |v: f64| by + bh - (v - lo) / (hi - lo) * bh;
-    for t in ticks {
-        let y = ypix(t);
+    for (t, text) in ticks {
+        let y = ypix(*t);
         svg.line((bx + bw, y), (bx + bw + 5.0, y), black, 1.0, Dash::Solid);
-        let text = tick_text(t, dec);
-        svg.text(
-            bx + bw + 8.0,
-            y + 4.5,
-            &text,
-            TICK_PX,
-            "start",
-            black,
-            false,
-            false,
-        );
+        let (tx, ty) = (bx + bw + 8.0, y + 4.5);
+        svg.text(tx, ty, text, TICK_PX, "start", black, false, false);
     }
     for (m, t) in &cb.marks {
         if *m >= lo && *m <= hi {
