@@ -5,7 +5,9 @@ use super::checks_main::{over, res_text, separation_rows};
 use super::corrected;
 use super::ctx::Ctx;
 use super::finding::{Finding, Tally};
-use super::forms::{calls, corrected, definitions, other, printed, Sampled};
+use super::forms::gen as on_general;
+use super::forms::rest as on_rest;
+use super::forms::{calls, check, corrected, definitions, other, printed, sample, Form, Sampled};
 use super::truth::{self, lagrange_lhs, momentum, random_state, Case, Scales, StartKind, Sys};
 use crate::error::Result;
 use crate::model::{Contact, Floor};
@@ -26,20 +28,6 @@ fn gen<F: FnMut(&Case, &Sym, &Jac)>(cx: &mut Ctx, mut f: F) -> Result<()> {
             let jac = truth::constraint_jacobian(y);
             f(c, y, &jac)
         },
-    )
-}
-
-/// Both rolling, from rest at the top.
-fn rest<F: FnMut(&Case, &Sym)>(cx: &mut Ctx, f: F) -> Result<()> {
-    let pts = cx.general();
-    over(
-        cx,
-        &pts,
-        Floor::Roll,
-        Contact::Roll,
-        StartKind::Rest,
-        false,
-        f,
     )
 }
 
@@ -192,34 +180,34 @@ fn momentum_sum(
     labels: &[&str],
     truth_of: fn(&Sym) -> X,
 ) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut f0 = Tally::default();
-    gen(cx, |c, y, _| {
-        let t = truth_of(y);
-        for (v, l) in forms(y).iter().zip(labels) {
-            f.printed.add(l, &c.name, v, &t, &c.scales.mom);
-        }
+    let mut s = sample(cx, on_general, |c, y| {
+        let (t, m) = (truth_of(y), &c.scales.mom);
+        let mut v: Vec<Form> = forms(y)
+            .into_iter()
+            .zip(labels)
+            .map(|(v, l)| printed(*l, v, &t, m))
+            .collect();
         if let Some(y0) = &c.sym0 {
-            f.printed.add(
+            v.push(printed(
                 "constant (value at t = 0)",
-                &c.name,
-                &t,
+                t.clone(),
                 &truth_of(y0),
-                &c.scales.mom,
-            );
+                m,
+            ));
         }
-        f0.add("= 0", &c.name, &t, &t.zero(), &c.scales.mom);
+        v.push(other("= 0", t.clone(), &t.zero(), m));
+        v
     })?;
-    rest(cx, |c, y| {
-        f.printed.add(
+    s.sample(cx, &on_rest(cx), |c, y| {
+        vec![printed(
             "= 0 (start from rest)",
-            &c.name,
-            &truth_of(y),
+            truth_of(y),
             &y.r1.zero(),
             &c.scales.mom,
-        );
+        )]
     })?;
-    if let Some(m) = f0.max() {
+    let mut f = s.f;
+    if let Some(m) = s.other.max() {
         f.note(format!(
             "'= 0' needs a start from rest (θ̇0 = 0, ω0 = 0), not only x1 = φ1 = θ = 0 as the text says: with the general starts the sum is a nonzero constant (relative size {})",
             res_text(&m)
@@ -229,43 +217,34 @@ fn momentum_sum(
 }
 
 pub fn eq70(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    let f = check(cx, on_general, |c, y| {
         let t = lagrange_lhs(Sys::A1, y, QP1) / &y.r1;
         let [a, b] = app::eq70(y);
-        f.printed.add("−λ1", &c.name, &a, &t, &c.scales.force);
-        f.printed.add(
-            "(k1 m1 + k2 m2) r1 φ̈1 − k2 m2 r θ̈",
-            &c.name,
-            &b,
-            &t,
-            &c.scales.force,
-        );
-        f.printed.add(
-            "λ1 = F1 of (30)",
-            &c.name,
-            &y.lam[0],
-            &crate::paper::sec2::eq30(y),
-            &c.scales.force,
-        );
+        let s = &c.scales.force;
+        vec![
+            printed("−λ1", a, &t, s),
+            printed("(k1 m1 + k2 m2) r1 φ̈1 − k2 m2 r θ̈", b, &t, s),
+            printed(
+                "λ1 = F1 of (30)",
+                y.lam[0].clone(),
+                &crate::paper::sec2::eq30(y),
+                s,
+            ),
+        ]
     })?;
-    f.note("the printed expression is −λ1 = −F1; 'which is the force F1 found in eq. (30)' refers to λ1");
-    Ok(f)
+    Ok(f.with_note("the printed expression is −λ1 = −F1; 'which is the force F1 found in eq. (30)' refers to λ1"))
 }
 
 pub fn eq79(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
-        let t = lagrange_lhs(Sys::A2, y, QP2) / &y.r2;
-        for (v, l) in app::eq79(y)
-            .iter()
-            .zip(["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"])
-        {
-            f.printed.add(l, &c.name, v, &t, &c.scales.force);
-        }
-    })?;
-    f.note("λ2 is F21 of (28) with the same convention (along (cos θ, −sin θ))");
-    Ok(f)
+    let f = lam_expr(
+        cx,
+        Sys::A2,
+        QP2,
+        &["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"],
+        |y| app::eq79(y).to_vec(),
+        true,
+    )?;
+    Ok(f.with_note("λ2 is F21 of (28) with the same convention (along (cos θ, −sin θ))"))
 }
 
 pub fn a3_v(cx: &mut Ctx) -> Result<Finding> {
@@ -377,23 +356,17 @@ fn eq84_86(cx: &mut Ctx, u: usize, k: usize, members: fn(&Sym, &Jac) -> [X; 2]) 
 }
 
 pub fn eq88(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    let f = check(cx, on_general, |c, y| {
         let t = lagrange_lhs(Sys::A3, y, QR);
         let [a, b] = app::eq88(y);
-        f.printed
-            .add("first line", &c.name, &a, &t, &c.scales.force);
-        f.printed.add(
-            "m2 [r1 sin θ φ̈1 − r θ̇² + g cos θ]",
-            &c.name,
-            &b,
-            &t,
-            &c.scales.force,
-        );
-        f.printed.add("= N12", &c.name, &b, &y.n12, &c.scales.force);
+        let s = &c.scales.force;
+        vec![
+            printed("first line", a, &t, s),
+            printed("m2 [r1 sin θ φ̈1 − r θ̇² + g cos θ]", b.clone(), &t, s),
+            printed("= N12", b, &y.n12, s),
+        ]
     })?;
-    f.note("agrees with the corrected (33), not the printed one");
-    Ok(f)
+    Ok(f.with_note("agrees with the corrected (33), not the printed one"))
 }
 
 pub fn eq89(cx: &mut Ctx) -> Result<Finding> {
@@ -469,34 +442,28 @@ fn lam_expr(
     forms: fn(&Sym) -> Vec<X>,
     per_r2: bool,
 ) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    check(cx, on_general, |c, y| {
         let mut t = lagrange_lhs(sys, y, u);
         if per_r2 {
             t = t / &y.r2;
         }
-        for (v, l) in forms(y).iter().zip(labels) {
-            f.printed.add(l, &c.name, v, &t, &c.scales.force);
-        }
-    })?;
-    Ok(f)
+        forms(y)
+            .into_iter()
+            .zip(labels)
+            .map(|(v, l)| printed(*l, v, &t, &c.scales.force))
+            .collect()
+    })
 }
 
 fn n1_forms(cx: &mut Ctx, forms: fn(&Sym) -> [X; 2]) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    check(cx, on_general, |c, y| {
         let [a, b] = forms(y);
-        f.printed.add(
-            "(m1 + m2) g − m2 r (…)",
-            &c.name,
-            &a,
-            &y.n1,
-            &c.scales.force,
-        );
-        f.printed
-            .add("(m1 + m2) g + m2 ÿ2", &c.name, &b, &y.n1, &c.scales.force);
-    })?;
-    Ok(f)
+        let s = &c.scales.force;
+        vec![
+            printed("(m1 + m2) g − m2 r (…)", a, &y.n1, s),
+            printed("(m1 + m2) g + m2 ÿ2", b, &y.n1, s),
+        ]
+    })
 }
 
 pub fn eq98(cx: &mut Ctx) -> Result<Finding> {
@@ -575,17 +542,16 @@ pub fn eq112(cx: &mut Ctx) -> Result<Finding> {
 }
 
 pub fn fn15(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    let f = check(cx, on_general, |c, y| {
         let l2 = lagrange_lhs(Sys::A5, y, QTH) / &y.r1;
         let l1 = -(lagrange_lhs(Sys::A5, y, QP1) / &y.r1) - &l2;
-        f.printed
-            .add("F21 from (106)", &c.name, &l2, &y.f21, &c.scales.force);
-        f.printed
-            .add("F1 from (104)", &c.name, &l1, &y.f1, &c.scales.force);
+        let s = &c.scales.force;
+        vec![
+            printed("F21 from (106)", l2, &y.f21, s),
+            printed("F1 from (104)", l1, &y.f1, s),
+        ]
     })?;
-    f.note("λ2 = (θ equation)/r1, λ1 = −(φ1 equation)/r1 − λ2, against the multiplier system's F21 and F1");
-    Ok(f)
+    Ok(f.with_note("λ2 = (θ equation)/r1, λ1 = −(φ1 equation)/r1 − λ2, against the multiplier system's F21 and F1"))
 }
 
 pub fn eq69(cx: &mut Ctx) -> Result<Finding> {

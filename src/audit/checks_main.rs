@@ -6,7 +6,7 @@ use super::ctx::Ctx;
 use super::finding::{Finding, RootRow, Tally};
 use super::forms::{calls, definitions};
 use super::forms::{
-    check, corrected, other, printed, sample, On, Sampled, GENERAL, REST, REST_KICK,
+    check, corrected, gen, other, printed, rest, rest_kick, sample, On, Sampled, REST,
 };
 use super::points::{with_k, Point};
 use super::separation::first_root;
@@ -41,30 +41,6 @@ where
         }
     }
     Ok(())
-}
-
-/// The paper's general case: both rolling, general start (θ0, θ̇0, ω0 ≠ 0).
-fn gen(cx: &Ctx) -> On {
-    both_rolling(cx, GENERAL)
-}
-
-/// Both rolling, from rest at the top and from kick starts (timed).
-fn rest_kick(cx: &Ctx) -> On {
-    both_rolling(cx, REST_KICK)
-}
-
-/// Both rolling, at the random points and the paper's identical cylinders.
-fn both_rolling(cx: &Ctx, starts: &'static [(StartKind, bool)]) -> On {
-    On {
-        pts: cx.general(),
-        fc: (FRoll, CRoll),
-        starts,
-    }
-}
-
-/// Both rolling, from rest at the top.
-fn rest(cx: &Ctx) -> On {
-    both_rolling(cx, REST)
 }
 
 /// A residual printed as text.

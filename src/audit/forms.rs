@@ -75,6 +75,30 @@ pub(super) const GENERAL: &[(StartKind, bool)] = &[(StartKind::General, false)];
 pub(super) const REST_KICK: &[(StartKind, bool)] =
     &[(StartKind::Rest, false), (StartKind::Kick, true)];
 
+/// The paper's general case: both rolling, general start (θ0, θ̇0, ω0 ≠ 0).
+pub(super) fn gen(cx: &Ctx) -> On {
+    both_rolling(cx, GENERAL)
+}
+
+/// Both rolling, from rest at the top and from kick starts (timed).
+pub(super) fn rest_kick(cx: &Ctx) -> On {
+    both_rolling(cx, REST_KICK)
+}
+
+/// Both rolling, at the random points and the paper's identical cylinders.
+pub(super) fn both_rolling(cx: &Ctx, starts: &'static [(StartKind, bool)]) -> On {
+    On {
+        pts: cx.general(),
+        fc: (Floor::Roll, Contact::Roll),
+        starts,
+    }
+}
+
+/// Both rolling, from rest at the top.
+pub(super) fn rest(cx: &Ctx) -> On {
+    both_rolling(cx, REST)
+}
+
 /// The residuals of a check: the finding (printed forms), the corrected
 /// form's tally and the side tally.
 #[derive(Default)]
