@@ -332,6 +332,11 @@ fn residual_text(f: &Finding) -> String {
     }
 }
 
+/// A row of a Markdown table.
+fn md_row(s: &mut String, cells: &[String]) {
+    let _ = writeln!(s, "| {} |", cells.join(" | "));
+}
+
 fn md_escape(s: &str) -> String {
     s.replace('|', "\\|")
 }
@@ -447,15 +452,16 @@ fn separation_section(rows: &[Row], s: &mut String) {
                 ),
                 (p, None) => (if agree(p) { "yes" } else { "no" }).to_string(),
             };
-            let _ = writeln!(
+            md_row(
                 s,
-                "| ({}) | {} | {} | {} | {} | {} |",
-                r.id,
-                md_escape(&root.case),
-                show(&root.printed),
-                show(&root.corrected),
-                to_sig(&root.oracle.0, 20),
-                verdict
+                &[
+                    format!("({})", r.id),
+                    md_escape(&root.case),
+                    show(&root.printed),
+                    show(&root.corrected),
+                    to_sig(&root.oracle.0, 20),
+                    verdict,
+                ],
             );
         }
     }
@@ -476,21 +482,22 @@ fn points_section(s: &mut String) {
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|");
     for p in points::all() {
         let q = &p.params;
-        let _ = writeln!(
-            s,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            p.name,
-            rational_text(&q.m1),
-            rational_text(&q.m2),
-            rational_text(&q.r1),
-            rational_text(&q.r2),
-            rational_text(&q.k1),
-            rational_text(&q.k2),
-            rational_text(&q.g),
-            rational_text(&p.theta0),
-            rational_text(&p.thetadot0),
-            rational_text(&p.omega0)
-        );
+        let values = [
+            &q.m1,
+            &q.m2,
+            &q.r1,
+            &q.r2,
+            &q.k1,
+            &q.k2,
+            &q.g,
+            &p.theta0,
+            &p.thetadot0,
+            &p.omega0,
+        ];
+        let cells: Vec<String> = std::iter::once(p.name.clone())
+            .chain(values.iter().map(|v| rational_text(v)))
+            .collect();
+        md_row(s, &cells);
     }
     let _ = writeln!(
         s,
