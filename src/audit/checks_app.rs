@@ -5,6 +5,9 @@ use super::checks_main::{over, res_text, separation_rows};
 use super::corrected;
 use super::ctx::Ctx;
 use super::finding::{Finding, Tally};
+use super::forms::gen as on_general;
+use super::forms::rest as on_rest;
+use super::forms::{calls, check, corrected, definitions, other, printed, sample, Form, Sampled};
 use super::truth::{self, lagrange_lhs, momentum, random_state, Case, Scales, StartKind, Sys};
 use crate::error::Result;
 use crate::model::{Contact, Floor};
@@ -25,20 +28,6 @@ fn gen<F: FnMut(&Case, &Sym, &Jac)>(cx: &mut Ctx, mut f: F) -> Result<()> {
             let jac = truth::constraint_jacobian(y);
             f(c, y, &jac)
         },
-    )
-}
-
-/// Both rolling, from rest at the top.
-fn rest<F: FnMut(&Case, &Sym)>(cx: &mut Ctx, f: F) -> Result<()> {
-    let pts = cx.general();
-    over(
-        cx,
-        &pts,
-        Floor::Roll,
-        Contact::Roll,
-        StartKind::Rest,
-        false,
-        f,
     )
 }
 
@@ -128,46 +117,6 @@ fn jacobian_row(
     Ok(f)
 }
 
-pub fn eq56(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "Lagrange's equations: the method, not a formula of this problem",
-    ))
-}
-
-pub fn eq57(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "the method of multipliers; its instances (66)–(68), (75)–(77), (84)–(87), (93)–(95), (103)–(108) are checked",
-    ))
-}
-
-pub fn eq58(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the constraint f1 (rolling on the floor, eq. 1)",
-    ))
-}
-
-pub fn eq59(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the constraint f2 (rolling contact, eq. 2)",
-    ))
-}
-
-pub fn eq60(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the constraint f3 (the cylinders touch)",
-    ))
-}
-
-pub fn eq61(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the constraint f4 (cylinder 1 on the floor)",
-    ))
-}
-
-pub fn eq62(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, Sys::A1, app::eq62, false)
-}
-
 /// A named physical quantity of a state (label, value).
 type Named = (&'static str, fn(&Sym) -> X);
 
@@ -198,62 +147,29 @@ fn conjugate(
     Ok(f)
 }
 
-pub fn eq63(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A1, QX1, app::eq63, Some(("= P_x", truth::px)))
-}
-
 pub fn eq64(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
+    let mut s = Sampled::default();
     for (at, y, sc) in random_states(cx, Sys::A1)? {
         let m = momentum(Sys::A1, &y, QP1);
-        let forms = app::eq64(&y, &truth::l1(&y), &truth::l2(&y));
-        f.printed.add(
-            "(k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇",
+        let [a, b, c] = app::eq64(&y, &truth::l1(&y), &truth::l2(&y));
+        let w = &sc.angmom;
+        s.add(
             &at,
-            &forms[0],
-            &m,
-            &sc.angmom,
-        );
-        f.printed.add(
-            "k1 m1 r1² φ̇1 + r1[k2 m2 (r1 φ̇1 − k2 m2 r θ̇)]",
-            &at,
-            &forms[1],
-            &m,
-            &sc.angmom,
-        );
-        f.printed
-            .add("L1 + (r1/r2) L2", &at, &forms[2], &m, &sc.angmom);
-        corr.add(
-            "k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇)",
-            &at,
-            &corrected::eq64(&y),
-            &m,
-            &sc.angmom,
+            vec![
+                printed("(k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇", a, &m, w),
+                printed("k1 m1 r1² φ̇1 + r1[k2 m2 (r1 φ̇1 − k2 m2 r θ̇)]", b, &m, w),
+                printed("L1 + (r1/r2) L2", c, &m, w),
+                corrected(
+                    "k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇)",
+                    corrected::eq64(&y),
+                    &m,
+                    w,
+                ),
+            ],
         );
     }
-    f.corrected = Some((
-        "p_φ1 = (k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇ = k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇) = L1 + (r1/r2) L2".into(),
-        corr,
-    ));
-    f.note("a misplaced bracket: the middle form multiplies r θ̇ by k2 m2 twice (it is not even dimensionally consistent); the first and last forms are right");
-    Ok(f)
-}
-
-pub fn eq65(cx: &mut Ctx) -> Result<Finding> {
-    jacobian_row(cx, 0, &[QX1, QP1, QTH], |y| app::eq65(y).to_vec())
-}
-
-pub fn eq66(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A1, QX1, &["λ1 ∂f1/∂x1", "λ1"], app::eq66, false)
-}
-
-pub fn eq67(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A1, QP1, &["λ1 ∂f1/∂φ1", "−r1 λ1"], app::eq67, true)
-}
-
-pub fn eq68(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A1, QTH, &["λ1 ∂f1/∂θ", "0"], app::eq68, true)
+    Ok(s.corrected("p_φ1 = (k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇ = k1 m1 r1² φ̇1 + r1 k2 m2 (r1 φ̇1 − r θ̇) = L1 + (r1/r2) L2")
+        .with_note("a misplaced bracket: the middle form multiplies r θ̇ by k2 m2 twice (it is not even dimensionally consistent); the first and last forms are right"))
 }
 
 /// A combination of momenta: printed forms vs the true value, constancy, and
@@ -264,34 +180,34 @@ fn momentum_sum(
     labels: &[&str],
     truth_of: fn(&Sym) -> X,
 ) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut f0 = Tally::default();
-    gen(cx, |c, y, _| {
-        let t = truth_of(y);
-        for (v, l) in forms(y).iter().zip(labels) {
-            f.printed.add(l, &c.name, v, &t, &c.scales.mom);
-        }
+    let mut s = sample(cx, on_general, |c, y| {
+        let (t, m) = (truth_of(y), &c.scales.mom);
+        let mut v: Vec<Form> = forms(y)
+            .into_iter()
+            .zip(labels)
+            .map(|(v, l)| printed(*l, v, &t, m))
+            .collect();
         if let Some(y0) = &c.sym0 {
-            f.printed.add(
+            v.push(printed(
                 "constant (value at t = 0)",
-                &c.name,
-                &t,
+                t.clone(),
                 &truth_of(y0),
-                &c.scales.mom,
-            );
+                m,
+            ));
         }
-        f0.add("= 0", &c.name, &t, &t.zero(), &c.scales.mom);
+        v.push(other("= 0", t.clone(), &t.zero(), m));
+        v
     })?;
-    rest(cx, |c, y| {
-        f.printed.add(
+    s.sample(cx, &on_rest(cx), |c, y| {
+        vec![printed(
             "= 0 (start from rest)",
-            &c.name,
-            &truth_of(y),
+            truth_of(y),
             &y.r1.zero(),
             &c.scales.mom,
-        );
+        )]
     })?;
-    if let Some(m) = f0.max() {
+    let mut f = s.f;
+    if let Some(m) = s.other.max() {
         f.note(format!(
             "'= 0' needs a start from rest (θ̇0 = 0, ω0 = 0), not only x1 = φ1 = θ = 0 as the text says: with the general starts the sum is a nonzero constant (relative size {})",
             res_text(&m)
@@ -300,102 +216,35 @@ fn momentum_sum(
     Ok(f)
 }
 
-pub fn eq69(cx: &mut Ctx) -> Result<Finding> {
-    momentum_sum(
-        cx,
-        |y| app::eq69(y, &truth::px(y), &truth::l1(y), &truth::l2(y)).to_vec(),
-        &["p_x1 + p_φ1/r1 (63, 64)", "P_x + L1/r1 + L2/r2"],
-        |y| momentum(Sys::A1, y, QX1) + momentum(Sys::A1, y, QP1) / &y.r1,
-    )
-}
-
 pub fn eq70(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    let f = check(cx, on_general, |c, y| {
         let t = lagrange_lhs(Sys::A1, y, QP1) / &y.r1;
         let [a, b] = app::eq70(y);
-        f.printed.add("−λ1", &c.name, &a, &t, &c.scales.force);
-        f.printed.add(
-            "(k1 m1 + k2 m2) r1 φ̈1 − k2 m2 r θ̈",
-            &c.name,
-            &b,
-            &t,
-            &c.scales.force,
-        );
-        f.printed.add(
-            "λ1 = F1 of (30)",
-            &c.name,
-            &y.lam[0],
-            &crate::paper::sec2::eq30(y),
-            &c.scales.force,
-        );
+        let s = &c.scales.force;
+        vec![
+            printed("−λ1", a, &t, s),
+            printed("(k1 m1 + k2 m2) r1 φ̈1 − k2 m2 r θ̈", b, &t, s),
+            printed(
+                "λ1 = F1 of (30)",
+                y.lam[0].clone(),
+                &crate::paper::sec2::eq30(y),
+                s,
+            ),
+        ]
     })?;
-    f.note("the printed expression is −λ1 = −F1; 'which is the force F1 found in eq. (30)' refers to λ1");
-    Ok(f)
-}
-
-pub fn eq71(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, Sys::A2, app::eq71, false)
-}
-
-pub fn eq72(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A2, QP1, app::eq72, None)
-}
-
-pub fn eq73(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A2, QP2, app::eq73, None)
-}
-
-pub fn eq74(cx: &mut Ctx) -> Result<Finding> {
-    jacobian_row(cx, 1, &[QP1, QP2, QTH], |y| app::eq74(y).to_vec())
-}
-
-pub fn eq75(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A2, QP1, &["λ2 ∂f2/∂φ1", "−r1 λ2"], app::eq75, true)
-}
-
-pub fn eq76(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A2, QP2, &["λ2 ∂f2/∂φ2", "r2 λ2"], app::eq76, true)
-}
-
-pub fn eq77(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A2, QTH, &["λ2 ∂f2/∂θ", "r1 λ2"], app::eq77, true)
-}
-
-pub fn eq78(cx: &mut Ctx) -> Result<Finding> {
-    momentum_sum(
-        cx,
-        |y| {
-            vec![
-                app::eq78(y),
-                truth::px(y) + truth::l1(y) / &y.r1 + truth::l2(y) / &y.r2,
-            ]
-        },
-        &[
-            "p_φ1/r1 + p_φ2/r2 (72, 73)",
-            "= P_x + L1/r1 + L2/r2 once (59) holds",
-        ],
-        |y| momentum(Sys::A2, y, QP1) / &y.r1 + momentum(Sys::A2, y, QP2) / &y.r2,
-    )
+    Ok(f.with_note("the printed expression is −λ1 = −F1; 'which is the force F1 found in eq. (30)' refers to λ1"))
 }
 
 pub fn eq79(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
-        let t = lagrange_lhs(Sys::A2, y, QP2) / &y.r2;
-        for (v, l) in app::eq79(y)
-            .iter()
-            .zip(["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"])
-        {
-            f.printed.add(l, &c.name, v, &t, &c.scales.force);
-        }
-    })?;
-    f.note("λ2 is F21 of (28) with the same convention (along (cos θ, −sin θ))");
-    Ok(f)
-}
-
-pub fn eq80(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, Sys::A3, app::eq80, false)
+    let f = lam_expr(
+        cx,
+        Sys::A2,
+        QP2,
+        &["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"],
+        |y| app::eq79(y).to_vec(),
+        true,
+    )?;
+    Ok(f.with_note("λ2 is F21 of (28) with the same convention (along (cos θ, −sin θ))"))
 }
 
 pub fn a3_v(cx: &mut Ctx) -> Result<Finding> {
@@ -449,10 +298,6 @@ pub fn eq82(cx: &mut Ctx) -> Result<Finding> {
         f.printed.add("L2", &at, &b, &m, &sc.angmom);
     }
     Ok(f)
-}
-
-pub fn eq83(cx: &mut Ctx) -> Result<Finding> {
-    jacobian_row(cx, 2, &[QP1, QP2, QTH, QR], |y| app::eq83(y).to_vec())
 }
 
 fn eq84_86(cx: &mut Ctx, u: usize, k: usize, members: fn(&Sym, &Jac) -> [X; 2]) -> Result<Finding> {
@@ -510,40 +355,18 @@ fn eq84_86(cx: &mut Ctx, u: usize, k: usize, members: fn(&Sym, &Jac) -> [X; 2]) 
     Ok(f)
 }
 
-pub fn eq84(cx: &mut Ctx) -> Result<Finding> {
-    eq84_86(cx, QP1, 0, app::eq84)
-}
-
-pub fn eq85(cx: &mut Ctx) -> Result<Finding> {
-    eq84_86(cx, QP2, 1, app::eq85)
-}
-
-pub fn eq86(cx: &mut Ctx) -> Result<Finding> {
-    eq84_86(cx, QTH, 2, app::eq86)
-}
-
-pub fn eq87(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A3, QR, &["λ3 ∂f3/∂r", "λ3"], app::eq87, false)
-}
-
 pub fn eq88(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    let f = check(cx, on_general, |c, y| {
         let t = lagrange_lhs(Sys::A3, y, QR);
         let [a, b] = app::eq88(y);
-        f.printed
-            .add("first line", &c.name, &a, &t, &c.scales.force);
-        f.printed.add(
-            "m2 [r1 sin θ φ̈1 − r θ̇² + g cos θ]",
-            &c.name,
-            &b,
-            &t,
-            &c.scales.force,
-        );
-        f.printed.add("= N12", &c.name, &b, &y.n12, &c.scales.force);
+        let s = &c.scales.force;
+        vec![
+            printed("first line", a, &t, s),
+            printed("m2 [r1 sin θ φ̈1 − r θ̇² + g cos θ]", b.clone(), &t, s),
+            printed("= N12", b, &y.n12, s),
+        ]
     })?;
-    f.note("agrees with the corrected (33), not the printed one");
-    Ok(f)
+    Ok(f.with_note("agrees with the corrected (33), not the printed one"))
 }
 
 pub fn eq89(cx: &mut Ctx) -> Result<Finding> {
@@ -605,22 +428,10 @@ pub fn eq91(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq92(cx: &mut Ctx) -> Result<Finding> {
-    jacobian_row(cx, 3, &[QP1, QTH, QY1], |y| app::eq92(y).to_vec())
-}
-
 pub fn eq93(cx: &mut Ctx) -> Result<Finding> {
     let mut f = lagrange(cx, Sys::A4, QP1, &["λ4 ∂f3/∂φ1", "0"], app::eq93, true)?;
     f.note("a slip that changes no value: ∂f3/∂φ1 should read ∂f4/∂φ1 (both are 0); the text also announces 'four Lagrange equations' where there are three");
     Ok(f)
-}
-
-pub fn eq94(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A4, QTH, &["λ4 ∂f4/∂θ", "0"], app::eq94, true)
-}
-
-pub fn eq95(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A4, QY1, &["λ4 ∂f4/∂y1", "λ4"], app::eq95, false)
 }
 
 fn lam_expr(
@@ -631,116 +442,77 @@ fn lam_expr(
     forms: fn(&Sym) -> Vec<X>,
     per_r2: bool,
 ) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    check(cx, on_general, |c, y| {
         let mut t = lagrange_lhs(sys, y, u);
         if per_r2 {
             t = t / &y.r2;
         }
-        for (v, l) in forms(y).iter().zip(labels) {
-            f.printed.add(l, &c.name, v, &t, &c.scales.force);
-        }
-    })?;
-    Ok(f)
-}
-
-pub fn eq96(cx: &mut Ctx) -> Result<Finding> {
-    lam_expr(
-        cx,
-        Sys::A4,
-        QY1,
-        &["λ4", "(m1 + m2) ÿ1 − …"],
-        |y| app::eq96(y).to_vec(),
-        false,
-    )
+        forms(y)
+            .into_iter()
+            .zip(labels)
+            .map(|(v, l)| printed(*l, v, &t, &c.scales.force))
+            .collect()
+    })
 }
 
 fn n1_forms(cx: &mut Ctx, forms: fn(&Sym) -> [X; 2]) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
+    check(cx, on_general, |c, y| {
         let [a, b] = forms(y);
-        f.printed.add(
-            "(m1 + m2) g − m2 r (…)",
-            &c.name,
-            &a,
-            &y.n1,
-            &c.scales.force,
-        );
-        f.printed
-            .add("(m1 + m2) g + m2 ÿ2", &c.name, &b, &y.n1, &c.scales.force);
-    })?;
-    Ok(f)
-}
-
-pub fn eq97(cx: &mut Ctx) -> Result<Finding> {
-    n1_forms(cx, app::eq97)
+        let s = &c.scales.force;
+        vec![
+            printed("(m1 + m2) g − m2 r (…)", a, &y.n1, s),
+            printed("(m1 + m2) g + m2 ÿ2", b, &y.n1, s),
+        ]
+    })
 }
 
 pub fn eq98(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = kinetic(cx, Sys::A5, app::eq98, true)?;
-    let mut corr = Tally::default();
+    let mut s = Sampled {
+        f: kinetic(cx, Sys::A5, app::eq98, true)?,
+        ..Default::default()
+    };
     for (at, y, sc) in random_states(cx, Sys::A5)? {
-        corr.add(
+        let form = corrected(
             "T with m1 k1 r1²",
-            &at,
-            &corrected::eq98(&y),
+            corrected::eq98(&y),
             &truth::t(&y),
             &sc.energy,
         );
+        s.add(&at, vec![form]);
     }
-    f.corrected = Some((
-        "the spin term of cylinder 1 is (m1 k1 r1²/2) φ̇1² (printed m1 k2 r1²)".into(),
-        corr,
-    ));
-    f.note("(101) has the right m1 k1 r1² φ̇1, which contradicts the printed (98); (101) is right");
-    Ok(f)
+    Ok(s.corrected("the spin term of cylinder 1 is (m1 k1 r1²/2) φ̇1² (printed m1 k2 r1²)")
+        .with_note("(101) has the right m1 k1 r1² φ̇1, which contradicts the printed (98); (101) is right"))
 }
 
 pub fn eq99(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
-    let mut on = Tally::default();
+    let mut s = Sampled::default();
     for (at, y, sc) in random_states(cx, Sys::A5)? {
         let t = truth::v(&y);
-        f.printed.add("V", &at, &app::eq99(&y), &t, &sc.energy);
-        corr.add("V", &at, &corrected::eq99(&y), &t, &sc.energy);
         let mut ym = y.clone();
         ym.r = &y.r1 + &y.r2;
-        on.add(
-            "V on r = r1 + r2",
+        s.add(
             &at,
-            &app::eq99(&ym),
-            &truth::v(&ym),
-            &sc.energy,
+            vec![
+                printed("V", app::eq99(&y), &t, &sc.energy),
+                corrected("V", corrected::eq99(&y), &t, &sc.energy),
+                other(
+                    "V on r = r1 + r2",
+                    app::eq99(&ym),
+                    &truth::v(&ym),
+                    &sc.energy,
+                ),
+            ],
         );
     }
-    f.corrected = Some((
-        "V = m2 g (r cos θ − r1 − r2) + (m1 + m2) g (y1 − r1)".into(),
-        corr,
-    ));
-    if let Some(m) = on.max() {
+    let on = s.other.max();
+    let mut f = s.corrected("V = m2 g (r cos θ − r1 − r2) + (m1 + m2) g (y1 − r1)");
+    if let Some(m) = on {
         f.note(format!(
             "with r a coordinate, −m2 g r (1 − cos θ) has ∂V/∂r = −m2 g (1 − cos θ) instead of m2 g cos θ; on r = r1 + r2 it is right (residual {}) but (107) differentiates in r; the paper's own (112) uses the correct + m2 g cos θ and A.3 writes the correct V, so (99) is the slip",
             res_text(&m)
         ));
     }
     Ok(f)
-}
-
-pub fn eq100(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A5, QX1, app::eq100, Some(("= P_x", truth::px)))
-}
-
-pub fn eq101(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A5, QP1, app::eq101, Some(("= L1", truth::l1)))
-}
-
-pub fn eq102(cx: &mut Ctx) -> Result<Finding> {
-    conjugate(cx, Sys::A5, QP2, app::eq102, Some(("= L2", truth::l2)))
-}
-
-pub fn eq103(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A5, QX1, &["Σ λj ∂fj/∂x1", "λ1"], app::eq103, false)
 }
 
 pub fn eq104(cx: &mut Ctx) -> Result<Finding> {
@@ -756,34 +528,56 @@ pub fn eq104(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq105(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(
+pub fn eq112(cx: &mut Ctx) -> Result<Finding> {
+    let mut f = lam_expr(
         cx,
         Sys::A5,
-        QP2,
-        &["Σ λj ∂fj/∂φ2", "r2 λ2"],
-        app::eq105,
-        true,
+        QR,
+        &["first line", "m2 (ẍ1 sin θ − r θ̇² + g cos θ)"],
+        |y| app::eq112(y).to_vec(),
+        false,
+    )?;
+    f.note("uses ∂V/∂r = m2 g cos θ, i.e. the correct V, not the printed (99)");
+    Ok(f)
+}
+
+pub fn fn15(cx: &mut Ctx) -> Result<Finding> {
+    let f = check(cx, on_general, |c, y| {
+        let l2 = lagrange_lhs(Sys::A5, y, QTH) / &y.r1;
+        let l1 = -(lagrange_lhs(Sys::A5, y, QP1) / &y.r1) - &l2;
+        let s = &c.scales.force;
+        vec![
+            printed("F21 from (106)", l2, &y.f21, s),
+            printed("F1 from (104)", l1, &y.f1, s),
+        ]
+    })?;
+    Ok(f.with_note("λ2 = (θ equation)/r1, λ1 = −(φ1 equation)/r1 − λ2, against the multiplier system's F21 and F1"))
+}
+
+pub fn eq69(cx: &mut Ctx) -> Result<Finding> {
+    momentum_sum(
+        cx,
+        |y| app::eq69(y, &truth::px(y), &truth::l1(y), &truth::l2(y)).to_vec(),
+        &["p_x1 + p_φ1/r1 (63, 64)", "P_x + L1/r1 + L2/r2"],
+        |y| momentum(Sys::A1, y, QX1) + momentum(Sys::A1, y, QP1) / &y.r1,
     )
 }
 
-pub fn eq106(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(
+pub fn eq78(cx: &mut Ctx) -> Result<Finding> {
+    momentum_sum(
         cx,
-        Sys::A5,
-        QTH,
-        &["Σ λj ∂fj/∂θ", "r1 λ2"],
-        app::eq106,
-        true,
+        |y| {
+            vec![
+                app::eq78(y),
+                truth::px(y) + truth::l1(y) / &y.r1 + truth::l2(y) / &y.r2,
+            ]
+        },
+        &[
+            "p_φ1/r1 + p_φ2/r2 (72, 73)",
+            "= P_x + L1/r1 + L2/r2 once (59) holds",
+        ],
+        |y| momentum(Sys::A2, y, QP1) / &y.r1 + momentum(Sys::A2, y, QP2) / &y.r2,
     )
-}
-
-pub fn eq107(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A5, QR, &["Σ λj ∂fj/∂r", "λ3"], app::eq107, false)
-}
-
-pub fn eq108(cx: &mut Ctx) -> Result<Finding> {
-    lagrange(cx, Sys::A5, QY1, &["Σ λj ∂fj/∂y1", "λ4"], app::eq108, false)
 }
 
 pub fn eq109(cx: &mut Ctx) -> Result<Finding> {
@@ -799,78 +593,52 @@ pub fn eq109(cx: &mut Ctx) -> Result<Finding> {
     )
 }
 
-pub fn eq110(cx: &mut Ctx) -> Result<Finding> {
-    lam_expr(
-        cx,
-        Sys::A5,
-        QX1,
-        &["λ1", "(m1 + m2) ẍ1 + m2 (…)"],
-        |y| app::eq110(y).to_vec(),
-        false,
-    )
+definitions! {
+    eq56: "Lagrange's equations: the method, not a formula of this problem";
+    eq57: "the method of multipliers; its instances (66)–(68), (75)–(77), (84)–(87), (93)–(95), (103)–(108) are checked";
+    eq58: "defines the constraint f1 (rolling on the floor, eq. 1)";
+    eq59: "defines the constraint f2 (rolling contact, eq. 2)";
+    eq60: "defines the constraint f3 (the cylinders touch)";
+    eq61: "defines the constraint f4 (cylinder 1 on the floor)";
+    fn1: "a remark on the admissible k (the mechanics takes any k ≥ 0; k2 > 1 is audited at P2, k1 > 1 at P4)";
+    fn3: "a count, not a formula: 3n − n − n = n coordinates, one cyclic (φ1); consistent";
 }
 
-pub fn eq111(cx: &mut Ctx) -> Result<Finding> {
-    lam_expr(
-        cx,
-        Sys::A5,
-        QP2,
-        &["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"],
-        |y| app::eq111(y).to_vec(),
-        true,
-    )
-}
-
-pub fn eq112(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = lam_expr(
-        cx,
-        Sys::A5,
-        QR,
-        &["first line", "m2 (ẍ1 sin θ − r θ̇² + g cos θ)"],
-        |y| app::eq112(y).to_vec(),
-        false,
-    )?;
-    f.note("uses ∂V/∂r = m2 g cos θ, i.e. the correct V, not the printed (99)");
-    Ok(f)
-}
-
-pub fn eq113(cx: &mut Ctx) -> Result<Finding> {
-    lam_expr(
-        cx,
-        Sys::A5,
-        QY1,
-        &["λ4", "(m1 + m2) ÿ1 − …"],
-        |y| app::eq113(y).to_vec(),
-        false,
-    )
-}
-
-pub fn eq114(cx: &mut Ctx) -> Result<Finding> {
-    n1_forms(cx, app::eq114)
-}
-
-pub fn fn1(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "a remark on the admissible k (the mechanics takes any k ≥ 0; k2 > 1 is audited at P2, k1 > 1 at P4)",
-    ))
-}
-
-pub fn fn3(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "a count, not a formula: 3n − n − n = n coordinates, one cyclic (φ1); consistent",
-    ))
-}
-
-pub fn fn15(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y, _| {
-        let l2 = lagrange_lhs(Sys::A5, y, QTH) / &y.r1;
-        let l1 = -(lagrange_lhs(Sys::A5, y, QP1) / &y.r1) - &l2;
-        f.printed
-            .add("F21 from (106)", &c.name, &l2, &y.f21, &c.scales.force);
-        f.printed
-            .add("F1 from (104)", &c.name, &l1, &y.f1, &c.scales.force);
-    })?;
-    f.note("λ2 = (θ equation)/r1, λ1 = −(φ1 equation)/r1 − λ2, against the multiplier system's F21 and F1");
-    Ok(f)
+calls! {
+    eq62 => kinetic(Sys::A1, app::eq62, false);
+    eq63 => conjugate(Sys::A1, QX1, app::eq63, Some(("= P_x", truth::px)));
+    eq65 => jacobian_row(0, &[QX1, QP1, QTH], |y| app::eq65(y).to_vec());
+    eq66 => lagrange(Sys::A1, QX1, &["λ1 ∂f1/∂x1", "λ1"], app::eq66, false);
+    eq67 => lagrange(Sys::A1, QP1, &["λ1 ∂f1/∂φ1", "−r1 λ1"], app::eq67, true);
+    eq68 => lagrange(Sys::A1, QTH, &["λ1 ∂f1/∂θ", "0"], app::eq68, true);
+    eq71 => kinetic(Sys::A2, app::eq71, false);
+    eq72 => conjugate(Sys::A2, QP1, app::eq72, None);
+    eq73 => conjugate(Sys::A2, QP2, app::eq73, None);
+    eq74 => jacobian_row(1, &[QP1, QP2, QTH], |y| app::eq74(y).to_vec());
+    eq75 => lagrange(Sys::A2, QP1, &["λ2 ∂f2/∂φ1", "−r1 λ2"], app::eq75, true);
+    eq76 => lagrange(Sys::A2, QP2, &["λ2 ∂f2/∂φ2", "r2 λ2"], app::eq76, true);
+    eq77 => lagrange(Sys::A2, QTH, &["λ2 ∂f2/∂θ", "r1 λ2"], app::eq77, true);
+    eq80 => kinetic(Sys::A3, app::eq80, false);
+    eq83 => jacobian_row(2, &[QP1, QP2, QTH, QR], |y| app::eq83(y).to_vec());
+    eq84 => eq84_86(QP1, 0, app::eq84);
+    eq85 => eq84_86(QP2, 1, app::eq85);
+    eq86 => eq84_86(QTH, 2, app::eq86);
+    eq87 => lagrange(Sys::A3, QR, &["λ3 ∂f3/∂r", "λ3"], app::eq87, false);
+    eq92 => jacobian_row(3, &[QP1, QTH, QY1], |y| app::eq92(y).to_vec());
+    eq94 => lagrange(Sys::A4, QTH, &["λ4 ∂f4/∂θ", "0"], app::eq94, true);
+    eq95 => lagrange(Sys::A4, QY1, &["λ4 ∂f4/∂y1", "λ4"], app::eq95, false);
+    eq96 => lam_expr(Sys::A4, QY1, &["λ4", "(m1 + m2) ÿ1 − …"], |y| app::eq96(y).to_vec(), false);
+    eq97 => n1_forms(app::eq97);
+    eq100 => conjugate(Sys::A5, QX1, app::eq100, Some(("= P_x", truth::px)));
+    eq101 => conjugate(Sys::A5, QP1, app::eq101, Some(("= L1", truth::l1)));
+    eq102 => conjugate(Sys::A5, QP2, app::eq102, Some(("= L2", truth::l2)));
+    eq103 => lagrange(Sys::A5, QX1, &["Σ λj ∂fj/∂x1", "λ1"], app::eq103, false);
+    eq105 => lagrange(Sys::A5, QP2, &["Σ λj ∂fj/∂φ2", "r2 λ2"], app::eq105, true);
+    eq106 => lagrange(Sys::A5, QTH, &["Σ λj ∂fj/∂θ", "r1 λ2"], app::eq106, true);
+    eq107 => lagrange(Sys::A5, QR, &["Σ λj ∂fj/∂r", "λ3"], app::eq107, false);
+    eq108 => lagrange(Sys::A5, QY1, &["Σ λj ∂fj/∂y1", "λ4"], app::eq108, false);
+    eq110 => lam_expr(Sys::A5, QX1, &["λ1", "(m1 + m2) ẍ1 + m2 (…)"], |y| app::eq110(y).to_vec(), false);
+    eq111 => lam_expr(Sys::A5, QP2, &["λ2", "k2 m2 r2 (φ̈2 − θ̈)", "k2 m2 (r1 φ̈1 − r θ̈)"], |y| app::eq111(y).to_vec(), true);
+    eq113 => lam_expr(Sys::A5, QY1, &["λ4", "(m1 + m2) ÿ1 − …"], |y| app::eq113(y).to_vec(), false);
+    eq114 => n1_forms(app::eq114);
 }

@@ -4,6 +4,10 @@
 use super::corrected;
 use super::ctx::Ctx;
 use super::finding::{Finding, RootRow, Tally};
+use super::forms::{calls, definitions};
+use super::forms::{
+    check, corrected, gen, other, printed, rest, rest_kick, sample, On, Sampled, REST,
+};
 use super::points::{with_k, Point};
 use super::separation::first_root;
 use super::truth::{self, Case, StartKind, Sys, PREC};
@@ -39,353 +43,238 @@ where
     Ok(())
 }
 
-/// The paper's general case: both rolling, general start (θ0, θ̇0, ω0 ≠ 0).
-fn gen<F: FnMut(&Case, &Sym)>(cx: &mut Ctx, f: F) -> Result<()> {
-    let pts = cx.general();
-    over(cx, &pts, FRoll, CRoll, StartKind::General, false, f)
-}
-
-/// Both rolling, from rest at the top.
-fn rest<F: FnMut(&Case, &Sym)>(cx: &mut Ctx, f: F) -> Result<()> {
-    let pts = cx.general();
-    over(cx, &pts, FRoll, CRoll, StartKind::Rest, false, f)
-}
-
 /// A residual printed as text.
 pub(super) fn res_text(x: &X) -> String {
     short(&x.0)
 }
 
-pub fn eq1(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "the rolling constraint of the lower cylinder: a model assumption, which the mechanics imposes",
-    ))
-}
-
 pub fn eq2(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let pts = cx.general();
-    for (start, timed) in [(StartKind::Rest, false), (StartKind::Kick, true)] {
-        over(cx, &pts, FRoll, CRoll, start, timed, |c, y| {
-            let [a, b, d] = sec2::eq2(y);
-            let psi = &y.phi2 - &y.th;
-            let one = y.r1.n(1);
-            f.printed
-                .add("φ2 = r1(φ1 − θ)/r2", &c.name, &a, &y.phi2, &one);
-            f.printed
-                .add("φ2 − θ = (r1/r2)φ1 − (r/r2)θ", &c.name, &b, &psi, &one);
-            f.printed
-                .add("φ2 − θ = (r1 φ1 − r θ)/r2", &c.name, &d, &psi, &one);
-        })?;
-    }
-    f.note("positions from the reduced dynamics (x1, φ1, ψ2 = φ2 − θ integrated in closed form; kick starts at the oracle's times)");
-    Ok(f)
+    let f = check(cx, rest_kick, |_, y| {
+        let [a, b, d] = sec2::eq2(y);
+        let psi = &y.phi2 - &y.th;
+        let one = y.r1.n(1);
+        vec![
+            printed("φ2 = r1(φ1 − θ)/r2", a, &y.phi2, &one),
+            printed("φ2 − θ = (r1/r2)φ1 − (r/r2)θ", b, &psi, &one),
+            printed("φ2 − θ = (r1 φ1 − r θ)/r2", d, &psi, &one),
+        ]
+    })?;
+    Ok(f.with_note("positions from the reduced dynamics (x1, φ1, ψ2 = φ2 − θ integrated in closed form; kick starts at the oracle's times)"))
 }
 
 pub fn eq3(cx: &mut Ctx) -> Result<Finding> {
     let mut f = Finding::default();
-    gen(cx, |c, y| {
-        let y0 = c.sym0.as_ref().unwrap_or(y);
-        let v = sec2::eq3(y, &y0.c);
-        let truth = truth::v(y) - truth::v(y0);
-        f.printed.add("V", &c.name, &v, &truth, &c.scales.energy);
-        // energy conservation with this V and the mechanics' kinetic energy
-        let e = truth::t(y) + &v - truth::t(y0);
-        f.printed
-            .add_res("T + V conserved", &c.name, e.abs() / &c.scales.energy);
-    })?;
+    for p in cx.general() {
+        let c = cx.case(&p, FRoll, CRoll, StartKind::General, false)?;
+        for y in &c.syms {
+            let y0 = c.sym0.as_ref().unwrap_or(y);
+            let v = sec2::eq3(y, &y0.c);
+            let truth = truth::v(y) - truth::v(y0);
+            f.printed.add("V", &c.name, &v, &truth, &c.scales.energy);
+            // energy conservation with this V and the mechanics' kinetic energy
+            let e = truth::t(y) + &v - truth::t(y0);
+            f.printed
+                .add_res("T + V conserved", &c.name, e.abs() / &c.scales.energy);
+        }
+    }
     Ok(f)
-}
-
-pub fn eq4(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines the canonical momentum of φ1; its value is checked as eq. (12)",
-    ))
 }
 
 pub fn eq5(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    check(cx, gen, |c, y| {
         let [a, b] = sec2::eq5(y);
-        let t1 = truth::t1(y);
-        f.printed
-            .add("m1 ẋ1²/2 + I1 φ̇1²/2", &c.name, &a, &t1, &c.scales.energy);
-        f.printed.add(
-            "((1 + k1)/2) m1 r1² φ̇1²",
-            &c.name,
-            &b,
-            &t1,
-            &c.scales.energy,
-        );
-    })?;
-    Ok(f)
+        let (t1, e) = (truth::t1(y), &c.scales.energy);
+        vec![
+            printed("m1 ẋ1²/2 + I1 φ̇1²/2", a, &t1, e),
+            printed("((1 + k1)/2) m1 r1² φ̇1²", b, &t1, e),
+        ]
+    })
 }
 
 pub fn eq6(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    check(cx, gen, |c, y| {
         let [a, b] = sec2::eq6(y);
-        let t2 = truth::t2(y);
-        f.printed.add("with I2", &c.name, &a, &t2, &c.scales.energy);
-        f.printed
-            .add("with k2 m2 r2²", &c.name, &b, &t2, &c.scales.energy);
-    })?;
-    Ok(f)
+        let (t2, e) = (truth::t2(y), &c.scales.energy);
+        vec![
+            printed("with I2", a, &t2, e),
+            printed("with k2 m2 r2²", b, &t2, e),
+        ]
+    })
 }
 
 pub fn eq7(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    let f = check(cx, gen, |c, y| {
         let [_, xd] = sec2::eq7(y);
-        f.printed.add(
+        vec![printed(
             "ẋ2 = r1 φ̇1 + r cos θ θ̇",
-            &c.name,
-            &xd,
+            xd,
             &truth::x2d(y),
             &c.scales.mom,
-        );
+        )]
     })?;
-    f.note("x2 = x1 + r sin θ is the geometry (the definition of θ); its rate is checked with the mechanics' ẋ1 = r1 φ̇1");
-    Ok(f)
+    Ok(f.with_note("x2 = x1 + r sin θ is the geometry (the definition of θ); its rate is checked with the mechanics' ẋ1 = r1 φ̇1"))
 }
 
 pub fn eq8(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    let f = check(cx, gen, |c, y| {
         let [_, yd] = sec2::eq8(y);
         let w = &c.scales.omega * &c.scales.len;
-        f.printed
-            .add("ẏ2 = −r sin θ θ̇", &c.name, &yd, &truth::y2d(y), &w);
+        vec![printed("ẏ2 = −r sin θ θ̇", yd, &truth::y2d(y), &w)]
     })?;
-    f.note("y2 = r1 + r cos θ is the geometry");
-    Ok(f)
+    Ok(f.with_note("y2 = r1 + r cos θ is the geometry"))
 }
 
 pub fn eq9(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
-        let w = sec2::eq9(y);
+    check(cx, gen, |c, y| {
         let truth = &y.phi2d - &y.thd;
-        f.printed
-            .add("φ̇2 − θ̇", &c.name, &w, &truth, &c.scales.omega);
-    })?;
-    Ok(f)
+        vec![printed("φ̇2 − θ̇", sec2::eq9(y), &truth, &c.scales.omega)]
+    })
 }
 
 pub fn eq10(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    check(cx, gen, |c, y| {
         let [a, b] = sec2::eq10(y);
-        let t2 = truth::t2(y);
-        f.printed
-            .add("expanded", &c.name, &a, &t2, &c.scales.energy);
-        f.printed
-            .add("collected", &c.name, &b, &t2, &c.scales.energy);
-    })?;
-    Ok(f)
+        let (t2, e) = (truth::t2(y), &c.scales.energy);
+        vec![
+            printed("expanded", a, &t2, e),
+            printed("collected", b, &t2, e),
+        ]
+    })
 }
 
 pub fn eq11(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
-        f.printed
-            .add("T", &c.name, &sec2::eq11(y), &truth::t(y), &c.scales.energy);
-    })?;
-    Ok(f)
+    check(cx, gen, |c, y| {
+        vec![printed("T", sec2::eq11(y), &truth::t(y), &c.scales.energy)]
+    })
 }
 
 pub fn eq12(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    check(cx, gen, |c, y| {
         let p = sec2::eq12(y);
         let truth = truth::momentum(Sys::Main, y, crate::paper::appendix::QP1);
-        f.printed
-            .add("= ∂T/∂φ̇1", &c.name, &p, &truth, &c.scales.angmom);
+        let s = &c.scales.angmom;
+        let mut v = vec![printed("= ∂T/∂φ̇1", p.clone(), &truth, s)];
         if let Some(y0) = &c.sym0 {
-            f.printed.add(
+            v.push(printed(
                 "= constant (its value at t = 0)",
-                &c.name,
-                &p,
+                p,
                 &sec2::eq12(y0),
-                &c.scales.angmom,
-            );
+                s,
+            ));
         }
-    })?;
-    Ok(f)
+        v
+    })
 }
 
 pub fn eq13(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    let f = check(cx, gen, |c, y| {
         let [a, b] = sec2::eq13(y);
-        let px = truth::px(y);
-        f.printed.add("with ẋ1", &c.name, &a, &px, &c.scales.mom);
-        f.printed.add("with r1 φ̇1", &c.name, &b, &px, &c.scales.mom);
+        let (px, m) = (truth::px(y), &c.scales.mom);
+        vec![
+            printed("with ẋ1", a, &px, m),
+            printed("with r1 φ̇1", b, &px, m),
+        ]
     })?;
-    f.note("true P_x = m1 ẋ1 + m2 ẋ2");
-    Ok(f)
-}
-
-pub fn eq14(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition(
-        "defines L1 = I1 φ̇1, the spin angular momentum of cylinder 1",
-    ))
+    Ok(f.with_note("true P_x = m1 ẋ1 + m2 ẋ2"))
 }
 
 pub fn eq15(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    check(cx, gen, |c, y| {
         let [a, b] = sec2::eq15(y);
-        let l2 = truth::l2(y);
-        f.printed
-            .add("k2 m2 r2² (φ̇2 − θ̇)", &c.name, &a, &l2, &c.scales.angmom);
-        f.printed
-            .add("k2 m2 r2 (r1 φ̇1 − r θ̇)", &c.name, &b, &l2, &c.scales.angmom);
-    })?;
-    Ok(f)
+        let (l2, s) = (truth::l2(y), &c.scales.angmom);
+        vec![
+            printed("k2 m2 r2² (φ̇2 − θ̇)", a, &l2, s),
+            printed("k2 m2 r2 (r1 φ̇1 − r θ̇)", b, &l2, s),
+        ]
+    })
 }
 
 pub fn eq16(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    check(cx, gen, |c, y| {
         let p = sec2::eq16(y, &truth::px(y), &truth::l1(y), &truth::l2(y));
         let truth = truth::momentum(Sys::Main, y, crate::paper::appendix::QP1);
-        f.printed.add(
+        vec![printed(
             "r1 P_x + L1 + (r1/r2) L2",
-            &c.name,
-            &p,
+            p,
             &truth,
             &c.scales.angmom,
-        );
-    })?;
-    Ok(f)
+        )]
+    })
 }
 
 pub fn eq17(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    let f = check(cx, gen, |c, y| {
         let [a, b] = sec2::eq17(y);
-        f.printed
-            .add("form 1", &c.name, &a, &y.phi1d, &c.scales.omega);
-        f.printed
-            .add("with A", &c.name, &b, &y.phi1d, &c.scales.omega);
+        let w = &c.scales.omega;
+        vec![
+            printed("form 1", a, &y.phi1d, w),
+            printed("with A", b, &y.phi1d, w),
+        ]
     })?;
-    f.note("ω0 ≠ 0 and θ̇0 ≠ 0 at every point: ω0 is φ̇1 at θ̇ = 0");
-    Ok(f)
+    Ok(f.with_note("ω0 ≠ 0 and θ̇0 ≠ 0 at every point: ω0 is φ̇1 at θ̇ = 0"))
 }
 
 pub fn eq18(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
-        f.printed
-            .add("φ̈1", &c.name, &sec2::eq18(y), &y.phi1dd, &c.scales.accel);
-    })?;
-    Ok(f)
-}
-
-pub fn eq19(_: &mut Ctx) -> Result<Finding> {
-    Ok(Finding::definition("defines the constant A"))
+    check(cx, gen, |c, y| {
+        vec![printed("φ̈1", sec2::eq18(y), &y.phi1dd, &c.scales.accel)]
+    })
 }
 
 pub fn eq20(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let pts = cx.general();
-    for (start, timed) in [(StartKind::Rest, false), (StartKind::Kick, true)] {
-        over(cx, &pts, FRoll, CRoll, start, timed, |c, y| {
-            f.printed
-                .add("φ1", &c.name, &sec2::eq20(y), &y.phi1, &y.r1.n(1));
-        })?;
-    }
-    f.note("kick starts: θ0 = 0 with θ̇0 ≠ 0 and ω0 ≠ 0, t from the oracle's energy quadrature (60 digits)");
-    Ok(f)
+    let f = check(cx, rest_kick, |_, y| {
+        vec![printed("φ1", sec2::eq20(y), &y.phi1, &y.r1.n(1))]
+    })?;
+    Ok(f.with_note("kick starts: θ0 = 0 with θ̇0 ≠ 0 and ω0 ≠ 0, t from the oracle's energy quadrature (60 digits)"))
 }
 
 pub fn eq21(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
-    let pts = cx.general();
-    for (start, timed) in [(StartKind::Rest, false), (StartKind::Kick, true)] {
-        over(cx, &pts, FRoll, CRoll, start, timed, |c, y| {
-            let [a, b] = sec2::eq21(y);
-            let one = y.r1.n(1);
-            f.printed.add("(r1/r2)(φ1 − θ)", &c.name, &a, &y.phi2, &one);
-            f.printed.add("(r1/r2) ω0 − …", &c.name, &b, &y.phi2, &one);
-            corr.add(
-                "(r1/r2) ω0 t − …",
-                &c.name,
-                &corrected::eq21(y),
-                &y.phi2,
-                &one,
-            );
-        })?;
-    }
-    f.corrected = Some((
-        "φ2 = (r1/r2) ω0 t − (A r/r2)(sin θ − k2 θ) − (r1/r2) θ".into(),
-        corr,
-    ));
-    f.note("the printed ω0 lacks its factor t (dimensionally wrong); it matters only when ω0 ≠ 0, which the kick starts have and the sentence's 'from rest' excludes");
-    Ok(f)
+    let s = sample(cx, rest_kick, |_, y| {
+        let [a, b] = sec2::eq21(y);
+        let one = y.r1.n(1);
+        vec![
+            printed("(r1/r2)(φ1 − θ)", a, &y.phi2, &one),
+            printed("(r1/r2) ω0 − …", b, &y.phi2, &one),
+            corrected("(r1/r2) ω0 t − …", corrected::eq21(y), &y.phi2, &one),
+        ]
+    })?;
+    Ok(s.corrected("φ2 = (r1/r2) ω0 t − (A r/r2)(sin θ − k2 θ) − (r1/r2) θ")
+        .with_note("the printed ω0 lacks its factor t (dimensionally wrong); it matters only when ω0 ≠ 0, which the kick starts have and the sentence's 'from rest' excludes"))
 }
 
 pub fn eq22(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, |c, y| {
-        f.printed.add(
-            "= 0",
-            &c.name,
-            &sec2::eq22(y),
-            &y.r1.zero(),
-            &c.scales.accel,
-        );
+    let f = check(cx, rest, |c, y| {
+        vec![printed("= 0", sec2::eq22(y), &y.r1.zero(), &c.scales.accel)]
     })?;
-    f.note("evaluated with the mechanics' θ̇ from rest at the top (ω0 = 0); equivalently K(cos θ) = 1 + k2 − A(cos θ − k2)²");
-    Ok(f)
+    Ok(f.with_note("evaluated with the mechanics' θ̇ from rest at the top (ω0 = 0); equivalently K(cos θ) = 1 + k2 − A(cos θ − k2)²"))
 }
 
 pub fn eq23(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
-    gen(cx, |c, y| {
+    let mut s = Sampled::default();
+    s.sample(cx, &gen(cx), |c, y| {
         let [a, _] = sec2::eq23(y);
-        f.printed.add(
+        vec![printed(
             "first form (any start)",
-            &c.name,
-            &a,
+            a,
             &y.thdd,
             &c.scales.accel,
-        );
+        )]
     })?;
-    rest(cx, |c, y| {
+    s.sample(cx, &rest(cx), |c, y| {
         let [a, b] = sec2::eq23(y);
-        f.printed.add(
-            "first form (any start)",
-            &c.name,
-            &a,
-            &y.thdd,
-            &c.scales.accel,
-        );
-        f.printed.add(
-            "second form, (3 − 2 cos θ)",
-            &c.name,
-            &b,
-            &y.thdd,
-            &c.scales.accel,
-        );
-        corr.add(
-            "second form, (2 − k2 − cos θ)",
-            &c.name,
-            &corrected::eq23(y),
-            &y.thdd,
-            &c.scales.accel,
-        );
+        let acc = &c.scales.accel;
+        vec![
+            printed("first form (any start)", a, &y.thdd, acc),
+            printed("second form, (3 − 2 cos θ)", b, &y.thdd, acc),
+            corrected(
+                "second form, (2 − k2 − cos θ)",
+                corrected::eq23(y),
+                &y.thdd,
+                acc,
+            ),
+        ]
     })?;
-    f.corrected = Some((
-        "θ̈ = [1 + k2 − A(cos θ − k2)(2 − k2 − cos θ)] / [1 + k2 − A(cos θ − k2)²]² (g/r) sin θ"
-            .into(),
-        corr,
-    ));
-    f.note("the second form substitutes θ̇² = 2(g/r)(1 − cos θ)/K from (22) into the first: K − 2A(cos θ − k2)(1 − cos θ) = 1 + k2 − A(cos θ − k2)(2 − k2 − cos θ); the printed (3 − 2 cos θ) agrees with it only where cos θ = 1 + k2 or cos θ = k2");
-    Ok(f)
+    Ok(s.corrected("θ̈ = [1 + k2 − A(cos θ − k2)(2 − k2 − cos θ)] / [1 + k2 − A(cos θ − k2)²]² (g/r) sin θ")
+        .with_note("the second form substitutes θ̇² = 2(g/r)(1 − cos θ)/K from (22) into the first: K − 2A(cos θ − k2)(1 − cos θ) = 1 + k2 − A(cos θ − k2)(2 − k2 − cos θ); the printed (3 − 2 cos θ) agrees with it only where cos θ = 1 + k2 or cos θ = k2"))
 }
 
 pub fn eq24(cx: &mut Ctx) -> Result<Finding> {
@@ -466,8 +355,7 @@ pub(super) fn dummy_sym() -> Sym {
 }
 
 pub fn eq25(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, |c, y| {
+    check(cx, rest, |c, y| {
         let [xc, yc] = sec2::eq25(y);
         let m = &y.m1 + &y.m2;
         let r = y.rsum();
@@ -475,52 +363,54 @@ pub fn eq25(cx: &mut Ctx) -> Result<Finding> {
         let y2 = &y.r1 + &r * &y.c;
         let tx = (&y.m1 * &y.x1 + &y.m2 * x2) / &m;
         let ty = (&y.m1 * &y.r1 + &y.m2 * y2) / m;
-        f.printed.add("x_cm", &c.name, &xc, &tx, &c.scales.len);
-        f.printed.add("y_cm", &c.name, &yc, &ty, &c.scales.len);
-    })?;
-    Ok(f)
+        vec![
+            printed("x_cm", xc, &tx, &c.scales.len),
+            printed("y_cm", yc, &ty, &c.scales.len),
+        ]
+    })
 }
 
 pub fn eq26(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    let f = check(cx, gen, |c, y| {
         let [a, b] = sec2::eq26(y);
-        f.printed
-            .add("with ẍ1", &c.name, &a, &y.f1, &c.scales.force);
-        f.printed
-            .add("with r1 φ̈1", &c.name, &b, &y.f1, &c.scales.force);
+        let s = &c.scales.force;
+        vec![
+            printed("with ẍ1", a, &y.f1, s),
+            printed("with r1 φ̈1", b, &y.f1, s),
+        ]
     })?;
-    f.note("F1 from the Lagrange-multiplier system in six coordinates (an independent route)");
-    Ok(f)
+    Ok(f.with_note(
+        "F1 from the Lagrange-multiplier system in six coordinates (an independent route)",
+    ))
 }
 
 pub fn eq27(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
-        f.printed
-            .add("N1", &c.name, &sec2::eq27(y), &y.n1, &c.scales.force);
-    })?;
-    Ok(f)
+    check(cx, gen, |c, y| {
+        vec![printed("N1", sec2::eq27(y), &y.n1, &c.scales.force)]
+    })
 }
 
 pub fn eq28(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut other = Tally::default();
-    gen(cx, |c, y| {
-        for (i, v) in sec2::eq28(y).iter().enumerate() {
-            let label = [
-                "(I2/r2)(φ̈2 − θ̈)",
-                "k2 m2 r2 (φ̈2 − θ̈)",
-                "k2 m2 (r1 φ̈1 − r θ̈)",
-            ][i];
-            f.printed.add(label, &c.name, v, &y.f21, &c.scales.force);
-            other.add(label, &c.name, v, &(-&y.f21), &c.scales.force);
+    let labels = [
+        "(I2/r2)(φ̈2 − θ̈)",
+        "k2 m2 r2 (φ̈2 − θ̈)",
+        "k2 m2 (r1 φ̈1 − r θ̈)",
+    ];
+    let s = sample(cx, gen, |c, y| {
+        let s = &c.scales.force;
+        let minus = -&y.f21;
+        let mut v = Vec::new();
+        for (label, m) in labels.iter().zip(sec2::eq28(y)) {
+            v.push(printed(*label, m.clone(), &y.f21, s));
+            v.push(other(*label, m, &minus, s));
         }
+        v
     })?;
+    let mut f = s.f;
     f.convention = Some(
         "F21 is the component of cylinder 1's force on cylinder 2 along (cos θ, −sin θ), the direction in which the point of contact moves round cylinder 1 as θ grows".into(),
     );
-    if let Some(m) = other.max() {
+    if let Some(m) = s.other.max() {
         f.note(format!(
             "along the opposite direction the residual is {} (the text does not state the direction)",
             res_text(&m)
@@ -530,120 +420,94 @@ pub fn eq28(cx: &mut Ctx) -> Result<Finding> {
 }
 
 pub fn eq29(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
-    let mut literal = Tally::default();
-    gen(cx, |c, y| {
+    let s = sample(cx, gen, |c, y| {
         let truth = -(y.i1() * &y.phi1dd);
         let e = &c.scales.energy;
         // F12 read as the tangential force on cylinder 1 along (−cos θ, sin θ): F12 = +F21
         let mut yc = y.clone();
         yc.f12 = y.f21.clone();
-        let m = sec2::eq29(&yc);
-        f.printed
-            .add("(F1 + F12) r1, F12 = +F21", &c.name, &m[0], &truth, e);
-        f.printed.add("(F1 − F21) r1", &c.name, &m[1], &truth, e);
-        f.printed.add("−I1 φ̈1", &c.name, &m[2], &truth, e);
-        f.printed.add("−k1 m1 r1² φ̈1", &c.name, &m[3], &truth, e);
-        literal.add(
-            "(F1 + F12) r1, F12 = −F21",
-            &c.name,
-            &sec2::eq29(y)[0],
-            &truth,
-            e,
-        );
-        corr.add("(F1 + F21) r1", &c.name, &corrected::eq29(y), &truth, e);
+        let [m0, m1, m2, m3] = sec2::eq29(&yc);
+        let [lit, ..] = sec2::eq29(y);
+        vec![
+            printed("(F1 + F12) r1, F12 = +F21", m0, &truth, e),
+            printed("(F1 − F21) r1", m1, &truth, e),
+            printed("−I1 φ̈1", m2, &truth, e),
+            printed("−k1 m1 r1² φ̈1", m3, &truth, e),
+            other("(F1 + F12) r1, F12 = −F21", lit, &truth, e),
+            corrected("(F1 + F21) r1", corrected::eq29(y), &truth, e),
+        ]
     })?;
-    f.corrected = Some(("(F1 + F21) r1 = −I1 φ̈1 = −k1 m1 r1² φ̈1".into(), corr));
-    if let Some(m) = literal.max() {
+    let literal = s.other.max();
+    let mut f = s.corrected("(F1 + F21) r1 = −I1 φ̈1 = −k1 m1 r1² φ̈1");
+    if let Some(m) = literal {
         f.note(format!(
             "with the text's F21 = −F12 the first member equals the second and fails too (residual {})",
             res_text(&m)
         ));
     }
-    f.note("the torque of the contact force about cylinder 1's axis is +r1 F21 counter-clockwise (with F21 as in (28)), so the balance is r1(F1 + F21) = −I1 φ̈1; this is what (30) and the appendix's (104) (−r1 λ1 − r1 λ2 = I1 φ̈1) say, so (28), (30) and (104) are right and the second member of (29) has the wrong sign");
-    Ok(f)
+    Ok(f.with_note("the torque of the contact force about cylinder 1's axis is +r1 F21 counter-clockwise (with F21 as in (28)), so the balance is r1(F1 + F21) = −I1 φ̈1; this is what (30) and the appendix's (104) (−r1 λ1 − r1 λ2 = I1 φ̈1) say, so (28), (30) and (104) are right and the second member of (29) has the wrong sign"))
 }
 
 pub fn eq30(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
-        f.printed
-            .add("F1", &c.name, &sec2::eq30(y), &y.f1, &c.scales.force);
+    let f = check(cx, gen, |c, y| {
+        vec![printed("F1", sec2::eq30(y), &y.f1, &c.scales.force)]
     })?;
-    f.note("follows from (28) and the corrected (29); with the printed (F1 − F21) it would not");
-    Ok(f)
+    Ok(f.with_note(
+        "follows from (28) and the corrected (29); with the printed (F1 − F21) it would not",
+    ))
 }
 
 fn eq31_32(cx: &mut Ctx, which: usize) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut literal = Tally::default();
-    gen(cx, |c, y| {
-        let (truth, lit) = if which == 31 {
-            (&y.n12 * &y.c, sec2::eq31(y))
+    let (form, mid): (fn(&Sym) -> [X; 2], &str) = if which == 31 {
+        (sec2::eq31, "N1 − m1 g + F12 sin θ")
+    } else {
+        (sec2::eq32, "F1 − m1 ẍ1 − F12 cos θ")
+    };
+    let s = sample(cx, gen, |c, y| {
+        let truth = if which == 31 {
+            &y.n12 * &y.c
         } else {
-            (&y.n12 * &y.s, sec2::eq32(y))
+            &y.n12 * &y.s
         };
         let mut yc = y.clone();
         yc.f12 = y.f21.clone();
-        let m = if which == 31 {
-            sec2::eq31(&yc)
-        } else {
-            sec2::eq32(&yc)
-        };
+        let [m0, m1] = form(&yc);
+        let [lit, _] = form(y);
         let sc = &c.scales.force;
-        let mid = if which == 31 {
-            "N1 − m1 g + F12 sin θ"
-        } else {
-            "F1 − m1 ẍ1 − F12 cos θ"
-        };
-        f.printed.add(mid, &c.name, &m[0], &truth, sc);
-        f.printed.add("m2 [...]", &c.name, &m[1], &truth, sc);
-        literal.add(mid, &c.name, &lit[0], &truth, sc);
+        vec![
+            printed(mid, m0, &truth, sc),
+            printed("m2 [...]", m1, &truth, sc),
+            other(mid, lit, &truth, sc),
+        ]
     })?;
+    let mut f = s.f;
     f.convention = Some(
         "F12 is the tangential force on cylinder 1 measured along (−cos θ, sin θ), i.e. F12 = +F21 as numbers (F21 = −F12 holds only as vectors)".into(),
     );
-    if let Some(m) = literal.max() {
+    if let Some(m) = s.other.max() {
         f.note(format!(
             "with the text's F21 = −F12 (as numbers along one direction) the middle member fails: residual {}",
             res_text(&m)
         ));
     }
-    f.note("N12 and F21 from the Lagrange-multiplier system; the last member holds with F21 as in (28)");
-    Ok(f)
-}
-
-pub fn eq31(cx: &mut Ctx) -> Result<Finding> {
-    eq31_32(cx, 31)
-}
-
-pub fn eq32(cx: &mut Ctx) -> Result<Finding> {
-    eq31_32(cx, 32)
+    Ok(f.with_note("N12 and F21 from the Lagrange-multiplier system; the last member holds with F21 as in (28)"))
 }
 
 pub fn eq33(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
-    gen(cx, |c, y| {
-        f.printed.add(
-            "g cos θ + r1 sin θ φ̇1 − r θ̇²",
-            &c.name,
-            &sec2::eq33(y),
-            &y.n12,
-            &c.scales.force,
-        );
-        corr.add(
-            "m2(g cos θ + r1 sin θ φ̈1 − r θ̇²)",
-            &c.name,
-            &corrected::eq33(y),
-            &y.n12,
-            &c.scales.force,
-        );
+    let s = sample(cx, gen, |c, y| {
+        let s = &c.scales.force;
+        vec![
+            printed("g cos θ + r1 sin θ φ̇1 − r θ̇²", sec2::eq33(y), &y.n12, s),
+            corrected(
+                "m2(g cos θ + r1 sin θ φ̈1 − r θ̇²)",
+                corrected::eq33(y),
+                &y.n12,
+                s,
+            ),
+        ]
     })?;
-    f.corrected = Some(("N12 = m2 (g cos θ + r1 sin θ φ̈1 − r θ̇²)".into(), corr));
-    f.note("cos θ·(31) + sin θ·(32) gives m2(g cos θ + r1 sin θ φ̈1 − r θ̇²): the printed form lacks the factor m2 and has φ̇1 for φ̈1; the appendix's (88) and (112) have it right");
-    Ok(f)
+    Ok(s.corrected("N12 = m2 (g cos θ + r1 sin θ φ̈1 − r θ̇²)")
+        .with_note("cos θ·(31) + sin θ·(32) gives m2(g cos θ + r1 sin θ φ̈1 − r θ̇²): the printed form lacks the factor m2 and has φ̇1 for φ̈1; the appendix's (88) and (112) have it right"))
 }
 
 /// Separation checks shared by (34), (37), (89): residual at the oracle's θs
@@ -729,15 +593,12 @@ pub fn eq34(cx: &mut Ctx) -> Result<Finding> {
 }
 
 pub fn eq35(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    let f = check(cx, gen, |_, y| {
         let [a, b] = sec2::eq35(y);
-        let t = -&y.x1dd;
-        f.printed.add("−ẍ1", &c.name, &a, &t, &(&y.g * 1i32));
-        f.printed.add("−r1 φ̈1", &c.name, &b, &t, &(&y.g * 1i32));
+        let (t, g) = (-&y.x1dd, &y.g * 1i32);
+        vec![printed("−ẍ1", a, &t, &g), printed("−r1 φ̈1", b, &t, &g)]
     })?;
-    f.note("the x component of g_eff is −ẍ1 by definition (frame of cylinder 1's axis); checked: ẍ1 = r1 φ̈1 on the motion");
-    Ok(f)
+    Ok(f.with_note("the x component of g_eff is −ẍ1 by definition (frame of cylinder 1's axis); checked: ẍ1 = r1 φ̈1 on the motion"))
 }
 
 /// The fixed-lower-cylinder points: k2 of each random point and footnote 8's values.
@@ -782,75 +643,45 @@ pub fn eq36(cx: &mut Ctx) -> Result<Finding> {
 }
 
 pub fn eq37(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    gen(cx, |c, y| {
+    let mut f = check(cx, gen, |_, y| {
         // at every angle: each member is N12/m2 + r θ̇² (so r θ̇² = member ⇔ N12 = 0)
         let truth = &y.n12 / &y.m2 + y.rsum() * y.thd.sq();
-        let m = sec2::eq37(y);
+        let [_, m1, m2, m3] = sec2::eq37(y);
         let g = &y.g * 1i32;
-        f.printed
-            .add("r̂·g_eff (any angle)", &c.name, &m[1], &truth, &g);
-        f.printed.add(
-            "g cos θ + r1 sin θ φ̈1 (any angle)",
-            &c.name,
-            &m[2],
-            &truth,
-            &g,
-        );
-        f.printed.add(
-            "g cos θ − r A sin θ[…] (any angle)",
-            &c.name,
-            &m[3],
-            &truth,
-            &g,
-        );
+        vec![
+            printed("r̂·g_eff (any angle)", m1, &truth, &g),
+            printed("g cos θ + r1 sin θ φ̈1 (any angle)", m2, &truth, &g),
+            printed("g cos θ − r A sin θ[…] (any angle)", m3, &truth, &g),
+        ]
     })?;
     let pts = cx.general();
-    separation_rows(
-        cx,
-        FRoll,
-        CRoll,
-        &pts,
-        &mut f,
-        None,
-        |y| {
-            let m = sec2::eq37(y);
-            [m[0].clone(), m[3].clone()]
-        },
-        |y| {
-            let m = sec2::eq37(y);
-            [m[0].clone(), m[3].clone()]
-        },
-    )?;
+    let cond = |y: &Sym| {
+        let m = sec2::eq37(y);
+        [m[0].clone(), m[3].clone()]
+    };
+    separation_rows(cx, FRoll, CRoll, &pts, &mut f, None, cond, cond)?;
     f.note("each member equals N12/m2 + r θ̇² at every angle (N12 from the multipliers), so the condition is N12 = 0; its root equals the oracle's θs");
     f.note("for identical solid cylinders (m1 = m2, r1 = r2, k1 = k2 = 1/2) the root is exactly π/3 (see README), so 'intricate' has at least one simple case");
     Ok(f)
 }
 
 pub fn fn6(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let mut corr = Tally::default();
     let pts = vec![cx.point("S")?, cx.point("I(1/2)")?];
-    over(cx, &pts, FRoll, CRoll, StartKind::Rest, false, |c, y| {
-        let t = y.thd.sq();
-        f.printed
-            .add("θ̇² without g", &c.name, &sec2::fn6(y), &t, &c.scales.accel);
-        corr.add(
-            "θ̇² with g",
-            &c.name,
-            &corrected::fn6(y),
-            &t,
-            &c.scales.accel,
-        );
+    let on = |_: &Ctx| On {
+        pts,
+        fc: (FRoll, CRoll),
+        starts: REST,
+    };
+    let s = sample(cx, on, |c, y| {
+        let (t, a) = (y.thd.sq(), &c.scales.accel);
+        vec![
+            printed("θ̇² without g", sec2::fn6(y), &t, a),
+            corrected("θ̇² with g", corrected::fn6(y), &t, a),
+        ]
     })?;
-    f.corrected = Some((
-        "θ̇² = 12 g (1 − cos θ)/a(17 + 4 cos θ − 4 cos²θ)".into(),
-        corr,
-    ));
-    f.note(
+    Ok(s.corrected("θ̇² = 12 g (1 − cos θ)/a(17 + 4 cos θ − 4 cos²θ)").with_note(
         "point S has g = 1, where the printed form happens to hold; I(1/2) has g = 49/5, a = 2/3",
-    );
-    Ok(f)
+    ))
 }
 
 pub fn fn8(cx: &mut Ctx) -> Result<Finding> {
@@ -920,4 +751,16 @@ pub fn fn8(cx: &mut Ctx) -> Result<Finding> {
         }
     }
     Ok(f)
+}
+
+definitions! {
+    eq1: "the rolling constraint of the lower cylinder: a model assumption, which the mechanics imposes";
+    eq4: "defines the canonical momentum of φ1; its value is checked as eq. (12)";
+    eq14: "defines L1 = I1 φ̇1, the spin angular momentum of cylinder 1";
+    eq19: "defines the constant A";
+}
+
+calls! {
+    eq31 => eq31_32(31);
+    eq32 => eq31_32(32);
 }

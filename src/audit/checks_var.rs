@@ -1,10 +1,12 @@
 //! Checks of section 3 (variants), eqs. (38)–(55), footnotes 11 and 12, and
 //! the prose claims.
 
-use super::checks_main::{fixed_points, over, separation_rows};
+use super::checks_main::{fixed_points, separation_rows};
 use super::corrected;
 use super::ctx::Ctx;
 use super::finding::{Finding, RootRow, Tally};
+use super::forms::calls;
+use super::forms::{check, printed, On, REST};
 use super::points::{with_k, Point};
 use super::separation::{first_root_below, first_root_cos};
 use super::truth::{self, Case, StartKind, Sys, PREC};
@@ -18,9 +20,17 @@ use crate::paper::{sec2, sec3, Sym, X};
 use rug::{Float, Rational};
 
 /// From rest at the top, the general points, one contact model.
-fn rest<F: FnMut(&Case, &Sym)>(cx: &mut Ctx, floor: Floor, contact: Contact, f: F) -> Result<()> {
-    let pts = cx.general();
-    over(cx, &pts, floor, contact, StartKind::Rest, false, f)
+fn rest(fc: (Floor, Contact)) -> impl FnOnce(&Ctx) -> On {
+    move |cx| on_points(cx.general(), fc)
+}
+
+/// From rest at the top, the given points, one contact model.
+fn on_points(pts: Vec<Point>, fc: (Floor, Contact)) -> On {
+    On {
+        pts,
+        fc,
+        starts: REST,
+    }
 }
 
 const SS: (Floor, Contact) = (Floor::Slip, Contact::Slip);
@@ -29,23 +39,17 @@ const RS: (Floor, Contact) = (Floor::Roll, Contact::Slip);
 const RR: (Floor, Contact) = (Floor::Roll, Contact::Roll);
 
 fn kinetic(cx: &mut Ctx, fc: (Floor, Contact), form: fn(&Sym) -> X) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, fc.0, fc.1, |c, y| {
-        f.printed
-            .add("T", &c.name, &form(y), &truth::t(y), &c.scales.energy);
+    let f = check(cx, rest(fc), |c, y| {
+        vec![printed("T", form(y), &truth::t(y), &c.scales.energy)]
     })?;
-    f.note("from rest (ω0 = 0): neither cylinder spins where its contact is frictionless");
-    Ok(f)
+    Ok(f.with_note("from rest (ω0 = 0): neither cylinder spins where its contact is frictionless"))
 }
 
 fn energy_zero(cx: &mut Ctx, fc: (Floor, Contact), form: fn(&Sym) -> X) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, fc.0, fc.1, |c, y| {
-        f.printed
-            .add("= 0", &c.name, &form(y), &y.r1.zero(), &c.scales.accel);
+    let f = check(cx, rest(fc), |c, y| {
+        vec![printed("= 0", form(y), &y.r1.zero(), &c.scales.accel)]
     })?;
-    f.note("evaluated with the mechanics' θ̇, from rest at the top");
-    Ok(f)
+    Ok(f.with_note("evaluated with the mechanics' θ̇, from rest at the top"))
 }
 
 fn geff(
@@ -54,80 +58,49 @@ fn geff(
     forms: fn(&Sym) -> Vec<X>,
     labels: &[&str],
 ) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, fc.0, fc.1, |c, y| {
+    check(cx, rest(fc), |_, y| {
         let t = -&y.x1dd;
-        for (v, l) in forms(y).iter().zip(labels) {
-            f.printed.add(l, &c.name, v, &t, &y.g);
-        }
-    })?;
-    Ok(f)
+        forms(y)
+            .into_iter()
+            .zip(labels)
+            .map(|(v, l)| printed(*l, v, &t, &y.g))
+            .collect()
+    })
 }
 
 fn sep_form(cx: &mut Ctx, fc: (Floor, Contact), forms: fn(&Sym) -> [X; 3]) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, fc.0, fc.1, |c, y| {
+    let mut f = check(cx, rest(fc), |_, y| {
         let truth = &y.n12 / &y.m2 + y.rsum() * y.thd.sq();
-        let m = forms(y);
-        f.printed
-            .add("r̂·g_eff (any angle)", &c.name, &m[1], &truth, &y.g);
-        f.printed
-            .add("last form (any angle)", &c.name, &m[2], &truth, &y.g);
+        let [_, m1, m2] = forms(y);
+        vec![
+            printed("r̂·g_eff (any angle)", m1, &truth, &y.g),
+            printed("last form (any angle)", m2, &truth, &y.g),
+        ]
     })?;
     let pts = cx.general();
-    separation_rows(
-        cx,
-        fc.0,
-        fc.1,
-        &pts,
-        &mut f,
-        None,
-        |y| {
-            let m = forms(y);
-            [m[0].clone(), m[2].clone()]
-        },
-        |y| {
-            let m = forms(y);
-            [m[0].clone(), m[2].clone()]
-        },
-    )?;
-    f.note("each member equals N12/m2 + r θ̇² at every angle, so the condition is N12 = 0; its root equals the oracle's θs");
-    Ok(f)
-}
-
-pub fn eq38(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, SS, sec3::eq38)
+    let cond = |y: &Sym| {
+        let [m0, _, m2] = forms(y);
+        [m0, m2]
+    };
+    separation_rows(cx, fc.0, fc.1, &pts, &mut f, None, cond, cond)?;
+    Ok(f.with_note("each member equals N12/m2 + r θ̇² at every angle, so the condition is N12 = 0; its root equals the oracle's θs"))
 }
 
 pub fn eq39(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, SS.0, SS.1, |c, y| {
+    check(cx, rest(SS), |c, y| {
         let p = sec3::eq39(y);
-        let m = truth::momentum(Sys::NoFriction, y, QX1);
-        f.printed.add("= ∂T/∂ẋ1", &c.name, &p, &m, &c.scales.mom);
-        f.printed
-            .add("= P_x", &c.name, &p, &truth::px(y), &c.scales.mom);
-        f.printed
-            .add("= 0", &c.name, &p, &y.r1.zero(), &c.scales.mom);
-    })?;
-    Ok(f)
-}
-
-pub fn eq40(cx: &mut Ctx) -> Result<Finding> {
-    energy_zero(cx, SS, sec3::eq40)
-}
-
-pub fn eq41(cx: &mut Ctx) -> Result<Finding> {
-    geff(
-        cx,
-        SS,
-        |y| sec3::eq41(y).to_vec(),
-        &["−ẍ1", "(m2 r/(m1 + m2))(…)"],
-    )
-}
-
-pub fn eq42(cx: &mut Ctx) -> Result<Finding> {
-    sep_form(cx, SS, sec3::eq42)
+        let m = &c.scales.mom;
+        vec![
+            printed(
+                "= ∂T/∂ẋ1",
+                p.clone(),
+                &truth::momentum(Sys::NoFriction, y, QX1),
+                m,
+            ),
+            printed("= P_x", p.clone(), &truth::px(y), m),
+            printed("= 0", p, &y.r1.zero(), m),
+        ]
+    })
 }
 
 pub fn eq43(cx: &mut Ctx) -> Result<Finding> {
@@ -187,54 +160,28 @@ pub fn eq43(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq44(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, SR, sec3::eq44)
-}
-
 pub fn eq45(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, SR.0, SR.1, |c, y| {
+    check(cx, rest(SR), |c, y| {
         let p = sec3::eq45(y);
-        f.printed.add(
-            "= ∂T/∂ẋ1",
-            &c.name,
-            &p,
-            &truth::momentum(Sys::A1, y, QX1),
-            &c.scales.mom,
-        );
-        f.printed
-            .add("= P_x", &c.name, &p, &truth::px(y), &c.scales.mom);
-        f.printed
-            .add("= 0", &c.name, &p, &y.r1.zero(), &c.scales.mom);
-    })?;
-    Ok(f)
+        let m = &c.scales.mom;
+        vec![
+            printed("= ∂T/∂ẋ1", p.clone(), &truth::momentum(Sys::A1, y, QX1), m),
+            printed("= P_x", p.clone(), &truth::px(y), m),
+            printed("= 0", p, &y.r1.zero(), m),
+        ]
+    })
 }
 
 pub fn eq46(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, SR.0, SR.1, |c, y| {
+    check(cx, rest(SR), |c, y| {
         let [a, b] = sec3::eq46(y, &truth::l1(y), &truth::l2(y));
-        let m = truth::momentum(Sys::A1, y, QP1);
-        f.printed.add("= ∂T/∂φ̇1", &c.name, &a, &m, &c.scales.angmom);
-        f.printed
-            .add("= L1 + (r1/r2) L2", &c.name, &b, &m, &c.scales.angmom);
-        f.printed
-            .add("= 0", &c.name, &a, &y.r1.zero(), &c.scales.angmom);
-    })?;
-    Ok(f)
-}
-
-pub fn eq47(cx: &mut Ctx) -> Result<Finding> {
-    energy_zero(cx, SR, sec3::eq47)
-}
-
-pub fn eq48(cx: &mut Ctx) -> Result<Finding> {
-    geff(
-        cx,
-        SR,
-        |y| sec3::eq48(y).to_vec(),
-        &["−ẍ1", "(m2 r/(m1 + m2))(…)"],
-    )
+        let (m, s) = (truth::momentum(Sys::A1, y, QP1), &c.scales.angmom);
+        vec![
+            printed("= ∂T/∂φ̇1", a.clone(), &m, s),
+            printed("= L1 + (r1/r2) L2", b, &m, s),
+            printed("= 0", a, &y.r1.zero(), s),
+        ]
+    })
 }
 
 pub fn eq49(cx: &mut Ctx) -> Result<Finding> {
@@ -290,46 +237,18 @@ pub fn eq50(cx: &mut Ctx) -> Result<Finding> {
     Ok(f)
 }
 
-pub fn eq51(cx: &mut Ctx) -> Result<Finding> {
-    kinetic(cx, RS, sec3::eq51)
-}
-
 pub fn eq52(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    rest(cx, RS.0, RS.1, |c, y| {
+    check(cx, rest(RS), |c, y| {
         let p = sec3::eq52(y);
-        f.printed.add(
-            "= ∂T/∂φ̇1",
-            &c.name,
-            &p,
-            &truth::momentum(Sys::SlipContact, y, QP1),
-            &c.scales.angmom,
-        );
-        f.printed
-            .add("= 0", &c.name, &p, &y.r1.zero(), &c.scales.angmom);
-    })?;
-    Ok(f)
-}
-
-pub fn eq53(cx: &mut Ctx) -> Result<Finding> {
-    energy_zero(cx, RS, sec3::eq53)
-}
-
-pub fn eq54(cx: &mut Ctx) -> Result<Finding> {
-    geff(
-        cx,
-        RS,
-        |y| sec3::eq54(y).to_vec(),
-        &["−ẍ1", "−r1 φ̈1", "(m2 r/((1 + k1) m1 + m2))(…)"],
-    )
-}
-
-pub fn eq55(cx: &mut Ctx) -> Result<Finding> {
-    sep_form(cx, RS, sec3::eq55)
+        let (m, s) = (truth::momentum(Sys::SlipContact, y, QP1), &c.scales.angmom);
+        vec![
+            printed("= ∂T/∂φ̇1", p.clone(), &m, s),
+            printed("= 0", p, &y.r1.zero(), s),
+        ]
+    })
 }
 
 pub fn fn11(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
     let half = Rational::from((1, 2));
     let mut pts: Vec<Point> = cx
         .random()
@@ -337,46 +256,51 @@ pub fn fn11(cx: &mut Ctx) -> Result<Finding> {
         .map(|p| with_k(p, &half, &half, &format!("{} k=1/2", p.name)))
         .collect();
     pts.push(cx.point("I(1/2)")?);
-    over(cx, &pts, SR.0, SR.1, StartKind::Rest, false, |c, y| {
-        let sc = &c.scales.force / &y.r;
-        f.printed
-            .add("= 0", &c.name, &sec3::fn11(y), &y.r1.zero(), &sc);
-    })?;
-    f.note("random masses and radii with k1 = k2 = 1/2 (the relation needs no equal radii)");
-    Ok(f)
+    let f = check(
+        cx,
+        |_| on_points(pts, SR),
+        |c, y| {
+            let sc = &c.scales.force / &y.r;
+            vec![printed("= 0", sec3::fn11(y), &y.r1.zero(), &sc)]
+        },
+    )?;
+    Ok(f.with_note(
+        "random masses and radii with k1 = k2 = 1/2 (the relation needs no equal radii)",
+    ))
 }
 
 pub fn fn12(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let pts = identical(cx);
-    over(cx, &pts, SR.0, SR.1, StartKind::Rest, false, |c, y| {
-        let [pd, p1, p2] = sec3::fn12(y);
-        let one = y.r1.n(1);
-        f.printed
-            .add("φ̇1 = θ̇", &c.name, &pd, &y.phi1d, &c.scales.omega);
-        f.printed.add("φ1 = θ", &c.name, &p1, &y.phi1, &one);
-        f.printed.add("φ2 = φ1 − θ", &c.name, &p2, &y.phi2, &one);
-        f.printed
-            .add("φ2 = 0", &c.name, &y.r1.zero(), &y.phi2, &one);
-    })?;
-    f.note("φ2 = 0 means cylinder 2 turns clockwise by θ, as does cylinder 1 (φ1 = θ) and the line of centres: one rigid body (sliding on the frictionless floor), until they separate");
-    Ok(f)
+    let f = check(
+        cx,
+        |cx| on_points(identical(cx), SR),
+        |c, y| {
+            let [pd, p1, p2] = sec3::fn12(y);
+            let one = y.r1.n(1);
+            vec![
+                printed("φ̇1 = θ̇", pd, &y.phi1d, &c.scales.omega),
+                printed("φ1 = θ", p1, &y.phi1, &one),
+                printed("φ2 = φ1 − θ", p2, &y.phi2, &one),
+                printed("φ2 = 0", y.r1.zero(), &y.phi2, &one),
+            ]
+        },
+    )?;
+    Ok(f.with_note("φ2 = 0 means cylinder 2 turns clockwise by θ, as does cylinder 1 (φ1 = θ) and the line of centres: one rigid body (sliding on the frictionless floor), until they separate"))
 }
 
 pub fn fn12_routh(cx: &mut Ctx) -> Result<Finding> {
-    let mut f = Finding::default();
-    let pts = identical(cx);
-    over(cx, &pts, SR.0, SR.1, StartKind::Rest, false, |c, y| {
-        f.printed.add(
-            "= 0 at every angle",
-            &c.name,
-            &sec3::fn12_routh(y),
-            &y.r1.zero(),
-            &y.g,
-        );
-    })?;
-    f.note("Routh's relation holds at every sample angle, not only at separation: it is the energy relation (47) for identical cylinders, as the paper says, and cannot locate θs");
-    Ok(f)
+    let f = check(
+        cx,
+        |cx| on_points(identical(cx), SR),
+        |_, y| {
+            vec![printed(
+                "= 0 at every angle",
+                sec3::fn12_routh(y),
+                &y.r1.zero(),
+                &y.g,
+            )]
+        },
+    )?;
+    Ok(f.with_note("Routh's relation holds at every sample angle, not only at separation: it is the energy relation (47) for identical cylinders, as the paper says, and cannot locate θs"))
 }
 
 /// θ̈ at rest at θ0 (both rolling), from the reduced dynamics.
@@ -690,4 +614,18 @@ pub fn p_fixed_roll(cx: &mut Ctx) -> Result<Finding> {
     }
     f.note("the same statement as eq. (36), repeated at the end of sec. 3.2");
     Ok(f)
+}
+
+calls! {
+    eq38 => kinetic(SS, sec3::eq38);
+    eq40 => energy_zero(SS, sec3::eq40);
+    eq41 => geff(SS, |y| sec3::eq41(y).to_vec(), &["−ẍ1", "(m2 r/(m1 + m2))(…)"]);
+    eq42 => sep_form(SS, sec3::eq42);
+    eq44 => kinetic(SR, sec3::eq44);
+    eq47 => energy_zero(SR, sec3::eq47);
+    eq48 => geff(SR, |y| sec3::eq48(y).to_vec(), &["−ẍ1", "(m2 r/(m1 + m2))(…)"]);
+    eq51 => kinetic(RS, sec3::eq51);
+    eq53 => energy_zero(RS, sec3::eq53);
+    eq54 => geff(RS, |y| sec3::eq54(y).to_vec(), &["−ẍ1", "−r1 φ̈1", "(m2 r/((1 + k1) m1 + m2))(…)"]);
+    eq55 => sep_form(RS, sec3::eq55);
 }

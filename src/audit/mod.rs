@@ -29,6 +29,7 @@ mod checks_var;
 pub mod corrected;
 pub mod ctx;
 pub mod finding;
+mod forms;
 pub mod points;
 pub mod separation;
 pub mod truth;
@@ -61,13 +62,10 @@ use checks_app as a;
 use checks_main as m;
 use checks_var as v;
 
+#[rustfmt::skip]
 const ENTRIES: &[Entry] = entries![
     ("1", "cylinder 1 rolls on the floor", m::eq1),
-    (
-        "2",
-        "rolling contact; rotation φ2 − θ of cylinder 2",
-        m::eq2
-    ),
+    ("2", "rolling contact; rotation φ2 − θ of cylinder 2", m::eq2),
     ("3", "potential energy, zero at θ0", m::eq3),
     ("4", "the canonical momentum of φ1", m::eq4),
     ("5", "kinetic energy of cylinder 1", m::eq5),
@@ -96,24 +94,12 @@ const ENTRIES: &[Entry] = entries![
     ("28", "friction F21 on cylinder 2 from its spin", m::eq28),
     ("29", "torque balance of cylinder 1", m::eq29),
     ("30", "F1 from the torque balances", m::eq30),
-    (
-        "31",
-        "N12 cos θ from the vertical forces on cylinder 1",
-        m::eq31
-    ),
-    (
-        "32",
-        "N12 sin θ from the horizontal forces on cylinder 1",
-        m::eq32
-    ),
+    ("31", "N12 cos θ from the vertical forces on cylinder 1", m::eq31),
+    ("32", "N12 sin θ from the horizontal forces on cylinder 1", m::eq32),
     ("33", "normal force N12", m::eq33),
     ("34", "separation condition", m::eq34),
     ("35", "effective gravity in cylinder 1's frame", m::eq35),
-    (
-        "36",
-        "separation from a fixed cylinder: cos θs = 2/(3 + k2)",
-        m::eq36
-    ),
+    ("36", "separation from a fixed cylinder: cos θs = 2/(3 + k2)", m::eq36),
     ("37", "separation condition via g_eff", m::eq37),
     ("38", "T, no friction anywhere", v::eq38),
     ("39", "P_x = 0, no friction anywhere", v::eq39),
@@ -127,11 +113,7 @@ const ENTRIES: &[Entry] = entries![
     ("47", "energy, frictionless floor", v::eq47),
     ("48", "g_eff, frictionless floor", v::eq48),
     ("49", "separation condition, frictionless floor", v::eq49),
-    (
-        "50",
-        "separation angle, identical cylinders, frictionless floor",
-        v::eq50
-    ),
+    ("50", "separation angle, identical cylinders, frictionless floor", v::eq50),
     ("51", "T, frictionless contact", v::eq51),
     ("52", "p_φ1 = 0, frictionless contact", v::eq52),
     ("53", "energy, frictionless contact", v::eq53),
@@ -150,11 +132,7 @@ const ENTRIES: &[Entry] = entries![
     ("66", "A.1: x1 equation", a::eq66),
     ("67", "A.1: φ1 equation", a::eq67),
     ("68", "A.1: θ equation", a::eq68),
-    (
-        "69",
-        "A.1: P_x + L1/r1 + L2/r2 conserved, 0 from rest",
-        a::eq69
-    ),
+    ("69", "A.1: P_x + L1/r1 + L2/r2 conserved, 0 from rest", a::eq69),
     ("70", "A.1: λ1 from the φ1 equation", a::eq70),
     ("71", "A.2: T2 with φ2 free", a::eq71),
     ("72", "A.2: p_φ1", a::eq72),
@@ -163,18 +141,10 @@ const ENTRIES: &[Entry] = entries![
     ("75", "A.2: φ1 equation", a::eq75),
     ("76", "A.2: φ2 equation", a::eq76),
     ("77", "A.2: θ equation", a::eq77),
-    (
-        "78",
-        "A.2: p_φ1/r1 + p_φ2/r2 conserved, 0 from rest",
-        a::eq78
-    ),
+    ("78", "A.2: p_φ1/r1 + p_φ2/r2 conserved, 0 from rest", a::eq78),
     ("79", "A.2: λ2 = F21", a::eq79),
     ("80", "A.3: T2 with φ2, r free", a::eq80),
-    (
-        "A3-V",
-        "A.3: potential energy with r free (unnumbered)",
-        a::a3_v
-    ),
+    ("A3-V", "A.3: potential energy with r free (unnumbered)", a::a3_v),
     ("81", "A.3: p_φ1", a::eq81),
     ("82", "A.3: p_φ2 = L2", a::eq82),
     ("83", "A.3: derivatives of f3", a::eq83),
@@ -203,11 +173,7 @@ const ENTRIES: &[Entry] = entries![
     ("106", "A.5: θ equation", a::eq106),
     ("107", "A.5: r equation", a::eq107),
     ("108", "A.5: y1 equation", a::eq108),
-    (
-        "109",
-        "A.5: P_x + L1/r1 + L2/r2 conserved, 0 from rest",
-        a::eq109
-    ),
+    ("109", "A.5: P_x + L1/r1 + L2/r2 conserved, 0 from rest", a::eq109),
     ("110", "A.5: λ1 = F1", a::eq110),
     ("111", "A.5: λ2 = F21", a::eq111),
     ("112", "A.5: λ3 = N12", a::eq112),
@@ -216,51 +182,19 @@ const ENTRIES: &[Entry] = entries![
     ("fn1", "k > 1 for a bobbin", a::fn1),
     ("fn3", "n cylinders: counting", a::fn3),
     ("fn6", "θ̇² for identical solid cylinders", m::fn6),
-    (
-        "fn8",
-        "fixed lower cylinder: energy, separation, 2/3, 4/7, 10/17",
-        m::fn8
-    ),
+    ("fn8", "fixed lower cylinder: energy, separation, 2/3, 4/7, 10/17", m::fn8),
     ("fn11", "energy, frictionless floor, k1 = k2 = 1/2", v::fn11),
-    (
-        "fn12",
-        "identical cylinders, frictionless floor: roll together",
-        v::fn12
-    ),
-    (
-        "fn12-routh",
-        "Routh's separation relation is the energy relation",
-        v::fn12_routh
-    ),
+    ("fn12", "identical cylinders, frictionless floor: roll together", v::fn12),
+    ("fn12-routh", "Routh's separation relation is the energy relation", v::fn12_routh),
     ("fn15", "F1, F21 from (104), (106)", a::fn15),
-    (
-        "p-steady",
-        "θ = θ0 constant is a particular solution",
-        v::p_steady
-    ),
+    ("p-steady", "θ = θ0 constant is a particular solution", v::p_steady),
     ("p-phi1", "φ1 changes sign where sin θ = k2 θ", v::p_phi1),
-    (
-        "p-phi1dot",
-        "φ̇1 changes sign where cos θ = k2",
-        v::p_phi1dot
-    ),
+    ("p-phi1dot", "φ̇1 changes sign where cos θ = k2", v::p_phi1dot),
     ("p-bobbin", "k2 > 1: φ1, φ̇1 keep θ's sign", v::p_bobbin),
-    (
-        "p-momentum",
-        "the system gains positive x-momentum",
-        v::p_momentum
-    ),
+    ("p-momentum", "the system gains positive x-momentum", v::p_momentum),
     ("p-phi2", "signs of φ1, φ2 at small times", v::p_phi2),
-    (
-        "p-fixed-slip",
-        "fixed cylinder, no friction: cos θs = 2/3",
-        v::p_fixed_slip
-    ),
-    (
-        "p-fixed-roll",
-        "fixed cylinder, rolling: cos θs = 2/(3 + k2)",
-        v::p_fixed_roll
-    ),
+    ("p-fixed-slip", "fixed cylinder, no friction: cos θs = 2/3", v::p_fixed_slip),
+    ("p-fixed-roll", "fixed cylinder, rolling: cos θs = 2/(3 + k2)", v::p_fixed_roll),
 ];
 
 /// One audited entry.
@@ -398,6 +332,11 @@ fn residual_text(f: &Finding) -> String {
     }
 }
 
+/// A row of a Markdown table.
+fn md_row(s: &mut String, cells: &[String]) {
+    let _ = writeln!(s, "| {} |", cells.join(" | "));
+}
+
 fn md_escape(s: &str) -> String {
     s.replace('|', "\\|")
 }
@@ -513,15 +452,16 @@ fn separation_section(rows: &[Row], s: &mut String) {
                 ),
                 (p, None) => (if agree(p) { "yes" } else { "no" }).to_string(),
             };
-            let _ = writeln!(
+            md_row(
                 s,
-                "| ({}) | {} | {} | {} | {} | {} |",
-                r.id,
-                md_escape(&root.case),
-                show(&root.printed),
-                show(&root.corrected),
-                to_sig(&root.oracle.0, 20),
-                verdict
+                &[
+                    format!("({})", r.id),
+                    md_escape(&root.case),
+                    show(&root.printed),
+                    show(&root.corrected),
+                    to_sig(&root.oracle.0, 20),
+                    verdict,
+                ],
             );
         }
     }
@@ -542,21 +482,22 @@ fn points_section(s: &mut String) {
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|");
     for p in points::all() {
         let q = &p.params;
-        let _ = writeln!(
-            s,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            p.name,
-            rational_text(&q.m1),
-            rational_text(&q.m2),
-            rational_text(&q.r1),
-            rational_text(&q.r2),
-            rational_text(&q.k1),
-            rational_text(&q.k2),
-            rational_text(&q.g),
-            rational_text(&p.theta0),
-            rational_text(&p.thetadot0),
-            rational_text(&p.omega0)
-        );
+        let values = [
+            &q.m1,
+            &q.m2,
+            &q.r1,
+            &q.r2,
+            &q.k1,
+            &q.k2,
+            &q.g,
+            &p.theta0,
+            &p.thetadot0,
+            &p.omega0,
+        ];
+        let cells: Vec<String> = std::iter::once(p.name.clone())
+            .chain(values.iter().map(|v| rational_text(v)))
+            .collect();
+        md_row(s, &cells);
     }
     let _ = writeln!(
         s,

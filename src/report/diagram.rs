@@ -77,7 +77,32 @@ pub fn svg() -> String {
         d.s,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\" font-size=\"16\">"
     );
-    d.s.push_str("<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n<defs>");
+    d.s.push_str("<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n");
+    arrow_heads(&mut d);
+    let floor_y = 420.0;
+    let r = 105.0;
+    let th = 32f64.to_radians();
+    let c1 = (210.0, floor_y - r);
+    let c2 = (c1.0 + 2.0 * r * th.sin(), c1.1 - 2.0 * r * th.cos());
+    let p = (c1.0 + r * th.sin(), c1.1 - r * th.cos());
+    floor(&mut d, floor_y, w);
+    cylinders(&mut d, c1, c2, r);
+    angles(&mut d, c1, c2, r);
+    forces(&mut d, (c1.0, floor_y), p, th);
+    // axes
+    let o = (40.0, 60.0);
+    d.arrow(o, (o.0 + 50.0, o.1), "#000", "ak", "x", 1.5);
+    d.arrow(o, (o.0, o.1 - 45.0), "#000", "ak", "y", 1.5);
+    d.text(o.0 + 56.0, o.1 + 5.0, "x", "#000", "start", 16.0);
+    d.text(o.0, o.1 - 50.0, "y", "#000", "middle", 16.0);
+    key(&mut d);
+    d.s.push_str("</svg>\n");
+    d.s
+}
+
+/// The arrow heads, one per colour.
+fn arrow_heads(d: &mut D) {
+    d.s.push_str("<defs>");
     let colors = [
         ("ak", (0, 0, 0)),
         ("a0", PALETTE[0]),
@@ -94,14 +119,10 @@ pub fn svg() -> String {
         );
     }
     d.s.push_str("</defs>\n");
-    let floor_y = 420.0;
-    let r = 105.0;
-    let th = 32f64.to_radians();
-    let c1 = (210.0, floor_y - r);
-    let c2 = (c1.0 + 2.0 * r * th.sin(), c1.1 - 2.0 * r * th.cos());
-    let p = (c1.0 + r * th.sin(), c1.1 - r * th.cos());
-    let grey = "#6e6e6e";
-    // floor
+}
+
+/// The floor, hatched.
+fn floor(d: &mut D, floor_y: f64, w: f64) {
     let _ = writeln!(
         d.s,
         "<path d=\"M30 {floor_y}H{}\" stroke=\"#000\" stroke-width=\"2\"/>",
@@ -117,7 +138,10 @@ pub fn svg() -> String {
         d.s,
         "<path d=\"{hatch}\" stroke=\"#999\" stroke-width=\"1\"/>"
     );
-    // cylinders
+}
+
+/// The two cylinders with their centres and numbers.
+fn cylinders(d: &mut D, c1: (f64, f64), c2: (f64, f64), r: f64) {
     for (c, name) in [
         (c1, "cylinder 1 (m₁, r₁, k₁)"),
         (c2, "cylinder 2 (m₂, r₂, k₂)"),
@@ -134,6 +158,11 @@ pub fn svg() -> String {
     }
     d.text(c1.0 - r - 8.0, c1.1 + 70.0, "1", "#000", "end", 18.0);
     d.text(c2.0 + r * 0.8, c2.1 - r * 0.8, "2", "#000", "start", 18.0);
+}
+
+/// θ, φ1 and φ2 − θ as arcs with their names.
+fn angles(d: &mut D, c1: (f64, f64), c2: (f64, f64), r: f64) {
+    let grey = "#6e6e6e";
     // θ: vertical through C1 and the line of centres
     let _ = writeln!(
         d.s,
@@ -146,142 +175,115 @@ pub fn svg() -> String {
         c2.0,
         c2.1
     );
-    d.arc(
-        c1,
-        48.0,
-        0.0,
-        32.0,
-        "#000",
-        "ak",
-        "θ: the line of centres, clockwise from the vertical",
-    );
-    d.text(c1.0 + 20.0, c1.1 - 56.0, "θ", "#000", "middle", 19.0);
-    // φ1: clockwise rotation of cylinder 1
-    d.arc(
-        c1,
-        62.0,
-        200.0,
-        290.0,
-        "#000",
-        "ak",
-        "φ₁: clockwise rotation of cylinder 1",
-    );
-    d.text(c1.0 - 36.0, c1.1 + 12.0, "φ₁", "#000", "middle", 18.0);
-    // φ2 − θ: counter-clockwise rotation of cylinder 2
-    d.arc(
-        c2,
-        62.0,
-        120.0,
-        30.0,
-        "#000",
-        "ak",
-        "φ₂ − θ: counter-clockwise rotation of cylinder 2",
-    );
-    d.text(c2.0 + 10.0, c2.1 + 30.0, "φ₂ − θ", "#000", "middle", 17.0);
-    // forces, positive directions
+    let arcs = [
+        (
+            c1,
+            48.0,
+            (0.0, 32.0),
+            "θ: the line of centres, clockwise from the vertical",
+            ("θ", (20.0, -56.0), 19.0),
+        ),
+        (
+            c1,
+            62.0,
+            (200.0, 290.0),
+            "φ₁: clockwise rotation of cylinder 1",
+            ("φ₁", (-36.0, 12.0), 18.0),
+        ),
+        (
+            c2,
+            62.0,
+            (120.0, 30.0),
+            "φ₂ − θ: counter-clockwise rotation of cylinder 2",
+            ("φ₂ − θ", (10.0, 30.0), 17.0),
+        ),
+    ];
+    for (c, radius, (a0, a1), title, (name, off, size)) in arcs {
+        d.arc(c, radius, a0, a1, "#000", "ak", title);
+        d.text(c.0 + off.0, c.1 + off.1, name, "#000", "middle", size);
+    }
+}
+
+/// The four forces in their positive directions: on cylinder 1 at the floor
+/// point `fp`, on cylinder 2 at the contact point `p`.
+fn forces(d: &mut D, fp: (f64, f64), p: (f64, f64), th: f64) {
     let len = 75.0;
-    let fp = (c1.0, floor_y);
-    d.arrow(
-        fp,
-        (fp.0 + len, fp.1),
-        &hex(PALETTE[0]),
-        "a0",
-        "F₁ > 0: the floor pushes cylinder 1 to +x",
-        3.0,
-    );
-    d.text(
-        fp.0 + len + 6.0,
-        fp.1 - 6.0,
-        "F₁",
-        &hex(PALETTE[0]),
-        "start",
-        18.0,
-    );
-    d.arrow(
-        fp,
-        (fp.0, fp.1 - len),
-        &hex(PALETTE[1]),
-        "a1",
-        "N₁ > 0: the floor pushes cylinder 1 up",
-        3.0,
-    );
-    d.text(
-        fp.0 - 8.0,
-        fp.1 - len + 4.0,
-        "N₁",
-        &hex(PALETTE[1]),
-        "end",
-        18.0,
-    );
-    // on cylinder 2 at the contact point
     let n = (th.sin(), -th.cos());
     let t = (th.cos(), th.sin());
-    d.arrow(
-        p,
-        (p.0 + len * t.0, p.1 + len * t.1),
-        &hex(PALETTE[2]),
-        "a2",
-        "F₂₁ > 0: cylinder 1's tangential force on cylinder 2 along (cos θ, −sin θ)",
-        3.0,
-    );
-    d.text(
-        p.0 + len * t.0 + 6.0,
-        p.1 + len * t.1 + 16.0,
-        "F₂₁",
-        &hex(PALETTE[2]),
-        "start",
-        18.0,
-    );
-    d.arrow(
-        p,
-        (p.0 + len * n.0, p.1 + len * n.1),
-        &hex(PALETTE[3]),
-        "a3",
-        "N₁₂ > 0: cylinder 1 pushes cylinder 2 away along the line of centres",
-        3.0,
-    );
-    d.text(
-        p.0 + len * n.0 - 8.0,
-        p.1 + len * n.1 - 4.0,
-        "N₁₂",
-        &hex(PALETTE[3]),
-        "end",
-        18.0,
-    );
+    // (from, direction, colour, title, name, name offset from the tip, anchor)
+    let arrows = [
+        (
+            fp,
+            (1.0, 0.0),
+            0,
+            "F₁ > 0: the floor pushes cylinder 1 to +x",
+            "F₁",
+            (6.0, -6.0),
+            "start",
+        ),
+        (
+            fp,
+            (0.0, -1.0),
+            1,
+            "N₁ > 0: the floor pushes cylinder 1 up",
+            "N₁",
+            (-8.0, 4.0),
+            "end",
+        ),
+        (
+            p,
+            t,
+            2,
+            "F₂₁ > 0: cylinder 1's tangential force on cylinder 2 along (cos θ, −sin θ)",
+            "F₂₁",
+            (6.0, 16.0),
+            "start",
+        ),
+        (
+            p,
+            n,
+            3,
+            "N₁₂ > 0: cylinder 1 pushes cylinder 2 away along the line of centres",
+            "N₁₂",
+            (-8.0, -4.0),
+            "end",
+        ),
+    ];
+    for (from, dir, i, title, name, off, anchor) in arrows {
+        let tip = (from.0 + len * dir.0, from.1 + len * dir.1);
+        let color = hex(PALETTE[i]);
+        d.arrow(from, tip, &color, &format!("a{i}"), title, 3.0);
+        d.text(tip.0 + off.0, tip.1 + off.1, name, &color, anchor, 18.0);
+    }
     let _ = writeln!(
         d.s,
         "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3.5\" fill=\"#000\"/>",
         p.0, p.1
     );
-    // axes
-    let o = (40.0, 60.0);
-    d.arrow(o, (o.0 + 50.0, o.1), "#000", "ak", "x", 1.5);
-    d.arrow(o, (o.0, o.1 - 45.0), "#000", "ak", "y", 1.5);
-    d.text(o.0 + 56.0, o.1 + 5.0, "x", "#000", "start", 16.0);
-    d.text(o.0, o.1 - 50.0, "y", "#000", "middle", 16.0);
-    // key
+}
+
+/// The key of positive directions.
+fn key(d: &mut D) {
     let kx = 30.0;
     let lines = [
-        ("Positive directions:", "#000"),
-        ("F₁, N₁: floor on cylinder 1 (x, y)", "#000"),
-        ("N₁₂, F₂₁: cylinder 1 on cylinder 2,", "#000"),
-        ("   normal and tangential", "#000"),
-        ("(on cylinder 1: equal and opposite)", "#000"),
-        ("θ: clockwise from the vertical", "#000"),
-        ("φ₁: clockwise; φ₂ − θ: anticlockwise", "#000"),
-        ("rolling: x₁ = r₁φ₁, r₂φ₂ = r₁(φ₁ − θ)", "#000"),
+        "Positive directions:",
+        "F₁, N₁: floor on cylinder 1 (x, y)",
+        "N₁₂, F₂₁: cylinder 1 on cylinder 2,",
+        "   normal and tangential",
+        "(on cylinder 1: equal and opposite)",
+        "θ: clockwise from the vertical",
+        "φ₁: clockwise; φ₂ − θ: anticlockwise",
+        "rolling: x₁ = r₁φ₁, r₂φ₂ = r₁(φ₁ − θ)",
     ];
-    for (i, (l, c)) in lines.iter().enumerate() {
+    for (i, l) in lines.iter().enumerate() {
         let _ = writeln!(
             d.s,
-            "<text x=\"{kx}\" y=\"{}\" font-size=\"15\" fill=\"{c}\"{}>{}</text>",
+            "<text x=\"{kx}\" y=\"{}\" font-size=\"15\" fill=\"#000\"{}>{}</text>",
             466.0 + 21.0 * i as f64,
             if i == 0 { " font-weight=\"bold\"" } else { "" },
             xml(l)
         );
     }
-    d.s.push_str("</svg>\n");
-    d.s
 }
 
 /// The diagram as a figure of the report (the same drawing in both layouts).

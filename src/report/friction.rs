@@ -251,288 +251,277 @@ fn col(rows: &[Vec<f64>], c: &str) -> Vec<(f64, f64)> {
 pub fn figures(d: &FrictionData) -> Vec<Figure> {
     let mut figs = Vec::new();
     if let Ok((rows, modes, sep)) = &d.traj {
-        let ev: Vec<(f64, f64, &str)> = sep
-            .events
-            .iter()
-            .map(|e| (e.t.value.to_f64(), e.theta.value.to_f64(), e.kind.name()))
-            .collect();
-        let th = col(rows, "theta");
-        let n12 = col(rows, "N12");
-        let f21 = col(rows, "F21");
-        let cone: Vec<(f64, f64)> = n12.iter().map(|&(t, n)| (t, 0.3 * n)).collect();
-        let ncone: Vec<(f64, f64)> = cone.iter().map(|&(t, c)| (t, -c)).collect();
-        let s12 = col(rows, "s12");
-        let s1 = col(rows, "s1");
-        let work = col(rows, "work");
-        let mut p1 = Panel::new("θ, events marked", "t  [τ]", "θ  [rad]");
-        p1.yrange = Some(range(&[&th]));
-        p1.cells = phases(rows, modes, p1.yrange.unwrap_or((0.0, 1.0)));
-        p1.series.push(Series::new("θ", PALETTE[0], th.clone()));
-        p1.markers = ev
-            .iter()
-            .map(|&(t, theta, k)| {
-                let name = k.replace('_', " ");
-                let mut m = Marker::new(
-                    (t, theta),
-                    PALETTE[6],
-                    format!("{name} at t = {t:.4}, θ = {theta:.4}"),
-                );
-                m.shape = Shape::Diamond;
-                m.label = Some(format!("{name}, θ = {theta:.3}"));
-                m
-            })
-            .collect();
-        p1.legend.push(LegendEntry {
-            label: "event (slip onset, separation, impact)".into(),
-            color: PALETTE[6],
-            dash: None,
-            shape: Some(Shape::Diamond),
-            filled: true,
-        });
-        p1.legend.push(LegendEntry {
-            label: "shaded orange: the contact slips".into(),
-            color: SLIP_SHADE,
-            dash: None,
-            shape: Some(Shape::Square),
-            filled: true,
-        });
-        p1.legend.push(LegendEntry {
-            label: "shaded blue: free flight".into(),
-            color: FLIGHT_SHADE,
-            dash: None,
-            shape: Some(Shape::Square),
-            filled: true,
-        });
-        let mut p2 = Panel::new(
-            "Forces between the cylinders, and the cone ±μN₁₂",
-            "t  [τ]",
-            "force  [m₁g]",
-        );
-        p2.yrange = Some(range(&[&n12, &f21, &ncone]));
-        p2.cells = phases(rows, modes, p2.yrange.unwrap_or((0.0, 1.0)));
-        p2.series
-            .push(Series::new("N₁₂", PALETTE[2], n12).shape(Shape::Circle));
-        p2.series
-            .push(Series::new("F₂₁", PALETTE[1], f21).dashed(Dash::Dashed));
-        p2.series
-            .push(Series::new("±μN₁₂ (the friction cone)", PALETTE[6], cone).dashed(Dash::Dotted));
-        p2.series
-            .push(Series::new("", PALETTE[6], ncone).dashed(Dash::Dotted));
-        let mut p3 = Panel::new("Slip speeds", "t  [τ]", "slip speed  [√(r₁g)]");
-        p3.yrange = Some(range(&[&s12, &s1]));
-        p3.cells = phases(rows, modes, p3.yrange.unwrap_or((0.0, 1.0)));
-        p3.series
-            .push(Series::new("s₁₂: between the cylinders", PALETTE[3], s12));
-        p3.series
-            .push(Series::new("s₁: at the floor", PALETTE[4], s1).dashed(Dash::Dashed));
-        let mut p4 = Panel::new(
-            "Energy dissipated by friction, W = E(0) − E(t)",
-            "t  [τ]",
-            "W  [m₁gr₁]",
-        );
-        p4.yrange = Some(range(&[&work]));
-        p4.cells = phases(rows, modes, p4.yrange.unwrap_or((0.0, 1.0)));
-        p4.series.push(Series::new("W", PALETTE[5], work));
-        let evtext: Vec<String> = ev
-            .iter()
-            .map(|(t, th, k)| format!("{} at t = {t:.4}, θ = {th:.4}", k.replace('_', " ")))
-            .collect();
-        figs.push(Figure::new(
-            "friction_main.svg",
-            format!("The main case with μ = 0.3 at both contacts, from rest at θ₀ = {THETA0}"),
-            (1300, 860),
-            (2, 2),
-            vec![p1, p2, p3, p4],
-            230,
-        ).caption(format!(
-                "Unshaded: both contacts roll; orange: the contact between the cylinders slips (s12 > 0, \
-                 F21 = −μ N12 on the cone); blue: free flight after separation, to the first impact (cylinder 2 \
-                 on the floor). Events: {}. The floor never slips (s1 = 0). In flight F21 = N12 = 0 and W stays \
-                 constant. Every point is an oracle value verified to the plotted digits.",
-                evtext.join("; ")
-            )));
+        figs.push(friction_main(rows, modes, sep));
     }
     if !d.map.is_empty() {
-        let onset: Vec<(f64, f64)> = d.map.iter().filter_map(|m| m.1.map(|o| (m.0, o))).collect();
-        let ths: Vec<(f64, f64)> = d.map.iter().map(|m| (m.0, m.2)).collect();
-        let (x0, x1) = (0.01, 100.0);
-        let mut p = Panel::new("", "μ (both contacts, log scale)", "θ  [rad]");
-        p.xscale = Scale::Log;
-        p.xrange = Some((x0, x1));
-        p.series.push(
-            Series::new("θₛ with friction", PALETTE[0], ths)
-                .shape(Shape::Circle)
-                .every(4, 1),
-        );
-        p.series.push(
-            Series::new("first slip onset (either contact)", PALETTE[1], onset)
-                .shape(Shape::Square)
-                .every(4, 3)
-                .dashed(Dash::Dashed),
-        );
-        p.series.push(
-            Series::new(
-                "θₛ rolling (μ = ∞)",
-                PALETTE[6],
-                vec![(x0, d.ideal[0]), (x1, d.ideal[0])],
-            )
-            .dashed(Dash::Dotted),
-        );
-        p.series.push(
-            Series::new(
-                "θₛ frictionless (μ = 0)",
-                PALETTE[2],
-                vec![(x0, d.ideal[1]), (x1, d.ideal[1])],
-            )
-            .dashed(Dash::Dotted),
-        );
-        p.markers = d
-            .map
-            .iter()
-            .filter(|m| m.3)
-            .map(|m| {
-                let mut k = Marker::new(
-                    (m.0, m.2),
-                    PALETTE[3],
-                    format!(
-                        "μ = {:.3}: the contact opens at θ = {:.4} with N₁₂ > 0",
-                        m.0, m.2
-                    ),
-                );
-                k.shape = Shape::Diamond;
-                k
-            })
-            .collect();
-        if !p.markers.is_empty() {
-            p.legend.push(LegendEntry {
-                label: "the contact opens at an event, N₁₂ > 0".into(),
-                color: PALETTE[3],
-                dash: None,
-                shape: Some(Shape::Diamond),
-                filled: true,
-            });
-        }
-        let failed = if d.map_failed.is_empty() {
-            String::new()
-        } else {
-            format!(
-                " Not computed (no unique continuation of the rigid-body model): μ = {}.",
-                d.map_failed
-                    .iter()
-                    .map(|(m, _)| format!("{m:.3}"))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )
-        };
-        figs.push(Figure::single(
-            "friction_map.svg",
-            format!("The main case from θ₀ = {THETA0}: where slip starts and where the cylinders part"),
-            (1100, 620),
-            p,
-            250,
-        ).caption(format!(
-                "The same coefficient at both contacts, {} values from 0.01 to 100. As μ → ∞ the slip onset \
-                 and θₛ approach the rolling model's θₛ = {:.6}; as μ → 0 slip starts at once and θₛ approaches \
-                 the frictionless model's {:.6}. Marked: the contact opens at an event while N₁₂ > 0, because no \
-                 mode with the contact closed is consistent there — for large μ when the contact reaches its \
-                 cone close to θₛ, and elsewhere when the floor's slip stops and the floor's force jumps.{failed}",
-                d.map.len() + d.map_failed.len(),
-                d.ideal[0],
-                d.ideal[1]
-            )));
+        figs.push(friction_map(d));
     }
-    let (gx, rows) = &d.plane;
-    if !gx.is_empty() {
-        let vals: Vec<f64> = rows.iter().flatten().flatten().copied().collect();
-        let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = vals.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        let lg: Vec<f64> = gx.iter().map(|x| x.log10()).collect();
-        let half = |i: usize| -> (f64, f64) {
-            let a = if i == 0 {
-                lg[0] - (lg[1] - lg[0]) / 2.0
-            } else {
-                (lg[i - 1] + lg[i]) / 2.0
-            };
-            let b = if i + 1 == lg.len() {
-                lg[i] + (lg[i] - lg[i - 1]) / 2.0
-            } else {
-                (lg[i] + lg[i + 1]) / 2.0
-            };
-            (a, b)
-        };
-        let mut p = Panel::new(
-            "",
-            "log₁₀ μ_floor (the floor's coefficient)",
-            "log₁₀ μ_contact (between the cylinders)",
-        );
-        let mut csv = String::from("mu_floor,mu_contact,theta_s_rad\n");
-        for (j, row) in rows.iter().enumerate() {
-            for (i, v) in row.iter().enumerate() {
-                let (x0, x1) = half(i);
-                let (y0, y1) = half(j);
-                let color = match v {
-                    Some(v) => viridis((v - lo) / (hi - lo).max(1e-12)),
-                    None => (200, 200, 200),
-                };
-                p.cells.push(Cell {
-                    lo: (x0, y0),
-                    hi: (x1, y1),
-                    color,
-                    title: format!(
-                        "μ_floor = {:.3}, μ_contact = {:.3}: {}",
-                        gx[i],
-                        gx[j],
-                        v.map_or("no unique continuation".to_string(), |v| format!(
-                            "θₛ = {v:.4}"
-                        ))
-                    ),
-                });
-                csv.push_str(&format!(
-                    "{},{},{}\n",
-                    super::plot::csv_num(gx[i], 6),
-                    super::plot::csv_num(gx[j], 6),
-                    v.map_or(String::new(), |v| super::plot::csv_num(v, 12))
-                ));
-            }
-        }
-        p.xrange = Some((half(0).0, half(lg.len() - 1).1));
-        p.yrange = p.xrange;
-        let missing = rows.iter().flatten().filter(|v| v.is_none()).count();
-        let mut fig = Figure::single(
-            "friction_plane.svg",
-            format!(
-                "Separation angle of the main case over (μ_floor, μ_contact), from θ₀ = {THETA0}"
-            ),
-            (900, 760),
-            p,
-            150,
-        );
-        fig.csv = Some(csv);
-        fig.colorbar = Some(ColorBar {
-            label: "θₛ [rad]".into(),
-            range: (lo, hi),
-            marks: vec![
-                (d.ideal[0], "roll/roll".into()),
-                (d.ideal[2], "roll/slip".into()),
-            ],
-        });
-        figs.push(fig.caption(format!(
-                "θₛ (colour) on a {n} × {n} grid of coefficients from 0.01 to 100 (static = kinetic). The marks \
-                 on the colour bar are the ideal models' θₛ: both rolling ({:.4}, approached towards the \
-                 top-right corner) and a rolling floor under a frictionless contact ({:.4}, the bottom-right \
-                 corner).{}",
-                d.ideal[0],
-                d.ideal[2],
-                if missing > 0 {
-                    format!(
-                        " Grey: {missing} point{} with no unique continuation of the rigid-body model.",
-                        if missing == 1 { "" } else { "s" }
-                    )
-                } else {
-                    String::new()
-                },
-                n = gx.len()
-            )));
+    if !d.plane.0.is_empty() {
+        figs.push(friction_plane(d));
     }
     figs
+}
+
+/// A panel against t of a trajectory with friction: its y range fitted to
+/// `fit`, its phases shaded.
+fn phase_panel(
+    title: &str,
+    ylabel: &str,
+    rows: &[Vec<f64>],
+    modes: &[String],
+    fit: &[&[(f64, f64)]],
+) -> Panel {
+    let mut p = Panel::new(title, "t  [τ]", ylabel);
+    let y = range(fit);
+    p.yrange = Some(y);
+    p.cells = phases(rows, modes, y);
+    p
+}
+
+/// The main case with μ = 0.3: θ with its events, the forces between the
+/// cylinders with the cone, the slip speeds, the work of friction.
+fn friction_main(rows: &[Vec<f64>], modes: &[String], sep: &SeparationAnswer) -> Figure {
+    let ev: Vec<(f64, f64, &str)> = sep
+        .events
+        .iter()
+        .map(|e| (e.t.value.to_f64(), e.theta.value.to_f64(), e.kind.name()))
+        .collect();
+    let th = col(rows, "theta");
+    let n12 = col(rows, "N12");
+    let f21 = col(rows, "F21");
+    let cone: Vec<(f64, f64)> = n12.iter().map(|&(t, n)| (t, 0.3 * n)).collect();
+    let ncone: Vec<(f64, f64)> = cone.iter().map(|&(t, c)| (t, -c)).collect();
+    let (s12, s1, work) = (col(rows, "s12"), col(rows, "s1"), col(rows, "work"));
+    let mut p1 = phase_panel("θ, events marked", "θ  [rad]", rows, modes, &[&th]);
+    p1.series.push(Series::new("θ", PALETTE[0], th.clone()));
+    p1.markers = ev
+        .iter()
+        .map(|&(t, theta, k)| {
+            let name = k.replace('_', " ");
+            let title = format!("{name} at t = {t:.4}, θ = {theta:.4}");
+            Marker::shaped(
+                Shape::Diamond,
+                (t, theta),
+                PALETTE[6],
+                title,
+                Some(format!("{name}, θ = {theta:.3}")),
+            )
+        })
+        .collect();
+    p1.legend = vec![
+        LegendEntry::marker(
+            "event (slip onset, separation, impact)",
+            PALETTE[6],
+            Shape::Diamond,
+            true,
+        ),
+        LegendEntry::marker(
+            "shaded orange: the contact slips",
+            SLIP_SHADE,
+            Shape::Square,
+            true,
+        ),
+        LegendEntry::marker(
+            "shaded blue: free flight",
+            FLIGHT_SHADE,
+            Shape::Square,
+            true,
+        ),
+    ];
+    let title = "Forces between the cylinders, and the cone ±μN₁₂";
+    let mut p2 = phase_panel(title, "force  [m₁g]", rows, modes, &[&n12, &f21, &ncone]);
+    p2.series = vec![
+        Series::new("N₁₂", PALETTE[2], n12).shape(Shape::Circle),
+        Series::new("F₂₁", PALETTE[1], f21).dashed(Dash::Dashed),
+        Series::new("±μN₁₂ (the friction cone)", PALETTE[6], cone).dashed(Dash::Dotted),
+        Series::new("", PALETTE[6], ncone).dashed(Dash::Dotted),
+    ];
+    let mut p3 = phase_panel(
+        "Slip speeds",
+        "slip speed  [√(r₁g)]",
+        rows,
+        modes,
+        &[&s12, &s1],
+    );
+    p3.series = vec![
+        Series::new("s₁₂: between the cylinders", PALETTE[3], s12),
+        Series::new("s₁: at the floor", PALETTE[4], s1).dashed(Dash::Dashed),
+    ];
+    let title = "Energy dissipated by friction, W = E(0) − E(t)";
+    let mut p4 = phase_panel(title, "W  [m₁gr₁]", rows, modes, &[&work]);
+    p4.series.push(Series::new("W", PALETTE[5], work));
+    let evtext: Vec<String> = ev
+        .iter()
+        .map(|(t, th, k)| format!("{} at t = {t:.4}, θ = {th:.4}", k.replace('_', " ")))
+        .collect();
+    let title = format!("The main case with μ = 0.3 at both contacts, from rest at θ₀ = {THETA0}");
+    Figure::new("friction_main.svg", title, (1300, 860), (2, 2), vec![p1, p2, p3, p4], 230).caption(format!(
+        "Unshaded: both contacts roll; orange: the contact between the cylinders slips (s12 > 0, \
+         F21 = −μ N12 on the cone); blue: free flight after separation, to the first impact (cylinder 2 \
+         on the floor). Events: {}. The floor never slips (s1 = 0). In flight F21 = N12 = 0 and W stays \
+         constant. Every point is an oracle value verified to the plotted digits.",
+        evtext.join("; ")
+    ))
+}
+
+/// Where slip starts and where the cylinders part, over μ.
+fn friction_map(d: &FrictionData) -> Figure {
+    let onset: Vec<(f64, f64)> = d.map.iter().filter_map(|m| m.1.map(|o| (m.0, o))).collect();
+    let ths: Vec<(f64, f64)> = d.map.iter().map(|m| (m.0, m.2)).collect();
+    let (x0, x1) = (0.01, 100.0);
+    let level = |label: &str, color, y: f64| {
+        Series::new(label, color, vec![(x0, y), (x1, y)]).dashed(Dash::Dotted)
+    };
+    let mut p = Panel::new("", "μ (both contacts, log scale)", "θ  [rad]");
+    p.xscale = Scale::Log;
+    p.xrange = Some((x0, x1));
+    p.series = vec![
+        Series::new("θₛ with friction", PALETTE[0], ths)
+            .shape(Shape::Circle)
+            .every(4, 1),
+        Series::new("first slip onset (either contact)", PALETTE[1], onset)
+            .shape(Shape::Square)
+            .every(4, 3)
+            .dashed(Dash::Dashed),
+        level("θₛ rolling (μ = ∞)", PALETTE[6], d.ideal[0]),
+        level("θₛ frictionless (μ = 0)", PALETTE[2], d.ideal[1]),
+    ];
+    p.markers = d
+        .map
+        .iter()
+        .filter(|m| m.3)
+        .map(|m| {
+            let title = format!(
+                "μ = {:.3}: the contact opens at θ = {:.4} with N₁₂ > 0",
+                m.0, m.2
+            );
+            Marker::shaped(Shape::Diamond, (m.0, m.2), PALETTE[3], title, None)
+        })
+        .collect();
+    if !p.markers.is_empty() {
+        let label = "the contact opens at an event, N₁₂ > 0";
+        p.legend
+            .push(LegendEntry::marker(label, PALETTE[3], Shape::Diamond, true));
+    }
+    let failed = if d.map_failed.is_empty() {
+        String::new()
+    } else {
+        let mus: Vec<String> = d
+            .map_failed
+            .iter()
+            .map(|(m, _)| format!("{m:.3}"))
+            .collect();
+        format!(
+            " Not computed (no unique continuation of the rigid-body model): μ = {}.",
+            mus.join(", ")
+        )
+    };
+    let title =
+        format!("The main case from θ₀ = {THETA0}: where slip starts and where the cylinders part");
+    Figure::single("friction_map.svg", title, (1100, 620), p, 250).caption(format!(
+        "The same coefficient at both contacts, {} values from 0.01 to 100. As μ → ∞ the slip onset \
+         and θₛ approach the rolling model's θₛ = {:.6}; as μ → 0 slip starts at once and θₛ approaches \
+         the frictionless model's {:.6}. Marked: the contact opens at an event while N₁₂ > 0, because no \
+         mode with the contact closed is consistent there — for large μ when the contact reaches its \
+         cone close to θₛ, and elsewhere when the floor's slip stops and the floor's force jumps.{failed}",
+        d.map.len() + d.map_failed.len(),
+        d.ideal[0],
+        d.ideal[1]
+    ))
+}
+
+/// The cells of the (μ_floor, μ_contact) grid (log10 coordinates), coloured
+/// over [lo, hi], and the grid's CSV.
+fn plane_cells(gx: &[f64], rows: &[Vec<Option<f64>>], lo: f64, hi: f64) -> (Vec<Cell>, String) {
+    let lg: Vec<f64> = gx.iter().map(|x| x.log10()).collect();
+    let mut cells = Vec::new();
+    let mut csv = String::from("mu_floor,mu_contact,theta_s_rad\n");
+    for (j, row) in rows.iter().enumerate() {
+        for (i, v) in row.iter().enumerate() {
+            let ((x0, x1), (y0, y1)) = (half_cell(&lg, i), half_cell(&lg, j));
+            let color = match v {
+                Some(v) => viridis((v - lo) / (hi - lo).max(1e-12)),
+                None => (200, 200, 200),
+            };
+            let value = v.map_or("no unique continuation".to_string(), |v| {
+                format!("θₛ = {v:.4}")
+            });
+            cells.push(Cell {
+                lo: (x0, y0),
+                hi: (x1, y1),
+                color,
+                title: format!("μ_floor = {:.3}, μ_contact = {:.3}: {value}", gx[i], gx[j]),
+            });
+            csv.push_str(&format!(
+                "{},{},{}\n",
+                super::plot::csv_num(gx[i], 6),
+                super::plot::csv_num(gx[j], 6),
+                v.map_or(String::new(), |v| super::plot::csv_num(v, 12))
+            ));
+        }
+    }
+    (cells, csv)
+}
+
+/// The extent of grid cell `i` of the nodes `lg`: halfway to its neighbours.
+fn half_cell(lg: &[f64], i: usize) -> (f64, f64) {
+    let a = if i == 0 {
+        lg[0] - (lg[1] - lg[0]) / 2.0
+    } else {
+        (lg[i - 1] + lg[i]) / 2.0
+    };
+    let b = if i + 1 == lg.len() {
+        lg[i] + (lg[i] - lg[i - 1]) / 2.0
+    } else {
+        (lg[i] + lg[i + 1]) / 2.0
+    };
+    (a, b)
+}
+
+/// θs over (μ_floor, μ_contact).
+fn friction_plane(d: &FrictionData) -> Figure {
+    let (gx, rows) = &d.plane;
+    let vals = rows.iter().flatten().flatten().copied();
+    let lo = vals.clone().fold(f64::INFINITY, f64::min);
+    let hi = vals.fold(f64::NEG_INFINITY, f64::max);
+    let mut p = Panel::new(
+        "",
+        "log₁₀ μ_floor (the floor's coefficient)",
+        "log₁₀ μ_contact (between the cylinders)",
+    );
+    let (cells, csv) = plane_cells(gx, rows, lo, hi);
+    p.cells = cells;
+    let lg: Vec<f64> = gx.iter().map(|x| x.log10()).collect();
+    p.xrange = Some((half_cell(&lg, 0).0, half_cell(&lg, lg.len() - 1).1));
+    p.yrange = p.xrange;
+    let missing = rows.iter().flatten().filter(|v| v.is_none()).count();
+    let title =
+        format!("Separation angle of the main case over (μ_floor, μ_contact), from θ₀ = {THETA0}");
+    let mut fig = Figure::single("friction_plane.svg", title, (900, 760), p, 150);
+    fig.csv = Some(csv);
+    fig.colorbar = Some(ColorBar {
+        label: "θₛ [rad]".into(),
+        range: (lo, hi),
+        marks: vec![
+            (d.ideal[0], "roll/roll".into()),
+            (d.ideal[2], "roll/slip".into()),
+        ],
+    });
+    let grey = if missing > 0 {
+        format!(
+            " Grey: {missing} point{} with no unique continuation of the rigid-body model.",
+            if missing == 1 { "" } else { "s" }
+        )
+    } else {
+        String::new()
+    };
+    fig.caption(format!(
+        "θₛ (colour) on a {n} × {n} grid of coefficients from 0.01 to 100 (static = kinetic). The marks \
+         on the colour bar are the ideal models' θₛ: both rolling ({:.4}, approached towards the \
+         top-right corner) and a rolling floor under a frictionless contact ({:.4}, the bottom-right \
+         corner).{grey}",
+        d.ideal[0],
+        d.ideal[2],
+        n = gx.len()
+    ))
 }

@@ -95,7 +95,6 @@ impl Config {
     /// A small configuration for tests: the same files, coarser curves.
     pub fn quick() -> Self {
         Config {
-            digits: 20,
             plot_digits: 8,
             time_points: 8,
             theta_points: 10,
@@ -108,8 +107,7 @@ impl Config {
             plane_table_digits: 12,
             friction_per_decade: 1,
             friction_plane_per_decade: 1,
-            threads: default_threads(),
-            progress: false,
+            ..Config::full()
         }
     }
 }
@@ -224,95 +222,8 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     let tabs = tables::tables(&data, cfg)?;
 
     // the page, its tables and its figures change as one set
-    let mut files: Vec<(std::path::PathBuf, Vec<u8>)> = Vec::new();
-    let sig = cfg.plot_digits as usize;
-    for f in &figs {
-        files.push((
-            Path::new("figures").join(&f.file),
-            plot::render_layout(f, plot::Layout::Wide).into_bytes(),
-        ));
-        if let Some(n) = page::narrow_path(f) {
-            files.push((
-                n.into(),
-                plot::render_layout(f, plot::Layout::Narrow).into_bytes(),
-            ));
-        }
-        if let Some(c) = page::csv_path(f) {
-            files.push((c.into(), plot::figure_csv(f, sig).into_bytes()));
-        }
-    }
-
-    use page::{Block, Section};
-    let fig = |name: &str| figs.iter().find(|f| f.file == name).cloned();
-    let with_prefix = |p: &str| -> Vec<Block> {
-        figs.iter()
-            .filter(|f| f.file.starts_with(p))
-            .cloned()
-            .map(Block::Figure)
-            .collect()
-    };
-    let mut blocks = Vec::new();
-    blocks.push(Block::Heading("Sign conventions".into()));
-    if let Some(f) = fig("conventions.svg") {
-        blocks.push(Block::Figure(f));
-    }
-    blocks.push(Block::Heading("Tables".into()));
-    let mut tables_iter = tabs.tables.iter().cloned();
-    for _ in 0..2 {
-        if let Some(t) = tables_iter.next() {
-            blocks.push(Block::Table(t));
-        }
-    }
-    blocks.push(Block::Heading(
-        "The main case: both contacts rolling".into(),
-    ));
-    let mut rest: Vec<page::Table> = tables_iter.collect();
-    let plane_table = rest.pop();
-    for t in rest {
-        blocks.push(Block::Table(t));
-    }
-    blocks.extend(with_prefix("main_"));
-    blocks.push(Block::Heading("All contact models".into()));
-    blocks.extend(with_prefix("variants_"));
-    blocks.extend(with_prefix("variant_"));
-    blocks.push(Block::Heading("The parameter plane".into()));
-    if let Some(t) = plane_table {
-        blocks.push(Block::Table(t));
-    }
-    blocks.extend(with_prefix("plane_"));
-    blocks.push(Block::Heading("Finite Coulomb friction".into()));
-    blocks.push(Block::Table(friction::table(&fdata)));
-    blocks.extend(with_prefix("friction_"));
-    blocks.push(Block::Heading("Notes and data".into()));
-    blocks.push(Block::Section(tabs.notes.clone()));
-    let mut links = vec![
-        (
-            "separation.csv".to_string(),
-            "separation.csv: θₛ, tₛ and F₂₁ at separation per contact model and start, with the closed forms"
-                .to_string(),
-        ),
-        (
-            "plane.csv".to_string(),
-            "plane.csv: θₛ at every point of the parameter plane computed for the figures and the table"
-                .to_string(),
-        ),
-    ];
-    for f in &figs {
-        if let Some(c) = page::csv_path(f) {
-            links.push((c.clone(), format!("{c}: the data of “{}”", f.title)));
-        }
-    }
-    blocks.push(Block::Section(Section {
-        title: "Data files".into(),
-        paragraphs: vec![format!(
-            "The tables' numbers as CSV (decimal strings with only verified digits), and beside every figure the data it \
-             plots (`figures/NAME.csv`: one row per plotted point, values to the {} digits verified for the plots).",
-            cfg.plot_digits
-        )],
-        items: Vec::new(),
-        links,
-    }));
-
+    let mut files = figure_files(&figs, cfg);
+    let blocks = page_blocks(&figs, &tabs, &fdata, cfg);
     // other tools' documents, rendered as pages of the report
     let mut pages: page::Pages = Vec::new();
     for (md, html, title) in DOCUMENTS {
@@ -321,7 +232,6 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
             pages.push((html.to_string(), title.to_string()));
         }
     }
-
     let intro = intro(cfg);
     let md = page::markdown(TITLE, &intro, &blocks, &pages);
     let html = page::html(TITLE, &intro, &blocks, &pages);
@@ -350,4 +260,103 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
         }
     }
     Ok(out)
+}
+
+/// A file of the report: its path in the directory and its bytes.
+type File = (std::path::PathBuf, Vec<u8>);
+
+/// Every figure's SVG, narrow SVG and CSV.
+fn figure_files(figs: &[plot::Figure], cfg: &Config) -> Vec<File> {
+    let mut files = Vec::new();
+    let sig = cfg.plot_digits as usize;
+    for f in figs {
+        files.push((
+            Path::new("figures").join(&f.file),
+            plot::render_layout(f, plot::Layout::Wide).into_bytes(),
+        ));
+        if let Some(n) = page::narrow_path(f) {
+            files.push((
+                n.into(),
+                plot::render_layout(f, plot::Layout::Narrow).into_bytes(),
+            ));
+        }
+        if let Some(c) = page::csv_path(f) {
+            files.push((c.into(), plot::figure_csv(f, sig).into_bytes()));
+        }
+    }
+    files
+}
+
+/// The page in order: the sections with their tables and figures, then the
+/// notes and the data files.
+fn page_blocks(
+    figs: &[plot::Figure],
+    tabs: &tables::Tables,
+    fdata: &friction::FrictionData,
+    cfg: &Config,
+) -> Vec<page::Block> {
+    use page::Block;
+    let with_prefix = |p: &str| -> Vec<Block> {
+        figs.iter()
+            .filter(|f| f.file.starts_with(p))
+            .cloned()
+            .map(Block::Figure)
+            .collect()
+    };
+    let table = |i: usize| tabs.tables.get(i).cloned().map(Block::Table);
+    let mut blocks = vec![Block::Heading("Sign conventions".into())];
+    blocks.extend(with_prefix("conventions.svg"));
+    blocks.push(Block::Heading("Tables".into()));
+    blocks.extend((0..2).filter_map(table));
+    blocks.push(Block::Heading(
+        "The main case: both contacts rolling".into(),
+    ));
+    // the tables after the first two, but the last (the parameter plane)
+    let last = tabs.tables.len().saturating_sub(1);
+    blocks.extend((2..last).filter_map(table));
+    blocks.extend(with_prefix("main_"));
+    blocks.push(Block::Heading("All contact models".into()));
+    blocks.extend(with_prefix("variants_"));
+    blocks.extend(with_prefix("variant_"));
+    blocks.push(Block::Heading("The parameter plane".into()));
+    blocks.extend((last.max(2)..tabs.tables.len()).filter_map(table));
+    blocks.extend(with_prefix("plane_"));
+    blocks.push(Block::Heading("Finite Coulomb friction".into()));
+    blocks.push(Block::Table(friction::table(fdata)));
+    blocks.extend(with_prefix("friction_"));
+    blocks.push(Block::Heading("Notes and data".into()));
+    blocks.push(Block::Section(tabs.notes.clone()));
+    blocks.push(Block::Section(data_files(figs, cfg)));
+    blocks
+}
+
+/// The section "Data files": the tables' CSV files and every figure's.
+fn data_files(figs: &[plot::Figure], cfg: &Config) -> page::Section {
+    let mut links = vec![
+        (
+            "separation.csv".to_string(),
+            "separation.csv: θₛ, tₛ and F₂₁ at separation per contact model and start, with the closed forms"
+                .to_string(),
+        ),
+        (
+            "plane.csv".to_string(),
+            "plane.csv: θₛ at every point of the parameter plane computed for the figures and the table"
+                .to_string(),
+        ),
+    ];
+    for f in figs {
+        if let Some(c) = page::csv_path(f) {
+            links.push((c.clone(), format!("{c}: the data of “{}”", f.title)));
+        }
+    }
+    page::Section {
+        title: "Data files".into(),
+        paragraphs: vec![format!(
+            "The tables' numbers as CSV (decimal strings with only verified digits), and beside every figure the data it \
+             plots (`figures/NAME.csv`: one row per plotted point, values to the {} digits verified for the plots).",
+            cfg.plot_digits
+        )],
+        items: Vec::new(),
+        links,
+    }
 }

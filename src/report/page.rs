@@ -145,80 +145,80 @@ pub fn markdown(title: &str, intro: &[String], blocks: &[Block], pages: &Pages) 
     for b in blocks {
         match b {
             Block::Heading(h) => s.push_str(&format!("## {h}\n\n")),
-            Block::Table(t) => {
-                s.push_str(&format!("<a id=\"{}\"></a>\n\n### {}\n\n", t.id, t.title));
-                if !t.intro.is_empty() {
-                    s.push_str(&t.intro);
-                    s.push_str("\n\n");
-                }
-                s.push_str(&format!(
-                    "| {} |\n",
-                    t.header
-                        .iter()
-                        .map(|h| cell_md(h))
-                        .collect::<Vec<_>>()
-                        .join(" | ")
-                ));
-                let align: Vec<&str> = (0..t.header.len())
-                    .map(|c| {
-                        if t.rows
-                            .iter()
-                            .any(|r| r.get(c).is_some_and(|x| x.starts_with('=')))
-                        {
-                            "--:|"
-                        } else {
-                            "---|"
-                        }
-                    })
-                    .collect();
-                s.push_str(&format!("|{}\n", align.concat()));
-                for r in &t.rows {
-                    s.push_str(&format!(
-                        "| {} |\n",
-                        r.iter().map(|c| cell_md(c)).collect::<Vec<_>>().join(" | ")
-                    ));
-                }
-                s.push('\n');
-            }
-            Block::Figure(f) => {
-                s.push_str(&format!(
-                    "<a id=\"{}\"></a>\n\n### {}\n\n",
-                    fig_id(f),
-                    f.title
-                ));
-                s.push_str(&format!("![{}]({})\n\n", f.title, figure_path(f)));
-                s.push_str(&format!("*{}*", f.caption));
-                let mut extra = Vec::new();
-                if let Some(c) = csv_path(f) {
-                    extra.push(format!("[data (CSV)]({c})"));
-                }
-                if let Some(n) = narrow_path(f) {
-                    extra.push(format!("[narrow layout]({n})"));
-                }
-                if !extra.is_empty() {
-                    s.push_str(&format!(" {}", extra.join(" · ")));
-                }
-                s.push_str("\n\n");
-            }
-            Block::Section(sec) => {
-                s.push_str(&format!("### {}\n\n", sec.title));
-                for p in &sec.paragraphs {
-                    s.push_str(p);
-                    s.push_str("\n\n");
-                }
-                for i in &sec.items {
-                    s.push_str(&format!("- {i}\n"));
-                }
-                for (href, text) in &sec.links {
-                    s.push_str(&format!("- [{text}]({href})\n"));
-                }
-                if !sec.items.is_empty() || !sec.links.is_empty() {
-                    s.push('\n');
-                }
-            }
+            Block::Table(t) => table_md(&mut s, t),
+            Block::Figure(f) => figure_md(&mut s, f),
+            Block::Section(sec) => section_md(&mut s, sec),
         }
     }
     s
+}
+
+fn table_md(s: &mut String, t: &Table) {
+    s.push_str(&format!("<a id=\"{}\"></a>\n\n### {}\n\n", t.id, t.title));
+    if !t.intro.is_empty() {
+        s.push_str(&t.intro);
+        s.push_str("\n\n");
+    }
+    let row = |cells: &[String]| {
+        let c: Vec<String> = cells.iter().map(|c| cell_md(c)).collect();
+        format!("| {} |\n", c.join(" | "))
+    };
+    s.push_str(&row(&t.header));
+    let align: Vec<&str> = (0..t.header.len())
+        .map(|c| {
+            if t.rows
+                .iter()
+                .any(|r| r.get(c).is_some_and(|x| x.starts_with('=')))
+            {
+                "--:|"
+            } else {
+                "---|"
+            }
+        })
+        .collect();
+    s.push_str(&format!("|{}\n", align.concat()));
+    for r in &t.rows {
+        s.push_str(&row(r));
+    }
+    s.push('\n');
+}
+
+fn figure_md(s: &mut String, f: &Figure) {
+    s.push_str(&format!(
+        "<a id=\"{}\"></a>\n\n### {}\n\n",
+        fig_id(f),
+        f.title
+    ));
+    s.push_str(&format!("![{}]({})\n\n", f.title, figure_path(f)));
+    s.push_str(&format!("*{}*", f.caption));
+    let mut extra = Vec::new();
+    if let Some(c) = csv_path(f) {
+        extra.push(format!("[data (CSV)]({c})"));
+    }
+    if let Some(n) = narrow_path(f) {
+        extra.push(format!("[narrow layout]({n})"));
+    }
+    if !extra.is_empty() {
+        s.push_str(&format!(" {}", extra.join(" · ")));
+    }
+    s.push_str("\n\n");
+}
+
+fn section_md(s: &mut String, sec: &Section) {
+    s.push_str(&format!("### {}\n\n", sec.title));
+    for p in &sec.paragraphs {
+        s.push_str(p);
+        s.push_str("\n\n");
+    }
+    for i in &sec.items {
+        s.push_str(&format!("- {i}\n"));
+    }
+    for (href, text) in &sec.links {
+        s.push_str(&format!("- [{text}]({href})\n"));
+    }
+    if !sec.items.is_empty() || !sec.links.is_empty() {
+        s.push('\n');
+    }
 }
 
 /// The page's style: readable from phone width (400 px) to desktop; numbers
@@ -523,6 +523,142 @@ fn md_row(line: &str) -> Vec<String> {
     cells
 }
 
+/// Whether `t` starts a numbered list item ("12. …").
+fn numbered_item(t: &str) -> bool {
+    t.split_once(". ")
+        .is_some_and(|(a, _)| !a.is_empty() && a.chars().all(|c| c.is_ascii_digit()))
+}
+
+/// A fenced code block starting at line `i`; returns the line after it.
+fn md_code(lines: &[&str], mut i: usize, body: &mut String) -> usize {
+    let mut code = String::new();
+    i += 1;
+    while i < lines.len() && !lines[i].trim().starts_with("```") {
+        code.push_str(&esc(lines[i]));
+        code.push('\n');
+        i += 1;
+    }
+    body.push_str(&format!("<pre><code>{code}</code></pre>\n"));
+    i + 1
+}
+
+/// A heading of level `h` with an anchor made of its text.
+fn md_heading(t: &str, h: usize, body: &mut String) {
+    let text = t[h + 1..].trim();
+    let id: String = text
+        .to_lowercase()
+        .chars()
+        .map(|c| if c.is_alphanumeric() { c } else { '-' })
+        .collect();
+    body.push_str(&format!(
+        "<h{h} id=\"{}\">{}</h{h}>\n",
+        esc(id.trim_matches('-')),
+        md_inline(text)
+    ));
+}
+
+/// A table starting at line `i`; returns the line after it.
+fn md_table(lines: &[&str], mut i: usize, body: &mut String) -> usize {
+    let header = md_row(lines[i].trim());
+    let mut rows = Vec::new();
+    i += 1;
+    if i < lines.len() && lines[i].trim().starts_with("|") && lines[i].contains("--") {
+        i += 1;
+    }
+    while i < lines.len() && lines[i].trim().starts_with('|') {
+        rows.push(md_row(lines[i]));
+        i += 1;
+    }
+    body.push_str("<table>\n<thead><tr>");
+    for h in &header {
+        body.push_str(&format!("<th>{}</th>", md_inline(h)));
+    }
+    body.push_str("</tr></thead>\n<tbody>\n");
+    for r in rows {
+        body.push_str("<tr>");
+        for c in r {
+            body.push_str(&format!("<td>{}</td>", md_inline(&c)));
+        }
+        body.push_str("</tr>\n");
+    }
+    body.push_str("</tbody></table>\n");
+    i
+}
+
+/// One list item starting at line `i`, with its continuation lines: its
+/// text and the line after it.
+fn md_item(lines: &[&str], mut i: usize, bullet: bool) -> (String, usize) {
+    // keep trailing spaces: two of them are a hard line break
+    let full = lines[i].trim_start();
+    let mut item = if bullet {
+        full[2..].to_string()
+    } else {
+        full.split_once(". ")
+            .map(|x| x.1)
+            .unwrap_or(full)
+            .to_string()
+    };
+    i += 1;
+    // continuation lines (indented, or not blank and not a new item)
+    while i < lines.len() {
+        let c = lines[i];
+        if c.trim().is_empty() {
+            // a blank line inside an item continues only if indented text follows
+            if i + 1 < lines.len() && lines[i + 1].starts_with("   ") {
+                item.push_str("\n\n");
+                i += 1;
+                continue;
+            }
+            break;
+        }
+        if !c.starts_with("  ") {
+            break;
+        }
+        let hard = item.ends_with("  ");
+        item = item.trim_end().to_string();
+        item.push_str(if hard { "<br>" } else { " " });
+        item.push_str(c.trim());
+        i += 1;
+    }
+    (item, i)
+}
+
+/// A bulleted or numbered list starting at line `i`; returns the line after it.
+fn md_list(lines: &[&str], mut i: usize, bullet: bool, body: &mut String) -> usize {
+    let tag = if bullet { "ul" } else { "ol" };
+    body.push_str(&format!("<{tag}>\n"));
+    while i < lines.len() {
+        let t = lines[i].trim();
+        let is_item = if bullet {
+            t.starts_with("- ") || t.starts_with("* ")
+        } else {
+            numbered_item(t)
+        };
+        if !is_item || lines[i].starts_with("  ") {
+            break;
+        }
+        let (item, next) = md_item(lines, i, bullet);
+        i = next;
+        let html = md_inline(item.trim_end()).replace("&lt;br&gt;", "<br>");
+        body.push_str(&format!("<li>{html}</li>\n"));
+        while i < lines.len() && lines[i].trim().is_empty() {
+            // blank lines between items of one list
+            let next = lines.get(i + 1).map(|x| x.trim()).unwrap_or("");
+            let more = if bullet {
+                next.starts_with("- ")
+            } else {
+                numbered_item(next)
+            };
+            if !more {
+                break;
+            }
+            i += 1;
+        }
+    }
+    body.push_str(&format!("</{tag}>\n"));
+    i
+}
+
 /// A Markdown document (headings, paragraphs, lists, tables, code blocks,
 /// inline code, bold, emphasis, links) as an HTML page of the report, with a
 /// link back to the index.
@@ -546,144 +682,27 @@ pub fn markdown_page(md: &str, fallback_title: &str) -> String {
     while i < lines.len() {
         let l = lines[i];
         let t = l.trim();
-        if t.is_empty() {
-            flush(&mut para, &mut body);
-            i += 1;
-            continue;
-        }
-        if t.starts_with("```") {
-            flush(&mut para, &mut body);
-            let mut code = String::new();
-            i += 1;
-            while i < lines.len() && !lines[i].trim().starts_with("```") {
-                code.push_str(&esc(lines[i]));
-                code.push('\n');
-                i += 1;
-            }
-            body.push_str(&format!("<pre><code>{code}</code></pre>\n"));
-            i += 1;
-            continue;
-        }
-        if let Some(h) = (1..=4).find(|&n| t.starts_with(&format!("{} ", "#".repeat(n)))) {
-            flush(&mut para, &mut body);
-            let text = t[h + 1..].trim();
-            let id: String = text
-                .to_lowercase()
-                .chars()
-                .map(|c| if c.is_alphanumeric() { c } else { '-' })
-                .collect();
-            body.push_str(&format!(
-                "<h{h} id=\"{}\">{}</h{h}>\n",
-                esc(id.trim_matches('-')),
-                md_inline(text)
-            ));
-            i += 1;
-            continue;
-        }
-        if t.starts_with('|') {
-            flush(&mut para, &mut body);
-            let header = md_row(t);
-            let mut rows = Vec::new();
-            i += 1;
-            if i < lines.len() && lines[i].trim().starts_with("|") && lines[i].contains("--") {
-                i += 1;
-            }
-            while i < lines.len() && lines[i].trim().starts_with('|') {
-                rows.push(md_row(lines[i]));
-                i += 1;
-            }
-            body.push_str("<table>\n<thead><tr>");
-            for h in &header {
-                body.push_str(&format!("<th>{}</th>", md_inline(h)));
-            }
-            body.push_str("</tr></thead>\n<tbody>\n");
-            for r in rows {
-                body.push_str("<tr>");
-                for c in r {
-                    body.push_str(&format!("<td>{}</td>", md_inline(&c)));
-                }
-                body.push_str("</tr>\n");
-            }
-            body.push_str("</tbody></table>\n");
-            continue;
-        }
+        let heading = (1..=4).find(|&n| t.starts_with(&format!("{} ", "#".repeat(n))));
         let bullet = t.starts_with("- ") || t.starts_with("* ");
-        let numbered = t
-            .split_once(". ")
-            .is_some_and(|(a, _)| !a.is_empty() && a.chars().all(|c| c.is_ascii_digit()));
-        if (bullet || numbered) && !l.starts_with("  ") {
+        let list = (bullet || numbered_item(t)) && !l.starts_with("  ");
+        if t.is_empty() || t.starts_with("```") || heading.is_some() || t.starts_with('|') || list {
             flush(&mut para, &mut body);
-            let tag = if bullet { "ul" } else { "ol" };
-            body.push_str(&format!("<{tag}>\n"));
-            while i < lines.len() {
-                let t = lines[i].trim();
-                let is_item = if bullet {
-                    t.starts_with("- ") || t.starts_with("* ")
-                } else {
-                    t.split_once(". ").is_some_and(|(a, _)| {
-                        !a.is_empty() && a.chars().all(|c| c.is_ascii_digit())
-                    })
-                };
-                if !is_item || lines[i].starts_with("  ") {
-                    break;
-                }
-                // keep trailing spaces: two of them are a hard line break
-                let full = lines[i].trim_start();
-                let mut item = if bullet {
-                    full[2..].to_string()
-                } else {
-                    full.split_once(". ")
-                        .map(|x| x.1)
-                        .unwrap_or(full)
-                        .to_string()
-                };
-                i += 1;
-                // continuation lines (indented, or not blank and not a new item)
-                while i < lines.len() {
-                    let c = lines[i];
-                    if c.trim().is_empty() {
-                        // a blank line inside an item continues only if indented text follows
-                        if i + 1 < lines.len() && lines[i + 1].starts_with("   ") {
-                            item.push_str("\n\n");
-                            i += 1;
-                            continue;
-                        }
-                        break;
-                    }
-                    if c.starts_with("  ") {
-                        let hard = item.ends_with("  ");
-                        item = item.trim_end().to_string();
-                        item.push_str(if hard { "<br>" } else { " " });
-                        item.push_str(c.trim());
-                        i += 1;
-                    } else {
-                        break;
-                    }
-                }
-                let html = md_inline(item.trim_end()).replace("&lt;br&gt;", "<br>");
-                body.push_str(&format!("<li>{html}</li>\n"));
-                while i < lines.len() && lines[i].trim().is_empty() {
-                    // blank lines between items of one list
-                    let next = lines.get(i + 1).map(|x| x.trim()).unwrap_or("");
-                    let more = if bullet {
-                        next.starts_with("- ")
-                    } else {
-                        next.split_once(". ").is_some_and(|(a, _)| {
-                            !a.is_empty() && a.chars().all(|c| c.is_ascii_digit())
-                        })
-                    };
-                    if more {
-                        i += 1;
-                    } else {
-                        break;
-                    }
-                }
-            }
-            body.push_str(&format!("</{tag}>\n"));
-            continue;
         }
-        para.push(md_inline(t));
-        i += 1;
+        i = if t.is_empty() {
+            i + 1
+        } else if t.starts_with("```") {
+            md_code(&lines, i, &mut body)
+        } else if let Some(h) = heading {
+            md_heading(t, h, &mut body);
+            i + 1
+        } else if t.starts_with('|') {
+            md_table(&lines, i, &mut body)
+        } else if list {
+            md_list(&lines, i, bullet, &mut body)
+        } else {
+            para.push(md_inline(t));
+            i + 1
+        };
     }
     flush(&mut para, &mut body);
     let mut s = head(&title);

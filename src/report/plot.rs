@@ -213,6 +213,21 @@ impl Marker {
             label: None,
         }
     }
+
+    /// A filled marker of `shape`, with a text beside it if `label`.
+    pub fn shaped(
+        shape: Shape,
+        at: (f64, f64),
+        color: Rgb,
+        title: String,
+        label: Option<String>,
+    ) -> Self {
+        Marker {
+            shape,
+            label,
+            ..Marker::new(at, color, title)
+        }
+    }
 }
 
 /// A vertical or horizontal reference line across the plot area, with a label
@@ -253,6 +268,30 @@ pub struct LegendEntry {
     pub shape: Option<Shape>,
     /// Whether the marker sample is filled.
     pub filled: bool,
+}
+
+impl LegendEntry {
+    /// A line sample.
+    pub fn line(label: impl Into<String>, color: Rgb, dash: Dash) -> Self {
+        LegendEntry {
+            label: label.into(),
+            color,
+            dash: Some(dash),
+            shape: None,
+            filled: false,
+        }
+    }
+
+    /// A marker sample, filled or hollow.
+    pub fn marker(label: impl Into<String>, color: Rgb, shape: Shape, filled: bool) -> Self {
+        LegendEntry {
+            label: label.into(),
+            color,
+            dash: None,
+            shape: Some(shape),
+            filled,
+        }
+    }
 }
 
 /// A raster image over a rectangle of the chart (a heat map), drawn smooth.
@@ -844,9 +883,9 @@ impl Svg {
         } else {
             ("none".to_string(), hex(color), 2.0)
         };
-        let d = match shape {
+        let t = Svg::title(title);
+        match shape {
             Shape::Circle => {
-                let t = Svg::title(title);
                 let _ = writeln!(
                     self.s,
                     "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\">{t}</circle>",
@@ -855,49 +894,9 @@ impl Svg {
                     n(r),
                     n(sw)
                 );
-                return;
-            }
-            Shape::Square => {
-                let a = r * 0.88;
-                format!(
-                    "M{} {}h{}v{}h{}z",
-                    n(x - a),
-                    n(y - a),
-                    n(2.0 * a),
-                    n(2.0 * a),
-                    n(-2.0 * a)
-                )
-            }
-            Shape::Triangle | Shape::TriangleDown => {
-                let s = if shape == Shape::Triangle { 1.0 } else { -1.0 };
-                let a = r * 1.15;
-                format!(
-                    "M{} {}L{} {}L{} {}z",
-                    n(x),
-                    n(y - s * a),
-                    n(x + a * 0.866),
-                    n(y + s * a * 0.5),
-                    n(x - a * 0.866),
-                    n(y + s * a * 0.5)
-                )
-            }
-            Shape::Diamond => {
-                let a = r * 1.2;
-                format!(
-                    "M{} {}L{} {}L{} {}L{} {}z",
-                    n(x),
-                    n(y - a),
-                    n(x + a),
-                    n(y),
-                    n(x),
-                    n(y + a),
-                    n(x - a),
-                    n(y)
-                )
             }
             Shape::Cross => {
                 let a = r * 0.85;
-                let t = Svg::title(title);
                 let _ = writeln!(
                     self.s,
                     "<path d=\"M{} {}L{} {}M{} {}L{} {}\" stroke=\"{}\" stroke-width=\"2.2\">{t}</path>",
@@ -911,15 +910,61 @@ impl Svg {
                     n(y - a),
                     hex(color)
                 );
-                return;
             }
-        };
-        let t = Svg::title(title);
-        let _ = writeln!(
-            self.s,
-            "<path d=\"{d}\" fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\" stroke-linejoin=\"round\">{t}</path>",
-            n(sw)
-        );
+            _ => {
+                let d = shape_path(shape, x, y, r);
+                let _ = writeln!(
+                    self.s,
+                    "<path d=\"{d}\" fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\" stroke-linejoin=\"round\">{t}</path>",
+                    n(sw)
+                );
+            }
+        }
+    }
+}
+
+/// The outline of a square, triangle or diamond marker as an SVG path.
+fn shape_path(shape: Shape, x: f64, y: f64, r: f64) -> String {
+    match shape {
+        Shape::Square => {
+            let a = r * 0.88;
+            format!(
+                "M{} {}h{}v{}h{}z",
+                n(x - a),
+                n(y - a),
+                n(2.0 * a),
+                n(2.0 * a),
+                n(-2.0 * a)
+            )
+        }
+        Shape::Triangle | Shape::TriangleDown => {
+            let s = if shape == Shape::Triangle { 1.0 } else { -1.0 };
+            let a = r * 1.15;
+            format!(
+                "M{} {}L{} {}L{} {}z",
+                n(x),
+                n(y - s * a),
+                n(x + a * 0.866),
+                n(y + s * a * 0.5),
+                n(x - a * 0.866),
+                n(y + s * a * 0.5)
+            )
+        }
+        // a diamond (circles and crosses are not paths of this kind)
+        _ => {
+            let a = r * 1.2;
+            format!(
+                "M{} {}L{} {}L{} {}L{} {}z",
+                n(x),
+                n(y - a),
+                n(x + a),
+                n(y),
+                n(x),
+                n(y + a),
+                n(x - a),
+                n(y)
+            )
+        }
     }
 }
 
@@ -1168,7 +1213,16 @@ impl Frame {
     }
 }
 
-fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
+/// The ticks of a panel's axes and their texts.
+struct Axes {
+    xticks: Vec<f64>,
+    xdec: usize,
+    yticks: Vec<f64>,
+    ylabels: Vec<String>,
+}
+
+/// The pixel frame and the ticks of panel `p` in the box (x0, y0, w, h).
+fn panel_frame(p: &Panel, x0: f64, y0: f64, w: f64, h: f64) -> (Frame, Axes) {
     let ((dx0, dx1), (dy0, dy1)) = data_range(p);
     let log = p.xscale == Scale::Log;
     let tx = |x: f64| if log { x.log10() } else { x };
@@ -1204,9 +1258,21 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
         y: (ylo, yhi),
         log,
     };
+    let axes = Axes {
+        xticks,
+        xdec,
+        yticks,
+        ylabels,
+    };
+    (f, axes)
+}
+
+fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
+    let (f, axes) = panel_frame(p, x0, y0, w, h);
     if !p.title.is_empty() {
+        let x = f.ax + f.aw / 2.0;
         svg.text(
-            f.ax + f.aw / 2.0,
+            x,
             y0 + 19.0,
             &p.title,
             TITLE_PX,
@@ -1216,7 +1282,32 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
             false,
         );
     }
-    // raster and cells
+    draw_raster(svg, p, &f);
+    draw_cells(svg, p, &f);
+    draw_grid(svg, &f, &axes);
+    draw_ref_lines(svg, p, &f);
+    draw_curves(svg, p, &f);
+    draw_periodic_markers(svg, p, &f);
+    draw_event_markers(svg, p, &f);
+    draw_direct_labels(svg, p, &f);
+    draw_halo_labels(svg, p, &f);
+    for (i, t) in p.notes.iter().enumerate() {
+        let y = f.ay + 18.0 + 16.0 * i as f64;
+        svg.text(
+            f.ax + 8.0,
+            y,
+            t,
+            NOTE_PX,
+            "start",
+            (40, 40, 40),
+            true,
+            false,
+        );
+    }
+    draw_axes(svg, p, &f, &axes, x0, y0, h);
+}
+
+fn draw_raster(svg: &mut Svg, p: &Panel, f: &Frame) {
     if let Some(r) = &p.raster {
         let (px0, px1) = (f.cx(r.x.0), f.cx(r.x.1));
         let (py0, py1) = (f.py(r.y.1), f.py(r.y.0));
@@ -1230,9 +1321,12 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
             base64(&png(r.w, r.h, &r.pixels))
         );
     }
+}
+
+fn draw_cells(svg: &mut Svg, p: &Panel, f: &Frame) {
     for c in &p.cells {
-        let (a0, a1) = (tx(c.lo.0).max(f.x.0), tx(c.hi.0).min(f.x.1));
-        let (b0, b1) = (c.lo.1.max(ylo), c.hi.1.min(yhi));
+        let (a0, a1) = (f.tx(c.lo.0).max(f.x.0), f.tx(c.hi.0).min(f.x.1));
+        let (b0, b1) = (c.lo.1.max(f.y.0), c.hi.1.min(f.y.1));
         if a0 < a1 && b0 < b1 {
             let (px0, px1) = (f.cx(a0), f.cx(a1));
             let (py0, py1) = (f.py(b1), f.py(b0));
@@ -1249,50 +1343,147 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
             );
         }
     }
-    // grid
-    for &t in &xticks {
+}
+
+fn draw_grid(svg: &mut Svg, f: &Frame, axes: &Axes) {
+    for &t in &axes.xticks {
         let x = f.cx(t);
         svg.line((x, f.ay), (x, f.ay + f.ah), GRID, 1.0, Dash::Solid);
     }
-    for &t in &yticks {
+    for &t in &axes.yticks {
         let y = f.py(t);
         svg.line((f.ax, y), (f.ax + f.aw, y), GRID, 1.0, Dash::Solid);
     }
-    // reference lines
+}
+
+/// A text's box in pixels: (x0, x1, y0, y1) for a baseline at `y`.
+fn text_box(x: f64, y: f64, w: f64, anchor: &str) -> (f64, f64, f64, f64) {
+    let x0 = match anchor {
+        "end" => x - w,
+        "middle" => x - w / 2.0,
+        _ => x,
+    };
+    (x0, x0 + w, y - NOTE_PX * 0.8, y + NOTE_PX * 0.25)
+}
+
+/// The panel's curves in pixels, as drawn (clipped to the plot area).
+fn curve_pixels(p: &Panel, f: &Frame) -> Vec<Vec<(f64, f64)>> {
+    let mut out = Vec::new();
+    for s in &p.series {
+        let pts: Vec<(f64, f64)> = s.points.iter().map(|&(x, y)| (f.tx(x), y)).collect();
+        for piece in clip_polyline(&pts, f.x.0, f.x.1, f.y.0, f.y.1) {
+            out.push(piece.iter().map(|&(c, y)| (f.cx(c), f.py(y))).collect());
+        }
+    }
+    out
+}
+
+/// Whether a box (x0, x1, y0, y1) in pixels, widened by a small margin,
+/// crosses one of the curves or comes near one of the marked points.
+fn box_hits(b: (f64, f64, f64, f64), curves: &[Vec<(f64, f64)>], points: &[(f64, f64)]) -> bool {
+    let m = 3.0;
+    let (x0, x1, y0, y1) = (b.0 - m, b.1 + m, b.2 - m, b.3 + m);
+    let near = |q: &(f64, f64)| {
+        let dx = (x0 - q.0).max(q.0 - x1).max(0.0);
+        let dy = (y0 - q.1).max(q.1 - y1).max(0.0);
+        dx.hypot(dy) < 7.0
+    };
+    points.iter().any(near)
+        || curves.iter().any(|c| {
+            c.windows(2)
+                .any(|w| clip_segment(w[0], w[1], x0, x1, y0, y1).is_some())
+        })
+}
+
+/// What a label must not cover: polylines and marked points, in pixels.
+type Obstacles = (Vec<Vec<(f64, f64)>>, Vec<(f64, f64)>);
+
+/// What a label placed in the plot area must not cover: the curves (and
+/// horizontal reference lines) as polylines in pixels, and the marked points
+/// (event markers, curves' ends).
+fn obstacles(p: &Panel, f: &Frame) -> Obstacles {
+    let mut curves = curve_pixels(p, f);
+    for l in p.lines.iter().filter(|l| !l.vertical) {
+        if l.at >= f.y.0 && l.at <= f.y.1 {
+            let y = f.py(l.at);
+            curves.push(vec![(f.ax, y), (f.ax + f.aw, y)]);
+        }
+    }
+    let points = p
+        .markers
+        .iter()
+        .map(|m| m.at)
+        .chain(p.series.iter().filter_map(|s| s.points.last().copied()))
+        .filter(|&(x, y)| f.inside(x, y))
+        .map(|(x, y)| (f.px(x), f.py(y)))
+        .collect();
+    (curves, points)
+}
+
+/// Where the label of a vertical reference line at pixel `x` goes: at the
+/// top, right of the line if it fits, else left of it; if a curve or a
+/// marker is in the way there, the first free place down the line (right
+/// side first), else the top after all. (baseline y, x, anchor)
+fn vertical_label_place(
+    f: &Frame,
+    x: f64,
+    label: &str,
+    obstacles: &Obstacles,
+) -> (f64, f64, &'static str) {
+    let hits = |b| box_hits(b, &obstacles.0, &obstacles.1);
+    let w = text_width(label, NOTE_PX);
+    let fits_right = f.ax + f.aw - x > w + 8.0;
+    let first = if fits_right {
+        (x + 4.0, "start")
+    } else {
+        (x - 4.0, "end")
+    };
+    let top = f.ay + 14.0;
+    if !hits(text_box(first.0, top, w, first.1)) {
+        return (top, first.0, first.1);
+    }
+    let sides: Vec<(f64, &'static str)> = if fits_right {
+        vec![(x + 4.0, "start"), (x - 4.0, "end")]
+    } else {
+        vec![(x - 4.0, "end")]
+    };
+    let step = NOTE_PX + 3.0;
+    let mut y = top;
+    while y <= f.ay + f.ah - 4.0 {
+        for &(sx, anchor) in &sides {
+            let b = text_box(sx, y, w, anchor);
+            if b.0 >= f.ax && !hits(b) {
+                return (y, sx, anchor);
+            }
+        }
+        y += step;
+    }
+    (top, first.0, first.1)
+}
+
+fn draw_ref_lines(svg: &mut Svg, p: &Panel, f: &Frame) {
+    let obstacles = obstacles(p, f);
     for l in &p.lines {
         if l.vertical {
-            if !f.inside(l.at, ylo) {
+            if !f.inside(l.at, f.y.0) {
                 continue;
             }
             let x = f.px(l.at);
             svg.line((x, f.ay), (x, f.ay + f.ah), l.color, 1.3, l.dash);
             if !l.label.is_empty() {
-                let right_room = f.ax + f.aw - x;
-                let (tx_, anchor) = if right_room > text_width(&l.label, NOTE_PX) + 8.0 {
-                    (x + 4.0, "start")
-                } else {
-                    (x - 4.0, "end")
-                };
-                svg.text(
-                    tx_,
-                    f.ay + 14.0,
-                    &l.label,
-                    NOTE_PX,
-                    anchor,
-                    l.color,
-                    true,
-                    false,
-                );
+                let (y, tx_, anchor) = vertical_label_place(f, x, &l.label, &obstacles);
+                svg.text(tx_, y, &l.label, NOTE_PX, anchor, l.color, true, false);
             }
         } else {
-            if l.at < ylo || l.at > yhi {
+            if l.at < f.y.0 || l.at > f.y.1 {
                 continue;
             }
             let y = f.py(l.at);
             svg.line((f.ax, y), (f.ax + f.aw, y), l.color, 1.0, l.dash);
             if !l.label.is_empty() {
+                let x = f.ax + f.aw - 4.0;
                 svg.text(
-                    f.ax + f.aw - 4.0,
+                    x,
                     y - 4.0,
                     &l.label,
                     NOTE_PX - 1.0,
@@ -1304,20 +1495,25 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
             }
         }
     }
-    // curves
+}
+
+fn draw_curves(svg: &mut Svg, p: &Panel, f: &Frame) {
     for s in &p.series {
-        let pts: Vec<(f64, f64)> = s.points.iter().map(|&(x, y)| (tx(x), y)).collect();
+        let pts: Vec<(f64, f64)> = s.points.iter().map(|&(x, y)| (f.tx(x), y)).collect();
         let title = if s.label.is_empty() {
             String::new()
         } else {
             s.label.replace('\n', " ")
         };
-        for piece in clip_polyline(&pts, f.x.0, f.x.1, ylo, yhi) {
+        for piece in clip_polyline(&pts, f.x.0, f.x.1, f.y.0, f.y.1) {
             let px: Vec<(f64, f64)> = piece.iter().map(|&(c, y)| (f.cx(c), f.py(y))).collect();
             svg.polyline(&px, s.color, s.width, s.dash, &title);
         }
     }
-    // periodic markers, never on (or under) an event marker or a curve's end
+}
+
+/// Periodic markers, never on (or under) an event marker or a curve's end.
+fn draw_periodic_markers(svg: &mut Svg, p: &Panel, f: &Frame) {
     let taken: Vec<(f64, f64)> = p
         .markers
         .iter()
@@ -1330,41 +1526,32 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
         .collect();
     let free = |x: f64, y: f64| taken.iter().all(|q| (q.0 - x).hypot(q.1 - y) > 11.0);
     for s in &p.series {
-        if let (Some(shape), true) = (s.shape, s.every > 0) {
-            let last = s.points.len().saturating_sub(1);
-            for (i, &(x, y)) in s.points.iter().enumerate() {
-                if i >= s.phase
-                    && (i - s.phase) % s.every == 0
-                    && i + s.every / 2 < last
-                    && f.inside(x, y)
-                    && free(f.px(x), f.py(y))
-                {
-                    svg.marker(
-                        f.px(x),
-                        f.py(y),
-                        4.0,
-                        shape,
-                        s.color,
-                        false,
-                        &s.label.replace('\n', " "),
-                    );
-                }
+        let Some(shape) = s.shape.filter(|_| s.every > 0) else {
+            continue;
+        };
+        let last = s.points.len().saturating_sub(1);
+        let title = s.label.replace('\n', " ");
+        for (i, &(x, y)) in s.points.iter().enumerate() {
+            if i >= s.phase
+                && (i - s.phase) % s.every == 0
+                && i + s.every / 2 < last
+                && f.inside(x, y)
+                && free(f.px(x), f.py(y))
+            {
+                svg.marker(f.px(x), f.py(y), 4.0, shape, s.color, false, &title);
             }
         }
     }
-    // end markers (hollow: several at one point stay visible)
+}
+
+/// End markers (hollow: several at one point stay visible), then the
+/// event markers with their labels.
+fn draw_event_markers(svg: &mut Svg, p: &Panel, f: &Frame) {
     for s in &p.series {
         if let (Some(t), Some(&(x, y))) = (&s.end, s.points.last()) {
             if f.inside(x, y) {
-                svg.marker(
-                    f.px(x),
-                    f.py(y),
-                    6.0,
-                    s.shape.unwrap_or(Shape::Circle),
-                    s.color,
-                    false,
-                    t,
-                );
+                let shape = s.shape.unwrap_or(Shape::Circle);
+                svg.marker(f.px(x), f.py(y), 6.0, shape, s.color, false, t);
             }
         }
     }
@@ -1391,37 +1578,139 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
             }
         }
     }
-    // direct labels at the curves' ends, pushed apart vertically
-    let mut direct: Vec<(f64, f64, String, Rgb)> = p
+}
+
+/// A direct label to place: where it wants to be and where it goes.
+struct Placed {
+    /// Where the label starts next to its curve's end.
+    x0: f64,
+    x: f64,
+    want: f64,
+    y: f64,
+    w: f64,
+}
+
+/// Spreads labels (sorted by where they want to be) vertically so that no
+/// two that overlap in x are closer than `gap`. Each label in turn is moved
+/// down until it is free; if that leaves one outside [lo, hi] (or two still
+/// clash), the labels are placed again: those that clash are stacked in a
+/// block centred on their wishes and kept inside [lo, hi], written as one
+/// column right of the block's rightmost curve end, and any two blocks that
+/// then clash are merged with those between them.
+fn spread_labels(items: &mut [Placed], gap: f64, lo: f64, hi: f64) {
+    let clash = |a: &Placed, b: &Placed| {
+        (a.y - b.y).abs() < gap - 1e-9 && a.x < b.x + b.w && b.x < a.x + a.w
+    };
+    let fine = |items: &[Placed]| {
+        items.iter().all(|d| d.y >= lo && d.y <= hi)
+            && (0..items.len()).all(|i| (i + 1..items.len()).all(|j| !clash(&items[i], &items[j])))
+    };
+    // first the simple way: each label in turn moved down until it is free
+    for i in 0..items.len() {
+        let mut tries = 0;
+        while (0..i).any(|j| clash(&items[i], &items[j])) && tries < 20 {
+            items[i].y += gap / 2.0;
+            tries += 1;
+        }
+    }
+    if fine(items) {
+        return;
+    }
+    let mut order: Vec<usize> = (0..items.len()).collect();
+    order.sort_by(|&a, &b| items[a].want.total_cmp(&items[b].want));
+    // blocks of consecutive labels (in the order of their wishes)
+    let mut blocks: Vec<Vec<usize>> = order.iter().map(|&i| vec![i]).collect();
+    loop {
+        for b in &mut blocks {
+            // leaders that do not cross: of two ends at one height, the left
+            // one gets the upper label
+            let x = b.iter().map(|&i| items[i].x0).fold(f64::MIN, f64::max);
+            let key = |i: usize| items[i].want - 0.5 * (x - items[i].x0);
+            b.sort_by(|&i, &j| key(i).total_cmp(&key(j)));
+            let n = b.len() as f64;
+            let mean = b
+                .iter()
+                .enumerate()
+                .map(|(k, &i)| items[i].want - k as f64 * gap)
+                .sum::<f64>()
+                / n;
+            let top = mean.clamp(lo, (hi - (n - 1.0) * gap).max(lo));
+            // a block is one column, right of its rightmost curve end
+            for (k, &i) in b.iter().enumerate() {
+                items[i].y = top + k as f64 * gap;
+                items[i].x = if n > 1.0 { x } else { items[i].x0 };
+            }
+        }
+        // any two blocks that clash are merged with every block between them
+        let n = blocks.len();
+        let merge = (0..n)
+            .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+            .find(|&(i, j)| {
+                blocks[i]
+                    .iter()
+                    .any(|&a| blocks[j].iter().any(|&b| clash(&items[a], &items[b])))
+            });
+        match merge {
+            Some((i, j)) => {
+                let rest: Vec<usize> = blocks.drain(i + 1..=j).flatten().collect();
+                blocks[i].extend(rest);
+            }
+            None => break,
+        }
+    }
+}
+
+/// Direct labels at the curves' ends, spread apart vertically inside the
+/// plot area, with a leader line to a curve's end where its label moved.
+fn draw_direct_labels(svg: &mut Svg, p: &Panel, f: &Frame) {
+    let mut direct: Vec<(Placed, String, Rgb, (f64, f64))> = p
         .series
         .iter()
         .filter_map(|s| {
             let t = s.direct.as_ref()?;
             let &(x, y) = s.points.iter().rev().find(|&&(x, y)| f.inside(x, y))?;
-            Some((f.px(x) + 9.0, f.py(y) + 4.5, t.clone(), s.color))
+            let (px, py) = (f.px(x), f.py(y));
+            let want = py + 4.5;
+            let w = text_width(t, NOTE_PX);
+            let d = Placed {
+                x0: px + 9.0,
+                x: px + 9.0,
+                want,
+                y: want,
+                w,
+            };
+            Some((d, t.clone(), s.color, (px, py)))
         })
         .collect();
-    direct.sort_by(|a, b| a.1.total_cmp(&b.1));
-    let gap = NOTE_PX + 2.0;
-    let mut placed: Vec<(f64, f64, f64)> = Vec::new();
-    for d in &mut direct {
-        let w = text_width(&d.2, NOTE_PX);
-        let clashes = |y: f64, placed: &[(f64, f64, f64)]| {
-            placed
-                .iter()
-                .any(|&(px, py, pw)| (y - py).abs() < gap && d.0 < px + pw && px < d.0 + w)
-        };
-        let mut tries = 0;
-        while clashes(d.1, &placed) && tries < 20 {
-            d.1 += gap / 2.0;
-            tries += 1;
+    direct.sort_by(|a, b| a.0.want.total_cmp(&b.0.want));
+    let mut placed: Vec<Placed> = direct
+        .iter()
+        .map(|d| Placed {
+            x0: d.0.x0,
+            x: d.0.x,
+            want: d.0.want,
+            y: d.0.y,
+            w: d.0.w,
+        })
+        .collect();
+    spread_labels(
+        &mut placed,
+        NOTE_PX + 2.0,
+        f.ay + NOTE_PX,
+        f.ay + f.ah - 3.0,
+    );
+    for (d, (_, t, c, end)) in placed.iter().zip(&direct) {
+        if (d.y - d.want).abs() > 4.0 || d.x > d.x0 {
+            let to = (d.x - 2.0, d.y - NOTE_PX * 0.3);
+            svg.line((end.0 + 4.0, end.1), to, darker(*c), 0.8, Dash::Solid);
         }
-        placed.push((d.0, d.1, w));
+        svg.text(d.x, d.y, t, NOTE_PX, "start", darker(*c), true, false);
     }
-    for (x, y, t, c) in &direct {
-        svg.text(*x, *y, t, NOTE_PX, "start", darker(*c), true, false);
-    }
-    // labels that would overlap one already written are left out
+}
+
+/// Labels on a halo (contours); one that would overlap a label already
+/// written is left out.
+fn draw_halo_labels(svg: &mut Svg, p: &Panel, f: &Frame) {
     let mut written: Vec<(f64, f64, f64)> = Vec::new();
     for l in &p.labels {
         if f.inside(l.at.0, l.at.1) {
@@ -1433,8 +1722,8 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
             }
             written.push((x, y, w));
             svg.text(
-                f.px(l.at.0),
-                f.py(l.at.1) + 4.0,
+                x,
+                y + 4.0,
                 &l.text,
                 NOTE_PX - 0.5,
                 "middle",
@@ -1444,79 +1733,42 @@ fn draw_panel(svg: &mut Svg, p: &Panel, x0: f64, y0: f64, w: f64, h: f64) {
             );
         }
     }
-    for (i, t) in p.notes.iter().enumerate() {
-        svg.text(
-            f.ax + 8.0,
-            f.ay + 18.0 + 16.0 * i as f64,
-            t,
-            NOTE_PX,
-            "start",
-            (40, 40, 40),
-            true,
-            false,
-        );
-    }
-    // frame, ticks, labels
+}
+
+/// The frame, the ticks and their texts, the axis labels.
+fn draw_axes(svg: &mut Svg, p: &Panel, f: &Frame, axes: &Axes, x0: f64, y0: f64, h: f64) {
     svg.rect(f.ax, f.ay, f.aw, f.ah, "none", &hex(AXIS));
-    for &t in &xticks {
+    let black = (0, 0, 0);
+    for &t in &axes.xticks {
         let x = f.cx(t);
-        svg.line(
-            (x, f.ay + f.ah),
-            (x, f.ay + f.ah + 5.0),
-            AXIS,
-            1.0,
-            Dash::Solid,
-        );
-        let label = if log {
+        let bottom = f.ay + f.ah;
+        svg.line((x, bottom), (x, bottom + 5.0), AXIS, 1.0, Dash::Solid);
+        let label = if f.log {
             log_tick_text(t)
         } else {
-            tick_text(t, xdec)
+            tick_text(t, axes.xdec)
         };
         svg.text(
             x,
-            f.ay + f.ah + 8.0 + TICK_PX,
+            bottom + 8.0 + TICK_PX,
             &label,
             TICK_PX,
             "middle",
-            (0, 0, 0),
+            black,
             false,
             false,
         );
     }
-    for (t, label) in yticks.iter().zip(&ylabels) {
+    for (t, label) in axes.yticks.iter().zip(&axes.ylabels) {
         let y = f.py(*t);
         svg.line((f.ax - 5.0, y), (f.ax, y), AXIS, 1.0, Dash::Solid);
-        svg.text(
-            f.ax - 8.0,
-            y + TICK_PX * 0.35,
-            label,
-            TICK_PX,
-            "end",
-            (0, 0, 0),
-            false,
-            false,
-        );
+        let ty = y + TICK_PX * 0.35;
+        svg.text(f.ax - 8.0, ty, label, TICK_PX, "end", black, false, false);
     }
-    svg.text(
-        f.ax + f.aw / 2.0,
-        y0 + h - 9.0,
-        &p.xlabel,
-        AXIS_PX,
-        "middle",
-        (0, 0, 0),
-        false,
-        false,
-    );
-    svg.text(
-        x0 + 10.0 + AXIS_PX,
-        f.ay + f.ah / 2.0,
-        &p.ylabel,
-        AXIS_PX,
-        "middle",
-        (0, 0, 0),
-        false,
-        true,
-    );
+    let (xl, yl) = (f.ax + f.aw / 2.0, y0 + h - 9.0);
+    svg.text(xl, yl, &p.xlabel, AXIS_PX, "middle", black, false, false);
+    let (xl, yl) = (x0 + 10.0 + AXIS_PX, f.ay + f.ah / 2.0);
+    svg.text(xl, yl, &p.ylabel, AXIS_PX, "middle", black, false, true);
 }
 
 /// A darker shade of `c` for text (the palette's light colours are too pale
@@ -1557,7 +1809,6 @@ const VIRIDIS: [Rgb; 9] = [
 /// The colour bar: a smooth gradient (the colour map's anchors as stops),
 /// vertical in the right strip or horizontal below the panels.
 fn draw_colorbar(svg: &mut Svg, cb: &ColorBar, x0: f64, y0: f64, w: f64, h: f64, horizontal: bool) {
-    let (lo, hi) = cb.range;
     let id = if horizontal { "cbh" } else { "cbv" };
     let (gx2, gy1) = if horizontal {
         ("100%", "0%")
@@ -1577,107 +1828,97 @@ fn draw_colorbar(svg: &mut Svg, cb: &ColorBar, x0: f64, y0: f64, w: f64, h: f64,
         svg.s,
         "<defs><linearGradient id=\"{id}\" x1=\"0%\" y1=\"{gy1}\" x2=\"{gx2}\" y2=\"0%\">{stops}</linearGradient></defs>"
     );
-    let (ticks, step) = nice_ticks(lo, hi, 6);
+    let fill = format!("url(#{id})");
+    let (ticks, step) = nice_ticks(cb.range.0, cb.range.1, 6);
     let dec = decimals_for(step);
+    let ticks: Vec<(f64, String)> = ticks.into_iter().map(|t| (t, tick_text(t, dec))).collect();
     if horizontal {
-        let (bx, by, bw, bh) = (x0 + 20.0, y0 + 28.0, w - 40.0, 14.0);
-        svg.text(
-            bx,
-            y0 + 18.0,
-            &cb.label,
-            LEGEND_PX,
-            "start",
-            (0, 0, 0),
-            false,
-            false,
-        );
-        svg.rect(bx, by, bw, bh, &format!("url(#{id})"), "#000000");
-        let xpix = |v: f64| bx + (v - lo) / (hi - lo) * bw;
-        for t in ticks {
-            let x = xpix(t);
-            svg.line(
-                (x, by + bh),
-                (x, by + bh + 4.0),
-                (0, 0, 0),
-                1.0,
-                Dash::Solid,
-            );
-            svg.text(
-                x,
-                by + bh + 17.0,
-                &tick_text(t, dec),
-                TICK_PX,
-                "middle",
-                (0, 0, 0),
-                false,
-                false,
-            );
-        }
-        for (m, _) in &cb.marks {
-            if *m >= lo && *m <= hi {
-                let x = xpix(*m);
-                svg.line((x, by), (x, by + bh), (255, 255, 255), 2.0, Dash::Solid);
-            }
-        }
+        colorbar_horizontal(svg, cb, &ticks, &fill, (x0, y0, w));
     } else {
-        let (bx, by, bw, bh) = (x0 + 12.0, y0 + 60.0, 24.0, h - 140.0);
-        for (i, l) in wrap(&cb.label, LEGEND_PX, w - 12.0).iter().enumerate() {
-            svg.text(
-                x0 + 8.0,
-                y0 + 24.0 + 17.0 * i as f64,
-                l,
-                LEGEND_PX,
-                "start",
-                (0, 0, 0),
-                false,
-                false,
-            );
+        colorbar_vertical(svg, cb, &ticks, &fill, (x0, y0, w, h));
+    }
+}
+
+/// A colour bar across the bottom of a narrow layout.
+fn colorbar_horizontal(
+    svg: &mut Svg,
+    cb: &ColorBar,
+    ticks: &[(f64, String)],
+    fill: &str,
+    (x0, y0, w): (f64, f64, f64),
+) {
+    let ((lo, hi), black) = (cb.range, (0, 0, 0));
+    let (bx, by, bw, bh) = (x0 + 20.0, y0 + 28.0, w - 40.0, 14.0);
+    svg.text(
+        bx,
+        y0 + 18.0,
+        &cb.label,
+        LEGEND_PX,
+        "start",
+        black,
+        false,
+        false,
+    );
+    svg.rect(bx, by, bw, bh, fill, "#000000");
+    let xpix = |v: f64| bx + (v - lo) / (hi - lo) * bw;
+    for (t, text) in ticks {
+        let x = xpix(*t);
+        svg.line((x, by + bh), (x, by + bh + 4.0), black, 1.0, Dash::Solid);
+        let ty = by + bh + 17.0;
+        svg.text(x, ty, text, TICK_PX, "middle", black, false, false);
+    }
+    for (m, _) in &cb.marks {
+        if *m >= lo && *m <= hi {
+            let x = xpix(*m);
+            svg.line((x, by), (x, by + bh), (255, 255, 255), 2.0, Dash::Solid);
         }
-        svg.rect(bx, by, bw, bh, &format!("url(#{id})"), "#000000");
-        let ypix = |v: f64| by + bh - (v - lo) / (hi - lo) * bh;
-        for t in ticks {
-            let y = ypix(t);
+    }
+}
+
+/// A colour bar in the right strip of a wide layout, with its marks named.
+fn colorbar_vertical(
+    svg: &mut Svg,
+    cb: &ColorBar,
+    ticks: &[(f64, String)],
+    fill: &str,
+    (x0, y0, w, h): (f64, f64, f64, f64),
+) {
+    let ((lo, hi), black) = (cb.range, (0, 0, 0));
+    let (bx, by, bw, bh) = (x0 + 12.0, y0 + 60.0, 24.0, h - 140.0);
+    for (i, l) in wrap(&cb.label, LEGEND_PX, w - 12.0).iter().enumerate() {
+        let y = y0 + 24.0 + 17.0 * i as f64;
+        svg.text(x0 + 8.0, y, l, LEGEND_PX, "start", black, false, false);
+    }
+    svg.rect(bx, by, bw, bh, fill, "#000000");
+    let ypix = |v: f64| by + bh - (v - lo) / (hi - lo) * bh;
+    for (t, text) in ticks {
+        let y = ypix(*t);
+        svg.line((bx + bw, y), (bx + bw + 5.0, y), black, 1.0, Dash::Solid);
+        let (tx, ty) = (bx + bw + 8.0, y + 4.5);
+        svg.text(tx, ty, text, TICK_PX, "start", black, false, false);
+    }
+    for (m, t) in &cb.marks {
+        if *m >= lo && *m <= hi {
+            let y = ypix(*m);
             svg.line(
+                (bx - 4.0, y),
                 (bx + bw, y),
-                (bx + bw + 5.0, y),
-                (0, 0, 0),
-                1.0,
+                (255, 255, 255),
+                2.0,
                 Dash::Solid,
             );
-            svg.text(
-                bx + bw + 8.0,
-                y + 4.5,
-                &tick_text(t, dec),
-                TICK_PX,
-                "start",
-                (0, 0, 0),
-                false,
-                false,
-            );
-        }
-        for (m, t) in &cb.marks {
-            if *m >= lo && *m <= hi {
-                let y = ypix(*m);
-                svg.line(
-                    (bx - 4.0, y),
-                    (bx + bw, y),
-                    (255, 255, 255),
-                    2.0,
-                    Dash::Solid,
+            svg.line((bx - 6.0, y), (bx, y), black, 1.5, Dash::Solid);
+            if !t.is_empty() {
+                svg.text(
+                    bx - 8.0,
+                    y + 4.0,
+                    t,
+                    NOTE_PX - 1.5,
+                    "end",
+                    black,
+                    false,
+                    false,
                 );
-                svg.line((bx - 6.0, y), (bx, y), (0, 0, 0), 1.5, Dash::Solid);
-                if !t.is_empty() {
-                    svg.text(
-                        bx - 8.0,
-                        y + 4.0,
-                        t,
-                        NOTE_PX - 1.5,
-                        "end",
-                        (0, 0, 0),
-                        false,
-                        false,
-                    );
-                }
             }
         }
     }

@@ -42,25 +42,23 @@ pub fn closed_form(v: (Floor, Contact), theta0: &str) -> Result<Option<(String, 
             Some(("arccos(√3 − 1), eq. (43) corrected".to_string(), c.acos()))
         }
         (Floor::Fixed, Contact::Roll) => {
-            let c = Float::with_val(p, &c0 * 4u32) / 7u32;
-            let f = if at_top {
-                "arccos(4/7), eq. (36)".to_string()
-            } else {
-                "arccos(4 cos θ₀ / 7)".to_string()
-            };
-            Some((f, c.acos()))
+            Some(fixed_form(&c0, 4, 7, at_top, "arccos(4/7), eq. (36)"))
         }
-        (Floor::Fixed, Contact::Slip) => {
-            let c = Float::with_val(p, &c0 * 2u32) / 3u32;
-            let f = if at_top {
-                "arccos(2/3)".to_string()
-            } else {
-                "arccos(2 cos θ₀ / 3)".to_string()
-            };
-            Some((f, c.acos()))
-        }
+        (Floor::Fixed, Contact::Slip) => Some(fixed_form(&c0, 2, 3, at_top, "arccos(2/3)")),
         _ => None,
     })
+}
+
+/// A fixed lower cylinder's cos θs = (num/den) cos θ0: (formula, θs), the
+/// formula `at_top` when θ0 = 0.
+fn fixed_form(c0: &Float, num: u32, den: u32, at_top: bool, top: &str) -> (String, Float) {
+    let c = Float::with_val(CF_PREC, c0 * num) / den;
+    let f = if at_top {
+        top.to_string()
+    } else {
+        format!("arccos({num} cos θ₀ / {den})")
+    };
+    (f, c.acos())
 }
 
 /// arccos(2/(3 + k2)) for an exact k2 (the fixed lower cylinder, eq. 36).
@@ -106,303 +104,293 @@ pub struct Tables {
     pub problems: Vec<String>,
 }
 
-/// Builds every table from the data.
-pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
-    let d = cfg.digits;
-    let mut problems = Vec::new();
-    let mut csv = String::from(
-        "floor,contact,theta0,digits,theta_s,t_s,F21_at_s,closed_form,closed_form_value,agrees\n",
-    );
-
-    // --- 1. separation from rest at the top
-    let mut rows = Vec::new();
-    // --- 2. separation from small starts
-    let mut rows2 = Vec::new();
-    for (vi, v) in VARIANTS.iter().enumerate() {
-        for (si, th0) in TABLE_STARTS.iter().enumerate() {
-            let cf = closed_form(*v, th0)?;
-            let res = data.sep.get(vi).and_then(|s| s.get(si));
-            let (theta_cell, ts_cell, f21_cell, deg_cell, cf_val, agree_cell) = match res {
-                Some(Ok(s)) => {
-                    let (cf_text, agree) = match &cf {
-                        Some((_, val)) => {
-                            let (t, ok) = agrees(&s.theta_s, val);
-                            if !ok {
-                                problems.push(format!(
-                                    "{} from theta0 = {th0}: theta_s = {} but the closed form gives {t}",
-                                    variant_name(*v),
-                                    s.theta_s.text
-                                ));
-                            }
-                            (
-                                num(&t),
-                                if ok {
-                                    format!("yes, all {} digits", s.theta_s.digits)
-                                } else {
-                                    "NO".to_string()
-                                },
-                            )
-                        }
-                        None => ("—".to_string(), "—".to_string()),
-                    };
-                    let f21 = match extra(s, "F21_at_s") {
-                        Some(f) => num(&f.text),
-                        None => "0 (frictionless)".to_string(),
-                    };
-                    let ts = match &s.t_s {
-                        Some(t) => num(&t.text),
-                        None => "∞ (start at rest at the top)".to_string(),
-                    };
-                    csv.push_str(&format!(
-                        "{},{},{},{},{},{},{},\"{}\",{},{}\n",
-                        v.0,
-                        v.1,
-                        th0,
-                        s.theta_s.digits,
-                        s.theta_s.text,
-                        s.t_s.as_ref().map(|t| t.text.as_str()).unwrap_or("inf"),
-                        extra(s, "F21_at_s").map(|f| f.text.as_str()).unwrap_or("0"),
-                        cf.as_ref().map(|c| c.0.as_str()).unwrap_or(""),
-                        cf_text.trim_start_matches('='),
-                        if cf.is_none() {
-                            ""
-                        } else if agree.starts_with("yes") {
-                            "yes"
-                        } else {
-                            "no"
-                        },
-                    ));
-                    (
-                        num(&s.theta_s.text),
-                        ts,
-                        f21,
-                        degrees(&s.theta_s),
-                        cf_text,
-                        agree,
-                    )
-                }
-                Some(Err(e)) => {
-                    problems.push(format!("{} from theta0 = {th0}: {e}", variant_name(*v)));
-                    let c = err_cell(e);
-                    (c.clone(), c.clone(), c.clone(), c.clone(), c.clone(), c)
-                }
-                None => {
-                    let c = "missing".to_string();
-                    (c.clone(), c.clone(), c.clone(), c.clone(), c.clone(), c)
-                }
-            };
-            let formula = cf
-                .as_ref()
-                .map(|c| c.0.clone())
-                .unwrap_or_else(|| "—".into());
-            if si == 0 {
-                rows.push(vec![
-                    variant_name(*v),
-                    paper_ref(*v).to_string(),
-                    theta_cell,
-                    deg_cell,
-                    formula,
-                    cf_val,
-                    agree_cell,
-                    f21_cell,
-                ]);
-            } else {
-                rows2.push(vec![
-                    variant_name(*v),
-                    num(th0),
-                    theta_cell,
-                    ts_cell,
-                    formula,
-                    cf_val,
-                    agree_cell,
-                ]);
-            }
-        }
-    }
-    let t1 = Table {
-        id: "separation-top".into(),
-        title: "Separation from rest at the top (θ₀ → 0+)".into(),
-        intro: format!(
-            "Identical solid cylinders (m₁ = m₂, r₁ = r₂, k₁ = k₂ = 1/2), every contact model, started from rest \
-             with the upper cylinder on top (the paper's case, the limit θ₀ → 0+; the time is then infinite). \
-             θₛ in radians to {d} verified significant digits; the closed form, where one is known, is evaluated \
-             independently at {CF_PREC} bits and rounded to the same digits. F₂₁ at separation is in units of m₁g: \
-             where it is not zero, the friction coefficient that rolling needs diverges as θ → θₛ."
-        ),
-        header: [
-            "contact model",
-            "paper",
-            "θₛ [rad]",
-            "θₛ [deg], rounded",
-            "closed form",
-            "closed form value",
-            "agrees",
-            "F₂₁ at θₛ [m₁g]",
-        ]
-        .iter()
-        .map(|s| s.to_string())
-        .collect(),
+/// A table: the page's description of it (anchor, title, text before it,
+/// column headers) and its rows.
+fn table(
+    id: &str,
+    title: &str,
+    intro: String,
+    header: Vec<String>,
+    rows: Vec<Vec<String>>,
+) -> Table {
+    Table {
+        id: id.into(),
+        title: title.into(),
+        intro,
+        header,
         rows,
-    };
-    let t2 = Table {
-        id: "separation-start".into(),
-        title: "Separation from rest at θ₀ = 1/100 and θ₀ = 1/20".into(),
-        intro: format!(
-            "The same cylinders started from rest a little off the top: θₛ [rad] and the time tₛ to separation \
-             [τ = √(r₁/g)], {d} verified digits. For the fixed lower cylinder the closed form is \
-             cos θₛ = 2 cos θ₀ / (3 + k₂) (rolling contact) or 2 cos θ₀ / 3 (frictionless contact)."
-        ),
-        header: [
-            "contact model",
-            "θ₀ [rad]",
-            "θₛ [rad]",
-            "tₛ [τ]",
-            "closed form",
-            "closed form value",
-            "agrees",
-        ]
-        .iter()
-        .map(|s| s.to_string())
-        .collect(),
-        rows: rows2,
-    };
-
-    // --- 3. forces at chosen angles, main case
-    let names = [
-        "F₁ [m₁g]",
-        "N₁ [m₁g]",
-        "F₂₁ [m₁g]",
-        "N₁₂ [m₁g]",
-        "dθ/dt [rad/τ]",
-        "d²θ/dt² [rad/τ²]",
-        "μ needed at the floor, |F₁|/N₁",
-        "μ needed between the cylinders, |F₂₁|/N₁₂",
-    ];
-    let mut rows3 = Vec::new();
-    for (qi, name) in names.iter().enumerate() {
-        let mut row = vec![name.to_string()];
-        for (ai, a) in FORCE_ANGLES.iter().enumerate() {
-            row.push(match data.forces.get(ai) {
-                Some(Ok(f)) => f.get(qi).map(|v| num(&v.text)).unwrap_or_default(),
-                Some(Err(e)) => {
-                    if qi == 0 {
-                        problems.push(format!("forces at theta = {a}: {e}"));
-                    }
-                    err_cell(e)
-                }
-                None => "missing".into(),
-            });
-        }
-        rows3.push(row);
     }
-    let mut header3 = vec!["quantity".to_string()];
-    header3.extend(FORCE_ANGLES.iter().map(|a| {
-        let t = a.replace("pi", "π");
-        if t.contains('π') {
-            format!("θ = {t}")
-        } else {
-            format!("θ = {t} rad")
-        }
-    }));
-    let t3 = Table {
-        id: "forces".into(),
-        title: "Forces in the main case at chosen angles".into(),
-        intro: format!(
-            "Both contacts rolling, identical solid cylinders, from rest at the top (θ₀ → 0+); {d} verified digits; \
-             m₁ = m₂ = r₁ = r₂ = g = 1."
-        ),
-        header: header3,
-        rows: rows3,
-    };
+}
 
-    // --- 4. where rolling first fails for μ
-    let mut rows4 = Vec::new();
-    for (i, mu) in MU_VALUES.iter().enumerate() {
-        let row = match data.mu.get(i) {
-            Some(Ok(s)) => {
-                let fl = extra(s, "theta_slip_floor");
-                let ct = extra(s, "theta_slip_contact");
-                let cell = |v: Option<&Verified>| match v {
-                    Some(v) => num(&v.text),
-                    None => "rolls until separation".to_string(),
-                };
-                let first = match (fl, ct) {
-                    (Some(a), Some(b)) => {
-                        if a.value < b.value {
-                            "the floor"
-                        } else {
-                            "the contact between the cylinders"
-                        }
-                    }
-                    (Some(_), None) => "the floor",
-                    (None, Some(_)) => "the contact between the cylinders",
-                    (None, None) => "neither",
-                };
-                vec![
-                    num(mu),
-                    cell(fl),
-                    cell(ct),
-                    first.to_string(),
-                    num(&s.theta_s.text),
-                ]
-            }
+/// Column headers from texts.
+fn cols<S: AsRef<str>>(names: impl IntoIterator<Item = S>) -> Vec<String> {
+    names.into_iter().map(|s| s.as_ref().to_string()).collect()
+}
+
+/// "yes, all N digits" or "NO".
+fn agree_text(ok: bool, digits: u32) -> String {
+    if ok {
+        format!("yes, all {digits} digits")
+    } else {
+        "NO".to_string()
+    }
+}
+
+/// The tables being built and the problems met on the way (in page order).
+struct Builder<'a> {
+    data: &'a Data,
+    cfg: &'a Config,
+    problems: Vec<String>,
+}
+
+impl Builder<'_> {
+    /// The text of a computed value: `ok` of it, its error (recorded as a
+    /// problem, `what` first), or "missing".
+    fn cell<T>(
+        &mut self,
+        r: Option<&Result<T>>,
+        what: impl FnOnce() -> String,
+        ok: impl FnOnce(&T) -> String,
+    ) -> String {
+        match r {
+            Some(Ok(v)) => ok(v),
             Some(Err(e)) => {
-                problems.push(format!("slip angles for mu = {mu}: {e}"));
-                vec![
-                    num(mu),
-                    err_cell(e),
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                ]
+                self.problems.push(format!("{}: {e}", what()));
+                err_cell(e)
             }
-            None => vec![
-                num(mu),
-                "missing".into(),
-                String::new(),
-                String::new(),
-                String::new(),
-            ],
-        };
-        rows4.push(row);
-    }
-    let t4 = Table {
-        id: "friction".into(),
-        title: "Where rolling first fails, for a friction coefficient μ".into(),
-        intro: format!(
-            "Main case (both contacts rolling, identical solid cylinders, from rest at the top): the first angle \
-             at which rolling without slipping would need more friction than μ, at the floor (|F₁| > μN₁) and \
-             between the cylinders (|F₂₁| > μN₁₂); {d} verified digits. Past that angle the rolling model no longer \
-             applies. Between the cylinders it always fails before θₛ, since N₁₂ → 0 while F₂₁ does not."
-        ),
-        header: ["μ", "floor slips at θ [rad]", "cylinders slip at θ [rad]", "slips first", "θₛ [rad]"]
-            .iter()
-            .map(|s| s.to_string())
-            .collect(),
-        rows: rows4,
-    };
-
-    // --- 5. the parameter plane
-    let td = cfg.plane_table_digits;
-    let mut rows5 = Vec::new();
-    for k2 in PLANE_K2 {
-        let mut row = vec![num(k2)];
-        for r in PLANE_TABLE_RATIOS {
-            let key = PlaneKey {
-                floor: FloorKey::Roll,
-                ratio: r.to_string(),
-                k2: k2.to_string(),
-                digits: td,
-            };
-            row.push(match data.plane.get(&key) {
-                Some(Ok(v)) => num(&v.text),
-                Some(Err(e)) => {
-                    problems.push(format!("plane m₂/m₁ = {r}, k2 = {k2}: {e}"));
-                    err_cell(e)
-                }
-                None => "missing".into(),
-            });
+            None => "missing".into(),
         }
+    }
+}
+
+/// One separation: the cells of tables 1 and 2 and a line of `separation.csv`.
+struct SepCells {
+    theta: String,
+    ts: String,
+    f21: String,
+    deg: String,
+    cf_val: String,
+    agree: String,
+}
+
+impl SepCells {
+    fn same(c: String) -> Self {
+        SepCells {
+            theta: c.clone(),
+            ts: c.clone(),
+            f21: c.clone(),
+            deg: c.clone(),
+            cf_val: c.clone(),
+            agree: c,
+        }
+    }
+}
+
+impl Builder<'_> {
+    /// The cells of a verified separation, its closed form checked.
+    fn sep_cells(
+        &mut self,
+        v: (Floor, Contact),
+        th0: &str,
+        s: &Separation,
+        cf: &Option<(String, Float)>,
+        csv: &mut String,
+    ) -> SepCells {
+        let (cf_text, agree) = match cf {
+            Some((_, val)) => {
+                let (t, ok) = agrees(&s.theta_s, val);
+                if !ok {
+                    self.problems.push(format!(
+                        "{} from theta0 = {th0}: theta_s = {} but the closed form gives {t}",
+                        variant_name(v),
+                        s.theta_s.text
+                    ));
+                }
+                (num(&t), agree_text(ok, s.theta_s.digits))
+            }
+            None => ("—".to_string(), "—".to_string()),
+        };
+        let f21 = extra(s, "F21_at_s");
+        let agrees_csv = match cf {
+            None => "",
+            Some(_) if agree.starts_with("yes") => "yes",
+            Some(_) => "no",
+        };
+        csv.push_str(&format!(
+            "{},{},{},{},{},{},{},\"{}\",{},{}\n",
+            v.0,
+            v.1,
+            th0,
+            s.theta_s.digits,
+            s.theta_s.text,
+            s.t_s.as_ref().map(|t| t.text.as_str()).unwrap_or("inf"),
+            f21.map(|f| f.text.as_str()).unwrap_or("0"),
+            cf.as_ref().map(|c| c.0.as_str()).unwrap_or(""),
+            cf_text.trim_start_matches('='),
+            agrees_csv,
+        ));
+        SepCells {
+            theta: num(&s.theta_s.text),
+            ts: match &s.t_s {
+                Some(t) => num(&t.text),
+                None => "∞ (start at rest at the top)".to_string(),
+            },
+            f21: f21.map_or_else(|| "0 (frictionless)".to_string(), |f| num(&f.text)),
+            deg: degrees(&s.theta_s),
+            cf_val: cf_text,
+            agree,
+        }
+    }
+
+    /// Tables 1 (from the top) and 2 (from small starts), and `separation.csv`.
+    fn separation(&mut self) -> Result<(Table, Table, String)> {
+        let d = self.cfg.digits;
+        let mut csv = String::from(
+            "floor,contact,theta0,digits,theta_s,t_s,F21_at_s,closed_form,closed_form_value,agrees\n",
+        );
+        let (mut top, mut start) = (Vec::new(), Vec::new());
+        for (vi, v) in VARIANTS.iter().enumerate() {
+            for (si, th0) in TABLE_STARTS.iter().enumerate() {
+                let cf = closed_form(*v, th0)?;
+                let c = match self.data.sep.get(vi).and_then(|s| s.get(si)) {
+                    Some(Ok(s)) => self.sep_cells(*v, th0, s, &cf, &mut csv),
+                    Some(Err(e)) => {
+                        self.problems
+                            .push(format!("{} from theta0 = {th0}: {e}", variant_name(*v)));
+                        SepCells::same(err_cell(e))
+                    }
+                    None => SepCells::same("missing".to_string()),
+                };
+                let formula = cf.map_or_else(|| "—".into(), |c| c.0);
+                let name = variant_name(*v);
+                if si == 0 {
+                    let paper = paper_ref(*v).to_string();
+                    top.push(vec![
+                        name, paper, c.theta, c.deg, formula, c.cf_val, c.agree, c.f21,
+                    ]);
+                } else {
+                    start.push(vec![
+                        name,
+                        num(th0),
+                        c.theta,
+                        c.ts,
+                        formula,
+                        c.cf_val,
+                        c.agree,
+                    ]);
+                }
+            }
+        }
+        let t1 = table(
+            "separation-top",
+            "Separation from rest at the top (θ₀ → 0+)",
+            format!(
+                "Identical solid cylinders (m₁ = m₂, r₁ = r₂, k₁ = k₂ = 1/2), every contact model, started from rest \
+                 with the upper cylinder on top (the paper's case, the limit θ₀ → 0+; the time is then infinite). \
+                 θₛ in radians to {d} verified significant digits; the closed form, where one is known, is evaluated \
+                 independently at {CF_PREC} bits and rounded to the same digits. F₂₁ at separation is in units of m₁g: \
+                 where it is not zero, the friction coefficient that rolling needs diverges as θ → θₛ."
+            ),
+            cols(["contact model", "paper", "θₛ [rad]", "θₛ [deg], rounded", "closed form", "closed form value", "agrees", "F₂₁ at θₛ [m₁g]"]),
+            top,
+        );
+        let t2 = table(
+            "separation-start",
+            "Separation from rest at θ₀ = 1/100 and θ₀ = 1/20",
+            format!(
+                "The same cylinders started from rest a little off the top: θₛ [rad] and the time tₛ to separation \
+                 [τ = √(r₁/g)], {d} verified digits. For the fixed lower cylinder the closed form is \
+                 cos θₛ = 2 cos θ₀ / (3 + k₂) (rolling contact) or 2 cos θ₀ / 3 (frictionless contact)."
+            ),
+            cols(["contact model", "θ₀ [rad]", "θₛ [rad]", "tₛ [τ]", "closed form", "closed form value", "agrees"]),
+            start,
+        );
+        Ok((t1, t2, csv))
+    }
+
+    /// Table 3: the forces of the main case at chosen angles.
+    fn forces(&mut self) -> Table {
+        let names = [
+            "F₁ [m₁g]",
+            "N₁ [m₁g]",
+            "F₂₁ [m₁g]",
+            "N₁₂ [m₁g]",
+            "dθ/dt [rad/τ]",
+            "d²θ/dt² [rad/τ²]",
+            "μ needed at the floor, |F₁|/N₁",
+            "μ needed between the cylinders, |F₂₁|/N₁₂",
+        ];
+        let data = self.data;
+        let mut rows = Vec::new();
+        for (qi, name) in names.iter().enumerate() {
+            let mut row = vec![name.to_string()];
+            for (ai, a) in FORCE_ANGLES.iter().enumerate() {
+                let r = data.forces.get(ai);
+                let value = |f: &Vec<Verified>| f.get(qi).map(|v| num(&v.text)).unwrap_or_default();
+                row.push(match r {
+                    // an angle's error is recorded once, on the first row
+                    Some(Err(e)) if qi > 0 => err_cell(e),
+                    _ => self.cell(r, || format!("forces at theta = {a}"), value),
+                });
+            }
+            rows.push(row);
+        }
+        let angle = |a: &&str| {
+            let t = a.replace("pi", "π");
+            if t.contains('π') {
+                format!("θ = {t}")
+            } else {
+                format!("θ = {t} rad")
+            }
+        };
+        table(
+            "forces",
+            "Forces in the main case at chosen angles",
+            format!(
+                "Both contacts rolling, identical solid cylinders, from rest at the top (θ₀ → 0+); {} verified digits; \
+                 m₁ = m₂ = r₁ = r₂ = g = 1.",
+                self.cfg.digits
+            ),
+            cols(["quantity".to_string()].into_iter().chain(FORCE_ANGLES.iter().map(angle))),
+            rows,
+        )
+    }
+
+    /// Table 4: where rolling first fails for a friction coefficient μ.
+    fn friction(&mut self) -> Table {
+        let mut rows = Vec::new();
+        for (i, mu) in MU_VALUES.iter().enumerate() {
+            let row = match self.data.mu.get(i) {
+                Some(Ok(s)) => slip_row(mu, s),
+                r => {
+                    let c = self.cell(
+                        r,
+                        || format!("slip angles for mu = {mu}"),
+                        |_| String::new(),
+                    );
+                    vec![num(mu), c, String::new(), String::new(), String::new()]
+                }
+            };
+            rows.push(row);
+        }
+        table(
+            "friction",
+            "Where rolling first fails, for a friction coefficient μ",
+            format!(
+                "Main case (both contacts rolling, identical solid cylinders, from rest at the top): the first angle \
+                 at which rolling without slipping would need more friction than μ, at the floor (|F₁| > μN₁) and \
+                 between the cylinders (|F₂₁| > μN₁₂); {} verified digits. Past that angle the rolling model no longer \
+                 applies. Between the cylinders it always fails before θₛ, since N₁₂ → 0 while F₂₁ does not.",
+                self.cfg.digits
+            ),
+            cols(["μ", "floor slips at θ [rad]", "cylinders slip at θ [rad]", "slips first", "θₛ [rad]"]),
+            rows,
+        )
+    }
+
+    /// The cells of a fixed lower cylinder's θs next to its closed form.
+    fn fixed_cells(&mut self, k2: &str) -> Result<[String; 3]> {
+        let d = self.cfg.digits;
         let key = PlaneKey {
             floor: FloorKey::Fixed,
             ratio: "1".to_string(),
@@ -410,87 +398,97 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
             digits: d,
         };
         let cf = fixed_lower(k2)?;
-        match data.plane.get(&key) {
+        Ok(match self.data.plane.get(&key) {
             Some(Ok(v)) => {
                 let (t, ok) = agrees(v, &cf);
                 if !ok {
-                    problems.push(format!(
+                    self.problems.push(format!(
                         "fixed lower cylinder, k2 = {k2}: theta_s = {} but arccos(2/(3+k2)) = {t}",
                         v.text
                     ));
                 }
-                row.push(num(&v.text));
-                row.push(num(&t));
-                row.push(if ok {
-                    format!("yes, all {} digits", v.digits)
-                } else {
-                    "NO".into()
-                });
+                [num(&v.text), num(&t), agree_text(ok, v.digits)]
             }
-            Some(Err(e)) => {
-                problems.push(format!("fixed lower cylinder, k2 = {k2}: {e}"));
-                row.push(err_cell(e));
-                row.push(num(to_sig(&cf, d)));
-                row.push("—".into());
+            r => {
+                let c = self.cell(
+                    r,
+                    || format!("fixed lower cylinder, k2 = {k2}"),
+                    |_| String::new(),
+                );
+                [c, num(to_sig(&cf, d)), "—".into()]
             }
-            None => {
-                row.push("missing".into());
-                row.push(num(to_sig(&cf, d)));
-                row.push("—".into());
-            }
-        }
-        rows5.push(row);
-    }
-    let mut header5 = vec!["k₂".to_string()];
-    header5.extend(PLANE_TABLE_RATIOS.iter().map(|r| format!("m₂/m₁ = {r}")));
-    header5.push("fixed lower cylinder (oracle)".into());
-    header5.push("arccos(2/(3 + k₂))".into());
-    header5.push("agrees".into());
-    let t5 = Table {
-        id: "plane".into(),
-        title: "θₛ at chosen points of the parameter plane".into(),
-        intro: format!(
-            "θₛ [rad] with both contacts rolling, from rest at the top, m₁ = r₁ = r₂ = g = 1, k₁ = 1/2, for \
-             several mass ratios m₂/m₁ and k₂ ({td} verified digits), and for a fixed lower cylinder ({d} verified \
-             digits) next to its closed form, eq. (36). As m₂/m₁ → 0 the lower cylinder stops moving and θₛ tends \
-             to the fixed-lower value."
-        ),
-        header: header5,
-        rows: rows5,
-    };
-
-    // --- plane.csv: every point computed
-    let mut plane_csv = String::from("floor,contact,m2_over_m1,k2,k1,digits,theta_s\n");
-    for (k, v) in &data.plane {
-        let floor = match k.floor {
-            FloorKey::Roll => "roll",
-            FloorKey::Fixed => "fixed",
-        };
-        let val = match v {
-            Ok(v) => v.text.clone(),
-            Err(_) => "not verified".to_string(),
-        };
-        plane_csv.push_str(&format!(
-            "{floor},roll,{},{},0.5,{},{val}\n",
-            k.ratio, k.k2, k.digits
-        ));
-    }
-    let plane_failed = data.plane.values().filter(|v| v.is_err()).count();
-    if plane_failed > 0 {
-        problems.push(format!(
-            "{plane_failed} parameter-plane points could not be verified and are left out of the figures"
-        ));
+        })
     }
 
-    // --- notes
-    let mut items = Vec::new();
-    for (vi, v) in VARIANTS.iter().enumerate() {
-        if let Some(Ok(s)) = data.sep.get(vi).and_then(|s| s.first()) {
-            items.push(format!("{}: {}", variant_name(*v), reader_notes(*v, s)));
+    /// Table 5: θs at chosen points of the parameter plane.
+    fn plane(&mut self) -> Result<Table> {
+        let td = self.cfg.plane_table_digits;
+        let mut rows = Vec::new();
+        for k2 in PLANE_K2 {
+            let mut row = vec![num(k2)];
+            for r in PLANE_TABLE_RATIOS {
+                let key = PlaneKey {
+                    floor: FloorKey::Roll,
+                    ratio: r.to_string(),
+                    k2: k2.to_string(),
+                    digits: td,
+                };
+                let what = || format!("plane m₂/m₁ = {r}, k2 = {k2}");
+                row.push(self.cell(self.data.plane.get(&key), what, |v| num(&v.text)));
+            }
+            row.extend(self.fixed_cells(k2)?);
+            rows.push(row);
         }
+        let ratios = PLANE_TABLE_RATIOS.iter().map(|r| format!("m₂/m₁ = {r}"));
+        let fixed = [
+            "fixed lower cylinder (oracle)",
+            "arccos(2/(3 + k₂))",
+            "agrees",
+        ]
+        .map(String::from);
+        Ok(table(
+            "plane",
+            "θₛ at chosen points of the parameter plane",
+            format!(
+                "θₛ [rad] with both contacts rolling, from rest at the top, m₁ = r₁ = r₂ = g = 1, k₁ = 1/2, for \
+                 several mass ratios m₂/m₁ and k₂ ({td} verified digits), and for a fixed lower cylinder ({} verified \
+                 digits) next to its closed form, eq. (36). As m₂/m₁ → 0 the lower cylinder stops moving and θₛ tends \
+                 to the fixed-lower value.",
+                self.cfg.digits
+            ),
+            cols(["k₂".to_string()].into_iter().chain(ratios).chain(fixed)),
+            rows,
+        ))
     }
-    for (vi, v) in VARIANTS.iter().enumerate() {
-        for (what, skipped) in [
+
+    /// `plane.csv`: every point computed.
+    fn plane_csv(&mut self) -> String {
+        let mut csv = String::from("floor,contact,m2_over_m1,k2,k1,digits,theta_s\n");
+        for (k, v) in &self.data.plane {
+            let floor = match k.floor {
+                FloorKey::Roll => "roll",
+                FloorKey::Fixed => "fixed",
+            };
+            let val = v.as_ref().map_or("not verified", |v| v.text.as_str());
+            csv.push_str(&format!(
+                "{floor},roll,{},{},0.5,{},{val}\n",
+                k.ratio, k.k2, k.digits
+            ));
+        }
+        let failed = self.data.plane.values().filter(|v| v.is_err()).count();
+        if failed > 0 {
+            self.problems.push(format!(
+                "{failed} parameter-plane points could not be verified and are left out of the figures"
+            ));
+        }
+        csv
+    }
+
+    /// Points of a variant's curves that could not be verified or computed,
+    /// as notes (and problems).
+    fn curve_notes(&mut self, vi: usize, v: (Floor, Contact), items: &mut Vec<String>) {
+        let data = self.data;
+        let skipped = [
             (
                 "time",
                 data.time
@@ -505,63 +503,116 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
                     .and_then(|r| r.as_ref().ok())
                     .map(|c| &c.skipped),
             ),
-        ] {
-            if let Some(sk) = skipped {
-                if !sk.is_empty() {
-                    let msg = format!(
-                        "{}: {} plotted points against {what} could not be verified to {} digits and are left out (first: {} = {}: {})",
-                        variant_name(*v),
-                        sk.len(),
-                        cfg.plot_digits,
-                        what,
-                        sk[0].0,
-                        sk[0].1
-                    );
-                    problems.push(msg.clone());
-                    items.push(msg);
-                }
+        ];
+        for (what, sk) in skipped {
+            if let Some(sk) = sk.filter(|sk| !sk.is_empty()) {
+                items.push(format!(
+                    "{}: {} plotted points against {what} could not be verified to {} digits and are left out (first: {} = {}: {})",
+                    variant_name(v),
+                    sk.len(),
+                    self.cfg.plot_digits,
+                    what,
+                    sk[0].0,
+                    sk[0].1
+                ));
             }
         }
-        for (what, r) in [
+        let failed = [
             (
                 "the trajectory",
-                data.time.get(vi).map(|r| r.as_ref().err()),
+                data.time.get(vi).and_then(|r| r.as_ref().err()),
             ),
             (
                 "the forces against θ",
-                data.theta.get(vi).map(|r| r.as_ref().err()),
+                data.theta.get(vi).and_then(|r| r.as_ref().err()),
             ),
-        ] {
-            if let Some(Some(e)) = r {
-                let msg = format!("{}: {what} could not be computed: {e}", variant_name(*v));
-                problems.push(msg.clone());
-                items.push(msg);
+        ];
+        for (what, e) in failed {
+            if let Some(e) = e {
+                items.push(format!(
+                    "{}: {what} could not be computed: {e}",
+                    variant_name(v)
+                ));
             }
         }
     }
-    for p in &problems {
-        if !items.contains(p) {
-            items.push(p.clone());
+
+    /// The section "What the oracle reported": each model's findings, then
+    /// every problem.
+    fn notes(&mut self) -> Section {
+        let mut items = Vec::new();
+        for (vi, v) in VARIANTS.iter().enumerate() {
+            if let Some(Ok(s)) = self.data.sep.get(vi).and_then(|s| s.first()) {
+                items.push(format!("{}: {}", variant_name(*v), reader_notes(*v, s)));
+            }
+        }
+        for (vi, v) in VARIANTS.iter().enumerate() {
+            let before = items.len();
+            self.curve_notes(vi, *v, &mut items);
+            self.problems.extend(items[before..].iter().cloned());
+        }
+        for p in &self.problems {
+            if !items.contains(p) {
+                items.push(p.clone());
+            }
+        }
+        Section {
+            title: "What the oracle reported".into(),
+            paragraphs: vec![format!(
+                "What the oracle found for each contact model, started from rest at the top (the limit θ₀ → 0+, where the \
+                 time to separation is infinite), with its verified values rounded here to 6 decimals (to {} digits in \
+                 `separation.csv` and from `cylroll separation`). Forces are in units of m₁g. Any point that could not be \
+                 verified is listed here too.",
+                self.cfg.digits
+            )],
+            items,
+            links: Vec::new(),
         }
     }
-    let notes = Section {
-        title: "What the oracle reported".into(),
-        paragraphs: vec![format!(
-            "What the oracle found for each contact model, started from rest at the top (the limit θ₀ → 0+, where the \
-             time to separation is infinite), with its verified values rounded here to 6 decimals (to {d} digits in \
-             `separation.csv` and from `cylroll separation`). Forces are in units of m₁g. Any point that could not be \
-             verified is listed here too."
-        )],
-        items,
-        links: Vec::new(),
-    };
+}
 
+/// A row of table 4 for a verified μ.
+fn slip_row(mu: &str, s: &Separation) -> Vec<String> {
+    let fl = extra(s, "theta_slip_floor");
+    let ct = extra(s, "theta_slip_contact");
+    let cell = |v: Option<&Verified>| match v {
+        Some(v) => num(&v.text),
+        None => "rolls until separation".to_string(),
+    };
+    let first = match (fl, ct) {
+        (Some(a), Some(b)) if a.value < b.value => "the floor",
+        (Some(_), Some(_)) | (None, Some(_)) => "the contact between the cylinders",
+        (Some(_), None) => "the floor",
+        (None, None) => "neither",
+    };
+    vec![
+        num(mu),
+        cell(fl),
+        cell(ct),
+        first.to_string(),
+        num(&s.theta_s.text),
+    ]
+}
+
+/// Builds every table from the data.
+pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
+    let mut b = Builder {
+        data,
+        cfg,
+        problems: Vec::new(),
+    };
+    let (t1, t2, separation_csv) = b.separation()?;
+    let t3 = b.forces();
+    let t4 = b.friction();
+    let t5 = b.plane()?;
+    let plane_csv = b.plane_csv();
+    let notes = b.notes();
     Ok(Tables {
         tables: vec![t1, t2, t3, t4, t5],
         notes,
-        separation_csv: csv,
+        separation_csv,
         plane_csv,
-        problems,
+        problems: b.problems,
     })
 }
 
@@ -600,62 +651,10 @@ fn plain(note: &str) -> String {
 /// lower cylinder's normal force, the friction the floor needs, the turning
 /// of cylinder 1, the friction at separation, then any other note.
 pub fn reader_notes(v: (Floor, Contact), s: &Separation) -> String {
-    let mut out: Vec<String> = Vec::new();
     let held = v.0 == Floor::Fixed;
-    let n1 = extra(s, "N1_min").zip(extra(s, "theta_N1_min"));
-    let lift = extra(s, "theta_N1_zero");
-    match (held, lift, n1) {
-        (_, Some(a), _) => out.push(format!(
-            "N₁ reaches 0 at θ = {} before separation: cylinder 1 would leave {} first",
-            r6(a),
-            if held { "its holder" } else { "the floor" }
-        )),
-        (true, None, Some((m, a))) => out.push(format!(
-            "cylinder 1 is held: the holder's vertical force N₁ stays positive up to separation (checked at every angle), \
-             smallest {} at θ = {}",
-            r6(m),
-            r6(a)
-        )),
-        (false, None, Some((m, a))) => out.push(format!(
-            "cylinder 1 stays on the floor: N₁ > 0 at every angle up to separation (N₁ has no root there), smallest {} at θ = {}",
-            r6(m),
-            r6(a)
-        )),
-        _ => {}
-    }
-    if let (Some(m), Some(a)) = (extra(s, "mu_floor_max"), extra(s, "theta_mu_floor_max")) {
-        out.push(if held {
-            format!(
-                "the holder's horizontal force is at most |F₁|/N₁ = {} of its vertical force (at θ = {})",
-                r6(m),
-                r6(a)
-            )
-        } else {
-            format!(
-                "rolling on the floor needs a friction coefficient of at most |F₁|/N₁ = {} (at θ = {})",
-                r6(m),
-                r6(a)
-            )
-        });
-    }
+    let mut out = floor_notes(held, s);
     if !held && v != (Floor::Slip, Contact::Slip) {
-        for (key, name) in [("phi1dot", "dφ₁/dt"), ("phi1", "φ₁")] {
-            let before = extra(s, &format!("theta_{key}_zero"));
-            let after = extra(s, &format!("theta_{key}_zero_after_separation"));
-            let ths = s.theta_s.value.to_f64();
-            out.push(match (before, after) {
-                (Some(a), _) if (a.value.to_f64() - ths).abs() < 1e-12 * ths.max(1.0) => {
-                    format!("{name} reaches 0 exactly at separation")
-                }
-                (Some(a), _) => format!("{name} changes sign at θ = {}, before separation", r6(a)),
-                (None, Some(a)) => format!(
-                    "{name} keeps its sign up to separation (continued past θₛ, the formulas would change it at θ = {}, which the \
-                     motion never reaches)",
-                    r6(a)
-                ),
-                (None, None) => format!("{name} keeps its sign up to separation"),
-            });
-        }
+        out.extend(turning_notes(s));
     }
     if let Some(f) = extra(s, "F21_at_s") {
         out.push(format!(
@@ -695,4 +694,69 @@ pub fn reader_notes(v: (Floor, Contact), s: &Separation) -> String {
     }
     text.push('.');
     text
+}
+
+/// What the floor (or the holder) does: N₁ and the friction it needs.
+fn floor_notes(held: bool, s: &Separation) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    let n1 = extra(s, "N1_min").zip(extra(s, "theta_N1_min"));
+    let lift = extra(s, "theta_N1_zero");
+    match (held, lift, n1) {
+        (_, Some(a), _) => out.push(format!(
+            "N₁ reaches 0 at θ = {} before separation: cylinder 1 would leave {} first",
+            r6(a),
+            if held { "its holder" } else { "the floor" }
+        )),
+        (true, None, Some((m, a))) => out.push(format!(
+            "cylinder 1 is held: the holder's vertical force N₁ stays positive up to separation (checked at every angle), \
+             smallest {} at θ = {}",
+            r6(m),
+            r6(a)
+        )),
+        (false, None, Some((m, a))) => out.push(format!(
+            "cylinder 1 stays on the floor: N₁ > 0 at every angle up to separation (N₁ has no root there), smallest {} at θ = {}",
+            r6(m),
+            r6(a)
+        )),
+        _ => {}
+    }
+    if let (Some(m), Some(a)) = (extra(s, "mu_floor_max"), extra(s, "theta_mu_floor_max")) {
+        out.push(if held {
+            format!(
+                "the holder's horizontal force is at most |F₁|/N₁ = {} of its vertical force (at θ = {})",
+                r6(m),
+                r6(a)
+            )
+        } else {
+            format!(
+                "rolling on the floor needs a friction coefficient of at most |F₁|/N₁ = {} (at θ = {})",
+                r6(m),
+                r6(a)
+            )
+        });
+    }
+    out
+}
+
+/// Where cylinder 1's rotation rate and angle change sign.
+fn turning_notes(s: &Separation) -> Vec<String> {
+    let mut out = Vec::new();
+    for (key, name) in [("phi1dot", "dφ₁/dt"), ("phi1", "φ₁")] {
+        let before = extra(s, &format!("theta_{key}_zero"));
+        let after = extra(s, &format!("theta_{key}_zero_after_separation"));
+        let ths = s.theta_s.value.to_f64();
+        out.push(match (before, after) {
+            (Some(a), _) if (a.value.to_f64() - ths).abs() < 1e-12 * ths.max(1.0) => {
+                format!("{name} reaches 0 exactly at separation")
+            }
+            (Some(a), _) => format!("{name} changes sign at θ = {}, before separation", r6(a)),
+            (None, Some(a)) => format!(
+                "{name} keeps its sign up to separation (continued past θₛ, the formulas would change it at θ = {}, which the \
+                 motion never reaches)",
+                r6(a)
+            ),
+            (None, None) => format!("{name} keeps its sign up to separation"),
+        });
+    }
+    out
 }
