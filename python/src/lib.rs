@@ -438,7 +438,13 @@ type Enclosure = (String, String, u32, String, String);
 /// One proved value as the Python side takes it.
 fn enclosure(v: &cylroll::oracle::rigorous::Proved, digits: u32) -> Enclosure {
     let (mid, rad) = v.texts(digits);
-    (v.name.clone(), v.shown.text.clone(), v.shown.digits, mid, rad)
+    (
+        v.name.clone(),
+        v.shown.text.clone(),
+        v.shown.digits,
+        mid,
+        rad,
+    )
 }
 
 /// `enclose`: proved enclosures (`--rigorous`) of the ideal models'
@@ -497,10 +503,7 @@ fn enclose(
             let short = proved
                 .iter()
                 .any(|v| v.shown.digits < digits && v.shown.text != "0");
-            out = proved
-                .iter()
-                .map(|v| enclosure(v, digits))
-                .collect();
+            out = proved.iter().map(|v| enclosure(v, digits)).collect();
             if !short {
                 break;
             }
