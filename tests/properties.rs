@@ -230,3 +230,47 @@ proptest! {
         prop_assert!(imp.t > sep.t);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, rng_seed: RngSeed::Fixed(SEED), .. ProptestConfig::default() })]
+
+    /// The high-precision routes against the low-precision ones on random
+    /// models: at 40 digits t(θ), t_s and θ(t) come from tanh-sinh and the
+    /// Taylor run (both working precisions below 256 bits), at 190 digits
+    /// from Chebyshev interpolation and its inversion (both above 600 bits);
+    /// the first 40 digits must agree.
+    #[test]
+    fn chebyshev_and_tanh_sinh_routes_agree(model in any_model()) {
+        let (mut lo, mut hi) = match (Oracle::new(&model, 40), Oracle::new(&model, 190)) {
+            (Ok(a), Ok(b)) => (a, b),
+            _ => return Ok(()),
+        };
+        let sep = match lo.separation() {
+            Ok(s) => s,
+            Err(Error::NotPhysical { .. }) => return Ok(()),
+            Err(e) => panic!("{e}: {}", model.describe()),
+        };
+        let round = |v: &cylroll::numeric::verify::Verified, d: u32| {
+            cylroll::numeric::decimal::to_sig(&v.value, d)
+        };
+        let th0 = model.start().theta0.to_f64();
+        let ths = num(&sep.theta_s);
+        // an angle inside the half-angle form's range (θ ≤ 2π/3)
+        let th = th0 + 0.6 * (ths.min(2.0) - th0);
+        let e = Exact::parse("theta", &format!("{th:.12}"), false).unwrap();
+        let a = lo.time_at(&e).unwrap();
+        let b = hi.time_at(&e).unwrap();
+        prop_assert_eq!(round(&b, a.digits), a.text.clone(), "t: {}", model.describe());
+        // θ(t) at that time, by the Taylor run and by the inversion
+        let t = Exact::parse("t", &format!("{:.12}", num(&a)), false).unwrap();
+        let ra = lo.theta_at_times(std::slice::from_ref(&t)).unwrap();
+        let rb = hi.theta_at_times(std::slice::from_ref(&t)).unwrap();
+        prop_assert_eq!(round(&rb[0], ra[0].digits), ra[0].text.clone(), "theta(t): {}", model.describe());
+        if ths < 2.0 {
+            let sb = hi.separation().unwrap();
+            if let (Some(x), Some(y)) = (&sep.t_s, &sb.t_s) {
+                prop_assert_eq!(round(y, x.digits), x.text.clone(), "t_s: {}", model.describe());
+            }
+        }
+    }
+}

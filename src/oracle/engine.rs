@@ -504,9 +504,9 @@ struct Piece {
     /// Bound on |T − T_true| over the piece (estimated, see
     /// [`Engine::inverse`]).
     err_tau: Float,
-    /// max |f'/(2f)| over the piece (in v), ×4: Newton's step from an
-    /// error e leaves κ e².
-    kappa: f64,
+    /// The Chebyshev coefficients of df/dx, for Newton's error at a root
+    /// (κ = |f'/2f| there: a step from an error e leaves about κ e²).
+    dseed: Vec<f64>,
 }
 
 impl Piece {
@@ -527,17 +527,9 @@ impl Piece {
             .rev()
             .map(|q| (q, prim.rounded(q), f.rounded(q / 2 + 32)))
             .collect();
-        // |f'/2f| from the f64 copies at 256 points, ×4
+        // f' in x, for Newton's error at the root found (f64: a size only)
         let cf: Vec<f64> = f.c.iter().map(|c| c.to_f64()).collect();
-        let dc = derivative64(&cf);
-        let mut kappa = 0.0f64;
-        for i in 0..=256 {
-            let x = -1.0 + i as f64 / 128.0;
-            let k = (clenshaw64(&dc, x) / (2.0 * clenshaw64(&cf, x))).abs();
-            kappa = kappa.max(k);
-        }
-        let len = Float::with_val(p, &f.b - &f.a).to_f64();
-        let kappa = 4.0 * kappa * 2.0 / len;
+        let dseed = derivative64(&cf);
         let seed = (prim.c.iter().map(|c| c.to_f64()).collect(), cf);
         Piece {
             offset64: offset.to_f64(),
@@ -546,8 +538,8 @@ impl Piece {
             offset,
             lower,
             seed,
+            dseed,
             err_tau,
-            kappa,
         }
     }
 }
@@ -646,10 +638,19 @@ impl Inverse {
         let r = Float::with_val(p, pc.prim.eval(&v, p) - &tau_rel);
         let step = Float::with_val(p, &r / &fh);
         v -= &step;
-        // the last step leaves κ·step² of Newton's error, and T's own error
-        // moves the root by err_T/f
+        // the last step leaves κ·step² of Newton's error, κ = |f'/2f| at the
+        // root (×4; in v: df/dv = df/dx · 2/(b − a)), and T's own error
+        // moves the root by err_T/f. κ is local: with θ̇0 ≠ 0 the integrand
+        // vanishes at v = 0, where no bound over the piece is finite.
+        let xr = ((2.0 * v.to_f64() - a64 - b64) / (b64 - a64)).clamp(-1.0, 1.0);
+        let kappa = 4.0 * (clenshaw64(&pc.dseed, xr) / (2.0 * clenshaw64(cf, xr) * half64)).abs();
+        let kappa = if kappa.is_finite() {
+            kappa.max(1.0)
+        } else {
+            1e30
+        };
         let mut err_v = Float::with_val(p, &pc.err_tau / &fh);
-        err_v += Float::with_val(p, step.square_ref()) * pc.kappa.max(1.0);
+        err_v += Float::with_val(p, step.square_ref()) * kappa;
         err_v += Float::with_val(p, &err_v >> 8);
         err_v += Float::with_val(p, v.abs_ref()) >> (p as i32 - 2);
         // δ = 2 asin(s c0 − s0 c), s c0 − s0 c = σ(σ + 2s0)/(s c0 + s0 c)
