@@ -1282,9 +1282,13 @@ impl Oracle {
         let high = run == Run::High;
         let e = self.engine(p)?;
         // the check is an independent route: tanh-sinh (or Gauss–Legendre),
-        // never the Chebyshev interpolant the rows may come from
+        // never the Chebyshev interpolant the rows may come from — except
+        // from a start near the top, where the split tanh-sinh can misjudge
+        // its error: there a Chebyshev interpolation on pieces graded
+        // differently (ρ 4 each instead of 3: other points, other sizes)
         let cheb_before = e.use_cheb;
-        e.use_cheb = false;
+        e.use_cheb = near_top && p >= crate::oracle::engine::CHEB_MIN_BITS;
+        e.cheb_target = 4.0;
         let (tm, tm_err, _) = e.time_fast(&d, high, false);
         let gap = Float::with_val(p, &tm - &t_last).abs() + &tm_err;
         let thetadot = e.inv_thetadot(&d).recip();
@@ -1301,7 +1305,9 @@ impl Oracle {
             let thi = e.time_fast(&dhi, high, false).0;
             tlo <= t_last && t_last <= thi
         };
-        self.engine(p)?.use_cheb = cheb_before;
+        let e = self.engine(p)?;
+        e.use_cheb = cheb_before;
+        e.cheb_target = 3.0;
         if !certified {
             // The bracket is too narrow for the quadrature at this precision
             // to decide: widen every ε by the same factor until the one-integral
