@@ -452,3 +452,64 @@ fn where_sticking_ends_is_proved_with_friction() {
         "{out}"
     );
 }
+
+/// Every golden case: the proved θs and t_s (ideal models) contain the values
+/// verified at twice the digits; with friction, where sticking ends (when the
+/// start sticks at both contacts) contains the first event verified at more
+/// digits. A quantity that cannot be enclosed must say why (t_s beyond 2π/3).
+#[test]
+fn every_golden_case_is_enclosed_around_its_verified_values() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("golden");
+    let cases = cylroll::record::load_cases(&dir).unwrap();
+    let (mut ideal, mut friction) = (0, 0);
+    for case in &cases {
+        match &case.friction {
+            None => {
+                let mut o = Oracle::new(&case.model, 30).unwrap();
+                let (th, ts) = o.rigorous_separation(160).unwrap();
+                let want = Oracle::new(&case.model, 60).unwrap().separation().unwrap();
+                assert!(
+                    th.iv.contains(&want.theta_s.value),
+                    "{}: theta_s",
+                    case.name
+                );
+                assert!(
+                    th.shown.digits >= 30,
+                    "{}: {} digits",
+                    case.name,
+                    th.shown.digits
+                );
+                match (ts, &want.t_s) {
+                    (Ok(t), Some(w)) => assert!(t.iv.contains(&w.value), "{}: t_s", case.name),
+                    (Err(why), _) => assert!(!why.is_empty(), "{}", case.name),
+                    (Ok(_), None) => panic!("{}: t_s proved but infinite", case.name),
+                }
+                ideal += 1;
+            }
+            Some(fr) => {
+                let ans = cylroll::friction::answer::separation(&case.model, fr, 30).unwrap();
+                let Ok(slots) =
+                    cylroll::oracle::rigorous::stick_end_proved(&case.model, fr, &ans, 30)
+                else {
+                    continue; // a start that slips at once: nothing enclosed, said so
+                };
+                let more = cylroll::friction::answer::separation(&case.model, fr, 45).unwrap();
+                let ev = &more.events[0];
+                for (_, v, pv) in slots {
+                    let pv = pv.unwrap_or_else(|| panic!("{}: {} not enclosed", case.name, v.name));
+                    let want = if v.name.starts_with("theta") {
+                        &ev.theta
+                    } else {
+                        &ev.t
+                    };
+                    assert!(pv.iv.contains(&want.value), "{}: {}", case.name, v.name);
+                }
+                friction += 1;
+            }
+        }
+    }
+    assert!(
+        ideal >= 8 && friction >= 4,
+        "ideal {ideal}, friction {friction}"
+    );
+}
