@@ -396,3 +396,30 @@ fn chebyshev_inversion_from_a_moving_start_on_a_held_cylinder() {
     let got = to_sig(&Float::with_val(900, Float::parse(&b[0].text).unwrap()), 40);
     assert_eq!(got, a[0].text);
 }
+
+/// At a tiny time the motion from rest is θ0 + θ̈0 t²/2 (the next term is
+/// t² smaller), and the last-time certificate compares t(θ ∓ ε) with room
+/// ε·dt/dθ = ε/θ̇: it was ε·θ̇, too strict where θ̇ < 1 (here 1e-51: exit 3
+/// at every precision of the Chebyshev route) and too lenient where θ̇ > 1.
+#[test]
+fn a_tiny_time_from_rest_is_the_parabola() {
+    let m = t3_model();
+    let t = Exact::parse("t", "1e-50", false).unwrap();
+    for digits in [100u32, 200] {
+        let rows = Oracle::new(&m, digits)
+            .unwrap()
+            .trajectory(std::slice::from_ref(&t))
+            .unwrap();
+        let acc = Oracle::new(&m, digits + 20)
+            .unwrap()
+            .forces_at(&q("1/10"))
+            .unwrap();
+        let thdd = &acc.iter().find(|v| v.name == "theta_ddot").unwrap().value;
+        let p = 4 * digits + 200;
+        let tt = Float::with_val(p, Float::parse("1e-50").unwrap());
+        let want =
+            Float::with_val(p, tt.square_ref()) * thdd / 2u32 + Float::with_val(p, 1u32) / 10u32;
+        assert_eq!(rows[0][1].digits, digits);
+        assert_eq!(rows[0][1].text, to_sig(&want, digits), "{digits}");
+    }
+}

@@ -1277,7 +1277,7 @@ impl Oracle {
         let (d, eps) = out[i_max].clone();
         // certify at the last time: t(δ − ε) ≤ t ≤ t(δ + ε) by the energy
         // quadrature. One integral suffices when |t(δ) − t| + its error is
-        // below ε θ̇(δ) (less 2^-16: θ̇ varies by far less over [δ−ε, δ+ε]);
+        // below ε/θ̇(δ) = ε dt/dδ (less 2^-16: θ̇ varies by far less over [δ−ε, δ+ε]);
         // otherwise both ends are integrated.
         let high = run == Run::High;
         let e = self.engine(p)?;
@@ -1291,8 +1291,8 @@ impl Oracle {
         e.cheb_target = 4.0;
         let (tm, tm_err, _) = e.time_fast(&d, high, false);
         let gap = Float::with_val(p, &tm - &t_last).abs() + &tm_err;
-        let thetadot = e.inv_thetadot(&d).recip();
-        let room = Float::with_val(p, &eps * &thetadot);
+        // t(δ ± ε) − t(δ) ≈ ±ε dt/dδ = ±ε/θ̇
+        let room = Float::with_val(p, &eps * e.inv_thetadot(&d));
         let room = Float::with_val(p, &room - Float::with_val(p, &room >> 16));
         let mut certified = gap <= room || {
             let dlo = Float::with_val(p, &d - &eps);
