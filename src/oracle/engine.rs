@@ -591,28 +591,10 @@ fn clenshaw64(c: &[f64], x: f64) -> f64 {
 }
 
 impl Inverse {
-    /// δ = θ − θ0 at time `t` (0 ≤ t ≤ t(δ_end)) and its error bound, at
-    /// the working precision.
-    pub fn delta_at(&self, t: &Float) -> (Float, Float) {
-        let p = self.s0.prec();
-        let tau = Float::with_val(p, t / &self.factor);
-        if tau.is_zero() {
-            return (Float::new(p), Float::new(p));
-        }
-        let tau64 = tau.to_f64();
-        // the piece: the last whose T at its left end is ≤ τ
-        let pc = self
-            .pieces
-            .iter()
-            .rev()
-            .find(|pc| pc.offset64 <= tau64)
-            .unwrap_or(&self.pieces[0]);
-        let tau_rel = Float::with_val(p, &tau - &pc.offset);
-        // the seed: T is increasing on the piece (f > 0): Newton in
-        // x ∈ [−1, 1] safeguarded by bisection, in f64
-        let (a64, b64) = (pc.f.a.to_f64(), pc.f.b.to_f64());
-        let half64 = (b64 - a64) / 2.0;
-        let t64 = tau_rel.to_f64();
+    /// x ∈ [−1, 1] with T(x) = τ on the piece, by Newton's method
+    /// safeguarded by bisection in `f64` (T increases: f > 0 inside), as v
+    /// relative to the piece's left end.
+    fn seed64(pc: &Piece, t64: f64, half64: f64) -> f64 {
         let (cp, cf) = (&pc.seed.0, &pc.seed.1);
         let (mut lo, mut hi) = (-1.0f64, 1.0f64);
         let mut x = (2.0 * t64 / clenshaw64(cp, 1.0) - 1.0).clamp(-1.0, 1.0);
@@ -634,15 +616,82 @@ impl Inverse {
             }
             x = nx;
         }
-        let mut v = Float::with_val(p, x + 1.0) * half64 + &pc.f.a;
+        (x + 1.0) * half64
+    }
+
+    /// The seed for a tiny τ at the start (v = 0) from T's leading term:
+    /// T ≈ f(0)·v from rest, T ≈ f'(0)·v²/2 from a moving start (where the
+    /// integrand in v vanishes at 0). In `Float` at 64 bits, whose exponent
+    /// range holds any τ (a time of 1e-400).
+    fn seed_near_start(pc: &Piece, tau: &Float, half64: f64) -> Float {
+        let p = pc.f.prec();
+        let f0 = clenshaw64(&pc.seed.1, -1.0);
+        let tau = Float::with_val(64, tau);
+        let v = if f0 > 1e-12 * clenshaw64(&pc.seed.1, 1.0).abs() {
+            tau / f0
+        } else {
+            let d0 = (clenshaw64(&pc.dseed, -1.0) / half64)
+                .abs()
+                .max(f64::MIN_POSITIVE);
+            (tau * 2u32 / d0).sqrt()
+        };
+        Float::with_val(p, v)
+    }
+
+    /// δ = θ − θ0 at time `t` (0 ≤ t ≤ t(δ_end)) and its error bound, at
+    /// the working precision.
+    pub fn delta_at(&self, t: &Float) -> (Float, Float) {
+        let p = self.s0.prec();
+        let tau = Float::with_val(p, t / &self.factor);
+        if tau.is_zero() {
+            return (Float::new(p), Float::new(p));
+        }
+        let tau64 = tau.to_f64();
+        // the piece: the last whose T at its left end is ≤ τ
+        let pc = self
+            .pieces
+            .iter()
+            .rev()
+            .find(|pc| pc.offset64 <= tau64)
+            .unwrap_or(&self.pieces[0]);
+        let tau_rel = Float::with_val(p, &tau - &pc.offset);
+        let (a64, b64) = (pc.f.a.to_f64(), pc.f.b.to_f64());
+        let half64 = (b64 - a64) / 2.0;
+        let cf = &pc.seed.1;
+        // lift: how many bits τ lies below T's span over the piece. At the
+        // start of the first piece a tiny τ (a tiny time) cancels in any
+        // evaluation of T at a fixed precision: the seed then comes from T's
+        // leading term at v = 0, and every Newton step works `lift` bits
+        // higher so that τ keeps its relative accuracy.
+        let span_exp = clenshaw64(&pc.seed.0, 1.0).abs().log2().ceil() as i64;
+        let lift = match tau_rel.get_exp() {
+            Some(e) if pc.f.a.is_zero() => (span_exp - e as i64 - 30).max(0) as u32,
+            _ => 0,
+        };
+        let mut v = if lift > 0 {
+            Self::seed_near_start(pc, &tau_rel, half64)
+        } else {
+            Float::with_val(p, Self::seed64(pc, tau_rel.to_f64(), half64)) + &pc.f.a
+        };
         // Newton steps, each doubling the correct bits
         for (q, prim, f) in &pc.lower {
-            let vq = Float::with_val(*q, &v);
-            let r = Float::with_val(*q, prim.eval(&vq, *q) - &tau_rel);
-            let d = f.eval(&vq, f.prec());
+            let (r, d) = if lift == 0 {
+                let vq = Float::with_val(*q, &v);
+                (
+                    Float::with_val(*q, prim.eval(&vq, *q) - &tau_rel),
+                    f.eval(&vq, f.prec()),
+                )
+            } else {
+                let (qt, qf) = ((q + lift).min(p), (f.prec() + lift).min(p));
+                let vq = Float::with_val(qt, &v);
+                (
+                    Float::with_val(qt, pc.prim.eval(&vq, qt) - &tau_rel),
+                    pc.f.eval(&Float::with_val(qf, &v), qf),
+                )
+            };
             v -= Float::with_val(*q, r / d);
         }
-        let half = p / 2 + 32;
+        let half = (p / 2 + 32 + lift).min(p);
         let fh = pc.f.eval(&Float::with_val(half, &v), half);
         let r = Float::with_val(p, pc.prim.eval(&v, p) - &tau_rel);
         let step = Float::with_val(p, &r / &fh);
