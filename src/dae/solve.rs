@@ -695,14 +695,7 @@ fn dip<I: Stepper>(
     let d1 = rate_cached(sys, watch, s1, c1)?;
     let hf = h.to_f64();
     let (g0, g1, r0, r1) = (ga.to_f64(), gb.to_f64(), d0.to_f64(), d1.to_f64());
-    let val = |x: f64| {
-        let u = x / hf;
-        let h00 = 2.0 * u * u * u - 3.0 * u * u + 1.0;
-        let h10 = u * u * u - 2.0 * u * u + u;
-        let h01 = -2.0 * u * u * u + 3.0 * u * u;
-        let h11 = u * u * u - u * u;
-        h00 * g0 + h10 * hf * r0 + h01 * g1 + h11 * hf * r1
-    };
+    let val = |x: f64| hermite(hf, g0, r0, g1, r1, x);
     // the interpolant's closest approach to zero, on a fine grid
     let sgn = if pos { 1.0 } else { -1.0 };
     let (mut xm, mut vm) = (0.0, f64::INFINITY);
@@ -726,17 +719,21 @@ fn dip<I: Stepper>(
     Ok(Some((x, gx, smp)))
 }
 
+/// The cubic Hermite interpolant at x ∈ [0, h] of g with values g0, g1 and
+/// slopes d0, d1 at the ends (f64: for starting points only).
+fn hermite(h: f64, g0: f64, d0: f64, g1: f64, d1: f64, x: f64) -> f64 {
+    let u = x / h;
+    let h00 = 2.0 * u * u * u - 3.0 * u * u + 1.0;
+    let h10 = u * u * u - 2.0 * u * u + u;
+    let h01 = -2.0 * u * u * u + 3.0 * u * u;
+    let h11 = u * u * u - u * u;
+    h00 * g0 + h10 * h * d0 + h01 * g1 + h11 * h * d1
+}
+
 /// The root in (0, h) of the cubic Hermite interpolant of g with values
 /// and slopes at both ends (f64: only a starting point).
 fn hermite_root(h: f64, g0: f64, d0: f64, g1: f64, d1: f64) -> f64 {
-    let val = |x: f64| {
-        let u = x / h;
-        let h00 = 2.0 * u * u * u - 3.0 * u * u + 1.0;
-        let h10 = u * u * u - 2.0 * u * u + u;
-        let h01 = -2.0 * u * u * u + 3.0 * u * u;
-        let h11 = u * u * u - u * u;
-        h00 * g0 + h10 * h * d0 + h01 * g1 + h11 * h * d1
-    };
+    let val = |x: f64| hermite(h, g0, d0, g1, d1, x);
     // bisection on the cubic keeps the sign change of the ends
     let (mut a, mut b) = (0.0, h);
     let fa = val(a);

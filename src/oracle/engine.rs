@@ -182,6 +182,22 @@ impl Engine {
         (v, e, Rule::TanhSinh)
     }
 
+    /// t(δ) by a route independent of the Chebyshev interpolant the
+    /// trajectory's rows come from (its certificate at the last time):
+    /// tanh-sinh (or a built Gauss–Legendre rule) — or, from a start near the
+    /// top at 256 bits and more, where the split tanh-sinh can misjudge its
+    /// error, Chebyshev interpolation on pieces graded differently (ρ 4 each
+    /// instead of 3: other points, other sizes). The engine's settings are
+    /// left as they were.
+    pub fn time_check(&mut self, delta: &Float, high: bool, near_top: bool) -> (Float, Float) {
+        let saved = (self.use_cheb, self.cheb_target);
+        self.use_cheb = near_top && self.prec() >= CHEB_MIN_BITS;
+        self.cheb_target = 4.0;
+        let (v, e, _) = self.time_fast(delta, high, false);
+        (self.use_cheb, self.cheb_target) = saved;
+        (v, e)
+    }
+
     /// t(δ) for a start from rest within 2^−40 (relative to σ) of the top, by
     /// [`TinyStart`]: the ln θ0 part in closed form, the rest by tanh-sinh;
     /// `None` where it does not apply (θ̇0 ≠ 0, θ0 not tiny, θ > 2π/3).
@@ -306,7 +322,7 @@ impl Engine {
         let mut offset = Float::new(p);
         let mut err_left = Float::new(p);
         for f in fits {
-            let (_, e_f) = self.cheb_answer_raw(std::slice::from_ref(&f));
+            let e_f = self.cheb_answer_raw(std::slice::from_ref(&f));
             err_left += e_f;
             let prim = f.antiderivative();
             let n = prim.c.len() as f64;
@@ -333,7 +349,7 @@ impl Engine {
     /// uniform error (twice the neglected coefficients, bounded by the last
     /// ones, [`ChebFit::tail`]) plus the transform's rounding (a few units
     /// per FFT level, relative to max |f|), times the piece's length.
-    fn cheb_answer_raw(&self, fits: &[ChebFit]) -> (u32, Float) {
+    fn cheb_answer_raw(&self, fits: &[ChebFit]) -> Float {
         let p = self.prec();
         let mut e = Float::new(p);
         for fit in fits {
@@ -344,14 +360,15 @@ impl Engine {
             ei *= &len;
             e += ei;
         }
-        (p, e)
+        e
     }
 
     /// The value `integral` of `fits` as a time, with its error (the
     /// interpolants' errors, [`Engine::cheb_answer_raw`], and the roundings
     /// of the factor and the sum).
     pub fn cheb_answer(&self, fits: &[ChebFit], integral: Float) -> (Float, Float) {
-        let (p, mut e) = self.cheb_answer_raw(fits);
+        let p = self.prec();
+        let mut e = self.cheb_answer_raw(fits);
         let v = Float::with_val(p, integral * &self.half.factor);
         e *= &self.half.factor;
         let ulps = Float::with_val(p, v.abs_ref()) >> (p as i32 - 4);

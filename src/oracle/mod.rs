@@ -1265,14 +1265,15 @@ impl Oracle {
         // run crawls there)
         let near_top = self.work.start().theta0.to_f64().abs() < NEAR_TOP;
         let by_cheb = p >= TRAJECTORY_CHEB_MIN_BITS || near_top;
-        let mut out = match by_cheb {
-            true => self.deltas_cheb(times, tt_all, p, extra)?,
-            false => None,
+        let cheb = if by_cheb {
+            self.deltas_cheb(times, tt_all, p, extra)?
+        } else {
+            None
         };
-        if out.is_none() {
-            out = Some(self.deltas_taylor(times, tt_all, i_max, p, extra)?);
-        }
-        let mut out = out.expect("one route");
+        let mut out = match cheb {
+            Some(out) => out,
+            None => self.deltas_taylor(times, tt_all, i_max, p, extra)?,
+        };
         let t_last = Float::with_val(tq, &tt_all[i_max]);
         let (d, eps) = out[i_max].clone();
         // certify at the last time: t(δ − ε) ≤ t ≤ t(δ + ε) by the energy
@@ -1281,15 +1282,7 @@ impl Oracle {
         // otherwise both ends are integrated.
         let high = run == Run::High;
         let e = self.engine(p)?;
-        // the check is an independent route: tanh-sinh (or Gauss–Legendre),
-        // never the Chebyshev interpolant the rows may come from — except
-        // from a start near the top, where the split tanh-sinh can misjudge
-        // its error: there a Chebyshev interpolation on pieces graded
-        // differently (ρ 4 each instead of 3: other points, other sizes)
-        let cheb_before = e.use_cheb;
-        e.use_cheb = near_top && p >= crate::oracle::engine::CHEB_MIN_BITS;
-        e.cheb_target = 4.0;
-        let (tm, tm_err, _) = e.time_fast(&d, high, false);
+        let (tm, tm_err) = e.time_check(&d, high, near_top);
         let gap = Float::with_val(p, &tm - &t_last).abs() + &tm_err;
         // t(δ ± ε) − t(δ) ≈ ±ε dt/dδ = ±ε/θ̇
         let room = Float::with_val(p, &eps * e.inv_thetadot(&d));
@@ -1298,16 +1291,13 @@ impl Oracle {
             let dlo = Float::with_val(p, &d - &eps);
             let dhi = Float::with_val(p, &d + &eps);
             let tlo = if dlo.is_sign_positive() {
-                e.time_fast(&dlo, high, false).0
+                e.time_check(&dlo, high, near_top).0
             } else {
                 Float::new(p)
             };
-            let thi = e.time_fast(&dhi, high, false).0;
+            let thi = e.time_check(&dhi, high, near_top).0;
             tlo <= t_last && t_last <= thi
         };
-        let e = self.engine(p)?;
-        e.use_cheb = cheb_before;
-        e.cheb_target = 3.0;
         if !certified {
             // The bracket is too narrow for the quadrature at this precision
             // to decide: widen every ε by the same factor until the one-integral
