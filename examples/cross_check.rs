@@ -21,7 +21,7 @@ fn main() {
                     "{:16} {:6.1} digits  {}",
                     r.name,
                     r.digits,
-                    r.gbs.to_string_radix(10, Some(25))
+                    r.spectral.to_string_radix(10, Some(25))
                 );
             }
         }

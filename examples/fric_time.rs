@@ -1,21 +1,53 @@
+//! Timing of the motion with friction (main case, μ = 0.3 at both contacts):
+//! the event list at the ladder's two precisions, and 1000 rows to t_s.
+//! `cargo run --release --example fric_time -- [DIGITS]`.
 use cylroll::exact::Exact;
-use cylroll::friction::{self, Friction, Law};
+use cylroll::friction::{self, answer, Friction, Law};
 use cylroll::model::Model;
+use rug::Rational;
+
 fn main() {
+    let digits: u32 = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(30);
     let fr = Friction {
-        floor: Law::parse("m", "0.3").unwrap(),
-        contact: Law::parse("m", "0.3").unwrap(),
+        floor: Law::parse("m", "0.3").expect("mu"),
+        contact: Law::parse("m", "0.3").expect("mu"),
     };
-    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
-    for p in [124u32, 171] {
+    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).expect("theta0"));
+    let (p1, p2) = cylroll::numeric::verify::precisions(digits, 0);
+    for p in [p1, p2] {
         let t = std::time::Instant::now();
         let h = friction::default_horizon(&m, p);
-        let mo = friction::solve(&m, &fr, p, &[], true, &h).unwrap();
+        let mo = friction::solve(&m, &fr, p, &[], true, &h).expect("solve");
         println!(
-            "{p}: {:.1} ms, {} events, {:?}",
+            "{p} bits: {:.1} ms, {} events, routes {:?}, work {:?}",
             t.elapsed().as_secs_f64() * 1e3,
             mo.events.len(),
+            mo.routes,
             mo.work_done
         );
     }
+    let t = std::time::Instant::now();
+    let sep = answer::separation(&m, &fr, digits).expect("separation");
+    println!("separation: {:.1} ms", t.elapsed().as_secs_f64() * 1e3);
+    let ts = sep
+        .values
+        .iter()
+        .find(|v| v.name == "t_s")
+        .expect("t_s")
+        .value
+        .to_f64();
+    let end = Rational::from(((ts * 1000.0).floor() as i64, 1000));
+    let times: Vec<Exact> = (0..1000)
+        .map(|i| Exact::rational(&end * Rational::from((i as i64, 999))))
+        .collect();
+    let t = std::time::Instant::now();
+    let tr = answer::trajectory(&m, &fr, digits, &times).expect("trajectory");
+    println!(
+        "trajectory, {} rows: {:.1} ms",
+        tr.rows.len(),
+        t.elapsed().as_secs_f64() * 1e3
+    );
 }

@@ -41,6 +41,7 @@ pub mod gbs;
 pub mod golden;
 pub mod solve;
 pub mod spec;
+pub mod spectral;
 mod stack;
 pub mod system;
 mod verify;

@@ -326,7 +326,7 @@ pub struct VerifyRow {
 /// One case of [`VerifyReport`].
 #[derive(Debug, Clone)]
 pub struct VerifySection {
-    /// `routes` (route 1 against route 2) or `friction` (GBS against collocation).
+    /// `routes` (route 1 against route 2) or `friction` (the spectral route against GBS and collocation).
     pub kind: &'static str,
     /// Case name.
     pub name: String,
@@ -402,9 +402,10 @@ impl VerifyReport {
             if sec.kind == "friction" && !friction_header {
                 friction_header = true;
                 out.push_str(
-                    "\n# Friction: the modes integrated by GBS extrapolation against Gauss-Legendre collocation\n\
-                     # (an implicit Runge-Kutta method, independent of GBS), both at the higher working precision\n\
-                     # of the requested digits; the event sequences must be identical; agree as above\n",
+                    "\n# Friction: the modes by Chebyshev spectral integration in the angle (the answers' route)\n\
+                     # against two time integrators, GBS extrapolation and Gauss-Legendre collocation (an implicit\n\
+                     # Runge-Kutta method), all at the higher working precision of the requested digits; the event\n\
+                     # sequences must be identical; agree: the digits on which the spectral route meets both\n",
                 );
             }
             out.push_str(&format!("\n## {}: {}\n", sec.name, sec.description));
@@ -557,11 +558,11 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
         let mut out = Vec::new();
         for r in &rows {
             let a = r.digits.floor().max(0.0) as u32;
-            let value = if r.gbs.clone().abs() < Float::with_val(64, 10u32).pow(-(digits as i32)) {
+            let value = if r.spectral.clone().abs() < Float::with_val(64, 10u32).pow(-(digits as i32)) {
                 "0".to_string()
             } else {
-                // only the digits on which the two integrators agree
-                crate::numeric::decimal::to_sig(&r.gbs, digits.min(a.max(1)))
+                // only the digits on which the three integrators agree
+                crate::numeric::decimal::to_sig(&r.spectral, digits.min(a.max(1)))
             };
             count += 1;
             if worst.as_ref().is_none_or(|(b, _)| a < *b) {

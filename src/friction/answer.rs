@@ -372,40 +372,55 @@ pub fn trajectory(
     Ok(TrajectoryAnswer { rows, modes })
 }
 
-/// One quantity computed by both integrators.
+/// One quantity computed by the three integrators.
 #[derive(Debug, Clone)]
 pub struct CrossCheck {
     /// Quantity (`event2_t`, `theta_s`, …).
     pub name: String,
+    /// By Chebyshev spectral integration in the angle (the answers' route).
+    pub spectral: Float,
     /// By Gragg–Bulirsch–Stoer extrapolation.
     pub gbs: Float,
     /// By Gauss–Legendre collocation.
     pub collocation: Float,
-    /// Significant digits on which they agree (relative to max(|v|, 1)).
+    /// Significant digits on which the spectral route agrees with both
+    /// time integrators (relative to max(|v|, 1)): the smaller of the two.
     pub digits: f64,
 }
 
-/// The two integrators on the same motion at the working precision of
+/// The three integrators on the same motion at the working precision of
 /// `digits`: the event sequences must be identical; every event time and
 /// angle and every separation and impact value is compared.
 ///
-/// Errors: from either run; different event sequences.
+/// Errors: from any run; different event sequences; a mode that the
+/// spectral route declined (it would not be an independent check).
 pub fn cross_check(model: &Model, fr: &Friction, digits: u32) -> Result<Vec<CrossCheck>> {
     let (_, p2) = precisions(digits, 0);
     let h = super::default_horizon(model, p2);
+    let s = super::solve_with(model, fr, p2, &[], true, &h, super::Method::Spectral)?;
     let a = super::solve_with(model, fr, p2, &[], true, &h, super::Method::Gbs)?;
     let b = super::solve_with(model, fr, p2, &[], true, &h, super::Method::Collocation)?;
-    if signature(&a) != signature(&b) {
+    if s.routes.iter().any(|r| *r != super::Method::Spectral) {
         return Err(Error::NotConverged {
-            quantity: "event sequence".into(),
+            quantity: "spectral route".into(),
             requested: digits,
-            reached: "the two integrators disagree on the sequence of modes".into(),
-            detail: format!(
-                "{} / {}",
-                signature(&a).join(", "),
-                signature(&b).join(", ")
-            ),
+            reached: format!("modes integrated by {:?}", s.routes),
+            detail: "the spectral route declined a mode".into(),
         });
+    }
+    for m in [&a, &b] {
+        if signature(&s) != signature(m) {
+            return Err(Error::NotConverged {
+                quantity: "event sequence".into(),
+                requested: digits,
+                reached: "the integrators disagree on the sequence of modes".into(),
+                detail: format!(
+                    "{} / {}",
+                    signature(&s).join(", "),
+                    signature(m).join(", ")
+                ),
+            });
+        }
     }
     let vals = |m: &Motion| -> Vec<(String, Float)> {
         let mut out = Vec::new();
@@ -423,24 +438,26 @@ pub fn cross_check(model: &Model, fr: &Friction, digits: u32) -> Result<Vec<Cros
         }
         out
     };
-    Ok(vals(&a)
+    let agree = |x: &Float, y: &Float| {
+        let d = Float::with_val(p2, x - y).abs();
+        let sc = Float::with_val(p2, x.abs_ref()).max(&Float::with_val(p2, 1u32));
+        let r = (d / sc).to_f64();
+        if r == 0.0 {
+            f64::from(p2) * 0.301
+        } else {
+            -r.log10()
+        }
+    };
+    Ok(vals(&s)
         .into_iter()
+        .zip(vals(&a))
         .zip(vals(&b))
-        .map(|((name, x), (_, y))| {
-            let d = Float::with_val(p2, &x - &y).abs();
-            let sc = Float::with_val(p2, x.abs_ref()).max(&Float::with_val(p2, 1u32));
-            let r = (d / sc).to_f64();
-            let digits = if r == 0.0 {
-                f64::from(p2) * 0.301
-            } else {
-                -r.log10()
-            };
-            CrossCheck {
-                name,
-                gbs: x,
-                collocation: y,
-                digits,
-            }
+        .map(|(((name, x), (_, y)), (_, z))| CrossCheck {
+            digits: agree(&x, &y).min(agree(&x, &z)),
+            name,
+            spectral: x,
+            gbs: y,
+            collocation: z,
         })
         .collect())
 }

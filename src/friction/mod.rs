@@ -205,6 +205,9 @@ pub struct Motion {
     pub work_done: (u64, u64),
     /// The state where θ first reached the target angle of [`solve_to_angle`].
     pub target: Option<Point>,
+    /// The integrator that computed each mode, in order ([`Method::Spectral`]
+    /// falls back to [`Method::Gbs`] where it declines).
+    pub routes: Vec<Method>,
 }
 
 /// Checks that the laws fit the model ([`check_laws`]) and that the motion
@@ -777,7 +780,10 @@ pub fn default_horizon(model: &Model, prec: u32) -> Float {
 /// The integrator of the modes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Method {
-    /// Gragg–Bulirsch–Stoer extrapolation (the default).
+    /// Chebyshev spectral integration in the angle ([`crate::dae::spectral`]),
+    /// the default; a mode it declines is integrated by [`Method::Gbs`].
+    Spectral,
+    /// Gragg–Bulirsch–Stoer extrapolation.
     Gbs,
     /// Gauss–Legendre collocation, the independent second integrator.
     Collocation,
@@ -799,7 +805,7 @@ pub fn solve(
     to_impact: bool,
     horizon: &Float,
 ) -> Result<Motion> {
-    solve_with(model, fr, prec, times, to_impact, horizon, Method::Gbs)
+    solve_with(model, fr, prec, times, to_impact, horizon, Method::Spectral)
 }
 
 /// [`solve`] with a chosen integrator.
@@ -848,7 +854,7 @@ pub fn solve_to_angle(
         &[],
         true,
         &h,
-        Method::Gbs,
+        Method::Spectral,
         Some(Target {
             theta: theta.to_float(prec),
             name,
@@ -945,6 +951,7 @@ fn solve_full(
         end: End::LastTime,
         work_done: (0, 0),
         target: None,
+        routes: Vec::new(),
     };
     let mut next = 0usize;
     let t_last = times.last().cloned();
@@ -998,11 +1005,33 @@ fn solve_full(
             work: work.clone(),
             snap: snap.clone(),
         };
-        let run = match method {
-            Method::Gbs => {
+        let spectral = match method {
+            Method::Spectral => crate::dae::spectral::run(
+                &mut sys,
+                &start,
+                &times[next..],
+                &t_end,
+                &evs,
+                &ctx.opts.tol,
+                &crate::dae::spectral::Scales {
+                    ts: ctx.ts.clone(),
+                    r: ctx.base_r.clone(),
+                    escale: ctx.escale.clone(),
+                },
+            )?,
+            _ => None,
+        };
+        out.routes.push(match (&spectral, method) {
+            (Some(_), _) => Method::Spectral,
+            (None, Method::Collocation) => Method::Collocation,
+            (None, _) => Method::Gbs,
+        });
+        let run = match (spectral, method) {
+            (Some(run), _) => run,
+            (None, Method::Gbs | Method::Spectral) => {
                 solve::run_from(&mut sys, &start, &times[next..], &t_end, &evs, &ctx.opts)?
             }
-            Method::Collocation => {
+            (None, Method::Collocation) => {
                 let stages = (wp as usize / 12).clamp(4, 24);
                 let mut co = crate::dae::collocation::Collocation::new(
                     wp,

@@ -278,6 +278,23 @@ fn real_fft(v: Vec<Float>, roots: &Roots, p: u32) -> (Vec<Float>, Vec<Float>) {
     (re, im)
 }
 
+/// Makhoul's slot of point j among n: even j at j/2, odd j at N − 1 − (j − 1)/2.
+fn slot(j: usize, n: usize) -> usize {
+    if j % 2 == 0 {
+        j / 2
+    } else {
+        n - 1 - (j - 1) / 2
+    }
+}
+
+/// Point j of `roots` mapped to [a, b]: (a + b)/2 + (b − a)/2 · x_j.
+fn point_in(a: &Float, b: &Float, roots: &Roots, j: usize, p: u32) -> Float {
+    let mut v = Float::with_val(p, b - a) * roots.point(j, p);
+    v >>= 1;
+    v += Float::with_val(p, a + b) >> 1;
+    v
+}
+
 /// A Chebyshev interpolant on [a, b]: p(v) = Σ_k c_k T_k(x), x = (2v − a − b)/(b − a).
 #[derive(Debug, Clone)]
 pub struct ChebFit {
@@ -299,29 +316,32 @@ impl ChebFit {
         F: FnMut(&Float, &mut Float),
     {
         let n = roots.n;
-        let mid = Float::with_val(p, a + b) / 2u32;
-        let half = Float::with_val(p, b - a) / 2u32;
+        let mut fx = Float::new(p);
+        let vals: Vec<Float> = (0..n)
+            .map(|j| {
+                f(&point_in(a, b, roots, j, p), &mut fx);
+                fx.clone()
+            })
+            .collect();
+        Self::from_values(a, b, roots, p, &vals)
+    }
+
+    /// The interpolant of the values `vals[j]` at the points
+    /// [`ChebFit::points`] (point j of `roots` mapped to [a, b]), at `p` bits.
+    pub fn from_values(a: &Float, b: &Float, roots: &Roots, p: u32, vals: &[Float]) -> Self {
+        let n = roots.n;
+        assert_eq!(vals.len(), n, "one value per point");
         // values in Makhoul's order: f_j (point j) goes to 2j → slot j/2,
         // odd j → slot N − 1 − (j − 1)/2
-        let mut vals: Vec<Float> = vec![Float::new(p); n];
-        let mut v = Float::new(p);
-        let mut fx = Float::new(p);
+        let mut slots: Vec<Float> = vec![Float::new(p); n];
         let mut fmax = Float::new(p);
-        for j in 0..n {
-            let x = roots.point(j, p);
-            v.assign(&half * &x);
-            v += &mid;
-            f(&v, &mut fx);
+        for (j, fx) in vals.iter().enumerate() {
             if fx.cmp_abs(&fmax) == Some(std::cmp::Ordering::Greater) {
                 fmax.assign(fx.abs_ref());
             }
-            let slot = if j % 2 == 0 {
-                j / 2
-            } else {
-                n - 1 - (j - 1) / 2
-            };
-            vals[slot].assign(&fx);
+            slots[slot(j, n)].assign(fx);
         }
+        let vals = slots;
         let (re, im) = real_fft(vals, roots, p);
         // c_k = (2/N) Re(e^(−iπk/2N) V_k), c_0 halved
         let mut c = Vec::with_capacity(n);
@@ -455,6 +475,64 @@ impl ChebFit {
         r
     }
 
+    /// The N points of `roots` mapped to [a, b] (point j = (a + b)/2 +
+    /// (b − a)/2 cos((2j + 1)π/2N), descending), at `p` bits.
+    pub fn points(a: &Float, b: &Float, roots: &Roots, p: u32) -> Vec<Float> {
+        (0..roots.n).map(|j| point_in(a, b, roots, j, p)).collect()
+    }
+
+    /// The values at the N points of `roots` ([`ChebFit::points`]), by one
+    /// inverse cosine transform (DCT-III: Makhoul's reordering of one
+    /// complex FFT), at `p` bits. The fit has at most N + 1 coefficients
+    /// (T_N vanishes at the points, so an antiderivative's last term drops).
+    pub fn values(&self, roots: &Roots, p: u32) -> Vec<Float> {
+        let n = roots.n;
+        assert!(self.c.len() <= n + 1, "at most N + 1 coefficients");
+        // y_m = Re Σ_k c_k e^(−iπk/2N) e^(−2πikm/N); f_2m = y_m, f_2m+1 = y_(N−1−m)
+        let mut re = vec![Float::new(p); n];
+        let mut im = vec![Float::new(p); n];
+        for (k, ck) in self.c.iter().enumerate().take(n) {
+            let (cs, nc, sn, ns) = roots.cis(k);
+            re[k].assign(ck * cs);
+            if nc {
+                re[k].neg_assign();
+            }
+            im[k].assign(ck * sn);
+            if !ns {
+                im[k].neg_assign();
+            }
+        }
+        fft(&mut re, &mut im, roots, p);
+        let mut out = vec![Float::new(p); n];
+        for (j, o) in out.iter_mut().enumerate() {
+            std::mem::swap(o, &mut re[slot(j, n)]);
+        }
+        out
+    }
+
+    /// The derivative d/dv as a Chebyshev series on [a, b] (c'_(k−1) =
+    /// c'_(k+1) + 2k c_k, times 2/(b − a)).
+    pub fn derivative(&self) -> ChebFit {
+        let p = self.prec();
+        let n = self.c.len();
+        let mut d = vec![Float::new(p); n.max(1)];
+        for k in (1..n).rev() {
+            let up = d.get(k + 1).cloned().unwrap_or_else(|| Float::new(p));
+            d[k - 1] = up + Float::with_val(p, &self.c[k] * (2 * k) as u64);
+        }
+        d[0] >>= 1;
+        let scale = Float::with_val(p, &self.b - &self.a).recip() * 2u32;
+        for x in &mut d {
+            *x *= &scale;
+        }
+        ChebFit {
+            a: self.a.clone(),
+            b: self.b.clone(),
+            c: d,
+            fmax: Float::new(p),
+        }
+    }
+
     /// The fit's coefficients rounded to `prec` bits (for cheap evaluations
     /// at a lower precision, e.g. the first Newton steps of an inversion).
     pub fn rounded(&self, prec: u32) -> ChebFit {
@@ -470,6 +548,37 @@ impl ChebFit {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// values() is the interpolant at its own points, derivative() and
+    /// antiderivative() invert each other, checked on e^v over [−1/2, 2].
+    #[test]
+    fn values_and_derivative_of_exp() {
+        let p = 200;
+        for n in [16usize, 30, 45, 64] {
+            let roots = Roots::new(n, p);
+            let a = Float::with_val(p, -0.5f64);
+            let b = Float::with_val(p, 2u32);
+            let f = ChebFit::new(&a, &b, &roots, p, |v, o| o.assign(v.exp_ref()));
+            let pts = ChebFit::points(&a, &b, &roots, p);
+            let tol = Float::with_val(p, 1u32) >> if n >= 45 { 150 } else { 30 };
+            for (x, y) in pts.iter().zip(f.values(&roots, p)) {
+                let e = Float::with_val(p, x.exp_ref()) - &y;
+                assert!(e.abs() < Float::with_val(p, 1u32) >> 180, "n = {n}");
+            }
+            // the antiderivative's values: e^v − e^a (its N+1-th term vanishes at the points)
+            let ea = Float::with_val(p, a.exp_ref());
+            for (x, y) in pts.iter().zip(f.antiderivative().values(&roots, p)) {
+                let e = Float::with_val(p, x.exp_ref()) - &ea - &y;
+                assert!(e.clone().abs() < tol, "n = {n}: {e}");
+            }
+            let d = f.derivative();
+            for x in [-0.4f64, 0.3, 1.9] {
+                let xv = Float::with_val(p, x);
+                let e = Float::with_val(p, xv.exp_ref()) - d.eval(&xv, p);
+                assert!(e.clone().abs() < tol, "n = {n}, x = {x}: {e}");
+            }
+        }
+    }
 
     /// The DCT-II by its definition, O(N²).
     fn direct(f: &[Float], p: u32) -> Vec<Float> {

@@ -1,0 +1,764 @@
+//! A mode of the two-cylinder motion by Chebyshev spectral integration in
+//! the angle: the fast route of the motion with friction (Gragg–Bulirsch–
+//! Stoer and Gauss–Legendre collocation, [`super::solve`], are the
+//! independent checks).
+//!
+//! Why it works: in every mode the accelerations are linear in θ̇², with
+//! coefficients that depend on θ alone — q̈ = a(θ) + b(θ) θ̇², λ = α(θ) +
+//! β(θ) θ̇². The velocity enters the equations of motion only through the
+//! centripetal term r θ̇² (ṙ = 0 while the contact is closed), x1, φ1, ψ2 are
+//! cyclic, and a slipping contact's force ∓μk N is fixed in direction by
+//! the mode. Two KKT solves at θ (θ̇ = 0 and θ̇ = 1) give a and b. So u = θ̇²
+//! obeys the *linear* equation du/dθ = 2a + 2b u (the issue's "θ̇² obeys a
+//! linear first-order ODE in θ", in general), solved by quadrature:
+//!
+//!   u = e^G (u_a + ∫ 2a e^(−G) dθ),  G = ∫ 2b dθ,
+//!
+//! and every other quantity is a quadrature too: dt = dθ/θ̇, dq̇_i = q̈_i dt,
+//! dq_i = q̇_i dt, dW = P dt (P the sliding power). All of them are
+//! Chebyshev interpolants on pieces of the angle (the same machinery as the
+//! ideal models' t(θ), [`crate::numeric::cheb`]); their values at the
+//! points come from one inverse cosine transform each.
+//!
+//! Parameter: θ = θ_a + σ s^m, σ = the direction of motion. A piece that
+//! starts with θ̇ ≠ 0 takes m = 1; a start from rest takes m = 2, where
+//! u = s² w with w smooth and positive (u vanishes linearly in θ − θ_a), so
+//! dt/ds = m/√w is smooth on both. The m = 2 quadrature for u is carried
+//! out with 48 more bits, since w = u/s² divides by s² near s = 0.
+//!
+//! Pieces: N = bits/2 points (Bernstein ρ ≥ 4 is aimed at); a piece whose
+//! interpolants' last coefficients are not below the tolerance is halved,
+//! an accepted one sets the next piece 1.5 times longer. Events are sign
+//! changes of the watched functions over the points, located by Newton's
+//! method on their interpolant and corrected once by the exact value (a KKT
+//! solve) at the root. Outputs at given times invert t(s) by Newton's
+//! method.
+//!
+//! The route declines (returns `None`, and the caller integrates the mode
+//! by extrapolation instead) where its premise fails: θ̇ reaching 0 inside a
+//! piece (the motion would turn back), a start from rest with θ̈ = 0, a stack
+//! of more than two cylinders, or pieces that will not converge.
+
+use super::gbs::Stats;
+use super::solve::{watch_value, Event, Hit, Run, Sample, Start};
+use super::system::{self as sy, System};
+use crate::error::Result;
+use crate::numeric::cheb::{smooth_at_least, ChebFit, Roots};
+use rug::{Assign, Float};
+
+/// The natural scales of the motion, for mixed absolute/relative error
+/// tests.
+#[derive(Debug, Clone)]
+pub struct Scales {
+    /// Time sqrt(r/g).
+    pub ts: Float,
+    /// Length r = r1 + r2.
+    pub r: Float,
+    /// Energy m2 g r.
+    pub escale: Float,
+}
+
+/// Most pieces per mode before the route declines.
+const MAX_PIECES: usize = 400;
+
+/// Extra bits of the m = 2 quadrature for u.
+const REST_GUARD: u32 = 48;
+
+/// One piece: the state at s = 0 and the interpolants on [0, L].
+struct Piece {
+    m: u32,
+    dir: i32,
+    len: Float,
+    t0: Float,
+    q0: Vec<Float>,
+    v0: Vec<Float>,
+    work0: Float,
+    /// w(s): u = θ̇² = s^(2(m−1)) w.
+    w: ChebFit,
+    /// t(s) − t0.
+    dt: ChebFit,
+    /// dt/ds = m/√w.
+    rate: ChebFit,
+    /// q̇_i(s) − q̇_i(0) of the coordinates that move besides θ.
+    vel: Vec<(usize, ChebFit)>,
+    /// q_i(s) − q_i(0).
+    pos: Vec<(usize, ChebFit)>,
+    /// W(s) − W(0) (None without slipping contacts).
+    work: Option<ChebFit>,
+    /// The samples at the points, in ascending s, with their s.
+    nodes: Vec<(Float, Sample)>,
+}
+
+enum Attempt {
+    Done(Box<Piece>),
+    /// The interpolants did not converge: a shorter piece.
+    Shorter,
+    /// θ̇ vanishes inside (or w is not positive): the route declines.
+    Decline,
+}
+
+/// The coordinates that move besides θ: x1, φ1, ψ2 (y1 and r are held by
+/// the normal constraints while the contact is closed).
+fn moving(sys: &System) -> Vec<usize> {
+    (0..sys.nq())
+        .filter(|&i| i != sy::Y1 && i != sy::th(0) && i != sy::rr(0))
+        .collect()
+}
+
+fn within(f: &ChebFit, tol: &Float, floor: &Float) -> bool {
+    let p = f.prec();
+    let lim = Float::with_val(p, &f.fmax + floor) * tol;
+    f.tail() <= lim
+}
+
+/// θ(s) = θ_a + σ s^m.
+fn theta_at(th0: &Float, dir: i32, m: u32, s: &Float) -> Float {
+    let p = s.prec();
+    let sm = if m == 1 {
+        s.clone()
+    } else {
+        Float::with_val(p, s.square_ref())
+    };
+    Float::with_val(p, th0 + sm * dir)
+}
+
+/// a and b of q̈ = a + b θ̇² (and of λ) at angle θ: two KKT solves.
+fn probe(sys: &mut System, q0: &[Float], th: &Float) -> Result<(Sample, Sample)> {
+    let p = sys.prec;
+    let nq = sys.nq();
+    let mut q = q0.to_vec();
+    q[sy::th(0)].assign(th);
+    let zero = vec![Float::new(p); nq];
+    let a0 = sys.accel(&q, &zero)?;
+    let mut one = zero.clone();
+    one[sy::th(0)].assign(1u32);
+    let a1 = sys.accel(&q, &one)?;
+    let mk = |qdd: Vec<Float>, lambda: Vec<Float>| Sample {
+        t: Float::new(p),
+        q: q.clone(),
+        v: zero.clone(),
+        qdd,
+        lambda,
+        work: Float::new(p),
+        power: Float::new(p),
+    };
+    let b_qdd = a1.qdd.iter().zip(&a0.qdd).map(|(x, y)| Float::with_val(p, x - y)).collect();
+    let b_lam = a1
+        .lambda
+        .iter()
+        .zip(&a0.lambda)
+        .map(|(x, y)| Float::with_val(p, x - y))
+        .collect();
+    Ok((mk(a0.qdd, a0.lambda), mk(b_qdd, b_lam)))
+}
+
+/// x + y·u for vectors.
+fn affine(x: &[Float], y: &[Float], u: &Float) -> Vec<Float> {
+    x.iter()
+        .zip(y)
+        .map(|(a, b)| Float::with_val(a.prec(), a + Float::with_val(a.prec(), b * u)))
+        .collect()
+}
+
+struct Setup<'a> {
+    roots: &'a Roots,
+    tol: &'a Float,
+    sc: &'a Scales,
+    moving: Vec<usize>,
+}
+
+#[allow(clippy::too_many_arguments)]
+fn attempt(
+    sys: &mut System,
+    su: &Setup,
+    m: u32,
+    dir: i32,
+    len: &Float,
+    t0: &Float,
+    q0: &[Float],
+    v0: &[Float],
+    work0: &Float,
+    evals: &mut u64,
+) -> Result<Attempt> {
+    let p = sys.prec;
+    let n = su.roots.n();
+    let ith = sy::th(0);
+    let zero = Float::new(p);
+    let pts = ChebFit::points(&zero, len, su.roots, p);
+    let th0 = &q0[ith];
+    let mut parts = Vec::with_capacity(n);
+    for s in &pts {
+        parts.push(probe(sys, q0, &theta_at(th0, dir, m, s))?);
+        *evals += 2;
+    }
+    // θ'(s) = σ m s^(m−1)
+    let dth: Vec<Float> = pts
+        .iter()
+        .map(|s| {
+            let d = if m == 1 {
+                Float::with_val(p, 1u32)
+            } else {
+                Float::with_val(p, s * 2u32)
+            };
+            d * dir
+        })
+        .collect();
+    let inv_len = Float::with_val(p, len.recip_ref());
+    // G = ∫ 2b θ' ds
+    let g: Vec<Float> = parts
+        .iter()
+        .zip(&dth)
+        .map(|((_, b), d)| Float::with_val(p, &b.qdd[ith] * d) * 2u32)
+        .collect();
+    let gfit = ChebFit::from_values(&zero, len, su.roots, p, &g);
+    if !within(&gfit, su.tol, &inv_len) {
+        return Ok(Attempt::Shorter);
+    }
+    let gv = gfit.antiderivative().values(su.roots, p);
+    // u = e^G (u_a + ∫ 2a θ' e^(−G) ds), at hp bits
+    let hp = if m == 2 { p + REST_GUARD } else { p };
+    let e: Vec<Float> = gv.iter().map(|x| Float::with_val(hp, -x).exp()).collect();
+    let j: Vec<Float> = parts
+        .iter()
+        .zip(&dth)
+        .zip(&e)
+        .map(|(((a, _), d), e)| Float::with_val(hp, &a.qdd[ith] * d) * e * 2u32)
+        .collect();
+    let hz = Float::new(hp);
+    let hl = Float::with_val(hp, len);
+    let jfit = ChebFit::from_values(&hz, &hl, su.roots, hp, &j);
+    let uscale = Float::with_val(p, su.sc.ts.square_ref()).recip() * &inv_len;
+    if !within(&jfit, su.tol, &uscale) {
+        return Ok(Attempt::Shorter);
+    }
+    let iv = jfit.antiderivative().values(su.roots, hp);
+    let ua = Float::with_val(hp, v0[ith].square_ref());
+    let mut w = Vec::with_capacity(n);
+    for ((s, i), e) in pts.iter().zip(&iv).zip(&e) {
+        let mut u = Float::with_val(hp, &ua + i) / e;
+        if m == 2 {
+            u /= Float::with_val(hp, s.square_ref());
+        }
+        if !u.is_sign_positive() || u.is_zero() {
+            return Ok(Attempt::Decline);
+        }
+        w.push(Float::with_val(p, &u));
+    }
+    let wfit = ChebFit::from_values(&zero, len, su.roots, p, &w);
+    let rate: Vec<Float> = w.iter().map(|x| Float::with_val(p, x.sqrt_ref()).recip() * m).collect();
+    let rfit = ChebFit::from_values(&zero, len, su.roots, p, &rate);
+    let tfloor = Float::with_val(p, &su.sc.ts * &inv_len);
+    if !within(&rfit, su.tol, &tfloor) {
+        return Ok(Attempt::Shorter);
+    }
+    let dt = rfit.antiderivative();
+    let tv = dt.values(su.roots, p);
+    // u at the points, and the full velocity
+    let u: Vec<Float> = pts
+        .iter()
+        .zip(&w)
+        .map(|(s, w)| {
+            if m == 2 {
+                Float::with_val(p, s.square_ref()) * w
+            } else {
+                w.clone()
+            }
+        })
+        .collect();
+    let vscale = Float::with_val(p, &su.sc.r / &su.sc.ts);
+    let mut vel = Vec::new();
+    let mut vnodes: Vec<Vec<Float>> = (0..n)
+        .map(|k| {
+            let mut v = vec![Float::new(p); sys.nq()];
+            let thd = if m == 2 {
+                Float::with_val(p, w[k].sqrt_ref()) * &pts[k]
+            } else {
+                Float::with_val(p, w[k].sqrt_ref())
+            };
+            v[ith] = thd * dir;
+            v
+        })
+        .collect();
+    for &i in &su.moving {
+        let f: Vec<Float> = (0..n)
+            .map(|k| {
+                let (a, b) = &parts[k];
+                let acc = Float::with_val(p, &a.qdd[i] + Float::with_val(p, &b.qdd[i] * &u[k]));
+                acc * &rate[k]
+            })
+            .collect();
+        let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
+        if !within(&fit, su.tol, &Float::with_val(p, &vscale * &inv_len)) {
+            return Ok(Attempt::Shorter);
+        }
+        let anti = fit.antiderivative();
+        for (k, x) in anti.values(su.roots, p).into_iter().enumerate() {
+            vnodes[k][i] = x + &v0[i];
+        }
+        vel.push((i, anti));
+    }
+    let mut pos = Vec::new();
+    let mut qnodes: Vec<Vec<Float>> = pts
+        .iter()
+        .map(|s| {
+            let mut q = q0.to_vec();
+            q[ith] = theta_at(th0, dir, m, s);
+            q
+        })
+        .collect();
+    for &i in &su.moving {
+        let f: Vec<Float> = (0..n).map(|k| Float::with_val(p, &vnodes[k][i] * &rate[k])).collect();
+        let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
+        if !within(&fit, su.tol, &Float::with_val(p, &su.sc.r * &inv_len)) {
+            return Ok(Attempt::Shorter);
+        }
+        let anti = fit.antiderivative();
+        for (k, x) in anti.values(su.roots, p).into_iter().enumerate() {
+            qnodes[k][i] = x + &q0[i];
+        }
+        pos.push((i, anti));
+    }
+    let mut lambdas = Vec::with_capacity(n);
+    let mut qdds = Vec::with_capacity(n);
+    let mut powers = Vec::with_capacity(n);
+    for k in 0..n {
+        let (a, b) = &parts[k];
+        let lam = affine(&a.lambda, &b.lambda, &u[k]);
+        let pw = if sys.has_slips() {
+            sys.slip_power(&qnodes[k], &vnodes[k], &lam)
+        } else {
+            Float::new(p)
+        };
+        qdds.push(affine(&a.qdd, &b.qdd, &u[k]));
+        lambdas.push(lam);
+        powers.push(pw);
+    }
+    let (work, wv) = if sys.has_slips() {
+        let f: Vec<Float> = powers.iter().zip(&rate).map(|(x, r)| Float::with_val(p, x * r)).collect();
+        let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
+        let floor = Float::with_val(p, &su.sc.escale * &inv_len);
+        if !within(&fit, su.tol, &floor) {
+            return Ok(Attempt::Shorter);
+        }
+        let anti = fit.antiderivative();
+        let wv = anti.values(su.roots, p);
+        (Some(anti), wv)
+    } else {
+        (None, vec![Float::new(p); n])
+    };
+    // the samples at the points, ascending in s
+    let mut nodes = Vec::with_capacity(n);
+    for k in (0..n).rev() {
+        nodes.push((
+            pts[k].clone(),
+            Sample {
+                t: Float::with_val(p, t0 + &tv[k]),
+                q: std::mem::take(&mut qnodes[k]),
+                v: std::mem::take(&mut vnodes[k]),
+                qdd: std::mem::take(&mut qdds[k]),
+                lambda: std::mem::take(&mut lambdas[k]),
+                work: Float::with_val(p, work0 + &wv[k]),
+                power: std::mem::replace(&mut powers[k], Float::new(p)),
+            },
+        ));
+    }
+    Ok(Attempt::Done(Box::new(Piece {
+        m,
+        dir,
+        len: len.clone(),
+        t0: t0.clone(),
+        q0: q0.to_vec(),
+        v0: v0.to_vec(),
+        work0: work0.clone(),
+        w: wfit,
+        dt,
+        rate: rfit,
+        vel,
+        pos,
+        work,
+        nodes,
+    })))
+}
+
+impl Piece {
+    /// The state (t, q, q̇, W) at s.
+    fn state(&self, s: &Float) -> (Float, Vec<Float>, Vec<Float>, Float) {
+        let p = s.prec();
+        let ith = sy::th(0);
+        let mut q = self.q0.clone();
+        let mut v = self.v0.clone();
+        q[ith] = theta_at(&self.q0[ith], self.dir, self.m, s);
+        let w = self.w.eval(s, p);
+        let mut thd = w.sqrt();
+        if self.m == 2 {
+            thd *= s;
+        }
+        v[ith] = thd * self.dir;
+        for (i, f) in &self.vel {
+            v[*i] = Float::with_val(p, &self.v0[*i] + f.eval(s, p));
+        }
+        for (i, f) in &self.pos {
+            q[*i] = Float::with_val(p, &self.q0[*i] + f.eval(s, p));
+        }
+        let t = Float::with_val(p, &self.t0 + self.dt.eval(s, p));
+        let work = match &self.work {
+            Some(f) => Float::with_val(p, &self.work0 + f.eval(s, p)),
+            None => self.work0.clone(),
+        };
+        (t, q, v, work)
+    }
+
+    /// The full sample at s (one KKT solve).
+    fn sample(&self, sys: &mut System, s: &Float) -> Result<Sample> {
+        let (t, q, v, work) = self.state(s);
+        let acc = sys.accel(&q, &v)?;
+        let power = if sys.has_slips() {
+            sys.slip_power(&q, &v, &acc.lambda)
+        } else {
+            Float::new(sys.prec)
+        };
+        Ok(Sample {
+            t,
+            q,
+            v,
+            qdd: acc.qdd,
+            lambda: acc.lambda,
+            work,
+            power,
+        })
+    }
+
+    /// The time at the end of the piece.
+    fn t_end(&self) -> Float {
+        let p = self.len.prec();
+        Float::with_val(p, &self.t0 + self.dt.eval(&self.len, p))
+    }
+
+    /// s in [lo, hi] where t(s) = tau (t increasing in s), by Newton's method
+    /// from a linear interpolation of the bracket.
+    fn invert(&self, tau: &Float, lo: &(Float, Float), hi: &(Float, Float)) -> Float {
+        let p = tau.prec();
+        let target = Float::with_val(p, tau - &self.t0);
+        let (s0, t_lo) = lo;
+        let (s1, t_hi) = hi;
+        let span = Float::with_val(p, t_hi - t_lo);
+        let frac = if span.is_zero() {
+            Float::new(p)
+        } else {
+            Float::with_val(p, tau - t_lo) / span
+        };
+        let mut s = Float::with_val(p, s1 - s0) * frac + s0;
+        let stop = Float::with_val(p, &self.len) >> (p as i32 - 4);
+        for _ in 0..64 {
+            let f = self.dt.eval(&s, p) - &target;
+            let d = self.rate.eval(&s, p);
+            let step = f / d;
+            s -= &step;
+            s.assign(s.clone().max(s0).min(s1));
+            if step.abs() <= stop {
+                break;
+            }
+        }
+        s
+    }
+
+    /// The first root in (lo, hi) of a watched function, from its
+    /// interpolant over the points (its values `vals` at the points,
+    /// ascending), corrected once by the exact value.
+    fn root(
+        &self,
+        sys: &mut System,
+        su: &Setup,
+        ev: &Event,
+        vals: &[Float],
+        lo: &Float,
+        hi: &Float,
+    ) -> Result<(Float, Sample, Float)> {
+        let p = sys.prec;
+        // the interpolant wants the values in point order (descending s)
+        let desc: Vec<Float> = vals.iter().rev().cloned().collect();
+        let zero = Float::new(p);
+        let fit = ChebFit::from_values(&zero, &self.len, su.roots, p, &desc);
+        let d = fit.derivative();
+        // bisection at 64 bits to a seed, then Newton at full precision
+        let f64fit = fit.rounded(64);
+        let mut a = Float::with_val(64, lo);
+        let mut b = Float::with_val(64, hi);
+        let fa = f64fit.eval(&a, 64);
+        let neg_a = fa.is_sign_negative();
+        for _ in 0..60 {
+            let mid = Float::with_val(64, &a + &b) >> 1;
+            if f64fit.eval(&mid, 64).is_sign_negative() == neg_a {
+                a = mid;
+            } else {
+                b = mid;
+            }
+        }
+        let mut s = Float::with_val(p, &a + &b) >> 1;
+        let stop = Float::with_val(p, &self.len) >> (p as i32 - 8);
+        for _ in 0..40 {
+            let step = fit.eval(&s, p) / d.eval(&s, p);
+            s -= &step;
+            if !step.is_finite() {
+                break;
+            }
+            if step.abs() <= stop {
+                break;
+            }
+        }
+        if !s.is_finite() {
+            s = Float::with_val(p, &a + &b) >> 1;
+        }
+        s.assign(s.clone().max(lo).min(hi));
+        // one correction by the exact value
+        let smp = self.sample(sys, &s)?;
+        let g = watch_value(&ev.watch, &smp);
+        let dg = d.eval(&s, p);
+        let ds = g / dg;
+        let smp = if ds.is_finite() && !ds.is_zero() {
+            let s2 = Float::with_val(p, &s - &ds);
+            if s2 >= *lo && s2 <= *hi {
+                s = s2;
+                self.sample(sys, &s)?
+            } else {
+                smp
+            }
+        } else {
+            smp
+        };
+        let t_err = Float::with_val(p, ds.abs_ref()) * self.rate.eval(&s, p)
+            + Float::with_val(p, &su.sc.ts * su.tol);
+        let t_err = if t_err.is_finite() {
+            t_err
+        } else {
+            Float::with_val(p, &su.sc.ts * su.tol)
+        };
+        Ok((s, smp, t_err))
+    }
+}
+
+/// The first sign change of a watched function over the piece: from its
+/// value at s = 0 (None: on its boundary there, not watched), over the
+/// points, to its value at the end.
+fn first_bracket(
+    pc: &Piece,
+    start: Option<&Float>,
+    vals: &[Float],
+    end: &Float,
+) -> Option<(Float, Float)> {
+    let p = pc.len.prec();
+    let mut prev: Option<(Float, &Float)> = start.map(|g| (Float::new(p), g));
+    let pts = pc.nodes.iter().map(|(s, _)| s).zip(vals).chain([(&pc.len, end)]);
+    for (s, g) in pts {
+        if g.is_zero() {
+            continue;
+        }
+        if let Some((ps, pg)) = &prev {
+            if g.is_sign_negative() != pg.is_sign_negative() {
+                return Some((ps.clone(), s.clone()));
+            }
+        }
+        prev = Some((s.clone(), g));
+    }
+    None
+}
+
+/// A mode from `start` by spectral integration in the angle: outputs at
+/// `times` (ascending, ≥ start.t), stopping at the first terminal event or
+/// at `t_end`. `None`: the route declines (see the module notes).
+///
+/// Errors: a singular KKT system.
+pub fn run(
+    sys: &mut System,
+    start: &Start,
+    times: &[Float],
+    t_end: &Float,
+    events: &[Event],
+    tol: &Float,
+    sc: &Scales,
+) -> Result<Option<Run>> {
+    if sys.n != 2 {
+        return Ok(None);
+    }
+    let p = sys.prec;
+    let ith = sy::th(0);
+    let bits = (-tol.get_exp().unwrap_or(-(p as i32))).max(16) as usize + 8;
+    let roots = Roots::new(smooth_at_least((bits / 2).max(12)), p);
+    let su = Setup {
+        roots: &roots,
+        tol,
+        sc,
+        moving: moving(sys),
+    };
+    let mut evals = 0u64;
+    let mut t0 = Float::with_val(p, &start.t);
+    let mut q0 = start.q.to_vec();
+    let mut v0 = start.v.to_vec();
+    let mut work0 = Float::with_val(p, &start.work);
+    let first = sys.accel(&q0, &v0)?;
+    evals += 1;
+    let (mut m, dir) = if v0[ith].is_zero() {
+        let a = &first.qdd[ith];
+        if a.is_zero() {
+            return Ok(None);
+        }
+        (2u32, if a.is_sign_negative() { -1 } else { 1 })
+    } else {
+        (1u32, if v0[ith].is_sign_negative() { -1 } else { 1 })
+    };
+    // the first piece: Δθ = 1/4, or twice the distance to where θ̇ would
+    // vanish behind the start (a branch point of 1/θ̇)
+    let quarter = Float::with_val(p, 0.25f64);
+    let mut len = if m == 2 {
+        quarter.clone().sqrt()
+    } else {
+        let acc = Float::with_val(p, first.qdd[ith].abs_ref());
+        let d = Float::with_val(p, v0[ith].square_ref()) / (acc * 2u32 + Float::with_val(p, 1e-300f64));
+        quarter.clone().min(&(d * 2u32))
+    };
+    let tiny = Float::with_val(p, 1u32) >> (p as i32 / 2);
+    let mut outputs = Vec::new();
+    let mut next = 0usize;
+    let mut start_val: Vec<Option<Float>> = {
+        let smp0 = Sample {
+            t: t0.clone(),
+            q: q0.clone(),
+            v: v0.clone(),
+            qdd: first.qdd.clone(),
+            lambda: first.lambda.clone(),
+            work: work0.clone(),
+            power: Float::new(p),
+        };
+        events
+            .iter()
+            .map(|e| {
+                let g = watch_value(&e.watch, &smp0);
+                (Float::with_val(p, g.abs_ref()) > start.snap).then_some(g)
+            })
+            .collect()
+    };
+    let mut pieces = 0u64;
+    for _ in 0..MAX_PIECES {
+        let pc = match attempt(sys, &su, m, dir, &len, &t0, &q0, &v0, &work0, &mut evals)? {
+            Attempt::Done(pc) => pc,
+            Attempt::Shorter => {
+                len >>= 1;
+                if len < tiny {
+                    return Ok(None);
+                }
+                continue;
+            }
+            Attempt::Decline => return Ok(None),
+        };
+        pieces += 1;
+        // the first sign change of each watched function over the piece
+        let end_smp = pc.sample(sys, &pc.len)?;
+        let node_vals: Vec<Vec<Float>> = events
+            .iter()
+            .map(|e| pc.nodes.iter().map(|(_, s)| watch_value(&e.watch, s)).collect())
+            .collect();
+        let end_vals: Vec<Float> = events.iter().map(|e| watch_value(&e.watch, &end_smp)).collect();
+        let brackets: Vec<Option<(Float, Float)>> = (0..events.len())
+            .map(|k| {
+                if events[k].terminal {
+                    first_bracket(&pc, start_val[k].as_ref(), &node_vals[k], &end_vals[k])
+                } else {
+                    None
+                }
+            })
+            .collect();
+        let earliest = brackets.iter().flatten().map(|(_, hi)| hi).min_by(|a, b| a.total_cmp(b)).cloned();
+        // an event: the earliest root among the brackets that start before
+        // the earliest bracket ends
+        let mut hit: Option<(usize, Float, Sample, Float)> = None;
+        if let Some(e) = earliest {
+            for (k, br) in brackets.iter().enumerate() {
+                let Some((lo, hi)) = br else { continue };
+                if *lo > e {
+                    continue;
+                }
+                let (s, smp, t_err) = pc.root(sys, &su, &events[k], &node_vals[k], lo, hi)?;
+                if hit.as_ref().is_none_or(|h| s < h.1) {
+                    hit = Some((k, s, smp, t_err));
+                }
+            }
+        }
+        for (k, g) in end_vals.into_iter().enumerate() {
+            if !g.is_zero() {
+                start_val[k] = Some(g);
+            }
+        }
+        let t_stop = match &hit {
+            Some((_, _, smp, _)) => smp.t.clone(),
+            None => pc.t_end(),
+        };
+        let t_lim = t_stop.clone().min(t_end);
+        // outputs inside the piece
+        let mut lo = (Float::new(p), pc.t0.clone());
+        while next < times.len() && times[next] <= t_lim {
+            let tau = Float::with_val(p, &times[next]);
+            // the bracket among the points
+            let mut hi = (pc.len.clone(), pc.t_end());
+            for (s, smp) in &pc.nodes {
+                if smp.t >= tau {
+                    hi = (s.clone(), smp.t.clone());
+                    break;
+                }
+                lo = (s.clone(), smp.t.clone());
+            }
+            let s = pc.invert(&tau, &lo, &hi);
+            let mut smp = pc.sample(sys, &s)?;
+            smp.t = tau;
+            outputs.push(smp);
+            next += 1;
+        }
+        let stats = Stats {
+            steps: pieces,
+            rejected: 0,
+            evals,
+            max_column: roots.n(),
+        };
+        if let Some((k, _, smp, t_err)) = hit {
+            if smp.t <= *t_end {
+                return Ok(Some(Run {
+                    outputs,
+                    hits: vec![Hit {
+                        event: k,
+                        at: smp.clone(),
+                        t_err,
+                    }],
+                    stopped: true,
+                    last: smp,
+                    max_drift: Float::new(p),
+                    projections: 0,
+                    stats,
+                }));
+            }
+        }
+        if t_stop >= *t_end {
+            let tau = Float::with_val(p, t_end);
+            let lo = (Float::new(p), pc.t0.clone());
+            let hi = (pc.len.clone(), pc.t_end());
+            let s = pc.invert(&tau, &lo, &hi);
+            let mut last = pc.sample(sys, &s)?;
+            last.t = tau;
+            return Ok(Some(Run {
+                outputs,
+                hits: Vec::new(),
+                stopped: false,
+                last,
+                max_drift: Float::new(p),
+                projections: 0,
+                stats,
+            }));
+        }
+        // the next piece from the end of this one
+        t0 = end_smp.t.clone();
+        q0 = end_smp.q.clone();
+        v0 = end_smp.v.clone();
+        work0 = end_smp.work.clone();
+        m = 1;
+        len = Float::with_val(p, &len * 1.5f64);
+    }
+    Ok(None)
+}
