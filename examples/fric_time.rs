@@ -44,6 +44,17 @@ fn main() {
         .map(|i| Exact::rational(&end * Rational::from((i as i64, 999))))
         .collect();
     let t = std::time::Instant::now();
+    let th = answer::theta_at_times(&m, &fr, digits, &times).expect("theta");
+    println!(
+        "theta at {} times: {:.1} ms (last {})",
+        th.len(),
+        t.elapsed().as_secs_f64() * 1e3,
+        th[999].text
+    );
+    if std::env::var("ONLY_THETA").is_ok() {
+        return;
+    }
+    let t = std::time::Instant::now();
     let tr = answer::trajectory(&m, &fr, digits, &times).expect("trajectory");
     println!(
         "trajectory, {} rows: {:.1} ms",

@@ -112,6 +112,10 @@ pub struct Run {
     pub projections: u32,
     /// Integrator work.
     pub stats: Stats,
+    /// States between the outputs where the caller should check its
+    /// invariants too (the ends of the spectral route's pieces; empty for
+    /// the time integrators).
+    pub checkpoints: Vec<Sample>,
 }
 
 /// Settings of a run.
@@ -518,6 +522,7 @@ pub fn run_with<I: Stepper>(
         max_drift,
         projections,
         stats: gbs.stats(),
+        checkpoints: Vec::new(),
     })
 }
 

@@ -40,16 +40,21 @@
 //! of more than two cylinders, or pieces that will not converge.
 
 use super::gbs::Stats;
-use super::solve::{watch_value, Event, Hit, Run, Sample, Start};
-use super::system::{self as sy, System};
+use super::solve::{watch_value, Event, Hit, Run, Sample, Start, Watch};
+use super::system::{self as sy, Row, System};
 use crate::error::Result;
+use crate::model::Floor;
 use crate::numeric::cheb::{smooth_at_least, ChebFit, Roots};
 use rug::{Assign, Float};
 
-/// The natural scales of the motion, for mixed absolute/relative error
-/// tests.
+/// The settings of a run: the tolerance, what the outputs carry, and the
+/// natural scales of the motion for mixed absolute/relative error tests.
 #[derive(Debug, Clone)]
-pub struct Scales {
+pub struct Settings {
+    /// Tolerance of every interpolant (relative to its size plus its scale).
+    pub tol: Float,
+    /// Whether the outputs carry every column (else t and θ only).
+    pub full: bool,
     /// Time sqrt(r/g).
     pub ts: Float,
     /// Length r = r1 + r2.
@@ -85,8 +90,18 @@ struct Piece {
     pos: Vec<(usize, ChebFit)>,
     /// W(s) − W(0) (None without slipping contacts).
     work: Option<ChebFit>,
+    deps: Vec<Dependent>,
+    /// t(s) − t0 and dt/ds at 128, 256, … bits up to 3p/4, their
+    /// coefficients cut where they fall below the precision (the first
+    /// Newton steps of an inversion).
+    lower: Vec<(u32, ChebFit, ChebFit)>,
+    /// t(s) − t0 and dt/ds in f64 (Newton seeds).
+    dt64: Vec<f64>,
+    rate64: Vec<f64>,
     /// The samples at the points, in ascending s, with their s.
     nodes: Vec<(Float, Sample)>,
+    /// The most coefficients any interpolant needed (above its tolerance).
+    used: usize,
 }
 
 enum Attempt {
@@ -97,17 +112,73 @@ enum Attempt {
     Decline,
 }
 
-/// The coordinates that move besides θ: x1, φ1, ψ2 (y1 and r are held by
-/// the normal constraints while the contact is closed).
-fn moving(sys: &System) -> Vec<usize> {
+/// A coordinate fixed by a velocity constraint of the mode: q̇_dep =
+/// Σ c_i q̇_i, so q_dep − q_dep(0) = Σ c_i (q_i − q_i(0)) (constant
+/// coefficients: r is held while the contact is closed). No terms: held.
+type Dependent = (usize, Vec<(usize, Float)>);
+
+/// The dependents of a two-cylinder mode, in an order in which each needs
+/// only coordinates before it: φ1 held (a fixed floor), x1 rolling with φ1
+/// (x1 = r1 φ1 + const) or held, ψ2 rolling on cylinder 1
+/// (ψ̇2 = (r1 φ̇1 − r θ̇)/r2).
+fn dependents(sys: &System, q0: &[Float]) -> Vec<Dependent> {
+    let p = sys.prec;
+    let mut out = Vec::new();
+    if sys.rows.contains(&Row::Hold) {
+        out.push((sy::PHI1, Vec::new()));
+    }
+    if sys.rows.contains(&Row::FloorFriction) {
+        out.push(match sys.floor {
+            Floor::Roll => (sy::X1, vec![(sy::PHI1, sys.rho[0].clone())]),
+            _ => (sy::X1, Vec::new()),
+        });
+    }
+    if sys.rows.contains(&Row::Friction(0)) {
+        let r2 = &sys.rho[1];
+        out.push((
+            sy::psi(0),
+            vec![
+                (sy::PHI1, Float::with_val(p, &sys.rho[0] / r2)),
+                (sy::th(0), -Float::with_val(p, &q0[sy::rr(0)] / r2)),
+            ],
+        ));
+    }
+    out
+}
+
+/// The coordinates integrated besides θ: x1, φ1, ψ2 unless a dependent (y1
+/// and r are held by the normal constraints while the contact is closed).
+fn moving(sys: &System, deps: &[Dependent]) -> Vec<usize> {
     (0..sys.nq())
         .filter(|&i| i != sy::Y1 && i != sy::th(0) && i != sy::rr(0))
+        .filter(|i| deps.iter().all(|(d, _)| d != i))
         .collect()
 }
 
-fn within(f: &ChebFit, tol: &Float, floor: &Float) -> bool {
+/// Fills the dependents of (q, q̇) from the rest (q0: the piece's start).
+fn fill_dependents(deps: &[Dependent], q0: &[Float], q: &mut [Float], v: &mut [Float]) {
+    for (d, terms) in deps {
+        let p = q[*d].prec();
+        let mut x = Float::with_val(p, &q0[*d]);
+        let mut y = Float::new(p);
+        for (i, c) in terms {
+            x += Float::with_val(p, &q[*i] - &q0[*i]) * c;
+            y += Float::with_val(p, &v[*i] * c);
+        }
+        q[*d] = x;
+        v[*d] = y;
+    }
+}
+
+/// Whether the fit's last coefficients are below tol·(max |f| + floor);
+/// `used` grows to the number of coefficients above that level.
+fn within(f: &ChebFit, tol: &Float, floor: &Float, used: &mut usize) -> bool {
     let p = f.prec();
     let lim = Float::with_val(p, &f.fmax + floor) * tol;
+    let k =
+        f.c.iter()
+            .rposition(|c| c.cmp_abs(&lim) == Some(std::cmp::Ordering::Greater));
+    *used = (*used).max(k.map_or(0, |k| k + 1));
     f.tail() <= lim
 }
 
@@ -129,10 +200,7 @@ fn probe(sys: &mut System, q0: &[Float], th: &Float) -> Result<(Sample, Sample)>
     let mut q = q0.to_vec();
     q[sy::th(0)].assign(th);
     let zero = vec![Float::new(p); nq];
-    let a0 = sys.accel(&q, &zero)?;
-    let mut one = zero.clone();
-    one[sy::th(0)].assign(1u32);
-    let a1 = sys.accel(&q, &one)?;
+    let (a0, a1) = sys.accel_pair(&q, 0)?;
     let mk = |qdd: Vec<Float>, lambda: Vec<Float>| Sample {
         t: Float::new(p),
         q: q.clone(),
@@ -142,7 +210,12 @@ fn probe(sys: &mut System, q0: &[Float], th: &Float) -> Result<(Sample, Sample)>
         work: Float::new(p),
         power: Float::new(p),
     };
-    let b_qdd = a1.qdd.iter().zip(&a0.qdd).map(|(x, y)| Float::with_val(p, x - y)).collect();
+    let b_qdd = a1
+        .qdd
+        .iter()
+        .zip(&a0.qdd)
+        .map(|(x, y)| Float::with_val(p, x - y))
+        .collect();
     let b_lam = a1
         .lambda
         .iter()
@@ -163,8 +236,24 @@ fn affine(x: &[Float], y: &[Float], u: &Float) -> Vec<Float> {
 struct Setup<'a> {
     roots: &'a Roots,
     tol: &'a Float,
-    sc: &'a Scales,
+    sc: &'a Settings,
     moving: Vec<usize>,
+    deps: Vec<Dependent>,
+    /// Whether a watched function reads a moving coordinate: only then do
+    /// the samples at the points carry their positions and the work (else
+    /// those of s = 0; the samples serve the watched functions and the
+    /// times).
+    node_positions: bool,
+}
+
+/// Whether a watched function reads a coordinate other than θ.
+fn reads_positions(w: &Watch) -> bool {
+    match w {
+        Watch::Coord(i) | Watch::Reach { i, .. } => *i != sy::th(0),
+        Watch::Lin(terms) => terms.iter().any(|(w, _)| reads_positions(w)),
+        Watch::Height { th, .. } => *th != sy::th(0),
+        Watch::Multiplier(_) | Watch::Rate(_) => false,
+    }
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -186,6 +275,7 @@ fn attempt(
     let zero = Float::new(p);
     let pts = ChebFit::points(&zero, len, su.roots, p);
     let th0 = &q0[ith];
+    let mut used = 0usize;
     let mut parts = Vec::with_capacity(n);
     for s in &pts {
         parts.push(probe(sys, q0, &theta_at(th0, dir, m, s))?);
@@ -211,7 +301,7 @@ fn attempt(
         .map(|((_, b), d)| Float::with_val(p, &b.qdd[ith] * d) * 2u32)
         .collect();
     let gfit = ChebFit::from_values(&zero, len, su.roots, p, &g);
-    if !within(&gfit, su.tol, &inv_len) {
+    if !within(&gfit, su.tol, &inv_len, &mut used) {
         return Ok(Attempt::Shorter);
     }
     let gv = gfit.antiderivative().values(su.roots, p);
@@ -228,7 +318,7 @@ fn attempt(
     let hl = Float::with_val(hp, len);
     let jfit = ChebFit::from_values(&hz, &hl, su.roots, hp, &j);
     let uscale = Float::with_val(p, su.sc.ts.square_ref()).recip() * &inv_len;
-    if !within(&jfit, su.tol, &uscale) {
+    if !within(&jfit, su.tol, &uscale, &mut used) {
         return Ok(Attempt::Shorter);
     }
     let iv = jfit.antiderivative().values(su.roots, hp);
@@ -245,10 +335,21 @@ fn attempt(
         w.push(Float::with_val(p, &u));
     }
     let wfit = ChebFit::from_values(&zero, len, su.roots, p, &w);
-    let rate: Vec<Float> = w.iter().map(|x| Float::with_val(p, x.sqrt_ref()).recip() * m).collect();
+    if !within(&wfit, su.tol, &zero, &mut used) {
+        return Ok(Attempt::Shorter);
+    }
+    // θ̇ must not vanish up to the end either
+    let w_end = wfit.eval(len, p);
+    if !w_end.is_sign_positive() || w_end.is_zero() {
+        return Ok(Attempt::Decline);
+    }
+    let rate: Vec<Float> = w
+        .iter()
+        .map(|x| Float::with_val(p, x.sqrt_ref()).recip() * m)
+        .collect();
     let rfit = ChebFit::from_values(&zero, len, su.roots, p, &rate);
     let tfloor = Float::with_val(p, &su.sc.ts * &inv_len);
-    if !within(&rfit, su.tol, &tfloor) {
+    if !within(&rfit, su.tol, &tfloor, &mut used) {
         return Ok(Attempt::Shorter);
     }
     let dt = rfit.antiderivative();
@@ -288,7 +389,12 @@ fn attempt(
             })
             .collect();
         let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
-        if !within(&fit, su.tol, &Float::with_val(p, &vscale * &inv_len)) {
+        if !within(
+            &fit,
+            su.tol,
+            &Float::with_val(p, &vscale * &inv_len),
+            &mut used,
+        ) {
             return Ok(Attempt::Shorter);
         }
         let anti = fit.antiderivative();
@@ -307,16 +413,28 @@ fn attempt(
         })
         .collect();
     for &i in &su.moving {
-        let f: Vec<Float> = (0..n).map(|k| Float::with_val(p, &vnodes[k][i] * &rate[k])).collect();
+        let f: Vec<Float> = (0..n)
+            .map(|k| Float::with_val(p, &vnodes[k][i] * &rate[k]))
+            .collect();
         let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
-        if !within(&fit, su.tol, &Float::with_val(p, &su.sc.r * &inv_len)) {
+        if !within(
+            &fit,
+            su.tol,
+            &Float::with_val(p, &su.sc.r * &inv_len),
+            &mut used,
+        ) {
             return Ok(Attempt::Shorter);
         }
         let anti = fit.antiderivative();
-        for (k, x) in anti.values(su.roots, p).into_iter().enumerate() {
-            qnodes[k][i] = x + &q0[i];
+        if su.node_positions {
+            for (k, x) in anti.values(su.roots, p).into_iter().enumerate() {
+                qnodes[k][i] = x + &q0[i];
+            }
         }
         pos.push((i, anti));
+    }
+    for (q, v) in qnodes.iter_mut().zip(&mut vnodes) {
+        fill_dependents(&su.deps, q0, q, v);
     }
     let mut lambdas = Vec::with_capacity(n);
     let mut qdds = Vec::with_capacity(n);
@@ -334,14 +452,22 @@ fn attempt(
         powers.push(pw);
     }
     let (work, wv) = if sys.has_slips() {
-        let f: Vec<Float> = powers.iter().zip(&rate).map(|(x, r)| Float::with_val(p, x * r)).collect();
+        let f: Vec<Float> = powers
+            .iter()
+            .zip(&rate)
+            .map(|(x, r)| Float::with_val(p, x * r))
+            .collect();
         let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
         let floor = Float::with_val(p, &su.sc.escale * &inv_len);
-        if !within(&fit, su.tol, &floor) {
+        if !within(&fit, su.tol, &floor, &mut used) {
             return Ok(Attempt::Shorter);
         }
         let anti = fit.antiderivative();
-        let wv = anti.values(su.roots, p);
+        let wv = if su.node_positions {
+            anti.values(su.roots, p)
+        } else {
+            vec![Float::new(p); n]
+        };
         (Some(anti), wv)
     } else {
         (None, vec![Float::new(p); n])
@@ -371,41 +497,93 @@ fn attempt(
         v0: v0.to_vec(),
         work0: work0.clone(),
         w: wfit,
-        dt,
-        rate: rfit,
+        dt: dt.clone(),
+        rate: rfit.clone(),
         vel,
         pos,
         work,
+        deps: su.deps.clone(),
+        lower: lower_copies(&dt, &rfit, p),
+        used,
+        dt64: dt.to_f64(),
+        rate64: rfit.to_f64(),
         nodes,
     })))
 }
 
+/// `f` rounded to q bits without the trailing coefficients below
+/// 2^−(q+8) of the largest.
+fn cut(f: &ChebFit, q: u32) -> ChebFit {
+    let mut g = f.rounded(q);
+    let big =
+        g.c.iter()
+            .map(|c| c.clone().abs())
+            .fold(Float::new(q), |a, b| a.max(&b));
+    let small = big >> (q as i32 + 8);
+    while g.c.len() > 2 && g.c.last().is_some_and(|c| c.clone().abs() < small) {
+        g.c.pop();
+    }
+    g
+}
+
+/// The lower copies of `dt` and `rate` for precision doubling: 128, 256, …
+/// bits up to 3/4 p (then one or two full steps end it).
+fn lower_copies(dt: &ChebFit, rate: &ChebFit, p: u32) -> Vec<(u32, ChebFit, ChebFit)> {
+    let mut out = Vec::new();
+    let mut q = 128u32;
+    while 4 * q <= 3 * p {
+        out.push((q, cut(dt, q), cut(rate, q)));
+        q *= 2;
+    }
+    out
+}
+
 impl Piece {
-    /// The state (t, q, q̇, W) at s.
+    /// The state (t, q, q̇, W) at s: every interpolant on one basis.
     fn state(&self, s: &Float) -> (Float, Vec<Float>, Vec<Float>, Float) {
         let p = s.prec();
         let ith = sy::th(0);
+        let zero = Float::new(p);
+        let basis = ChebFit::basis(&zero, &self.len, s, self.dt.c.len(), p);
         let mut q = self.q0.clone();
         let mut v = self.v0.clone();
         q[ith] = theta_at(&self.q0[ith], self.dir, self.m, s);
-        let w = self.w.eval(s, p);
-        let mut thd = w.sqrt();
+        let mut thd = self.w.dot(&basis).sqrt();
         if self.m == 2 {
             thd *= s;
         }
         v[ith] = thd * self.dir;
         for (i, f) in &self.vel {
-            v[*i] = Float::with_val(p, &self.v0[*i] + f.eval(s, p));
+            v[*i] = Float::with_val(p, &self.v0[*i] + f.dot(&basis));
         }
         for (i, f) in &self.pos {
-            q[*i] = Float::with_val(p, &self.q0[*i] + f.eval(s, p));
+            q[*i] = Float::with_val(p, &self.q0[*i] + f.dot(&basis));
         }
-        let t = Float::with_val(p, &self.t0 + self.dt.eval(s, p));
+        fill_dependents(&self.deps, &self.q0, &mut q, &mut v);
+        let t = Float::with_val(p, &self.t0 + self.dt.dot(&basis));
         let work = match &self.work {
-            Some(f) => Float::with_val(p, &self.work0 + f.eval(s, p)),
+            Some(f) => Float::with_val(p, &self.work0 + f.dot(&basis)),
             None => self.work0.clone(),
         };
         (t, q, v, work)
+    }
+
+    /// A sample at s with t and θ only (every other value that of s = 0,
+    /// no rates, forces or work): for [`run`] without `full` rows.
+    fn theta_sample(&self, s: &Float) -> Sample {
+        let p = s.prec();
+        let mut q = self.q0.clone();
+        q[sy::th(0)] = theta_at(&self.q0[sy::th(0)], self.dir, self.m, s);
+        let zeros = |n: usize| vec![Float::new(p); n];
+        Sample {
+            t: Float::new(p),
+            q,
+            v: zeros(self.v0.len()),
+            qdd: zeros(self.v0.len()),
+            lambda: Vec::new(),
+            work: Float::new(p),
+            power: Float::new(p),
+        }
     }
 
     /// The full sample at s (one KKT solve).
@@ -434,28 +612,79 @@ impl Piece {
         Float::with_val(p, &self.t0 + self.dt.eval(&self.len, p))
     }
 
-    /// s in [lo, hi] where t(s) = tau (t increasing in s), by Newton's method
-    /// from a linear interpolation of the bracket.
+    /// s where t(s) = tau, bracketed among the points first.
+    fn invert_at(&self, tau: &Float) -> Float {
+        let p = tau.prec();
+        let k = self.nodes.partition_point(|(_, smp)| smp.t < *tau);
+        let lo = match k {
+            0 => (Float::new(p), self.t0.clone()),
+            _ => (self.nodes[k - 1].0.clone(), self.nodes[k - 1].1.t.clone()),
+        };
+        let hi = match self.nodes.get(k) {
+            Some((s, smp)) => (s.clone(), smp.t.clone()),
+            None => (self.len.clone(), self.t_end()),
+        };
+        self.invert(tau, &lo, &hi)
+    }
+
+    /// s(t) on [t0, t1] as an interpolant (None: it does not converge to
+    /// `tol` L with the piece's points).
+    fn inverse(&self, roots: &Roots, t1: &Float, tol: &Float) -> Option<ChebFit> {
+        let p = self.len.prec();
+        let ts = ChebFit::points(&self.t0, t1, roots, p);
+        let ss: Vec<Float> = ts.iter().map(|t| self.invert_at(t)).collect();
+        let f = ChebFit::from_values(&self.t0, t1, roots, p, &ss);
+        within(&f, tol, &self.len, &mut 0).then_some(f)
+    }
+
+    /// s in [0, L] where t(s) = tau (t increasing in s): Newton's method in
+    /// f64 from the bracket's linear interpolation, then at full precision
+    /// (each step on one basis) until the step is below 2^(−p/2) L.
     fn invert(&self, tau: &Float, lo: &(Float, Float), hi: &(Float, Float)) -> Float {
         let p = tau.prec();
         let target = Float::with_val(p, tau - &self.t0);
-        let (s0, t_lo) = lo;
-        let (s1, t_hi) = hi;
-        let span = Float::with_val(p, t_hi - t_lo);
-        let frac = if span.is_zero() {
-            Float::new(p)
+        let (a, b) = (lo.0.to_f64(), hi.0.to_f64());
+        let (ta, tb) = (lo.1.to_f64(), hi.1.to_f64());
+        let len = self.len.to_f64();
+        let tg = target.to_f64();
+        let mut s = if tb > ta {
+            a + (b - a) * ((tau.to_f64() - ta) / (tb - ta))
         } else {
-            Float::with_val(p, tau - t_lo) / span
+            a
         };
-        let mut s = Float::with_val(p, s1 - s0) * frac + s0;
-        let stop = Float::with_val(p, &self.len) >> (p as i32 - 4);
-        for _ in 0..64 {
-            let f = self.dt.eval(&s, p) - &target;
-            let d = self.rate.eval(&s, p);
+        for _ in 0..30 {
+            let f = ChebFit::eval_f64(&self.dt64, 0.0, len, s) - tg;
+            let d = ChebFit::eval_f64(&self.rate64, 0.0, len, s);
             let step = f / d;
+            if !step.is_finite() {
+                break;
+            }
+            s = (s - step).clamp(a, b);
+            if step.abs() <= 1e-15 * len {
+                break;
+            }
+        }
+        // precision doubling: one step on each lower copy, then full steps
+        let mut s = Float::with_val(p, s);
+        for (q, dt, rate) in &self.lower {
+            let sq = Float::with_val(*q, &s);
+            let zero = Float::new(*q);
+            let basis = ChebFit::basis(&zero, &dt.b, &sq, dt.c.len(), *q);
+            let f = dt.dot(&basis) - Float::with_val(*q, &target);
+            let step = f / rate.dot(&basis);
+            if step.is_finite() {
+                s -= &step;
+            }
+        }
+        let zero = Float::new(p);
+        let stop = Float::with_val(p, &self.len) >> (p as i32 / 2 + 4);
+        let n = self.dt.c.len();
+        for _ in 0..20 {
+            let basis = ChebFit::basis(&zero, &self.len, &s, n, p);
+            let f = self.dt.dot(&basis) - &target;
+            let step = f / self.rate.dot(&basis);
             s -= &step;
-            s.assign(s.clone().max(s0).min(s1));
-            if step.abs() <= stop {
+            if !step.is_finite() || step.abs() <= stop {
                 break;
             }
         }
@@ -537,6 +766,17 @@ impl Piece {
     }
 }
 
+/// The next piece's length over this one's, from how many of its N
+/// coefficients the interpolants needed (k): with ρ^−k = tol and ρ roughly
+/// ∝ 1/L, L'/L = exp(ln(1/tol)(1/k − 1/k')) puts the next piece at k' =
+/// 0.65 N; between 0.7 and 2.5.
+fn growth(k: usize, n: usize, tol: &Float) -> f64 {
+    let b = -tol.clone().ln().to_f64();
+    let k = k.max(1) as f64;
+    let target = 0.65 * n as f64;
+    (b * (1.0 / k - 1.0 / target)).exp().clamp(0.7, 2.5)
+}
+
 /// The first sign change of a watched function over the piece: from its
 /// value at s = 0 (None: on its boundary there, not watched), over the
 /// points, to its value at the end.
@@ -548,7 +788,12 @@ fn first_bracket(
 ) -> Option<(Float, Float)> {
     let p = pc.len.prec();
     let mut prev: Option<(Float, &Float)> = start.map(|g| (Float::new(p), g));
-    let pts = pc.nodes.iter().map(|(s, _)| s).zip(vals).chain([(&pc.len, end)]);
+    let pts = pc
+        .nodes
+        .iter()
+        .map(|(s, _)| s)
+        .zip(vals)
+        .chain([(&pc.len, end)]);
     for (s, g) in pts {
         if g.is_zero() {
             continue;
@@ -565,7 +810,8 @@ fn first_bracket(
 
 /// A mode from `start` by spectral integration in the angle: outputs at
 /// `times` (ascending, ≥ start.t), stopping at the first terminal event or
-/// at `t_end`. `None`: the route declines (see the module notes).
+/// at `t_end`. Without `full` the outputs carry t and θ only. `None`: the
+/// route declines (see the module notes).
 ///
 /// Errors: a singular KKT system.
 pub fn run(
@@ -574,9 +820,9 @@ pub fn run(
     times: &[Float],
     t_end: &Float,
     events: &[Event],
-    tol: &Float,
-    sc: &Scales,
+    set: &Settings,
 ) -> Result<Option<Run>> {
+    let (tol, full, sc) = (&set.tol, set.full, set);
     if sys.n != 2 {
         return Ok(None);
     }
@@ -584,11 +830,14 @@ pub fn run(
     let ith = sy::th(0);
     let bits = (-tol.get_exp().unwrap_or(-(p as i32))).max(16) as usize + 8;
     let roots = Roots::new(smooth_at_least((bits / 2).max(12)), p);
+    let deps = dependents(sys, start.q);
     let su = Setup {
         roots: &roots,
         tol,
         sc,
-        moving: moving(sys),
+        moving: moving(sys, &deps),
+        deps,
+        node_positions: events.iter().any(|e| reads_positions(&e.watch)),
     };
     let mut evals = 0u64;
     let mut t0 = Float::with_val(p, &start.t);
@@ -613,7 +862,8 @@ pub fn run(
         quarter.clone().sqrt()
     } else {
         let acc = Float::with_val(p, first.qdd[ith].abs_ref());
-        let d = Float::with_val(p, v0[ith].square_ref()) / (acc * 2u32 + Float::with_val(p, 1e-300f64));
+        let d =
+            Float::with_val(p, v0[ith].square_ref()) / (acc * 2u32 + Float::with_val(p, 1e-300f64));
         quarter.clone().min(&(d * 2u32))
     };
     let tiny = Float::with_val(p, 1u32) >> (p as i32 / 2);
@@ -638,11 +888,13 @@ pub fn run(
             .collect()
     };
     let mut pieces = 0u64;
+    let mut checkpoints = Vec::new();
     for _ in 0..MAX_PIECES {
-        let pc = match attempt(sys, &su, m, dir, &len, &t0, &q0, &v0, &work0, &mut evals)? {
+        let at = attempt(sys, &su, m, dir, &len, &t0, &q0, &v0, &work0, &mut evals)?;
+        let pc = match at {
             Attempt::Done(pc) => pc,
             Attempt::Shorter => {
-                len >>= 1;
+                len *= 0.6f64;
                 if len < tiny {
                     return Ok(None);
                 }
@@ -655,9 +907,17 @@ pub fn run(
         let end_smp = pc.sample(sys, &pc.len)?;
         let node_vals: Vec<Vec<Float>> = events
             .iter()
-            .map(|e| pc.nodes.iter().map(|(_, s)| watch_value(&e.watch, s)).collect())
+            .map(|e| {
+                pc.nodes
+                    .iter()
+                    .map(|(_, s)| watch_value(&e.watch, s))
+                    .collect()
+            })
             .collect();
-        let end_vals: Vec<Float> = events.iter().map(|e| watch_value(&e.watch, &end_smp)).collect();
+        let end_vals: Vec<Float> = events
+            .iter()
+            .map(|e| watch_value(&e.watch, &end_smp))
+            .collect();
         let brackets: Vec<Option<(Float, Float)>> = (0..events.len())
             .map(|k| {
                 if events[k].terminal {
@@ -667,7 +927,12 @@ pub fn run(
                 }
             })
             .collect();
-        let earliest = brackets.iter().flatten().map(|(_, hi)| hi).min_by(|a, b| a.total_cmp(b)).cloned();
+        let earliest = brackets
+            .iter()
+            .flatten()
+            .map(|(_, hi)| hi)
+            .min_by(|a, b| a.total_cmp(b))
+            .cloned();
         // an event: the earliest root among the brackets that start before
         // the earliest bracket ends
         let mut hit: Option<(usize, Float, Sample, Float)> = None;
@@ -693,25 +958,28 @@ pub fn run(
             None => pc.t_end(),
         };
         let t_lim = t_stop.clone().min(t_end);
-        // outputs inside the piece
-        let mut lo = (Float::new(p), pc.t0.clone());
-        while next < times.len() && times[next] <= t_lim {
-            let tau = Float::with_val(p, &times[next]);
-            // the bracket among the points
-            let mut hi = (pc.len.clone(), pc.t_end());
-            for (s, smp) in &pc.nodes {
-                if smp.t >= tau {
-                    hi = (s.clone(), smp.t.clone());
-                    break;
-                }
-                lo = (s.clone(), smp.t.clone());
-            }
-            let s = pc.invert(&tau, &lo, &hi);
-            let mut smp = pc.sample(sys, &s)?;
+        // outputs inside the piece; many of them: s(t) interpolated first
+        let count = times[next..].iter().take_while(|x| **x <= t_lim).count();
+        let inverse = if count >= roots.n() / 2 {
+            pc.inverse(&roots, &t_lim, tol)
+        } else {
+            None
+        };
+        for tau in &times[next..next + count] {
+            let tau = Float::with_val(p, tau);
+            let s = match &inverse {
+                Some(f) => f.eval(&tau, p).max(&Float::new(p)).min(&pc.len),
+                None => pc.invert_at(&tau),
+            };
+            let mut smp = if full {
+                pc.sample(sys, &s)?
+            } else {
+                pc.theta_sample(&s)
+            };
             smp.t = tau;
             outputs.push(smp);
-            next += 1;
         }
+        next += count;
         let stats = Stats {
             steps: pieces,
             rejected: 0,
@@ -732,6 +1000,7 @@ pub fn run(
                     max_drift: Float::new(p),
                     projections: 0,
                     stats,
+                    checkpoints,
                 }));
             }
         }
@@ -750,15 +1019,17 @@ pub fn run(
                 max_drift: Float::new(p),
                 projections: 0,
                 stats,
+                checkpoints,
             }));
         }
         // the next piece from the end of this one
+        checkpoints.push(end_smp.clone());
         t0 = end_smp.t.clone();
         q0 = end_smp.q.clone();
         v0 = end_smp.v.clone();
         work0 = end_smp.work.clone();
         m = 1;
-        len = Float::with_val(p, &len * 1.5f64);
+        len *= growth(pc.used, roots.n(), tol);
     }
     Ok(None)
 }

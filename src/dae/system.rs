@@ -868,6 +868,39 @@ impl System {
         Ok(Accel { qdd, lambda })
     }
 
+    /// The accelerations and multipliers at q for θ̇_j = 0 and θ̇_j = 1 (every
+    /// other rate 0), from one elimination with two right-hand sides. With
+    /// ṙ = 0 the equations depend on the rates only through the θ̇_j², so
+    /// q̈ = a + b θ̇_j² with a the first and a + b the second.
+    ///
+    /// Errors: a singular system.
+    pub fn accel_pair(&mut self, q: &[Float], j: usize) -> Result<(Accel, Accel)> {
+        let p = self.prec;
+        let nq = self.nq();
+        let nk = nq + self.rows.len();
+        let mut v = vec![Float::new(p); nq];
+        self.assemble(q, &v);
+        let b0 = self.ws.b[..nk].to_vec();
+        v[th(j)].assign(1u32);
+        self.forces_h(q, &v);
+        let mut b1 = b0.clone();
+        for (i, h) in self.ws.h.iter().enumerate().take(nq) {
+            b1[i].assign(h);
+        }
+        for (k, &r) in self.rows.iter().enumerate() {
+            b1[nq + k] = self.row_coeffs(r, q, &v).1;
+        }
+        let xs = gauss_many(&mut self.ws.a, vec![b0, b1], nk)
+            .ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
+        let mut out = xs.into_iter().map(|x| Accel {
+            qdd: x[..nq].to_vec(),
+            lambda: x[nq..].to_vec(),
+        });
+        let a0 = out.next().expect("two solutions");
+        let a1 = out.next().expect("two solutions");
+        Ok((a0, a1))
+    }
+
     /// [`System::accel`] into caller buffers (the multipliers only if asked).
     pub fn accel_into(
         &mut self,
@@ -876,6 +909,25 @@ impl System {
         qdd: &mut [Float],
         lambda: Option<&mut Vec<Float>>,
     ) -> Result<()> {
+        let nq = self.nq();
+        let nk = nq + self.rows.len();
+        self.assemble(q, v);
+        let ws = &mut self.ws;
+        gauss(&mut ws.a, &mut ws.b, &mut ws.x, nk)
+            .ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
+        for (o, x) in qdd.iter_mut().zip(&ws.x[..nq]) {
+            o.assign(x);
+        }
+        if let Some(l) = lambda {
+            for (o, x) in l.iter_mut().zip(&ws.x[nq..]) {
+                o.assign(x);
+            }
+        }
+        Ok(())
+    }
+
+    /// The KKT matrix and right-hand side at (q, q̇) into the workspace.
+    fn assemble(&mut self, q: &[Float], v: &[Float]) {
         let nq = self.nq();
         self.mass_matrix(q);
         self.forces_h(q, v);
@@ -915,17 +967,6 @@ impl System {
                 ws.a[i * nk + col] += Float::with_val(self.prec, &c * &sl.mu_sigma);
             }
         }
-        gauss(&mut ws.a, &mut ws.b, &mut ws.x, nk)
-            .ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
-        for (o, x) in qdd.iter_mut().zip(&ws.x[..nq]) {
-            o.assign(x);
-        }
-        if let Some(l) = lambda {
-            for (o, x) in l.iter_mut().zip(&ws.x[nq..]) {
-                o.assign(x);
-            }
-        }
-        Ok(())
     }
 
     /// Total energy T + V (V = g Σ m_i y_i).
@@ -1131,6 +1172,72 @@ impl System {
         }
         out
     }
+}
+
+/// [`gauss`] for several right-hand sides at once (one elimination).
+pub(crate) fn gauss_many(
+    a: &mut [Float],
+    mut bs: Vec<Vec<Float>>,
+    n: usize,
+) -> Option<Vec<Vec<Float>>> {
+    let p = bs
+        .first()
+        .and_then(|b| b.first())
+        .map(|f| f.prec())
+        .unwrap_or(64);
+    let mut f = Float::new(p);
+    let mut t = Float::new(p);
+    for col in 0..n {
+        let mut piv = col;
+        for i in col + 1..n {
+            if a[i * n + col].cmp_abs(&a[piv * n + col]) == Some(std::cmp::Ordering::Greater) {
+                piv = i;
+            }
+        }
+        if a[piv * n + col].is_zero() {
+            return None;
+        }
+        if piv != col {
+            for j in 0..n {
+                a.swap(piv * n + j, col * n + j);
+            }
+            for b in &mut bs {
+                b.swap(piv, col);
+            }
+        }
+        for i in col + 1..n {
+            if a[i * n + col].is_zero() {
+                continue;
+            }
+            f.assign(&a[i * n + col] / &a[col * n + col]);
+            for j in col + 1..n {
+                if !a[col * n + j].is_zero() {
+                    t.assign(&f * &a[col * n + j]);
+                    a[i * n + j] -= &t;
+                }
+            }
+            a[i * n + col].assign(0u32);
+            for b in &mut bs {
+                t.assign(&f * &b[col]);
+                b[i] -= &t;
+            }
+        }
+    }
+    let mut xs = Vec::with_capacity(bs.len());
+    for b in &bs {
+        let mut x = vec![Float::new(p); n];
+        for i in (0..n).rev() {
+            let mut s = b[i].clone();
+            for j in i + 1..n {
+                if !a[i * n + j].is_zero() {
+                    s -= &a[i * n + j] * &x[j];
+                }
+            }
+            x[i].assign(&s / &a[i * n + i]);
+        }
+        xs.push(x);
+    }
+    Some(xs)
 }
 
 /// Gaussian elimination with partial pivoting on a row-major n×n matrix,

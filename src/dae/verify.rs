@@ -558,12 +558,13 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
         let mut out = Vec::new();
         for r in &rows {
             let a = r.digits.floor().max(0.0) as u32;
-            let value = if r.spectral.clone().abs() < Float::with_val(64, 10u32).pow(-(digits as i32)) {
-                "0".to_string()
-            } else {
-                // only the digits on which the three integrators agree
-                crate::numeric::decimal::to_sig(&r.spectral, digits.min(a.max(1)))
-            };
+            let value =
+                if r.spectral.clone().abs() < Float::with_val(64, 10u32).pow(-(digits as i32)) {
+                    "0".to_string()
+                } else {
+                    // only the digits on which the three integrators agree
+                    crate::numeric::decimal::to_sig(&r.spectral, digits.min(a.max(1)))
+                };
             count += 1;
             if worst.as_ref().is_none_or(|(b, _)| a < *b) {
                 worst = Some((a, format!("{name} {}", r.name)));

@@ -71,6 +71,20 @@ pub const SEPARATION_KEYS: [&str; 12] = [
     "psi2_dot_impact",
 ];
 
+/// The digits, and times ascending and ≥ 0.
+fn check_times(digits: u32, times: &[Exact]) -> Result<()> {
+    check_digits(digits)?;
+    for w in times.windows(2) {
+        if w[1].to_float(256) < w[0].to_float(256) {
+            return Err(Error::invalid("times", &w[1], "must be ascending"));
+        }
+    }
+    if let Some(t) = times.iter().find(|t| t.signum() < 0) {
+        return Err(Error::invalid("times", t, "must be >= 0"));
+    }
+    Ok(())
+}
+
 fn check_digits(digits: u32) -> Result<()> {
     let max = crate::oracle::MAX_DIGITS;
     if digits == 0 || digits > max {
@@ -333,15 +347,7 @@ pub fn trajectory(
     digits: u32,
     times: &[Exact],
 ) -> Result<TrajectoryAnswer> {
-    check_digits(digits)?;
-    for w in times.windows(2) {
-        if w[1].to_float(256) < w[0].to_float(256) {
-            return Err(Error::invalid("times", &w[1], "must be ascending"));
-        }
-    }
-    if let Some(t) = times.iter().find(|t| t.signum() < 0) {
-        return Err(Error::invalid("times", t, "must be >= 0"));
-    }
+    check_times(digits, times)?;
     let exact_t: Vec<Option<String>> = times
         .iter()
         .map(|t| {
@@ -370,6 +376,43 @@ pub fn trajectory(
         Ok(out)
     })?;
     Ok(TrajectoryAnswer { rows, modes })
+}
+
+/// θ with friction at the given times (through every mode and the free
+/// flight, up to the first impact), verified like [`trajectory`] but
+/// without the other columns: the frictional counterpart of
+/// [`crate::oracle::Oracle::theta_at_times`].
+///
+/// Errors: as [`trajectory`].
+pub fn theta_at_times(
+    model: &Model,
+    fr: &Friction,
+    digits: u32,
+    times: &[Exact],
+) -> Result<Vec<Verified>> {
+    check_times(digits, times)?;
+    let tf = |p: u32| -> Vec<Float> { times.iter().map(|t| t.to_float(p)).collect() };
+    let (p1, _) = precisions(digits, 0);
+    let horizon = |p: u32| super::default_horizon(model, p);
+    let run = |p: u32| super::solve_theta(model, fr, p, &tf(p), &horizon(p));
+    let first = run(p1)?;
+    let rows = laddered(
+        digits,
+        first,
+        &["theta".to_string()],
+        times.len(),
+        run,
+        |m| {
+            Ok(m.thetas
+                .iter()
+                .map(|th| integrated(th, one(th.prec())))
+                .collect())
+        },
+    )?;
+    Ok(rows
+        .into_iter()
+        .filter_map(|r| r.into_iter().next())
+        .collect())
 }
 
 /// One quantity computed by the three integrators.
@@ -414,11 +457,7 @@ pub fn cross_check(model: &Model, fr: &Friction, digits: u32) -> Result<Vec<Cros
                 quantity: "event sequence".into(),
                 requested: digits,
                 reached: "the integrators disagree on the sequence of modes".into(),
-                detail: format!(
-                    "{} / {}",
-                    signature(&s).join(", "),
-                    signature(m).join(", ")
-                ),
+                detail: format!("{} / {}", signature(&s).join(", "), signature(m).join(", ")),
             });
         }
     }

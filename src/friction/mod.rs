@@ -205,6 +205,8 @@ pub struct Motion {
     pub work_done: (u64, u64),
     /// The state where θ first reached the target angle of [`solve_to_angle`].
     pub target: Option<Point>,
+    /// θ at the requested times, for [`solve_theta`] (empty otherwise).
+    pub thetas: Vec<Float>,
     /// The integrator that computed each mode, in order ([`Method::Spectral`]
     /// falls back to [`Method::Gbs`] where it declines).
     pub routes: Vec<Method>,
@@ -343,6 +345,7 @@ impl Ctx {
 
     /// The constrained system of a mode.
     fn system(&self, mode: Mode) -> Result<System> {
+        let wp = self.wp;
         let mut sm = self.base.clone();
         sm.floor = if self.fixed {
             Floor::Fixed
@@ -356,7 +359,7 @@ impl Ctx {
             State::Stick => Contact::Roll,
             State::Slip(_) => Contact::Slip,
         };
-        let mut sys = System::new(&sm, self.wp)?;
+        let mut sys = System::new(&sm, wp)?;
         for (w, st) in [(Which::Floor, mode.floor), (Which::Contact, mode.contact)] {
             if let State::Slip(sg) = st {
                 let mk = &self.mu_k[w as usize];
@@ -367,7 +370,7 @@ impl Ctx {
                     sys.slips.push(SlipTerm {
                         at: tangent(w),
                         normal,
-                        mu_sigma: Float::with_val(self.wp, mk * i32::from(sg)),
+                        mu_sigma: Float::with_val(wp, mk * i32::from(sg)),
                     });
                 }
             }
@@ -754,6 +757,25 @@ pub const MAX_MODES: usize = 64;
 /// both contacts rolling (friction makes the cylinders part earlier) plus
 /// 50 sqrt(r/g); 200 sqrt(r/g) if that time is not finite.
 pub fn default_horizon(model: &Model, prec: u32) -> Float {
+    // the same model at both precisions of a ladder: computed once (an
+    // f64-accurate bound is all that is needed)
+    thread_local! {
+        static LAST: std::cell::RefCell<Option<(String, f64)>> = const { std::cell::RefCell::new(None) };
+    }
+    let key = format!("{model:?}");
+    if let Some(h) = LAST.with(|c| {
+        c.borrow()
+            .as_ref()
+            .and_then(|(k, h)| (*k == key).then_some(*h))
+    }) {
+        return Float::with_val(prec, h);
+    }
+    let h = horizon_of(model, prec).to_f64();
+    LAST.with(|c| *c.borrow_mut() = Some((key, h)));
+    Float::with_val(prec, h)
+}
+
+fn horizon_of(model: &Model, prec: u32) -> Float {
     let sm = StackModel::from_model(model);
     let ts = time_scale(&sm, prec);
     let floor = if model.floor() == Floor::Fixed {
@@ -820,7 +842,9 @@ pub fn solve_with(
     horizon: &Float,
     method: Method,
 ) -> Result<Motion> {
-    solve_full(model, fr, prec, times, to_impact, horizon, method, None)
+    solve_full(
+        model, fr, prec, times, to_impact, horizon, method, None, false,
+    )
 }
 
 /// The motion up to the first time θ reaches `theta` (an angle beyond θ0 in
@@ -861,6 +885,32 @@ pub fn solve_to_angle(
             text: theta.to_string(),
             at_start: d.is_zero(),
         }),
+        false,
+    )
+}
+
+/// θ alone at `times` (ascending, ≥ 0, before the first impact), into
+/// [`Motion::thetas`]: the spectral route skips the other columns (and
+/// their KKT solves); `rows` stays empty.
+///
+/// Errors: see [`solve`].
+pub fn solve_theta(
+    model: &Model,
+    fr: &Friction,
+    prec: u32,
+    times: &[Float],
+    horizon: &Float,
+) -> Result<Motion> {
+    solve_full(
+        model,
+        fr,
+        prec,
+        times,
+        false,
+        horizon,
+        Method::Spectral,
+        None,
+        true,
     )
 }
 
@@ -897,6 +947,7 @@ fn solve_full(
     horizon: &Float,
     method: Method,
     target: Option<Target>,
+    theta_only: bool,
 ) -> Result<Motion> {
     validate(model, fr)?;
     let eff = effective_model(model, fr)?;
@@ -952,6 +1003,7 @@ fn solve_full(
         work_done: (0, 0),
         target: None,
         routes: Vec::new(),
+        thetas: Vec::new(),
     };
     let mut next = 0usize;
     let t_last = times.last().cloned();
@@ -1012,8 +1064,9 @@ fn solve_full(
                 &times[next..],
                 &t_end,
                 &evs,
-                &ctx.opts.tol,
-                &crate::dae::spectral::Scales {
+                &crate::dae::spectral::Settings {
+                    tol: ctx.opts.tol.clone(),
+                    full: !theta_only,
                     ts: ctx.ts.clone(),
                     r: ctx.base_r.clone(),
                     escale: ctx.escale.clone(),
@@ -1052,7 +1105,15 @@ fn solve_full(
         };
         out.work_done.0 += run.stats.steps;
         out.work_done.1 += run.stats.evals;
+        for s in &run.checkpoints {
+            let pt = point(&ctx, &mut sys, mode, s);
+            note_drift(&pt, &mut out.energy_drift);
+        }
         for s in &run.outputs {
+            if theta_only {
+                out.thetas.push(s.q[sy::th(0)].clone());
+                continue;
+            }
             let pt = point(&ctx, &mut sys, mode, s);
             note_drift(&pt, &mut out.energy_drift);
             out.rows.push(pt);
@@ -1157,7 +1218,11 @@ fn solve_full(
                 }
                 let pt = fli.point(tt);
                 note_drift(&pt, &mut out.energy_drift);
-                out.rows.push(pt);
+                if theta_only {
+                    out.thetas.push(pt.theta.clone());
+                } else {
+                    out.rows.push(pt);
+                }
             }
             let imp_pt = fli.point(&fli.impact.t);
             note_drift(&imp_pt, &mut out.energy_drift);

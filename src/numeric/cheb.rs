@@ -166,10 +166,60 @@ fn rotate(re: &mut Float, im: &mut Float, roots: &Roots, m: usize, t: &mut [Floa
 
 /// In place: X_k = Σ_j x_j e^(−2πi jk/n) for the n = len entries, where n
 /// divides the table's N (its twiddles are table entries). Mixed radix
-/// 2, 3, 5 by recursive decimation in time.
+/// 2, 3, 5 by recursive decimation in time, out of place into scratch
+/// buffers (no allocation below the top).
 fn fft(re: &mut [Float], im: &mut [Float], roots: &Roots, p: u32) {
     let n = re.len();
     if n <= 1 {
+        return;
+    }
+    let mut ore = vec![Float::new(p); n];
+    let mut oim = vec![Float::new(p); n];
+    let mut w = Work {
+        t: [Float::new(p), Float::new(p), Float::new(p)],
+        zr: vec![Float::new(p); 5],
+        zi: vec![Float::new(p); 5],
+        a: Float::new(p),
+        b: Float::new(p),
+        acc_r: Float::new(p),
+        acc_i: Float::new(p),
+    };
+    fft_rec(re, im, 0, 1, n, &mut ore, &mut oim, roots, &mut w);
+    for (x, y) in re.iter_mut().zip(ore.iter_mut()) {
+        std::mem::swap(x, y);
+    }
+    for (x, y) in im.iter_mut().zip(oim.iter_mut()) {
+        std::mem::swap(x, y);
+    }
+}
+
+/// Scratch of [`fft_rec`].
+struct Work {
+    t: [Float; 3],
+    zr: Vec<Float>,
+    zi: Vec<Float>,
+    a: Float,
+    b: Float,
+    acc_r: Float,
+    acc_i: Float,
+}
+
+/// The DFT of the n entries x[off + j·stride] into out[0..n].
+#[allow(clippy::too_many_arguments)]
+fn fft_rec(
+    re: &[Float],
+    im: &[Float],
+    off: usize,
+    stride: usize,
+    n: usize,
+    ore: &mut [Float],
+    oim: &mut [Float],
+    roots: &Roots,
+    w: &mut Work,
+) {
+    if n == 1 {
+        ore[0].assign(&re[off]);
+        oim[0].assign(&im[off]);
         return;
     }
     let r = [2usize, 3, 5]
@@ -177,55 +227,56 @@ fn fft(re: &mut [Float], im: &mut [Float], roots: &Roots, p: u32) {
         .find(|r| n % r == 0)
         .expect("n has only the prime factors 2, 3, 5");
     let m = n / r;
-    // the r subsequences x_{jr+q}, each transformed
-    let mut sub_re: Vec<Vec<Float>> = Vec::with_capacity(r);
-    let mut sub_im: Vec<Vec<Float>> = Vec::with_capacity(r);
+    // the r subsequences x_{jr+q}, each transformed into out[q m .. (q+1) m]
     for q in 0..r {
-        let mut a: Vec<Float> = (0..m)
-            .map(|j| std::mem::replace(&mut re[j * r + q], Float::new(p)))
-            .collect();
-        let mut b: Vec<Float> = (0..m)
-            .map(|j| std::mem::replace(&mut im[j * r + q], Float::new(p)))
-            .collect();
-        fft(&mut a, &mut b, roots, p);
-        sub_re.push(a);
-        sub_im.push(b);
+        fft_rec(
+            re,
+            im,
+            off + q * stride,
+            stride * r,
+            m,
+            &mut ore[q * m..(q + 1) * m],
+            &mut oim[q * m..(q + 1) * m],
+            roots,
+            w,
+        );
     }
     // the table's N is a multiple of n: e^(−2πi e/n) = e^(−2πi (e N/n)/N)
     let scale = roots.n / n;
-    let mut t = [Float::new(p), Float::new(p), Float::new(p)];
-    let mut zr: Vec<Float> = vec![Float::new(p); r];
-    let mut zi: Vec<Float> = vec![Float::new(p); r];
-    let (mut a, mut b) = (Float::new(p), Float::new(p));
-    let mut acc_r = Float::new(p);
-    let mut acc_i = Float::new(p);
     for k in 0..m {
         for q in 0..r {
-            zr[q].assign(&sub_re[q][k]);
-            zi[q].assign(&sub_im[q][k]);
+            w.zr[q].assign(&ore[q * m + k]);
+            w.zi[q].assign(&oim[q * m + k]);
             if q > 0 {
-                rotate(&mut zr[q], &mut zi[q], roots, q * k * scale, &mut t);
+                let (zr, zi) = (&mut w.zr[q], &mut w.zi[q]);
+                rotate(zr, zi, roots, q * k * scale, &mut w.t);
             }
         }
         if r == 2 {
-            re[k].assign(&zr[0] + &zr[1]);
-            im[k].assign(&zi[0] + &zi[1]);
-            re[k + m].assign(&zr[0] - &zr[1]);
-            im[k + m].assign(&zi[0] - &zi[1]);
+            ore[k].assign(&w.zr[0] + &w.zr[1]);
+            oim[k].assign(&w.zi[0] + &w.zi[1]);
+            ore[k + m].assign(&w.zr[0] - &w.zr[1]);
+            oim[k + m].assign(&w.zi[0] - &w.zi[1]);
             continue;
         }
         for s in 0..r {
-            acc_r.assign(&zr[0]);
-            acc_i.assign(&zi[0]);
+            w.acc_r.assign(&w.zr[0]);
+            w.acc_i.assign(&w.zi[0]);
             for q in 1..r {
-                a.assign(&zr[q]);
-                b.assign(&zi[q]);
-                rotate(&mut a, &mut b, roots, (q * s * m * scale) % roots.n, &mut t);
-                acc_r += &a;
-                acc_i += &b;
+                w.a.assign(&w.zr[q]);
+                w.b.assign(&w.zi[q]);
+                rotate(
+                    &mut w.a,
+                    &mut w.b,
+                    roots,
+                    (q * s * m * scale) % roots.n,
+                    &mut w.t,
+                );
+                w.acc_r += &w.a;
+                w.acc_i += &w.b;
             }
-            re[k + s * m].assign(&acc_r);
-            im[k + s * m].assign(&acc_i);
+            ore[k + s * m].assign(&w.acc_r);
+            oim[k + s * m].assign(&w.acc_i);
         }
     }
 }
@@ -531,6 +582,55 @@ impl ChebFit {
             c: d,
             fmax: Float::new(p),
         }
+    }
+
+    /// T_0(x) … T_(n−1)(x) at x = (2v − a − b)/(b − a), at `p` bits: the
+    /// basis that [`ChebFit::dot`] evaluates every fit on [a, b] with (one
+    /// recurrence shared by many fits at the same point).
+    pub fn basis(a: &Float, b: &Float, v: &Float, n: usize, p: u32) -> Vec<Float> {
+        let mut x = Float::with_val(p, v * 2u32);
+        x -= a;
+        x -= b;
+        x /= Float::with_val(p, b - a);
+        let mut t = Vec::with_capacity(n);
+        t.push(Float::with_val(p, 1u32));
+        if n > 1 {
+            t.push(x.clone());
+        }
+        let x2 = Float::with_val(p, &x * 2u32);
+        for k in 2..n {
+            let mut next = Float::with_val(p, &x2 * &t[k - 1]);
+            next -= &t[k - 2];
+            t.push(next);
+        }
+        t
+    }
+
+    /// Σ c_k T_k from a [`ChebFit::basis`] at least as long as the fit.
+    pub fn dot(&self, basis: &[Float]) -> Float {
+        let p = basis[0].prec();
+        let mut acc = Float::new(p);
+        for (c, t) in self.c.iter().zip(basis) {
+            acc += c * t;
+        }
+        acc
+    }
+
+    /// The coefficients as f64 (for cheap seeds).
+    pub fn to_f64(&self) -> Vec<f64> {
+        self.c.iter().map(Float::to_f64).collect()
+    }
+
+    /// Clenshaw in f64 for coefficients `c` on [a, b].
+    pub fn eval_f64(c: &[f64], a: f64, b: f64, v: f64) -> f64 {
+        let x = (2.0 * v - a - b) / (b - a);
+        let (mut b1, mut b2) = (0.0, 0.0);
+        for ck in c.iter().skip(1).rev() {
+            let t = 2.0 * x * b1 - b2 + ck;
+            b2 = b1;
+            b1 = t;
+        }
+        c.first().copied().unwrap_or(0.0) + x * b1 - b2
     }
 
     /// The fit's coefficients rounded to `prec` bits (for cheap evaluations

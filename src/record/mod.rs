@@ -338,10 +338,13 @@ fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
         "digits": GOLDEN_DIGITS.to_string(),
         "provenance": {
             "program": format!("cylroll {}", env!("CARGO_PKG_VERSION")),
-            "method": "modes of the Coulomb contacts integrated by Gragg-Bulirsch-Stoer extrapolation of the \
-                       Lagrange-multiplier equations, events located on the integration, every continuation \
-                       tested for consistency, free flight in closed form; every value verified at two \
-                       working precisions with identical event sequences and the energy balance",
+            "method": "modes of the Coulomb contacts integrated by Chebyshev spectral quadrature in the angle \
+                       of the Lagrange-multiplier equations (theta_dot^2 from its linear ODE in theta), events \
+                       located as roots on the interpolants and corrected by the exact constraint forces, every \
+                       continuation tested for consistency, free flight in closed form; every value verified at \
+                       two working precisions with identical event sequences and the energy balance; the same \
+                       motion by Gragg-Bulirsch-Stoer extrapolation and Gauss-Legendre collocation agrees \
+                       (cylroll verify)",
         },
         "grid": {
             "t_end": rational_text(&end),
