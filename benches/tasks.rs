@@ -283,30 +283,42 @@ fn t3_rows(bencher: divan::Bencher, digits: u32) {
     divan_task(bencher, "T3rows", digits);
 }
 
-/// The frictional main case (issue: within 10× of T3 at the same digits):
-/// μ = 0.3 at both contacts, from rest at θ0 = 1/10, 1000 equally spaced
-/// times from 0 to separation (t_s rounded down to 3 decimals), all 16
-/// columns through the stick and slip phases.
-#[divan::bench(args = T3_DIGITS, sample_count = 3, sample_size = 1)]
-fn t3_friction(bencher: divan::Bencher, digits: u32) {
-    use cylroll::friction::{answer, Friction, Law};
+/// The frictional main case: μ = 0.3 at both contacts, from rest at θ0 =
+/// 1/10, 1000 equally spaced times from 0 to separation (t_s rounded down to
+/// 3 decimals), through the stick and slip phases.
+fn friction_case() -> (Model, cylroll::friction::Friction, Vec<Exact>) {
+    use cylroll::friction::{Friction, Law};
     let m = model(1, "1/10");
     let fr = Friction {
         floor: Law::parse("mu_floor", "0.3").expect("mu"),
         contact: Law::parse("mu_contact", "0.3").expect("mu"),
     };
-    let sep = answer::separation(&m, &fr, digits).expect("separation");
-    let ts = sep
-        .values
-        .iter()
-        .find(|v| v.name == "t_s")
-        .expect("t_s")
-        .value
-        .to_f64();
-    let end = Rational::from(((ts * 1000.0).floor() as i64, 1000));
+    // t_s = 4.92058… (golden/data/main_mu_0_3.json)
+    let end = Rational::from((4920, 1000));
     let times: Vec<Exact> = (0..T3_POINTS)
         .map(|i| Exact::rational(&end * Rational::from((i as i64, T3_POINTS as i64 - 1))))
         .collect();
+    (m, fr, times)
+}
+
+/// T3 with friction (issue: within 10× of T3 at the same digits): θ at the
+/// 1000 times, verified.
+#[divan::bench(args = T3_DIGITS, sample_count = 3, sample_size = 1)]
+fn t3_friction(bencher: divan::Bencher, digits: u32) {
+    use cylroll::friction::answer;
+    let (m, fr, times) = friction_case();
+    bencher.bench_local(|| {
+        let th = answer::theta_at_times(&m, &fr, digits, &times).expect("theta");
+        assert_eq!(th.len(), T3_POINTS);
+        th[T3_POINTS - 1].text.clone()
+    });
+}
+
+/// T3rows with friction: all 16 columns at the 1000 times, verified.
+#[divan::bench(args = T3_DIGITS, sample_count = 3, sample_size = 1)]
+fn t3_friction_rows(bencher: divan::Bencher, digits: u32) {
+    use cylroll::friction::answer;
+    let (m, fr, times) = friction_case();
     bencher.bench_local(|| {
         let t = answer::trajectory(&m, &fr, digits, &times).expect("trajectory");
         assert_eq!(t.rows.len(), T3_POINTS);

@@ -656,9 +656,11 @@ fn check_judges_an_engine_through_slip_and_flight() {
 }
 
 #[test]
-fn two_independent_integrators_agree_on_every_built_in_case() {
-    // GBS extrapolation against Gauss–Legendre collocation at the working
-    // precision of 16 digits (about 31 decimal digits of arithmetic)
+fn three_independent_integrators_agree_on_every_built_in_case() {
+    // the spectral route in the angle (the answers') against GBS
+    // extrapolation and Gauss–Legendre collocation in time, at the working
+    // precision of 16 digits (about 31 decimal digits of arithmetic);
+    // cross_check refuses a mode the spectral route declined
     for (name, model, fr) in answer::verify_cases() {
         let rows = answer::cross_check(&model, &fr, 16).unwrap();
         assert!(rows.len() >= 8, "{name}");
@@ -1178,4 +1180,29 @@ fn a_floor_restick_within_one_step_is_found_and_the_work_is_kept() {
     // the row in the stick-stick phase carries the work of the slip before it
     let r = &with.rows[3];
     assert!(r.work > 1e-6 && r.work < 1.1e-6, "{}", r.work);
+}
+
+/// θ alone (the frictional T3) is the trajectory's θ column, digit for
+/// digit, through the stick and slip phases and the flight.
+#[test]
+fn theta_at_times_is_the_trajectory_theta_column() {
+    let m = model(Floor::Roll, "1/2");
+    let fr = Friction {
+        floor: law("0.3"),
+        contact: law("0.3"),
+    };
+    let times: Vec<Exact> = ["0", "1", "4", "4.5", "5", "5.5"]
+        .iter()
+        .map(|t| Exact::parse("times", t, false).unwrap())
+        .collect();
+    let th = answer::theta_at_times(&m, &fr, 25, &times).unwrap();
+    let tr = answer::trajectory(&m, &fr, 25, &times).unwrap();
+    assert_eq!(th.len(), times.len());
+    for (i, (a, row)) in th.iter().zip(&tr.rows).enumerate() {
+        assert_eq!(a.text, row[1].text, "row {i}");
+        assert_eq!(a.digits, 25, "row {i}");
+    }
+    // past the impact: refused, like the trajectory
+    let late = vec![Exact::parse("times", "9", false).unwrap()];
+    assert!(answer::theta_at_times(&m, &fr, 25, &late).is_err());
 }

@@ -41,7 +41,7 @@
 
 use super::gbs::Stats;
 use super::solve::{watch_value, Event, Hit, Run, Sample, Start, Watch};
-use super::system::{self as sy, Row, System};
+use super::system::{self as sy, Accel, Row, System};
 use crate::error::Result;
 use crate::model::Floor;
 use crate::numeric::cheb::{smooth_at_least, ChebFit, Roots};
@@ -194,35 +194,16 @@ fn theta_at(th0: &Float, dir: i32, m: u32, s: &Float) -> Float {
 }
 
 /// a and b of q̈ = a + b θ̇² (and of λ) at angle θ: two KKT solves.
-fn probe(sys: &mut System, q0: &[Float], th: &Float) -> Result<(Sample, Sample)> {
-    let p = sys.prec;
-    let nq = sys.nq();
-    let mut q = q0.to_vec();
+fn probe(sys: &mut System, q: &mut [Float], th: &Float) -> Result<(Accel, Accel)> {
     q[sy::th(0)].assign(th);
-    let zero = vec![Float::new(p); nq];
-    let (a0, a1) = sys.accel_pair(&q, 0)?;
-    let mk = |qdd: Vec<Float>, lambda: Vec<Float>| Sample {
-        t: Float::new(p),
-        q: q.clone(),
-        v: zero.clone(),
-        qdd,
-        lambda,
-        work: Float::new(p),
-        power: Float::new(p),
-    };
-    let b_qdd = a1
-        .qdd
-        .iter()
-        .zip(&a0.qdd)
-        .map(|(x, y)| Float::with_val(p, x - y))
-        .collect();
-    let b_lam = a1
-        .lambda
-        .iter()
-        .zip(&a0.lambda)
-        .map(|(x, y)| Float::with_val(p, x - y))
-        .collect();
-    Ok((mk(a0.qdd, a0.lambda), mk(b_qdd, b_lam)))
+    let (a0, mut a1) = sys.accel_pair(q, 0)?;
+    for (x, y) in a1.qdd.iter_mut().zip(&a0.qdd) {
+        *x -= y;
+    }
+    for (x, y) in a1.lambda.iter_mut().zip(&a0.lambda) {
+        *x -= y;
+    }
+    Ok((a0, a1))
 }
 
 /// x + y·u for vectors.
@@ -277,8 +258,9 @@ fn attempt(
     let th0 = &q0[ith];
     let mut used = 0usize;
     let mut parts = Vec::with_capacity(n);
+    let mut qp = q0.to_vec();
     for s in &pts {
-        parts.push(probe(sys, q0, &theta_at(th0, dir, m, s))?);
+        parts.push(probe(sys, &mut qp, &theta_at(th0, dir, m, s))?);
         *evals += 2;
     }
     // θ'(s) = σ m s^(m−1)
@@ -628,13 +610,25 @@ impl Piece {
     }
 
     /// s(t) on [t0, t1] as an interpolant (None: it does not converge to
-    /// `tol` L with the piece's points).
+    /// `tol` L with the points of `roots`), without the trailing
+    /// coefficients whose sum stays below that tolerance.
     fn inverse(&self, roots: &Roots, t1: &Float, tol: &Float) -> Option<ChebFit> {
         let p = self.len.prec();
         let ts = ChebFit::points(&self.t0, t1, roots, p);
         let ss: Vec<Float> = ts.iter().map(|t| self.invert_at(t)).collect();
-        let f = ChebFit::from_values(&self.t0, t1, roots, p, &ss);
-        within(&f, tol, &self.len, &mut 0).then_some(f)
+        let mut f = ChebFit::from_values(&self.t0, t1, roots, p, &ss);
+        if !within(&f, tol, &self.len, &mut 0) {
+            return None;
+        }
+        let each = Float::with_val(p, &self.len * tol) / (roots.n() as u64);
+        while f.c.len() > 2
+            && f.c
+                .last()
+                .is_some_and(|c| c.cmp_abs(&each) == Some(std::cmp::Ordering::Less))
+        {
+            f.c.pop();
+        }
+        Some(f)
     }
 
     /// s in [0, L] where t(s) = tau (t increasing in s): Newton's method in
@@ -830,6 +824,7 @@ pub fn run(
     let ith = sy::th(0);
     let bits = (-tol.get_exp().unwrap_or(-(p as i32))).max(16) as usize + 8;
     let roots = Roots::new(smooth_at_least((bits / 2).max(12)), p);
+    let inv_roots = Roots::new(smooth_at_least(roots.n() * 2 / 3), p);
     let deps = dependents(sys, start.q);
     let su = Setup {
         roots: &roots,
@@ -855,16 +850,17 @@ pub fn run(
     } else {
         (1u32, if v0[ith].is_sign_negative() { -1 } else { 1 })
     };
-    // the first piece: Δθ = 1/4, or twice the distance to where θ̇ would
-    // vanish behind the start (a branch point of 1/θ̇)
-    let quarter = Float::with_val(p, 0.25f64);
+    // the first piece: Δθ = 1/4 from rest; else Δθ = 0.4, or twice the
+    // distance to where θ̇ would vanish behind the start (a branch point of
+    // 1/θ̇) if that is less
+    let cap = 0.4f64;
     let mut len = if m == 2 {
-        quarter.clone().sqrt()
+        Float::with_val(p, 0.5f64)
     } else {
         let acc = Float::with_val(p, first.qdd[ith].abs_ref());
         let d =
             Float::with_val(p, v0[ith].square_ref()) / (acc * 2u32 + Float::with_val(p, 1e-300f64));
-        quarter.clone().min(&(d * 2u32))
+        Float::with_val(p, cap).min(&(d * 2u32))
     };
     let tiny = Float::with_val(p, 1u32) >> (p as i32 / 2);
     let mut outputs = Vec::new();
@@ -961,7 +957,10 @@ pub fn run(
         // outputs inside the piece; many of them: s(t) interpolated first
         let count = times[next..].iter().take_while(|x| **x <= t_lim).count();
         let inverse = if count >= roots.n() / 2 {
-            pc.inverse(&roots, &t_lim, tol)
+            // s(t) needs fewer points than the piece's hardest function:
+            // two thirds of them first
+            pc.inverse(&inv_roots, &t_lim, tol)
+                .or_else(|| pc.inverse(&roots, &t_lim, tol))
         } else {
             None
         };
@@ -1032,4 +1031,182 @@ pub fn run(
         len *= growth(pc.used, roots.n(), tol);
     }
     Ok(None)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dae::solve::{self, Opts};
+    use crate::dae::system::{SlipTerm, StackModel, Tangent};
+    use crate::exact::Exact;
+    use crate::model::{Contact, Model};
+
+    const P: u32 = 200;
+
+    fn f(x: f64) -> Float {
+        Float::with_val(P, x)
+    }
+
+    /// The two cylinders of the paper in a mode: `slips` lists the sliding
+    /// contacts with the sign of their slip (μk = 3/10).
+    fn system(floor: Floor, contact: Contact, slips: &[(Tangent, i32)]) -> System {
+        let model = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+        let mut sm = StackModel::from_model(&model);
+        sm.floor = floor;
+        sm.contacts[0] = contact;
+        let mut sys = System::new(&sm, P).unwrap();
+        for &(at, sign) in slips {
+            let row = match at {
+                Tangent::Floor => Row::FloorNormal,
+                Tangent::Line(j) => Row::Normal(j),
+            };
+            let normal = sys.rows.iter().position(|r| *r == row).unwrap();
+            sys.slips.push(SlipTerm {
+                at,
+                normal,
+                mu_sigma: Float::with_val(P, rug::Rational::from((3 * sign, 10))),
+            });
+        }
+        sys
+    }
+
+    fn modes() -> Vec<System> {
+        vec![
+            system(Floor::Roll, Contact::Roll, &[]),
+            system(Floor::Roll, Contact::Slip, &[(Tangent::Line(0), 1)]),
+            system(Floor::Slip, Contact::Roll, &[(Tangent::Floor, -1)]),
+            system(
+                Floor::Slip,
+                Contact::Slip,
+                &[(Tangent::Floor, 1), (Tangent::Line(0), -1)],
+            ),
+            system(Floor::Fixed, Contact::Slip, &[(Tangent::Line(0), -1)]),
+        ]
+    }
+
+    /// x1, y1, φ1, ψ2, θ, r of the paper's cylinders (y1 = r1, r = r1 + r2).
+    fn coords(theta: f64) -> Vec<Float> {
+        vec![f(0.25), f(1.0), f(-0.5), f(0.75), f(theta), f(2.0)]
+    }
+
+    /// The route's premise: with ṙ = 0 the KKT solution is a + b θ̇², in
+    /// every mode, whatever the other rates (x1, φ1, ψ2 are cyclic).
+    #[test]
+    fn accelerations_are_affine_in_theta_dot_squared() {
+        let lim = Float::with_val(P, 1u32) >> (P as i32 - 16);
+        for mut sys in modes() {
+            for (theta, thd) in [(0.2, 0.3), (0.7, -1.1), (1.3, 2.5)] {
+                let q = coords(theta);
+                let (a, ab) = sys.accel_pair(&q, 0).unwrap();
+                let v = vec![f(0.3), f(0.0), f(-0.7), f(1.1), f(thd), f(0.0)];
+                let acc = sys.accel(&q, &v).unwrap();
+                let u = Float::with_val(P, f(thd).square_ref());
+                let pairs = acc
+                    .qdd
+                    .iter()
+                    .zip(a.qdd.iter().zip(&ab.qdd))
+                    .chain(acc.lambda.iter().zip(a.lambda.iter().zip(&ab.lambda)));
+                for (x, (a0, a1)) in pairs {
+                    let pred = Float::with_val(P, a1 - a0) * &u + a0;
+                    let d = Float::with_val(P, x - &pred).abs();
+                    assert!(
+                        d < lim,
+                        "{:?} {:?}: {x} vs {pred}",
+                        sys.floor,
+                        sys.slips.len()
+                    );
+                }
+            }
+        }
+    }
+
+    fn settings(tol_bits: i32) -> Settings {
+        Settings {
+            tol: Float::with_val(P, 1u32) >> tol_bits,
+            full: true,
+            ts: f(2f64.sqrt()),
+            r: f(2.0),
+            escale: f(2.0),
+        }
+    }
+
+    /// A motion that turns back (θ̇ toward the top, too slow to pass it):
+    /// the route declines instead of integrating through θ̇ = 0.
+    #[test]
+    fn a_motion_that_turns_back_is_declined() {
+        let mut sys = system(Floor::Roll, Contact::Slip, &[(Tangent::Line(0), -1)]);
+        let q = coords(0.3);
+        let mut v = vec![Float::new(P); 6];
+        v[sy::th(0)] = f(-0.05);
+        let start = Start {
+            t: Float::new(P),
+            q: &q,
+            v: &v,
+            work: Float::new(P),
+            snap: Float::new(P),
+        };
+        let r = run(&mut sys, &start, &[], &f(20.0), &[], &settings(150)).unwrap();
+        assert!(r.is_none(), "a turning motion must be declined");
+    }
+
+    /// One sliding mode (floor rolling, contact sliding) from a moving start
+    /// to N12 = 0, by this route and by GBS extrapolation: the event time,
+    /// the state there and outputs on the way agree to the tolerance.
+    #[test]
+    fn agrees_with_extrapolation_on_a_sliding_mode() {
+        let tol_bits = 150;
+        let mut a = system(Floor::Roll, Contact::Slip, &[(Tangent::Line(0), 1)]);
+        let mut b = a.clone();
+        let q = coords(0.4);
+        let mut v = vec![Float::new(P); 6];
+        // rolling floor: ẋ1 = r1 φ̇1; the contact slides forwards
+        v[sy::X1] = f(-0.05);
+        v[sy::PHI1] = f(-0.05);
+        v[sy::th(0)] = f(0.3);
+        v[sy::psi(0)] = f(-0.2);
+        let start = Start {
+            t: Float::new(P),
+            q: &q,
+            v: &v,
+            work: Float::new(P),
+            snap: Float::new(P),
+        };
+        let n12 = a.rows.iter().position(|r| *r == Row::Normal(0)).unwrap();
+        let events = vec![Event {
+            name: "separation".into(),
+            watch: Watch::Multiplier(n12),
+            terminal: true,
+        }];
+        let times = vec![f(0.5), f(1.25)];
+        let set = settings(tol_bits);
+        let s = run(&mut a, &start, &times, &f(50.0), &events, &set)
+            .unwrap()
+            .expect("the route takes this mode");
+        let mut opts = Opts::for_prec(P - 40, 8, &set.ts);
+        opts.hcap = Some(f(1.0));
+        let g = solve::run_from(&mut b, &start, &times, &f(50.0), &events, &opts).unwrap();
+        assert!(s.stopped && g.stopped);
+        let lim = Float::with_val(P, 1u32) >> (tol_bits - 12);
+        let close = |x: &Float, y: &Float, what: &str| {
+            let d = Float::with_val(P, x - y).abs();
+            assert!(d < lim, "{what}: {x} vs {y}");
+        };
+        close(&s.last.t, &g.last.t, "t_s");
+        for (x, y) in s.last.q.iter().zip(&g.last.q) {
+            close(x, y, "q at separation");
+        }
+        for (x, y) in s.last.v.iter().zip(&g.last.v) {
+            close(x, y, "q̇ at separation");
+        }
+        close(&s.last.work, &g.last.work, "work");
+        assert_eq!(s.outputs.len(), 2);
+        for (x, y) in s.outputs.iter().zip(&g.outputs) {
+            for (c, d) in x.q.iter().zip(&y.q).chain(x.v.iter().zip(&y.v)) {
+                close(c, d, "output state");
+            }
+            for (c, d) in x.lambda.iter().zip(&y.lambda) {
+                close(c, d, "output forces");
+            }
+        }
+    }
 }

@@ -303,6 +303,9 @@ pub struct System {
 
 #[derive(Debug, Clone)]
 struct Workspace {
+    /// Rates and second right-hand side of [`System::accel_pair`].
+    v: Vec<Float>,
+    b1: Vec<Float>,
     m: Vec<Float>,
     h: Vec<Float>,
     a: Vec<Float>,
@@ -368,6 +371,8 @@ impl System {
             cyclic: Vec::new(),
             slips: Vec::new(),
             ws: Workspace {
+                v: Vec::new(),
+                b1: Vec::new(),
                 m: vec![Float::new(prec); nq * nq],
                 h: vec![Float::new(prec); nq],
                 a: Vec::new(),
@@ -875,26 +880,40 @@ impl System {
     ///
     /// Errors: a singular system.
     pub fn accel_pair(&mut self, q: &[Float], j: usize) -> Result<(Accel, Accel)> {
-        let p = self.prec;
         let nq = self.nq();
         let nk = nq + self.rows.len();
-        let mut v = vec![Float::new(p); nq];
+        let p = self.prec;
+        let mut v = std::mem::take(&mut self.ws.v);
+        v.resize(nq, Float::new(p));
+        for x in v.iter_mut() {
+            x.assign(0u32);
+        }
         self.assemble(q, &v);
-        let b0 = self.ws.b[..nk].to_vec();
         v[th(j)].assign(1u32);
         self.forces_h(q, &v);
-        let mut b1 = b0.clone();
+        let mut b1 = std::mem::take(&mut self.ws.b1);
+        b1.resize(nk, Float::new(p));
         for (i, h) in self.ws.h.iter().enumerate().take(nq) {
             b1[i].assign(h);
         }
         for (k, &r) in self.rows.iter().enumerate() {
-            b1[nq + k] = self.row_coeffs(r, q, &v).1;
+            // only the Friction rows' right-hand sides carry rates (−ṙ θ̇)
+            b1[nq + k] = match r {
+                Row::Friction(_) => self.row_coeffs(r, q, &v).1,
+                _ => self.ws.b[nq + k].clone(),
+            };
         }
-        let xs = gauss_many(&mut self.ws.a, vec![b0, b1], nk)
-            .ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
-        let mut out = xs.into_iter().map(|x| Accel {
-            qdd: x[..nq].to_vec(),
-            lambda: x[nq..].to_vec(),
+        self.ws.v = v;
+        let mut bs = [std::mem::take(&mut self.ws.b), b1];
+        let xs = gauss_many(&mut self.ws.a, &mut bs, nk);
+        let [b0, b1] = bs;
+        self.ws.b = b0;
+        self.ws.b1 = b1;
+        let xs =
+            xs.ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
+        let mut out = xs.into_iter().map(|mut x| {
+            let lambda = x.split_off(nq);
+            Accel { qdd: x, lambda }
         });
         let a0 = out.next().expect("two solutions");
         let a1 = out.next().expect("two solutions");
@@ -1177,7 +1196,7 @@ impl System {
 /// [`gauss`] for several right-hand sides at once (one elimination).
 pub(crate) fn gauss_many(
     a: &mut [Float],
-    mut bs: Vec<Vec<Float>>,
+    bs: &mut [Vec<Float>],
     n: usize,
 ) -> Option<Vec<Vec<Float>>> {
     let p = bs
@@ -1201,7 +1220,7 @@ pub(crate) fn gauss_many(
             for j in 0..n {
                 a.swap(piv * n + j, col * n + j);
             }
-            for b in &mut bs {
+            for b in bs.iter_mut() {
                 b.swap(piv, col);
             }
         }
@@ -1217,14 +1236,14 @@ pub(crate) fn gauss_many(
                 }
             }
             a[i * n + col].assign(0u32);
-            for b in &mut bs {
+            for b in bs.iter_mut() {
                 t.assign(&f * &b[col]);
                 b[i] -= &t;
             }
         }
     }
     let mut xs = Vec::with_capacity(bs.len());
-    for b in &bs {
+    for b in bs.iter() {
         let mut x = vec![Float::new(p); n];
         for i in (0..n).rev() {
             let mut s = b[i].clone();
