@@ -78,11 +78,9 @@ struct Piece {
     q0: Vec<Float>,
     v0: Vec<Float>,
     work0: Float,
-    /// w(s): u = θ̇² = s^(2(m−1)) w.
-    w: ChebFit,
     /// t(s) − t0.
     dt: ChebFit,
-    /// dt/ds = m/√w.
+    /// dt/ds = m/√w (u = θ̇² = s^(2(m−1)) w; θ̇ = σ s^(m−1) m/rate).
     rate: ChebFit,
     /// q̇_i(s) − q̇_i(0) of the coordinates that move besides θ.
     vel: Vec<(usize, ChebFit)>,
@@ -316,15 +314,6 @@ fn attempt(
         }
         w.push(Float::with_val(p, &u));
     }
-    let wfit = ChebFit::from_values(&zero, len, su.roots, p, &w);
-    if !within(&wfit, su.tol, &zero, &mut used) {
-        return Ok(Attempt::Shorter);
-    }
-    // θ̇ must not vanish up to the end either
-    let w_end = wfit.eval(len, p);
-    if !w_end.is_sign_positive() || w_end.is_zero() {
-        return Ok(Attempt::Decline);
-    }
     let rate: Vec<Float> = w
         .iter()
         .map(|x| Float::with_val(p, x.sqrt_ref()).recip() * m)
@@ -333,6 +322,11 @@ fn attempt(
     let tfloor = Float::with_val(p, &su.sc.ts * &inv_len);
     if !within(&rfit, su.tol, &tfloor, &mut used) {
         return Ok(Attempt::Shorter);
+    }
+    // θ̇ must not vanish up to the end either
+    let r_end = rfit.eval(len, p);
+    if !r_end.is_sign_positive() || r_end.is_zero() || !r_end.is_finite() {
+        return Ok(Attempt::Decline);
     }
     let dt = rfit.antiderivative();
     let tv = dt.values(su.roots, p);
@@ -478,7 +472,6 @@ fn attempt(
         q0: q0.to_vec(),
         v0: v0.to_vec(),
         work0: work0.clone(),
-        w: wfit,
         dt: dt.clone(),
         rate: rfit.clone(),
         vel,
@@ -530,7 +523,7 @@ impl Piece {
         let mut q = self.q0.clone();
         let mut v = self.v0.clone();
         q[ith] = theta_at(&self.q0[ith], self.dir, self.m, s);
-        let mut thd = self.w.dot(&basis).sqrt();
+        let mut thd = Float::with_val(p, self.m) / self.rate.dot(&basis);
         if self.m == 2 {
             thd *= s;
         }

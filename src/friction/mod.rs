@@ -9,10 +9,15 @@
 //!   velocity constraint whose multiplier is its tangential force; a
 //!   slipping one is the applied force −μk σ N along its slip direction,
 //!   with N the multiplier of its normal row (so the KKT matrix gains μk σ
-//!   J_t in N's column). Each mode is integrated by Gragg–Bulirsch–Stoer
-//!   extrapolation with the dissipated work E(0) − E(t) = ∫ μk N |s| dt as
-//!   an extra state; its events (cone reached, slip speed zero, N12 = 0,
-//!   N1 = 0) are roots located on the integration.
+//!   J_t in N's column). Each mode is integrated by Chebyshev spectral
+//!   quadrature in the angle ([`crate::dae::spectral`]: q̈ and λ are affine
+//!   in θ̇², so θ̇² solves a linear ODE in θ), with the dissipated work
+//!   E(0) − E(t) = ∫ μk N |s| dt among the quadratures; its events (cone
+//!   reached, slip speed zero, N12 = 0, N1 = 0) are roots of the
+//!   interpolants. A mode the angle cannot parametrise (θ̇ reaching 0) is
+//!   integrated by Gragg–Bulirsch–Stoer extrapolation in time instead, and
+//!   [`Method`] selects GBS or Gauss–Legendre collocation throughout for
+//!   the cross-checks.
 //! * At the start and at every event every candidate continuation is tested
 //!   for consistency just after it ([`decide`]): each contact sticking
 //!   (needed |F| ≤ μs N), slipping either way (slip speed of that sign,
