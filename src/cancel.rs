@@ -3,7 +3,8 @@
 //! A caller that runs the library on a worker thread (the Python package,
 //! which must stop a computation on `KeyboardInterrupt`) installs a flag on
 //! that thread; the long loops — each rung of the precision ladder, each step
-//! of the Taylor and the extrapolation integrators — call [`check`] and end
+//! of the Taylor and the extrapolation integrators, each piece of the
+//! spectral route and every 64 of its rows — call [`check`] and end
 //! with [`crate::Error::Cancelled`] once the flag is set. The flag is per
 //! thread and absent by default (the command line never installs one), so
 //! nothing changes for other callers and no global state is shared.

@@ -764,6 +764,18 @@ fn growth(k: usize, n: usize, tol: &Float) -> f64 {
     (b * (1.0 / k - 1.0 / target)).exp().clamp(0.7, 2.5)
 }
 
+/// The first piece of a moving start: Δθ = `cap`, or 1.5 times the
+/// distance u/(2|θ̈|) to where θ̇ would vanish behind the start (a branch
+/// point of 1/θ̇; ρ ≈ 4.4) if that is less.
+fn behind(s: &Sample, cap: f64) -> Float {
+    let p = s.t.prec();
+    let ith = sy::th(0);
+    let acc = Float::with_val(p, s.qdd[ith].abs_ref());
+    let d =
+        Float::with_val(p, s.v[ith].square_ref()) / (acc * 2u32 + Float::with_val(p, 1e-300f64));
+    Float::with_val(p, cap).min(&(d * 1.5f64))
+}
+
 /// The first sign change of a watched function over the piece: from its
 /// value at s = 0 (None: on its boundary there, not watched), over the
 /// points, to its value at the end.
@@ -848,12 +860,34 @@ pub fn run(
     // 1/θ̇) if that is less
     let cap = 0.4f64;
     let mut len = if m == 2 {
-        Float::with_val(p, 0.5f64)
+        // from rest u ≈ 2a Δ + a′ Δ² (Δ = θ − θa, a = θ̈ at rest): its
+        // other zero Δ* = −2a/a′ puts branch points of 1/√w at s = ±i√|Δ*|
+        // (near the top a ∝ θ: s* = √(2 θ0)); a piece of length s* keeps
+        // ρ ≈ 4.6
+        let h = Float::with_val(p, 1u32) >> (p as i32 / 3);
+        let mut qh = q0.clone();
+        qh[ith] += Float::with_val(p, &h * dir);
+        let zero = vec![Float::new(p); v0.len()];
+        let ah = sys.accel(&qh, &zero)?;
+        evals += 1;
+        let da = Float::with_val(p, &ah.qdd[ith] - &first.qdd[ith]) / &h * dir;
+        let star = (Float::with_val(p, &first.qdd[ith] / &da).abs() * 2u32).sqrt();
+        if star.is_finite() {
+            Float::with_val(p, 0.5f64).min(&(star * 1.25f64))
+        } else {
+            Float::with_val(p, 0.5f64)
+        }
     } else {
-        let acc = Float::with_val(p, first.qdd[ith].abs_ref());
-        let d =
-            Float::with_val(p, v0[ith].square_ref()) / (acc * 2u32 + Float::with_val(p, 1e-300f64));
-        Float::with_val(p, cap).min(&(d * 2u32))
+        let smp = Sample {
+            t: t0.clone(),
+            q: q0.clone(),
+            v: v0.clone(),
+            qdd: first.qdd.clone(),
+            lambda: Vec::new(),
+            work: work0.clone(),
+            power: Float::new(p),
+        };
+        behind(&smp, cap)
     };
     let tiny = Float::with_val(p, 1u32) >> (p as i32 / 2);
     let mut outputs = Vec::new();
@@ -879,6 +913,7 @@ pub fn run(
     let mut pieces = 0u64;
     let mut checkpoints = Vec::new();
     for _ in 0..MAX_PIECES {
+        crate::cancel::check()?;
         let at = attempt(sys, &su, m, dir, &len, &t0, &q0, &v0, &work0, &mut evals)?;
         let pc = match at {
             Attempt::Done(pc) => pc,
@@ -957,7 +992,10 @@ pub fn run(
         } else {
             None
         };
-        for tau in &times[next..next + count] {
+        for (i, tau) in times[next..next + count].iter().enumerate() {
+            if i % 64 == 0 {
+                crate::cancel::check()?;
+            }
             let tau = Float::with_val(p, tau);
             let s = match &inverse {
                 Some(f) => f.eval(&tau, p).max(&Float::new(p)).min(&pc.len),
@@ -1020,8 +1058,16 @@ pub fn run(
         q0 = end_smp.q.clone();
         v0 = end_smp.v.clone();
         work0 = end_smp.work.clone();
+        let g = growth(pc.used, roots.n(), tol);
+        if m == 2 {
+            // from s to θ: the piece spanned Δθ = L²
+            len.square_mut();
+        }
+        len *= g;
         m = 1;
-        len *= growth(pc.used, roots.n(), tol);
+        // graded towards a branch point behind: at least 1.5 times its
+        // distance (ρ ≈ 4.4)
+        len = len.max(&behind(&end_smp, cap));
     }
     Ok(None)
 }
