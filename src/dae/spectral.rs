@@ -1159,6 +1159,17 @@ mod tests {
         }
     }
 
+    /// A start at t = 0 with nothing dissipated and no snapping.
+    fn at_zero<'a>(q: &'a [Float], v: &'a [Float]) -> Start<'a> {
+        Start {
+            t: Float::new(P),
+            q,
+            v,
+            work: Float::new(P),
+            snap: Float::new(P),
+        }
+    }
+
     fn settings(tol_bits: i32) -> Settings {
         Settings {
             tol: Float::with_val(P, 1u32) >> tol_bits,
@@ -1177,13 +1188,7 @@ mod tests {
         let q = coords(0.3);
         let mut v = vec![Float::new(P); 6];
         v[sy::th(0)] = f(-0.05);
-        let start = Start {
-            t: Float::new(P),
-            q: &q,
-            v: &v,
-            work: Float::new(P),
-            snap: Float::new(P),
-        };
+        let start = at_zero(&q, &v);
         let r = run(&mut sys, &start, &[], &f(20.0), &[], &settings(150)).unwrap();
         assert!(r.is_none(), "a turning motion must be declined");
     }
@@ -1203,13 +1208,7 @@ mod tests {
         v[sy::PHI1] = f(-0.05);
         v[sy::th(0)] = f(0.3);
         v[sy::psi(0)] = f(-0.2);
-        let start = Start {
-            t: Float::new(P),
-            q: &q,
-            v: &v,
-            work: Float::new(P),
-            snap: Float::new(P),
-        };
+        let start = at_zero(&q, &v);
         let n12 = a.rows.iter().position(|r| *r == Row::Normal(0)).unwrap();
         let events = vec![Event {
             name: "separation".into(),

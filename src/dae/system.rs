@@ -904,14 +904,19 @@ impl System {
             };
         }
         self.ws.v = v;
-        let mut bs = [std::mem::take(&mut self.ws.b), b1];
-        let xs = gauss_many(&mut self.ws.a, &mut bs, nk);
-        let [b0, b1] = bs;
+        let mut b0 = std::mem::take(&mut self.ws.b);
+        let mut x0 = vec![Float::new(p); nk];
+        let mut x1 = vec![Float::new(p); nk];
+        let ok = gauss_many(
+            &mut self.ws.a,
+            &mut [&mut b0, &mut b1],
+            &mut [&mut x0, &mut x1],
+            nk,
+        );
         self.ws.b = b0;
         self.ws.b1 = b1;
-        let xs =
-            xs.ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
-        let mut out = xs.into_iter().map(|mut x| {
+        ok.ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
+        let mut out = [x0, x1].into_iter().map(|mut x| {
             let lambda = x.split_off(nq);
             Accel { qdd: x, lambda }
         });
@@ -1193,19 +1198,21 @@ impl System {
     }
 }
 
-/// [`gauss`] for several right-hand sides at once (one elimination).
+/// Gaussian elimination with partial pivoting on a row-major n×n matrix,
+/// in place, for several right-hand sides at once (one elimination); the
+/// solution of `bs[k]` goes to `xs[k]`. `None` if singular.
 pub(crate) fn gauss_many(
     a: &mut [Float],
-    bs: &mut [Vec<Float>],
+    bs: &mut [&mut [Float]],
+    xs: &mut [&mut [Float]],
     n: usize,
-) -> Option<Vec<Vec<Float>>> {
+) -> Option<()> {
     let p = bs
         .first()
         .and_then(|b| b.first())
         .map(|f| f.prec())
         .unwrap_or(64);
     let mut f = Float::new(p);
-    let mut t = Float::new(p);
     for col in 0..n {
         let mut piv = col;
         for i in col + 1..n {
@@ -1224,67 +1231,9 @@ pub(crate) fn gauss_many(
                 b.swap(piv, col);
             }
         }
-        for i in col + 1..n {
-            if a[i * n + col].is_zero() {
-                continue;
-            }
-            f.assign(&a[i * n + col] / &a[col * n + col]);
-            for j in col + 1..n {
-                if !a[col * n + j].is_zero() {
-                    t.assign(&f * &a[col * n + j]);
-                    a[i * n + j] -= &t;
-                }
-            }
-            a[i * n + col].assign(0u32);
-            for b in bs.iter_mut() {
-                t.assign(&f * &b[col]);
-                b[i] -= &t;
-            }
-        }
-    }
-    let mut xs = Vec::with_capacity(bs.len());
-    for b in bs.iter() {
-        let mut x = vec![Float::new(p); n];
-        for i in (0..n).rev() {
-            let mut s = b[i].clone();
-            for j in i + 1..n {
-                if !a[i * n + j].is_zero() {
-                    s -= &a[i * n + j] * &x[j];
-                }
-            }
-            x[i].assign(&s / &a[i * n + i]);
-        }
-        xs.push(x);
-    }
-    Some(xs)
-}
-
-/// Gaussian elimination with partial pivoting on a row-major n×n matrix,
-/// in place; the solution goes to `x`. `None` if singular.
-pub(crate) fn gauss(a: &mut [Float], b: &mut [Float], x: &mut [Float], n: usize) -> Option<()> {
-    let p = b.first().map(|f| f.prec()).unwrap_or(64);
-    let mut f = Float::new(p);
-    for col in 0..n {
-        let mut piv = col;
-        for i in col + 1..n {
-            if a[i * n + col].cmp_abs(&a[piv * n + col]) == Some(std::cmp::Ordering::Greater) {
-                piv = i;
-            }
-        }
-        if a[piv * n + col].is_zero() {
-            return None;
-        }
-        if piv != col {
-            for j in 0..n {
-                a.swap(piv * n + j, col * n + j);
-            }
-            b.swap(piv, col);
-        }
         let (top, bottom) = a.split_at_mut((col + 1) * n);
         let prow = &top[col * n..];
-        let (btop, bbot) = b.split_at_mut(col + 1);
-        let bp = &btop[col];
-        for (ii, brow) in bbot.iter_mut().enumerate() {
+        for ii in 0..n - col - 1 {
             let row = &mut bottom[ii * n..(ii + 1) * n];
             if row[col].is_zero() {
                 continue;
@@ -1296,17 +1245,27 @@ pub(crate) fn gauss(a: &mut [Float], b: &mut [Float], x: &mut [Float], n: usize)
                 }
             }
             row[col].assign(0u32);
-            *brow -= &f * bp;
-        }
-    }
-    for i in (0..n).rev() {
-        let mut s = b[i].clone();
-        for j in i + 1..n {
-            if !a[i * n + j].is_zero() {
-                s -= &a[i * n + j] * &x[j];
+            for b in bs.iter_mut() {
+                let (btop, bbot) = b.split_at_mut(col + 1);
+                bbot[ii] -= &f * &btop[col];
             }
         }
-        x[i].assign(&s / &a[i * n + i]);
+    }
+    for (b, x) in bs.iter().zip(xs.iter_mut()) {
+        for i in (0..n).rev() {
+            let mut s = b[i].clone();
+            for j in i + 1..n {
+                if !a[i * n + j].is_zero() {
+                    s -= &a[i * n + j] * &x[j];
+                }
+            }
+            x[i].assign(&s / &a[i * n + i]);
+        }
     }
     Some(())
+}
+
+/// [`gauss_many`] for one right-hand side.
+pub(crate) fn gauss(a: &mut [Float], b: &mut [Float], x: &mut [Float], n: usize) -> Option<()> {
+    gauss_many(a, &mut [b], &mut [x], n)
 }
