@@ -63,7 +63,8 @@ pub struct Settings {
     pub escale: Float,
 }
 
-/// Most pieces per mode before the route declines.
+/// Most pieces per mode before the route declines (and four times as many
+/// attempts, shortened ones included).
 const MAX_PIECES: usize = 400;
 
 /// Extra bits of the m = 2 quadrature for u.
@@ -214,6 +215,9 @@ fn affine(x: &[Float], y: &[Float], u: &Float) -> Vec<Float> {
 
 struct Setup<'a> {
     roots: &'a Roots,
+    /// The same points with twiddles at p + [`REST_GUARD`] (+ 32) bits, for
+    /// a start from rest.
+    rest_roots: Option<&'a Roots>,
     tol: &'a Float,
     sc: &'a Settings,
     moving: Vec<usize>,
@@ -296,12 +300,16 @@ fn attempt(
         .collect();
     let hz = Float::new(hp);
     let hl = Float::with_val(hp, len);
-    let jfit = ChebFit::from_values(&hz, &hl, su.roots, hp, &j);
+    let hroots = match (m, su.rest_roots) {
+        (2, Some(r)) => r,
+        _ => su.roots,
+    };
+    let jfit = ChebFit::from_values(&hz, &hl, hroots, hp, &j);
     let uscale = Float::with_val(p, su.sc.ts.square_ref()).recip() * &inv_len;
     if !within(&jfit, su.tol, &uscale, &mut used) {
         return Ok(Attempt::Shorter);
     }
-    let iv = jfit.antiderivative().values(su.roots, hp);
+    let iv = jfit.antiderivative().values(hroots, hp);
     let ua = Float::with_val(hp, v0[ith].square_ref());
     let mut w = Vec::with_capacity(n);
     for ((s, i), e) in pts.iter().zip(&iv).zip(&e) {
@@ -661,6 +669,7 @@ impl Piece {
             let step = f / rate.dot(&basis);
             if step.is_finite() {
                 s -= &step;
+                s.assign(s.clone().max(&lo.0).min(&hi.0));
             }
         }
         let zero = Float::new(p);
@@ -670,8 +679,12 @@ impl Piece {
             let basis = ChebFit::basis(&zero, &self.len, &s, n, p);
             let f = self.dt.dot(&basis) - &target;
             let step = f / self.rate.dot(&basis);
+            if !step.is_finite() {
+                break;
+            }
             s -= &step;
-            if !step.is_finite() || step.abs() <= stop {
+            s.assign(s.clone().max(&lo.0).min(&hi.0));
+            if step.abs() <= stop {
                 break;
             }
         }
@@ -776,35 +789,78 @@ fn behind(s: &Sample, cap: f64) -> Float {
     Float::with_val(p, cap).min(&(d * 1.5f64))
 }
 
+/// Interior samples per gap between two points where a watched function's
+/// interpolant is looked at too (a graze that crosses zero and comes back
+/// between two points).
+const BETWEEN: usize = 4;
+
+/// The Chebyshev coefficients, in f64, of the interpolant of values at the
+/// N points (`asc`: ascending s, i.e. the points in reverse order), by the
+/// direct cosine sum (`cos[m]` = cos(mπ/2N), m < 4N).
+fn coeffs64(asc: &[Float], cos: &[f64]) -> Vec<f64> {
+    let n = asc.len();
+    let f: Vec<f64> = asc.iter().rev().map(Float::to_f64).collect();
+    (0..n)
+        .map(|k| {
+            let mut sum = 0.0;
+            for (j, fj) in f.iter().enumerate() {
+                sum += fj * cos[(k * (2 * j + 1)) % (4 * n)];
+            }
+            let c = 2.0 * sum / n as f64;
+            if k == 0 {
+                c / 2.0
+            } else {
+                c
+            }
+        })
+        .collect()
+}
+
 /// The first sign change of a watched function over the piece: from its
 /// value at s = 0 (None: on its boundary there, not watched), over the
-/// points, to its value at the end.
+/// points — and [`BETWEEN`] samples of its interpolant `c64` in each gap,
+/// where values below 10^−12 of the largest count as 0 — to its value at
+/// the end.
 fn first_bracket(
-    pc: &Piece,
+    nodes: &[&Float],
+    len: &Float,
     start: Option<&Float>,
     vals: &[Float],
     end: &Float,
+    c64: &[f64],
 ) -> Option<(Float, Float)> {
-    let p = pc.len.prec();
-    let mut prev: Option<(Float, &Float)> = start.map(|g| (Float::new(p), g));
-    let pts = pc
-        .nodes
-        .iter()
-        .map(|(s, _)| s)
-        .zip(vals)
-        .chain([(&pc.len, end)]);
-    for (s, g) in pts {
-        if g.is_zero() {
-            continue;
-        }
-        if let Some((ps, pg)) = &prev {
-            if g.is_sign_negative() != pg.is_sign_negative() {
-                return Some((ps.clone(), s.clone()));
+    let p = len.prec();
+    let lenf = len.to_f64();
+    let big = vals.iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max);
+    let floor = 1e-12 * big;
+    // the sequence of (s, sign) with the interpolant's samples between points
+    let mut seq: Vec<(Float, bool)> = Vec::with_capacity((BETWEEN + 1) * vals.len() + 2);
+    if let Some(g) = start.filter(|g| !g.is_zero()) {
+        seq.push((Float::new(p), g.is_sign_negative()));
+    }
+    let mut last = 0.0;
+    let mut first_point = true;
+    let points = nodes.iter().copied().zip(vals).chain([(len, end)]);
+    for (s, g) in points {
+        let sf = s.to_f64();
+        if !first_point {
+            for i in 1..=BETWEEN {
+                let x = last + (sf - last) * i as f64 / (BETWEEN + 1) as f64;
+                let v = ChebFit::eval_f64(c64, 0.0, lenf, x);
+                if v.abs() > floor {
+                    seq.push((Float::with_val(p, x), v < 0.0));
+                }
             }
         }
-        prev = Some((s.clone(), g));
+        first_point = false;
+        last = sf;
+        if !g.is_zero() {
+            seq.push((s.clone(), g.is_sign_negative()));
+        }
     }
-    None
+    seq.windows(2)
+        .find(|w| w[0].1 != w[1].1)
+        .map(|w| (w[0].0.clone(), w[1].0.clone()))
 }
 
 /// A mode from `start` by spectral integration in the angle: outputs at
@@ -822,7 +878,8 @@ pub fn run(
     set: &Settings,
 ) -> Result<Option<Run>> {
     let (tol, full, sc) = (&set.tol, set.full, set);
-    if sys.n != 2 {
+    // two cylinders, terminal events only (the friction modes' watches)
+    if sys.n != 2 || events.iter().any(|e| !e.terminal) {
         return Ok(None);
     }
     let p = sys.prec;
@@ -830,9 +887,16 @@ pub fn run(
     let bits = (-tol.get_exp().unwrap_or(-(p as i32))).max(16) as usize + 8;
     let roots = Roots::new(smooth_at_least((bits / 2).max(12)), p);
     let inv_roots = Roots::new(smooth_at_least(roots.n() * 2 / 3), p);
+    let cos64: Vec<f64> = (0..4 * roots.n())
+        .map(|m| (m as f64 * std::f64::consts::PI / (2 * roots.n()) as f64).cos())
+        .collect();
     let deps = dependents(sys, start.q);
+    let rest_roots = start.v[sy::th(0)]
+        .is_zero()
+        .then(|| Roots::new(roots.n(), p + REST_GUARD));
     let su = Setup {
         roots: &roots,
+        rest_roots: rest_roots.as_ref(),
         tol,
         sc,
         moving: moving(sys, &deps),
@@ -912,13 +976,18 @@ pub fn run(
     };
     let mut pieces = 0u64;
     let mut checkpoints = Vec::new();
-    for _ in 0..MAX_PIECES {
+    let mut shortened = false;
+    for _ in 0..4 * MAX_PIECES {
         crate::cancel::check()?;
+        if pieces as usize >= MAX_PIECES {
+            break;
+        }
         let at = attempt(sys, &su, m, dir, &len, &t0, &q0, &v0, &work0, &mut evals)?;
         let pc = match at {
             Attempt::Done(pc) => pc,
             Attempt::Shorter => {
                 len *= 0.6f64;
+                shortened = true;
                 if len < tiny {
                     return Ok(None);
                 }
@@ -945,7 +1014,16 @@ pub fn run(
         let brackets: Vec<Option<(Float, Float)>> = (0..events.len())
             .map(|k| {
                 if events[k].terminal {
-                    first_bracket(&pc, start_val[k].as_ref(), &node_vals[k], &end_vals[k])
+                    let c64 = coeffs64(&node_vals[k], &cos64);
+                    let at: Vec<&Float> = pc.nodes.iter().map(|(s, _)| s).collect();
+                    first_bracket(
+                        &at,
+                        &pc.len,
+                        start_val[k].as_ref(),
+                        &node_vals[k],
+                        &end_vals[k],
+                        &c64,
+                    )
                 } else {
                     None
                 }
@@ -983,7 +1061,12 @@ pub fn run(
         };
         let t_lim = t_stop.clone().min(t_end);
         // outputs inside the piece; many of them: s(t) interpolated first
-        let count = times[next..].iter().take_while(|x| **x <= t_lim).count();
+        // (an output at the event's own time is after the event, as for the
+        // time integrators)
+        let count = times[next..]
+            .iter()
+            .take_while(|x| **x <= t_lim && (hit.is_none() || **x < t_stop))
+            .count();
         let inverse = if count >= roots.n() / 2 {
             // s(t) needs fewer points than the piece's hardest function:
             // two thirds of them first
@@ -1066,8 +1149,11 @@ pub fn run(
         len *= g;
         m = 1;
         // graded towards a branch point behind: at least 1.5 times its
-        // distance (ρ ≈ 4.4)
-        len = len.max(&behind(&end_smp, cap));
+        // distance (ρ ≈ 4.4), unless this piece had to be shortened
+        if !shortened {
+            len = len.max(&behind(&end_smp, cap));
+        }
+        shortened = false;
     }
     Ok(None)
 }
@@ -1157,6 +1243,38 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A watched function that dips below zero and comes back between two
+    /// points is found by the samples of its interpolant between them.
+    #[test]
+    fn a_graze_between_two_points_is_bracketed() {
+        let n = 16;
+        let roots = Roots::new(n, P);
+        let len = f(1.0);
+        let pts = ChebFit::points(&Float::new(P), &len, &roots, P);
+        let asc: Vec<&Float> = pts.iter().rev().collect();
+        // g = (s − c)² − δ with c midway between two points and √δ a third of
+        // their gap: every point and both ends are positive
+        let (lo, hi) = (asc[9].to_f64(), asc[10].to_f64());
+        let c = (lo + hi) / 2.0;
+        let d = ((hi - lo) / 6.0).powi(2);
+        let g = |x: &Float| -> Float { Float::with_val(P, (x.to_f64() - c).powi(2) - d) };
+        let vals: Vec<Float> = asc.iter().map(|x| g(x)).collect();
+        assert!(vals.iter().all(|v| v.is_sign_positive()));
+        let cos: Vec<f64> = (0..4 * n)
+            .map(|m| (m as f64 * std::f64::consts::PI / (2 * n) as f64).cos())
+            .collect();
+        let c64 = coeffs64(&vals, &cos);
+        let end = g(&len);
+        let start = g(&Float::new(P));
+        let (a, b) =
+            first_bracket(&asc, &len, Some(&start), &vals, &end, &c64).expect("the graze is seen");
+        let root = c - d.sqrt();
+        assert!(a.to_f64() <= root && root <= b.to_f64(), "{a} {b} {root}");
+        assert!(a.to_f64() >= lo && b.to_f64() <= hi);
+        // without the samples between points there is no sign change
+        assert!(first_bracket(&asc, &len, Some(&start), &vals, &end, &[0.0]).is_none());
     }
 
     /// A start at t = 0 with nothing dissipated and no snapping.
