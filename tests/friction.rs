@@ -1206,3 +1206,27 @@ fn theta_at_times_is_the_trajectory_theta_column() {
     let late = vec![Exact::parse("times", "9", false).unwrap()];
     assert!(answer::theta_at_times(&m, &fr, 25, &late).is_err());
 }
+
+/// At many digits the energy-balance note shows the drift's real size (in
+/// f64 it would underflow to 0 below 1e-308), far below the printed digits.
+#[test]
+fn energy_balance_note_keeps_its_exponent_at_many_digits() {
+    let m = model(Floor::Roll, "1/2");
+    let fr = Friction {
+        floor: law("0.3"),
+        contact: law("0.3"),
+    };
+    let a = answer::separation(&m, &fr, 350).unwrap();
+    let note = a
+        .notes
+        .iter()
+        .find(|n| n.contains("energy balance"))
+        .unwrap();
+    let exp: i32 = note
+        .split("e-")
+        .nth(1)
+        .and_then(|x| x.split_whitespace().next())
+        .and_then(|x| x.parse().ok())
+        .unwrap_or_else(|| panic!("{note}"));
+    assert!(exp > 352, "{note}");
+}

@@ -150,8 +150,8 @@ fn check_balance(m: &Motion, digits: u32) -> Result<()> {
             quantity: "energy balance".into(),
             requested: digits,
             reached: format!(
-                "|E(0) - E(t) - W(t)| reached {:.3e} of m2 g r",
-                m.energy_drift.to_f64()
+                "|E(0) - E(t) - W(t)| reached {} of m2 g r",
+                crate::numeric::decimal::short(&m.energy_drift)
             ),
             detail: "the integration did not keep the energy balance".into(),
         });
@@ -249,7 +249,7 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
         .collect();
     let start_mode = first.start_mode.to_string();
     let surface = first.impact.as_ref().map_or("none", |i| i.surface.name());
-    let drift = first.energy_drift.to_f64();
+    let drift = crate::numeric::decimal::short(&first.energy_drift);
     let abrupt = first.separation.as_ref().and_then(|sp| {
         let n = sp.n12.to_f64();
         (n.abs() > 1e-12).then(|| {
@@ -320,7 +320,7 @@ pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<Separatio
     }
     let mut notes = vec![
         format!(
-            "energy balance E(0) - E(t) = W(t) (W: work of sliding friction) held to {drift:.1e} of m2 g r along the motion"
+            "energy balance E(0) - E(t) = W(t) (W: work of sliding friction) held to {drift} of m2 g r along the motion"
         ),
         "the impact ends the model: impact laws are outside it".to_string(),
     ];
