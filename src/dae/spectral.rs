@@ -802,9 +802,15 @@ fn coeffs64(asc: &[Float], cos: &[f64]) -> Vec<f64> {
     let f: Vec<f64> = asc.iter().rev().map(Float::to_f64).collect();
     (0..n)
         .map(|k| {
+            // the angle index k(2j + 1) mod 4N, stepped by 2k < 4N
             let mut sum = 0.0;
-            for (j, fj) in f.iter().enumerate() {
-                sum += fj * cos[(k * (2 * j + 1)) % (4 * n)];
+            let mut m = k;
+            for fj in &f {
+                sum += fj * cos[m];
+                m += 2 * k;
+                if m >= 4 * n {
+                    m -= 4 * n;
+                }
             }
             let c = 2.0 * sum / n as f64;
             if k == 0 {
@@ -833,10 +839,13 @@ fn first_bracket(
     let lenf = len.to_f64();
     let big = vals.iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max);
     let floor = 1e-12 * big;
-    // the sequence of (s, sign) with the interpolant's samples between points
-    let mut seq: Vec<(Float, bool)> = Vec::with_capacity((BETWEEN + 1) * vals.len() + 2);
+    // the sequence of (s, sign, the point itself) with the interpolant's
+    // samples between points
+    let mut seq: Vec<(f64, bool, Option<&Float>)> =
+        Vec::with_capacity((BETWEEN + 1) * vals.len() + 2);
+    let zero = Float::new(p);
     if let Some(g) = start.filter(|g| !g.is_zero()) {
-        seq.push((Float::new(p), g.is_sign_negative()));
+        seq.push((0.0, g.is_sign_negative(), Some(&zero)));
     }
     let mut last = 0.0;
     let mut first_point = true;
@@ -848,19 +857,23 @@ fn first_bracket(
                 let x = last + (sf - last) * i as f64 / (BETWEEN + 1) as f64;
                 let v = ChebFit::eval_f64(c64, 0.0, lenf, x);
                 if v.abs() > floor {
-                    seq.push((Float::with_val(p, x), v < 0.0));
+                    seq.push((x, v < 0.0, None));
                 }
             }
         }
         first_point = false;
         last = sf;
         if !g.is_zero() {
-            seq.push((s.clone(), g.is_sign_negative()));
+            seq.push((sf, g.is_sign_negative(), Some(s)));
         }
     }
+    let at = |(x, _, s): &(f64, bool, Option<&Float>)| match s {
+        Some(s) => (*s).clone(),
+        None => Float::with_val(p, *x),
+    };
     seq.windows(2)
         .find(|w| w[0].1 != w[1].1)
-        .map(|w| (w[0].0.clone(), w[1].0.clone()))
+        .map(|w| (at(&w[0]), at(&w[1])))
 }
 
 /// A mode from `start` by spectral integration in the angle: outputs at
