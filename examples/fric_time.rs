@@ -1,6 +1,7 @@
 //! Timing of the motion with friction (main case, μ = 0.3 at both contacts):
 //! the event list at the ladder's two precisions, and 1000 rows to t_s.
-//! `cargo run --release --example fric_time -- [DIGITS]`.
+//! `cargo run --release --example fric_time -- [DIGITS]` (with ONLY_THETA
+//! set in the environment it stops after θ at the 1000 times).
 use cylroll::exact::Exact;
 use cylroll::friction::{self, answer, Friction, Law};
 use cylroll::model::Model;
