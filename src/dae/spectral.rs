@@ -101,6 +101,8 @@ struct Piece {
     nodes: Vec<(Float, Sample)>,
     /// The most coefficients any interpolant needed (above its tolerance).
     used: usize,
+    /// Bases of the inversions' Newton steps (lower precisions, full).
+    scratch: std::cell::RefCell<(Vec<Float>, Vec<Float>)>,
 }
 
 enum Attempt {
@@ -488,6 +490,7 @@ fn attempt(
         deps: su.deps.clone(),
         lower: lower_copies(&dt, &rfit, p),
         used,
+        scratch: Default::default(),
         dt64: dt.to_f64(),
         rate64: rfit.to_f64(),
         nodes,
@@ -527,25 +530,27 @@ impl Piece {
         let p = s.prec();
         let ith = sy::th(0);
         let zero = Float::new(p);
-        let basis = ChebFit::basis(&zero, &self.len, s, self.dt.c.len(), p);
+        let mut sc = self.scratch.borrow_mut();
+        let basis = &mut sc.1;
+        ChebFit::basis_into(&zero, &self.len, s, self.dt.c.len(), p, basis);
         let mut q = self.q0.clone();
         let mut v = self.v0.clone();
         q[ith] = theta_at(&self.q0[ith], self.dir, self.m, s);
-        let mut thd = Float::with_val(p, self.m) / self.rate.dot(&basis);
+        let mut thd = Float::with_val(p, self.m) / self.rate.dot(basis);
         if self.m == 2 {
             thd *= s;
         }
         v[ith] = thd * self.dir;
         for (i, f) in &self.vel {
-            v[*i] = Float::with_val(p, &self.v0[*i] + f.dot(&basis));
+            v[*i] = Float::with_val(p, &self.v0[*i] + f.dot(basis));
         }
         for (i, f) in &self.pos {
-            q[*i] = Float::with_val(p, &self.q0[*i] + f.dot(&basis));
+            q[*i] = Float::with_val(p, &self.q0[*i] + f.dot(basis));
         }
         fill_dependents(&self.deps, &self.q0, &mut q, &mut v);
-        let t = Float::with_val(p, &self.t0 + self.dt.dot(&basis));
+        let t = Float::with_val(p, &self.t0 + self.dt.dot(basis));
         let work = match &self.work {
-            Some(f) => Float::with_val(p, &self.work0 + f.dot(&basis)),
+            Some(f) => Float::with_val(p, &self.work0 + f.dot(basis)),
             None => self.work0.clone(),
         };
         (t, q, v, work)
@@ -637,6 +642,8 @@ impl Piece {
     /// (each step on one basis) until the step is below 2^(−p/2) L.
     fn invert(&self, tau: &Float, lo: &(Float, Float), hi: &(Float, Float)) -> Float {
         let p = tau.prec();
+        let mut sc = self.scratch.borrow_mut();
+        let (low, full) = &mut *sc;
         let target = Float::with_val(p, tau - &self.t0);
         let (a, b) = (lo.0.to_f64(), hi.0.to_f64());
         let (ta, tb) = (lo.1.to_f64(), hi.1.to_f64());
@@ -664,9 +671,10 @@ impl Piece {
         for (q, dt, rate) in &self.lower {
             let sq = Float::with_val(*q, &s);
             let zero = Float::new(*q);
-            let basis = ChebFit::basis(&zero, &dt.b, &sq, dt.c.len(), *q);
-            let f = dt.dot(&basis) - Float::with_val(*q, &target);
-            let step = f / rate.dot(&basis);
+            let basis = &mut *low;
+            ChebFit::basis_into(&zero, &dt.b, &sq, dt.c.len(), *q, basis);
+            let f = dt.dot(basis) - Float::with_val(*q, &target);
+            let step = f / rate.dot(basis);
             if step.is_finite() {
                 s -= &step;
                 s.assign(s.clone().max(&lo.0).min(&hi.0));
@@ -676,9 +684,10 @@ impl Piece {
         let stop = Float::with_val(p, &self.len) >> (p as i32 / 2 + 4);
         let n = self.dt.c.len();
         for _ in 0..20 {
-            let basis = ChebFit::basis(&zero, &self.len, &s, n, p);
-            let f = self.dt.dot(&basis) - &target;
-            let step = f / self.rate.dot(&basis);
+            let basis = &mut *full;
+            ChebFit::basis_into(&zero, &self.len, &s, n, p, basis);
+            let f = self.dt.dot(basis) - &target;
+            let step = f / self.rate.dot(basis);
             if !step.is_finite() {
                 break;
             }

@@ -588,22 +588,33 @@ impl ChebFit {
     /// basis that [`ChebFit::dot`] evaluates every fit on [a, b] with (one
     /// recurrence shared by many fits at the same point).
     pub fn basis(a: &Float, b: &Float, v: &Float, n: usize, p: u32) -> Vec<Float> {
+        let mut t = Vec::new();
+        Self::basis_into(a, b, v, n, p, &mut t);
+        t
+    }
+
+    /// [`ChebFit::basis`] into `t`, reusing its values' storage (`t` keeps
+    /// at least n entries; the first n are the basis).
+    pub fn basis_into(a: &Float, b: &Float, v: &Float, n: usize, p: u32, t: &mut Vec<Float>) {
+        if t.len() < n.max(2) {
+            t.resize(n.max(2), Float::new(p));
+        }
         let mut x = Float::with_val(p, v * 2u32);
         x -= a;
         x -= b;
         x /= Float::with_val(p, b - a);
-        let mut t = Vec::with_capacity(n);
-        t.push(Float::with_val(p, 1u32));
-        if n > 1 {
-            t.push(x.clone());
-        }
-        let x2 = Float::with_val(p, &x * 2u32);
+        t[0].set_prec(p);
+        t[0].assign(1u32);
+        t[1].set_prec(p);
+        t[1].assign(&x);
+        x *= 2u32;
         for k in 2..n {
-            let mut next = Float::with_val(p, &x2 * &t[k - 1]);
-            next -= &t[k - 2];
-            t.push(next);
+            let (done, rest) = t.split_at_mut(k);
+            let next = &mut rest[0];
+            next.set_prec(p);
+            next.assign(&x * &done[k - 1]);
+            *next -= &done[k - 2];
         }
-        t
     }
 
     /// Σ c_k T_k from a [`ChebFit::basis`] at least as long as the fit.
