@@ -140,6 +140,17 @@ impl Start {
     }
 }
 
+/// The six contact models, in the paper's order: §2, §3.1, §3.2, §3.3,
+/// footnote 8, and the fixed lower cylinder with a frictionless contact.
+pub const VARIANTS: [(Floor, Contact); 6] = [
+    (Floor::Roll, Contact::Roll),
+    (Floor::Slip, Contact::Slip),
+    (Floor::Slip, Contact::Roll),
+    (Floor::Roll, Contact::Slip),
+    (Floor::Fixed, Contact::Roll),
+    (Floor::Fixed, Contact::Slip),
+];
+
 /// A validated model: parameters, contact models and start.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Model {

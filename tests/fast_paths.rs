@@ -134,14 +134,7 @@ fn taylor_works_for_every_contact_model_and_a_moving_start() {
 #[test]
 fn separation_angle_is_separation_theta_s() {
     let mut cases = vec![];
-    for (floor, contact) in [
-        (Floor::Roll, Contact::Roll),
-        (Floor::Slip, Contact::Roll),
-        (Floor::Roll, Contact::Slip),
-        (Floor::Slip, Contact::Slip),
-        (Floor::Fixed, Contact::Roll),
-        (Floor::Fixed, Contact::Slip),
-    ] {
+    for (floor, contact) in cylroll::model::VARIANTS {
         for (m2, k2, th0, td0) in [
             ("1", "1/2", "0", "0"),
             ("2", "1/2", "1/10", "0"),

@@ -212,29 +212,28 @@ fn cli(args: &[&str]) -> (i32, String, String) {
     )
 }
 
+/// The command's JSON output (`--format json` appended), after a zero exit.
+fn cli_json(args: &[&str]) -> serde_json::Value {
+    let mut all = args.to_vec();
+    all.extend(["--format", "json"]);
+    let (code, out, err) = cli(&all);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+/// (mid, rad) of a JSON enclosure, at 512 bits.
+fn enclosure(e: &serde_json::Value) -> (Float, Float) {
+    let f = |k: &str| Float::with_val(512, Float::parse(e[k].as_str().unwrap()).unwrap());
+    (f("mid"), f("rad"))
+}
+
 #[test]
 fn the_flag_prints_proved_digits_and_enclosures_that_hold() {
     // θs = π/3: the JSON enclosure [mid ± rad] contains π/3
-    let (code, out, err) = cli(&[
-        "separation",
-        "--rigorous",
-        "--digits",
-        "25",
-        "--format",
-        "json",
-    ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let v = cli_json(&["separation", "--rigorous", "--digits", "25"]);
     assert_eq!(v["digits_rigorous"]["theta_s"], "25");
     assert!(v["digits_rigorous"]["F21_at_s"].is_null());
-    let mid = Float::with_val(
-        512,
-        Float::parse(v["enclosures"]["theta_s"]["mid"].as_str().unwrap()).unwrap(),
-    );
-    let rad = Float::with_val(
-        512,
-        Float::parse(v["enclosures"]["theta_s"]["rad"].as_str().unwrap()).unwrap(),
-    );
+    let (mid, rad) = enclosure(&v["enclosures"]["theta_s"]);
     let pi3 = Float::with_val(512, Constant::Pi) / 3u32;
     assert!(Float::with_val(512, &mid - &pi3).abs() <= rad);
     // time, forces and trajectory rows: proved digits in text, CSV and JSON
@@ -266,7 +265,7 @@ fn the_flag_prints_proved_digits_and_enclosures_that_hold() {
     assert_eq!(code, 0);
     assert!(out.starts_with("key,value,digits_verified,error_bound,digits_rigorous,mid,rad\n"));
     assert!(out.contains("\nN12,0.355937090382742,15,"), "{out}");
-    let (code, out, _) = cli(&[
+    let v = cli_json(&[
         "trajectory",
         "--rigorous",
         "--theta0",
@@ -275,11 +274,7 @@ fn the_flag_prints_proved_digits_and_enclosures_that_hold() {
         "0,1",
         "--digits",
         "12",
-        "--format",
-        "json",
     ]);
-    assert_eq!(code, 0);
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["rows"][1]["theta"], "0.118114590944");
     assert!(v["rows"][1]["enclosures"]["N12"]["rad"].is_string());
     assert_eq!(v["digits_rigorous"]["theta"], "12");
@@ -412,7 +407,7 @@ fn where_sticking_ends_is_proved_with_friction() {
     }
     // the command line: proved digits and an enclosure that holds; an
     // abrupt opening of the contact (μ = 2) proves theta_s and t_s
-    let (code, out, err) = cli(&[
+    let v = cli_json(&[
         "separation",
         "--rigorous",
         "--theta0",
@@ -421,11 +416,7 @@ fn where_sticking_ends_is_proved_with_friction() {
         "0.3",
         "--digits",
         "25",
-        "--format",
-        "json",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["digits_rigorous"]["theta_slip_onset"], "25");
     assert_eq!(v["digits_rigorous"]["t_slip_onset"], "25");
     assert_eq!(

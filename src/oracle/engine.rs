@@ -803,15 +803,9 @@ mod tests {
                 "{p}: {err:e}"
             );
         }
-        use crate::model::{Contact, Floor, Params, Start};
+        use crate::model::{Params, Start, VARIANTS};
         let q = |s: &str| Exact::parse("x", s, false).unwrap();
-        for (floor, contact) in [
-            (Floor::Roll, Contact::Roll),
-            (Floor::Slip, Contact::Roll),
-            (Floor::Roll, Contact::Slip),
-            (Floor::Slip, Contact::Slip),
-            (Floor::Fixed, Contact::Roll),
-        ] {
+        for (floor, contact) in VARIANTS {
             for start in [
                 Start::rest(q("3/10")),
                 Start {

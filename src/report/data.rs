@@ -14,16 +14,7 @@ use rug::{Integer, Rational};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
-/// The six contact models, in the paper's order: §2, §3.1, §3.2, §3.3,
-/// footnote 8, and the fixed lower cylinder with a frictionless contact.
-pub const VARIANTS: [(Floor, Contact); 6] = [
-    (Floor::Roll, Contact::Roll),
-    (Floor::Slip, Contact::Slip),
-    (Floor::Slip, Contact::Roll),
-    (Floor::Roll, Contact::Slip),
-    (Floor::Fixed, Contact::Roll),
-    (Floor::Fixed, Contact::Slip),
-];
+pub use crate::model::VARIANTS;
 
 /// Short name of a variant, e.g. `floor roll, contact slip`.
 pub fn variant_name(v: (Floor, Contact)) -> String {
