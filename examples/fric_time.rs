@@ -20,7 +20,7 @@ fn main() {
     let (p1, p2) = cylroll::numeric::verify::precisions(digits, 0);
     for p in [p1, p2] {
         let t = std::time::Instant::now();
-        let h = friction::default_horizon(&m, p);
+        let h = friction::default_horizon(&m);
         let mo = friction::solve(&m, &fr, p, &[], true, &h).expect("solve");
         println!(
             "{p} bits: {:.1} ms, {} events, routes {:?}, work {:?}",

@@ -396,7 +396,7 @@ fn two_precisions_agree_and_energy_balances() {
     let kinds: Vec<&str> = b.events.iter().map(|e| e.kind.name()).collect();
     assert_eq!(kinds, ["slip_onset", "slip_onset", "separation", "impact"]);
     // the balance E(0) − E(t) = W(t), along the whole motion at one precision
-    let mo = friction::solve(&m, &fr, 200, &[], true, &friction::default_horizon(&m, 200)).unwrap();
+    let mo = friction::solve(&m, &fr, 200, &[], true, &friction::default_horizon(&m)).unwrap();
     assert!(
         mo.energy_drift.to_f64() < 1e-50,
         "{}",
@@ -1150,7 +1150,7 @@ fn a_floor_restick_within_one_step_is_found_and_the_work_is_kept() {
         contact: law("0.5"),
     };
     let p = 120;
-    let h = friction::default_horizon(&m, p);
+    let h = friction::default_horizon(&m);
     let times: Vec<Float> = [1.0, 1.06, 1.1, 1.2, 1.26]
         .iter()
         .map(|x| Float::with_val(p, *x))

@@ -200,7 +200,7 @@ proptest! {
     fn invariants_of_the_motion_with_friction(mf in any_friction_model()) {
         use cylroll::friction::{self, Kind};
         let (model, fr) = mf;
-        let h = friction::default_horizon(&model, 120);
+        let h = friction::default_horizon(&model);
         let m = match friction::solve(&model, &fr, 120, &[], true, &h) {
             Ok(m) => m,
             Err(Error::NotConverged { quantity, .. }) if quantity == "mode" || quantity == "separation" => return Ok(()),

@@ -303,9 +303,6 @@ pub struct System {
 
 #[derive(Debug, Clone)]
 struct Workspace {
-    /// Rates and second right-hand side of [`System::accel_pair`].
-    v: Vec<Float>,
-    b1: Vec<Float>,
     m: Vec<Float>,
     h: Vec<Float>,
     a: Vec<Float>,
@@ -371,8 +368,6 @@ impl System {
             cyclic: Vec::new(),
             slips: Vec::new(),
             ws: Workspace {
-                v: Vec::new(),
-                b1: Vec::new(),
                 m: vec![Float::new(prec); nq * nq],
                 h: vec![Float::new(prec); nq],
                 a: Vec::new(),
@@ -883,27 +878,16 @@ impl System {
         let nq = self.nq();
         let nk = nq + self.rows.len();
         let p = self.prec;
-        let mut v = std::mem::take(&mut self.ws.v);
-        v.resize(nq, Float::new(p));
-        for x in v.iter_mut() {
-            x.assign(0u32);
-        }
+        let mut v = vec![Float::new(p); nq];
         self.assemble(q, &v);
+        // the second right-hand side: the rates enter h only (the rows'
+        // right-hand sides carry −ṙ θ̇, which is 0 for both)
         v[th(j)].assign(1u32);
         self.forces_h(q, &v);
-        let mut b1 = std::mem::take(&mut self.ws.b1);
-        b1.resize(nk, Float::new(p));
-        for (i, h) in self.ws.h.iter().enumerate().take(nq) {
-            b1[i].assign(h);
+        let mut b1 = self.ws.b[..nk].to_vec();
+        for (x, h) in b1.iter_mut().zip(&self.ws.h[..nq]) {
+            x.assign(h);
         }
-        for (k, &r) in self.rows.iter().enumerate() {
-            // only the Friction rows' right-hand sides carry rates (−ṙ θ̇)
-            b1[nq + k] = match r {
-                Row::Friction(_) => self.row_coeffs(r, q, &v).1,
-                _ => self.ws.b[nq + k].clone(),
-            };
-        }
-        self.ws.v = v;
         let mut b0 = std::mem::take(&mut self.ws.b);
         let mut x0 = vec![Float::new(p); nk];
         let mut x1 = vec![Float::new(p); nk];
@@ -914,7 +898,6 @@ impl System {
             nk,
         );
         self.ws.b = b0;
-        self.ws.b1 = b1;
         ok.ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
         let mut out = [x0, x1].into_iter().map(|mut x| {
             let lambda = x.split_off(nq);

@@ -112,6 +112,11 @@ fn signature(m: &Motion) -> Vec<String> {
         .collect();
     s.push(m.start_mode.tag());
     s.extend(m.rows.iter().map(Point::mode_tag));
+    s.extend(
+        m.thetas
+            .iter()
+            .map(|(_, mode)| mode.map_or_else(|| "flight".to_string(), |m| m.tag())),
+    );
     s
 }
 
@@ -213,7 +218,8 @@ where
 pub fn separation(model: &Model, fr: &Friction, digits: u32) -> Result<SeparationAnswer> {
     check_digits(digits)?;
     let (p1, _) = precisions(digits, 0);
-    let horizon = |p: u32| super::default_horizon(model, p);
+    let h64 = super::default_horizon(model);
+    let horizon = |p: u32| Float::with_val(p, &h64);
     let first = solve(model, fr, p1, &[], true, &horizon(p1))?;
     if first.separation.is_none() {
         let (t, x2) = first
@@ -356,7 +362,8 @@ pub fn trajectory(
         .collect();
     let tf = |p: u32| -> Vec<Float> { times.iter().map(|t| t.to_float(p)).collect() };
     let (p1, _) = precisions(digits, 0);
-    let horizon = |p: u32| super::default_horizon(model, p);
+    let h64 = super::default_horizon(model);
+    let horizon = |p: u32| Float::with_val(p, &h64);
     let run = |p: u32| solve(model, fr, p, &tf(p), false, &horizon(p));
     let first = run(p1)?;
     let modes: Vec<String> = first.rows.iter().map(Point::mode_tag).collect();
@@ -393,7 +400,8 @@ pub fn theta_at_times(
     check_times(digits, times)?;
     let tf = |p: u32| -> Vec<Float> { times.iter().map(|t| t.to_float(p)).collect() };
     let (p1, _) = precisions(digits, 0);
-    let horizon = |p: u32| super::default_horizon(model, p);
+    let h64 = super::default_horizon(model);
+    let horizon = |p: u32| Float::with_val(p, &h64);
     let run = |p: u32| super::solve_theta(model, fr, p, &tf(p), &horizon(p));
     let first = run(p1)?;
     let rows = laddered(
@@ -405,7 +413,7 @@ pub fn theta_at_times(
         |m| {
             Ok(m.thetas
                 .iter()
-                .map(|th| integrated(th, one(th.prec())))
+                .map(|(th, _)| integrated(th, one(th.prec())))
                 .collect())
         },
     )?;
@@ -439,7 +447,7 @@ pub struct CrossCheck {
 /// spectral route declined (it would not be an independent check).
 pub fn cross_check(model: &Model, fr: &Friction, digits: u32) -> Result<Vec<CrossCheck>> {
     let (_, p2) = precisions(digits, 0);
-    let h = super::default_horizon(model, p2);
+    let h = super::default_horizon(model);
     let s = super::solve_with(model, fr, p2, &[], true, &h, super::Method::Spectral)?;
     let a = super::solve_with(model, fr, p2, &[], true, &h, super::Method::Gbs)?;
     let b = super::solve_with(model, fr, p2, &[], true, &h, super::Method::Collocation)?;
@@ -563,7 +571,8 @@ fn at_angle(
 ) -> Result<(Vec<Verified>, String)> {
     check_digits(digits)?;
     let (p1, _) = precisions(digits, 0);
-    let first = super::solve_to_angle(model, fr, p1, theta, name)?;
+    let h64 = super::default_horizon(model);
+    let first = super::solve_to_angle(model, fr, p1, theta, name, &h64)?;
     let mode = first.target.as_ref().map_or_else(String::new, |t| {
         t.mode.map_or_else(String::new, |m| m.to_string())
     });
@@ -573,7 +582,7 @@ fn at_angle(
         first,
         &names,
         1,
-        |p| super::solve_to_angle(model, fr, p, theta, name),
+        |p| super::solve_to_angle(model, fr, p, theta, name, &h64),
         |m| {
             m.target
                 .as_ref()

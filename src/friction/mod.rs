@@ -210,8 +210,9 @@ pub struct Motion {
     pub work_done: (u64, u64),
     /// The state where θ first reached the target angle of [`solve_to_angle`].
     pub target: Option<Point>,
-    /// θ at the requested times, for [`solve_theta`] (empty otherwise).
-    pub thetas: Vec<Float>,
+    /// θ and the mode (None: flight) at the requested times, for
+    /// [`solve_theta`] (empty otherwise).
+    pub thetas: Vec<(Float, Option<Mode>)>,
     /// The integrator that computed each mode, in order ([`Method::Spectral`]
     /// falls back to [`Method::Gbs`] where it declines).
     pub routes: Vec<Method>,
@@ -761,26 +762,11 @@ pub const MAX_MODES: usize = 64;
 /// Default horizon: four times the separation time of the same model with
 /// both contacts rolling (friction makes the cylinders part earlier) plus
 /// 50 sqrt(r/g); 200 sqrt(r/g) if that time is not finite.
-pub fn default_horizon(model: &Model, prec: u32) -> Float {
-    // the same model at both precisions of a ladder: computed once (an
-    // f64-accurate bound is all that is needed)
-    thread_local! {
-        static LAST: std::cell::RefCell<Option<(String, f64)>> = const { std::cell::RefCell::new(None) };
-    }
-    let key = format!("{model:?}");
-    if let Some(h) = LAST.with(|c| {
-        c.borrow()
-            .as_ref()
-            .and_then(|(k, h)| (*k == key).then_some(*h))
-    }) {
-        return Float::with_val(prec, h);
-    }
-    let h = horizon_of(model, prec).to_f64();
-    LAST.with(|c| *c.borrow_mut() = Some((key, h)));
-    Float::with_val(prec, h)
-}
-
-fn horizon_of(model: &Model, prec: u32) -> Float {
+///
+/// At 64 bits: a bound, needed to a few digits only; the answers compute it
+/// once for both precisions of their ladder.
+pub fn default_horizon(model: &Model) -> Float {
+    let prec = 64;
     let sm = StackModel::from_model(model);
     let ts = time_scale(&sm, prec);
     let floor = if model.floor() == Floor::Fixed {
@@ -854,7 +840,8 @@ pub fn solve_with(
 
 /// The motion up to the first time θ reaches `theta` (an angle beyond θ0 in
 /// the direction of the motion, before separation); `name` is the
-/// parameter named in errors. The state there is [`Motion::target`].
+/// parameter named in errors; `horizon` bounds the search ([`default_horizon`]).
+/// The state there is [`Motion::target`].
 ///
 /// Errors: an angle behind the start, or not reached before the cylinders
 /// part ([`Error::InvalidParameter`]); see [`solve`].
@@ -864,8 +851,9 @@ pub fn solve_to_angle(
     prec: u32,
     theta: &Exact,
     name: &str,
+    horizon: &Float,
 ) -> Result<Motion> {
-    let h = default_horizon(model, prec);
+    let h = Float::with_val(prec, horizon);
     let th0 = model.start().theta0.clone();
     let dir = model.direction();
     let d = theta.to_float(prec + 64) - th0.to_float(prec + 64);
@@ -1114,14 +1102,19 @@ fn solve_full(
             let pt = point(&ctx, &mut sys, mode, s);
             note_drift(&pt, &mut out.energy_drift);
         }
+        let full = !theta_only || out.routes.last() != Some(&Method::Spectral);
         for s in &run.outputs {
             if theta_only {
-                out.thetas.push(s.q[sy::th(0)].clone());
+                out.thetas.push((s.q[sy::th(0)].clone(), Some(mode)));
+            }
+            if !full {
                 continue;
             }
             let pt = point(&ctx, &mut sys, mode, s);
             note_drift(&pt, &mut out.energy_drift);
-            out.rows.push(pt);
+            if !theta_only {
+                out.rows.push(pt);
+            }
         }
         next += run.outputs.len();
         if !run.stopped {
@@ -1224,7 +1217,7 @@ fn solve_full(
                 let pt = fli.point(tt);
                 note_drift(&pt, &mut out.energy_drift);
                 if theta_only {
-                    out.thetas.push(pt.theta.clone());
+                    out.thetas.push((pt.theta.clone(), None));
                 } else {
                     out.rows.push(pt);
                 }
