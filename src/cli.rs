@@ -828,8 +828,9 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                                         "{} is not enclosed: verified digits only",
                                         v.name
                                     ));
+                                } else {
+                                    names.push(v.name.clone());
                                 }
-                                names.push(v.name.clone());
                                 match at {
                                     Some(i) => proved[i] = pv,
                                     None => {
@@ -838,13 +839,15 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                                     }
                                 }
                             }
-                            notes.push(format!(
-                                "--rigorous encloses {}: where sticking ends, a root of a \
+                            if !names.is_empty() {
+                                notes.push(format!(
+                                    "--rigorous encloses {}: where sticking ends, a root of a \
                                  polynomial in cos theta while both contacts stick (the rolling \
                                  model's closed forms), and the time to it; the phases after it \
                                  are integrated and verified only",
-                                names.join(" and ")
-                            ));
+                                    names.join(" and ")
+                                ));
+                            }
                         }
                         Err(why) => notes.push(format!(
                             "--rigorous: nothing is enclosed ({why}); every value is verified only"

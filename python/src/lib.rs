@@ -463,6 +463,16 @@ fn enclose(
 ) -> PyResult<Vec<Enclosure>> {
     detached(py, move || {
         let (model, fr) = spec(&pairs)?;
+        match (what.as_str(), theta.is_some()) {
+            ("separation", false) | ("time", true) | ("forces", true) => {}
+            _ => {
+                return Err(Error::invalid(
+                    "what",
+                    &what,
+                    "expected separation (no theta), or time or forces with theta",
+                ))
+            }
+        }
         if let Some(fr) = fr {
             // with friction: where sticking ends, from a start where both
             // contacts stick (the command line's separation --rigorous)
@@ -482,32 +492,27 @@ fn enclose(
         }
         let mut o = Oracle::new(&model, digits)?;
         let th = theta.map(|t| parse_angle("theta", &t)).transpose()?;
-        let p0 = cylroll::numeric::bits_for_digits(digits) + 32;
-        let mut out = Vec::new();
-        for p in [p0, 2 * p0] {
-            let proved: Vec<cylroll::oracle::rigorous::Proved> = match (what.as_str(), &th) {
-                ("separation", None) => {
-                    let (a, b) = o.rigorous_separation(p)?;
-                    std::iter::once(a).chain(b.ok()).collect()
-                }
-                ("time", Some(t)) => vec![o.rigorous_time(t, p)?],
-                ("forces", Some(t)) => o.rigorous_forces(t, p)?.into_iter().flatten().collect(),
-                _ => {
-                    return Err(Error::invalid(
-                        "what",
-                        &what,
-                        "expected separation (no theta), or time or forces with theta",
-                    ))
-                }
-            };
-            let short = proved
-                .iter()
-                .any(|v| v.shown.digits < digits && v.shown.text != "0");
-            out = proved.iter().map(|v| enclosure(v, digits)).collect();
-            if !short {
-                break;
-            }
-        }
+        // the command line's retry: twice the precision where digits fall
+        // short, the first result kept if the second fails
+        let proved = cylroll::oracle::rigorous::prove_with(
+            digits,
+            |p| -> cylroll::Result<Vec<cylroll::oracle::rigorous::Proved>> {
+                Ok(match &th {
+                    None => {
+                        let (a, b) = o.rigorous_separation(p)?;
+                        std::iter::once(a).chain(b.ok()).collect()
+                    }
+                    Some(t) if what == "time" => vec![o.rigorous_time(t, p)?],
+                    Some(t) => o.rigorous_forces(t, p)?.into_iter().flatten().collect(),
+                })
+            },
+            |proved| {
+                proved
+                    .iter()
+                    .any(|v| v.shown.digits < digits && v.shown.text != "0")
+            },
+        )?;
+        let out = proved.iter().map(|v| enclosure(v, digits)).collect();
         Ok(out)
     })
 }

@@ -1038,8 +1038,12 @@ pub fn stick_end_proved(
     ans: &crate::friction::answer::SeparationAnswer,
     digits: u32,
 ) -> std::result::Result<ProvedSlots, String> {
-    use crate::friction::{Kind, Law, Which};
-    if ans.start_mode != "floor stick, contact stick" {
+    use crate::friction::{Kind, Law, Mode, State, Which};
+    let both_stick = Mode {
+        floor: State::Stick,
+        contact: State::Stick,
+    };
+    if ans.start_mode != both_stick.to_string() {
         return Err(format!(
             "the start mode is {}: only a start where both contacts stick has closed forms",
             ans.start_mode
