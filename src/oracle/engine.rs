@@ -472,7 +472,7 @@ pub const MAX_PIECES: usize = 256;
 /// pieces from the left whose ρ is ~3 each (the singularities near the
 /// start, a start near the top, make the first pieces short: a mesh graded
 /// geometrically towards them), the last one to v_max; `target` is that ρ. `None` beyond
-/// [`MAX_PIECES`] or for a piece that cannot reach ρ > 1.05.
+/// [`MAX_PIECES`] or for a piece that would be shorter than f64 resolves.
 fn breakpoints(
     v_max: f64,
     rho_of: &dyn Fn(f64, f64) -> f64,
@@ -554,9 +554,9 @@ impl Piece {
             .map(|q| (q, prim.rounded(q), f.rounded(q / 2 + 32)))
             .collect();
         // f' in x, for Newton's error at the root found (f64: a size only)
-        let cf: Vec<f64> = f.c.iter().map(|c| c.to_f64()).collect();
-        let dseed = derivative64(&cf);
-        let seed = (prim.c.iter().map(|c| c.to_f64()).collect(), cf);
+        let half = Float::with_val(64, &f.b - &f.a).to_f64() / 2.0;
+        let dseed = f.derivative().to_f64().iter().map(|d| d * half).collect();
+        let seed = (prim.to_f64(), f.to_f64());
         Piece {
             offset64: offset.to_f64(),
             f,
@@ -584,27 +584,9 @@ pub struct Inverse {
     pieces: Vec<Piece>,
 }
 
-/// The Chebyshev coefficients of the derivative (in x) of the series `c`.
-fn derivative64(c: &[f64]) -> Vec<f64> {
-    let n = c.len();
-    let mut d = vec![0.0; n.max(1)];
-    // d_{k−1} = d_{k+1} + 2k c_k, d_0 halved
-    for k in (1..n).rev() {
-        let next = if k + 1 < n { d[k + 1] } else { 0.0 };
-        d[k - 1] = next + 2.0 * k as f64 * c[k];
-    }
-    d[0] /= 2.0;
-    d
-}
-
-fn clenshaw64(c: &[f64], x: f64) -> f64 {
-    let (mut b1, mut b2) = (0.0, 0.0);
-    for ck in c.iter().skip(1).rev() {
-        let b = ck + 2.0 * x * b1 - b2;
-        b2 = b1;
-        b1 = b;
-    }
-    c[0] + x * b1 - b2
+/// A series in x ∈ [−1, 1], in f64.
+fn clenshaw64_x(c: &[f64], x: f64) -> f64 {
+    ChebFit::eval_f64(c, -1.0, 1.0, x)
 }
 
 impl Inverse {
@@ -614,15 +596,15 @@ impl Inverse {
     fn seed64(pc: &Piece, t64: f64, half64: f64) -> f64 {
         let (cp, cf) = (&pc.seed.0, &pc.seed.1);
         let (mut lo, mut hi) = (-1.0f64, 1.0f64);
-        let mut x = (2.0 * t64 / clenshaw64(cp, 1.0) - 1.0).clamp(-1.0, 1.0);
+        let mut x = (2.0 * t64 / clenshaw64_x(cp, 1.0) - 1.0).clamp(-1.0, 1.0);
         for _ in 0..200 {
-            let r = clenshaw64(cp, x) - t64;
+            let r = clenshaw64_x(cp, x) - t64;
             if r > 0.0 {
                 hi = x;
             } else {
                 lo = x;
             }
-            let d = clenshaw64(cf, x) * half64;
+            let d = clenshaw64_x(cf, x) * half64;
             let mut nx = x - r / d;
             if !(nx > lo && nx < hi) {
                 nx = 0.5 * (lo + hi);
@@ -642,12 +624,12 @@ impl Inverse {
     /// range holds any τ (a time of 1e-400).
     fn seed_near_start(pc: &Piece, tau: &Float, half64: f64) -> Float {
         let p = pc.f.prec();
-        let f0 = clenshaw64(&pc.seed.1, -1.0);
+        let f0 = clenshaw64_x(&pc.seed.1, -1.0);
         let tau = Float::with_val(64, tau);
-        let v = if f0 > 1e-12 * clenshaw64(&pc.seed.1, 1.0).abs() {
+        let v = if f0 > 1e-12 * clenshaw64_x(&pc.seed.1, 1.0).abs() {
             tau / f0
         } else {
-            let d0 = (clenshaw64(&pc.dseed, -1.0) / half64)
+            let d0 = (clenshaw64_x(&pc.dseed, -1.0) / half64)
                 .abs()
                 .max(f64::MIN_POSITIVE);
             (tau * 2u32 / d0).sqrt()
@@ -680,7 +662,7 @@ impl Inverse {
         // evaluation of T at a fixed precision: the seed then comes from T's
         // leading term at v = 0, and every Newton step works `lift` bits
         // higher so that τ keeps its relative accuracy.
-        let span_exp = clenshaw64(&pc.seed.0, 1.0).abs().log2().ceil() as i64;
+        let span_exp = clenshaw64_x(&pc.seed.0, 1.0).abs().log2().ceil() as i64;
         let lift = match tau_rel.get_exp() {
             Some(e) if pc.f.a.is_zero() => (span_exp - e as i64 - 30).max(0) as u32,
             _ => 0,
@@ -718,7 +700,8 @@ impl Inverse {
         // moves the root by err_T/f. κ is local: with θ̇0 ≠ 0 the integrand
         // vanishes at v = 0, where no bound over the piece is finite.
         let xr = ((2.0 * v.to_f64() - a64 - b64) / (b64 - a64)).clamp(-1.0, 1.0);
-        let kappa = 4.0 * (clenshaw64(&pc.dseed, xr) / (2.0 * clenshaw64(cf, xr) * half64)).abs();
+        let kappa =
+            4.0 * (clenshaw64_x(&pc.dseed, xr) / (2.0 * clenshaw64_x(cf, xr) * half64)).abs();
         let kappa = if kappa.is_finite() {
             kappa.max(1.0)
         } else {
