@@ -286,8 +286,8 @@ fn t3_rows(bencher: divan::Bencher, digits: u32) {
 /// The frictional main case: μ = 0.3 at both contacts, from rest at θ0 =
 /// 1/10, 1000 equally spaced times from 0 to separation (t_s rounded down to
 /// 3 decimals), through the stick and slip phases.
-fn friction_case() -> (Model, cylroll::friction::Friction, Vec<Exact>) {
-    use cylroll::friction::{Friction, Law};
+fn friction_case() -> (Model, cylroll::motion::Friction, Vec<Exact>) {
+    use cylroll::motion::{Friction, Law};
     let m = model(1, "1/10");
     let fr = Friction {
         floor: Law::parse("mu_floor", "0.3").expect("mu"),
@@ -305,7 +305,7 @@ fn friction_case() -> (Model, cylroll::friction::Friction, Vec<Exact>) {
 /// 1000 times, verified.
 #[divan::bench(args = T3_DIGITS, sample_count = 3, sample_size = 1)]
 fn t3_friction(bencher: divan::Bencher, digits: u32) {
-    use cylroll::friction::answer;
+    use cylroll::motion::answer;
     let (m, fr, times) = friction_case();
     bencher.bench_local(|| {
         let th = answer::theta_at_times(&m, &fr, digits, &times).expect("theta");
@@ -317,7 +317,7 @@ fn t3_friction(bencher: divan::Bencher, digits: u32) {
 /// T3rows with friction: all 16 columns at the 1000 times, verified.
 #[divan::bench(args = T3_DIGITS, sample_count = 3, sample_size = 1)]
 fn t3_friction_rows(bencher: divan::Bencher, digits: u32) {
-    use cylroll::friction::answer;
+    use cylroll::motion::answer;
     let (m, fr, times) = friction_case();
     bencher.bench_local(|| {
         let t = answer::trajectory(&m, &fr, digits, &times).expect("trajectory");

@@ -1,8 +1,8 @@
 //! Both integrators of the motion with friction on one case:
 //! `cargo run --release --example cross_check -- DIGITS MU_FLOOR MU_CONTACT`.
 use cylroll::exact::Exact;
-use cylroll::friction::{answer, Friction, Law};
 use cylroll::model::Model;
+use cylroll::motion::{answer, Friction, Law};
 
 fn main() {
     let a: Vec<String> = std::env::args().collect();

@@ -3,8 +3,8 @@
 //! `cargo run --release --example fric_time -- [DIGITS]` (with ONLY_THETA
 //! set in the environment it stops after θ at the 1000 times).
 use cylroll::exact::Exact;
-use cylroll::friction::{self, answer, Friction, Law};
 use cylroll::model::Model;
+use cylroll::motion::{self, answer, Friction, Law};
 use rug::Rational;
 
 fn main() {
@@ -20,8 +20,8 @@ fn main() {
     let (p1, p2) = cylroll::numeric::verify::precisions(digits, 0);
     for p in [p1, p2] {
         let t = std::time::Instant::now();
-        let h = friction::default_horizon(&m);
-        let mo = friction::solve(&m, &fr, p, &[], true, &h).expect("solve");
+        let h = motion::default_horizon(&m);
+        let mo = motion::solve(&m, &fr, p, &[], true, &h).expect("solve");
         println!(
             "{p} bits: {:.1} ms, {} events, routes {:?}, work {:?}",
             t.elapsed().as_secs_f64() * 1e3,

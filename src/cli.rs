@@ -3,10 +3,10 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use cylroll::error::{Error, Result};
 use cylroll::exact::{rational_text, Exact};
-use cylroll::friction::answer::VerifiedEvent;
-use cylroll::friction::Friction;
-use cylroll::input::{self, FRICTION_KEYS, MODEL_KEYS};
+use cylroll::model::input::{self, FRICTION_KEYS, MODEL_KEYS};
 use cylroll::model::Model;
+use cylroll::motion::answer::VerifiedEvent;
+use cylroll::motion::Friction;
 use cylroll::numeric::verify::Verified;
 use cylroll::oracle::rigorous::{enclosure_why, prove_with, stick_end_proved, Proved};
 use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
@@ -728,7 +728,7 @@ fn parse_list(name: &str, s: &str) -> Result<Vec<Exact>> {
 /// Runs the command and returns the text to print on standard output.
 pub fn run(cli: Cli) -> Result<(String, i32)> {
     let (common, answer) = match cli.command {
-        Command::Golden { dir } => return cylroll::record::write_all(&dir).map(|s| (s, 0)),
+        Command::Golden { dir } => return cylroll::golden::write_all(&dir).map(|s| (s, 0)),
         Command::Check {
             candidate,
             case,
@@ -739,23 +739,19 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             golden,
             format,
         } => {
-            let case = cylroll::record::find_case(&golden, &case)?;
+            let case = cylroll::golden::find_case(&golden, &case)?;
             let source = candidate.display().to_string();
             let file = std::fs::File::open(&candidate).map_err(|e| {
                 Error::invalid("candidate", &source, format!("cannot be read: {e}"))
             })?;
-            let lim = cylroll::record::check::Limits {
+            let lim = cylroll::check::Limits {
                 rtol,
                 atol,
                 digits,
                 max_rows,
             };
-            let rep = cylroll::record::check::check_reader(
-                std::io::BufReader::new(file),
-                &source,
-                &case,
-                &lim,
-            )?;
+            let rep =
+                cylroll::check::check_reader(std::io::BufReader::new(file), &source, &case, &lim)?;
             let out = match format {
                 Format::Json => rep.json(),
                 Format::Csv => rep.csv(),
@@ -783,10 +779,10 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                         "verify --stack prints text or json",
                     ));
                 }
-                return cylroll::dae::stack_report(&spec, digits, format == Format::Json)
+                return cylroll::stack::stack_report(&spec, digits, format == Format::Json)
                     .map(|s| (s, 0));
             }
-            let rep = cylroll::dae::verify_report(digits)?;
+            let rep = cylroll::crosscheck::verify_report(digits)?;
             if timings {
                 eprint!("{}", rep.timings());
             }
@@ -809,7 +805,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                          itself is computed (see the events)",
                     ));
                 }
-                let ans = cylroll::friction::answer::separation(&model, &fr, common.digits)?;
+                let ans = cylroll::motion::answer::separation(&model, &fr, common.digits)?;
                 let mut values = ans.values.clone();
                 let mut proved = Vec::new();
                 let mut notes = ans.notes.clone();
@@ -931,7 +927,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             let theta = Exact::parse("to", &to, true)?;
             if let Some(fr) = fr {
                 let (t, mode) =
-                    cylroll::friction::answer::time_at(&model, &fr, common.digits, &theta)?;
+                    cylroll::motion::answer::time_at(&model, &fr, common.digits, &theta)?;
                 let a = Answer {
                     command: "time",
                     model,
@@ -986,7 +982,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             let th = Exact::parse("theta", &theta, true)?;
             if let Some(fr) = fr {
                 let (values, mode) =
-                    cylroll::friction::answer::forces_at(&model, &fr, common.digits, &th)?;
+                    cylroll::motion::answer::forces_at(&model, &fr, common.digits, &th)?;
                 let a = Answer {
                     command: "forces",
                     model,
@@ -1082,8 +1078,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             let (model, fr) = common.model_friction()?;
             rigorous_supported(&common, fr.is_some())?;
             if let Some(fr) = fr {
-                let ans =
-                    cylroll::friction::answer::trajectory(&model, &fr, common.digits, &times)?;
+                let ans = cylroll::motion::answer::trajectory(&model, &fr, common.digits, &times)?;
                 let p = ans.rows.first().map_or(64, |r| r[0].value.prec());
                 let rows = ans
                     .rows
@@ -1101,7 +1096,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                         r
                     })
                     .collect();
-                let mut cols = cylroll::friction::columns();
+                let mut cols = cylroll::motion::columns();
                 cols.push("mode");
                 let a = Answer {
                     command: "trajectory",

@@ -29,17 +29,19 @@
 
 pub mod audit;
 pub mod cancel;
-pub mod dae;
+pub mod check;
+pub mod crosscheck;
 pub mod error;
 pub mod exact;
-pub mod friction;
-pub mod input;
+pub mod golden;
+pub mod integrate;
 pub mod mechanics;
 pub mod model;
+pub mod motion;
 pub mod numeric;
 pub mod oracle;
 pub mod paper;
-pub mod record;
 pub mod report;
+pub mod stack;
 
 pub use error::{Error, Result};

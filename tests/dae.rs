@@ -4,15 +4,15 @@
 //! Tolerances scale with the requested digits. Every check names the case,
 //! the quantity and both values when it fails.
 
-use cylroll::dae::solve::Sample;
-use cylroll::dae::spec;
-use cylroll::dae::system::{self, Row, StackModel, System};
-use cylroll::dae::*;
+use cylroll::crosscheck::*;
 use cylroll::exact::Exact;
+use cylroll::integrate::solve::Sample;
 use cylroll::mechanics::kkt::{self, Bodies};
+use cylroll::mechanics::system::{self, Row, StackModel, System};
 use cylroll::model::{Contact, Floor, Model, Params, Start};
 use cylroll::numeric::bits_for_digits;
 use cylroll::oracle::Oracle;
+use cylroll::stack::{solve_stack, spec, stack_report};
 use rug::ops::Pow;
 use rug::{Float, Rational};
 

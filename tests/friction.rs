@@ -7,9 +7,9 @@
 
 use assert_cmd::Command;
 use cylroll::exact::Exact;
-use cylroll::friction::answer::{self, SeparationAnswer};
-use cylroll::friction::{self, Friction, Kind, Law};
 use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::motion::answer::{self, SeparationAnswer};
+use cylroll::motion::{self, Friction, Kind, Law};
 use rug::ops::Pow;
 use rug::{Float, Rational};
 
@@ -396,7 +396,7 @@ fn two_precisions_agree_and_energy_balances() {
     let kinds: Vec<&str> = b.events.iter().map(|e| e.kind.name()).collect();
     assert_eq!(kinds, ["slip_onset", "slip_onset", "separation", "impact"]);
     // the balance E(0) − E(t) = W(t), along the whole motion at one precision
-    let mo = friction::solve(&m, &fr, 200, &[], true, &friction::default_horizon(&m)).unwrap();
+    let mo = motion::solve(&m, &fr, 200, &[], true, &motion::default_horizon(&m)).unwrap();
     assert!(
         mo.energy_drift.to_f64() < 1e-50,
         "{}",
@@ -1096,16 +1096,16 @@ fn few_digits_see_every_event_that_many_digits_see() {
         ("1/10", "1/2", "3/2", "1", "0.12"),
     ];
     for (theta0, m1, r2, k2, mu) in cases {
-        let mut pairs = cylroll::input::Pairs::new();
+        let mut pairs = cylroll::model::input::Pairs::new();
         for (k, v) in [("theta0", theta0), ("m1", m1), ("r2", r2), ("k2", k2)] {
             pairs.insert(k.into(), v.into());
         }
-        let m = cylroll::input::model_from_pairs(&pairs).unwrap();
+        let m = cylroll::model::input::model_from_pairs(&pairs).unwrap();
         let fr = Friction {
             floor: law(mu),
             contact: law(mu),
         };
-        let m = friction::effective_model(&m, &fr).unwrap();
+        let m = motion::effective_model(&m, &fr).unwrap();
         let label = format!("theta0={theta0} m1={m1} r2={r2} k2={k2} mu={mu}");
         let full = answer::separation(&m, &fr, 30).unwrap_or_else(|e| panic!("{label}: {e}"));
         for digits in [6, 8, 12] {
@@ -1133,7 +1133,7 @@ fn few_digits_see_every_event_that_many_digits_see() {
 /// take the same events, and the work never decreases.
 #[test]
 fn a_floor_restick_within_one_step_is_found_and_the_work_is_kept() {
-    let mut pairs = cylroll::input::Pairs::new();
+    let mut pairs = cylroll::model::input::Pairs::new();
     for (k, v) in [
         ("theta0", "13/50"),
         ("m2", "31/10"),
@@ -1144,29 +1144,29 @@ fn a_floor_restick_within_one_step_is_found_and_the_work_is_kept() {
     ] {
         pairs.insert(k.into(), v.into());
     }
-    let m = cylroll::input::model_from_pairs(&pairs).unwrap();
+    let m = cylroll::model::input::model_from_pairs(&pairs).unwrap();
     let fr = Friction {
         floor: law("0.2"),
         contact: law("0.5"),
     };
     let p = 120;
-    let h = friction::default_horizon(&m);
+    let h = motion::default_horizon(&m);
     let times: Vec<Float> = [1.0, 1.06, 1.1, 1.2, 1.26]
         .iter()
         .map(|x| Float::with_val(p, *x))
         .collect();
-    let with = friction::solve(&m, &fr, p, &times, true, &h).unwrap();
-    let without = friction::solve(&m, &fr, p, &[], true, &h).unwrap();
-    let kinds = |mo: &friction::Motion| -> Vec<(Kind, Option<friction::Which>)> {
+    let with = motion::solve(&m, &fr, p, &times, true, &h).unwrap();
+    let without = motion::solve(&m, &fr, p, &[], true, &h).unwrap();
+    let kinds = |mo: &motion::Motion| -> Vec<(Kind, Option<motion::Which>)> {
         mo.events.iter().map(|e| (e.kind, e.which)).collect()
     };
     assert_eq!(kinds(&with), kinds(&without));
     assert_eq!(
         kinds(&without)[..3],
         [
-            (Kind::SlipOnset, Some(friction::Which::Floor)),
-            (Kind::Stick, Some(friction::Which::Floor)),
-            (Kind::SlipOnset, Some(friction::Which::Contact)),
+            (Kind::SlipOnset, Some(motion::Which::Floor)),
+            (Kind::Stick, Some(motion::Which::Floor)),
+            (Kind::SlipOnset, Some(motion::Which::Contact)),
         ]
     );
     for mo in [&with, &without] {

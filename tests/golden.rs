@@ -3,7 +3,7 @@
 //! fails until it is reviewed. Values in the files are also held against
 //! independent facts here.
 
-use cylroll::record::{load_cases, render, GOLDEN_DIGITS};
+use cylroll::golden::{load_cases, render, GOLDEN_DIGITS};
 use std::path::Path;
 
 fn golden() -> &'static Path {

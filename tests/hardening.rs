@@ -220,7 +220,7 @@ fn check_enforces_its_row_limit() {
 fn check_streams_in_chunks_and_agrees_across_chunk_boundaries() {
     // more rows than one chunk: every row is the oracle's own value at
     // t = 0 (θ0 = 1/20 from rest), so every row must pass and be counted
-    let n = cylroll::record::check::CHUNK_ROWS + 3;
+    let n = cylroll::check::CHUNK_ROWS + 3;
     let mut csv = String::from("t,theta,theta_dot\n");
     for _ in 0..n {
         csv.push_str("0,0.05,0\n");
@@ -319,7 +319,7 @@ fn verify_refuses_csv_for_a_stack() {
 }
 
 mod file_sets {
-    use cylroll::record::fileset::{recover, temp_name, write_set, JOURNAL};
+    use cylroll::golden::fileset::{recover, temp_name, write_set, JOURNAL};
     use std::path::PathBuf;
 
     fn files(tag: &str) -> Vec<(PathBuf, Vec<u8>)> {
@@ -559,11 +559,11 @@ mod along_the_motion {
     use cylroll::oracle::Oracle;
 
     fn sep(args: &[(&str, &str)], digits: u32) -> cylroll::oracle::Separation {
-        let mut pairs = cylroll::input::Pairs::new();
+        let mut pairs = cylroll::model::input::Pairs::new();
         for (k, v) in args {
             pairs.insert(k.to_string(), v.to_string());
         }
-        let m = cylroll::input::model_from_pairs(&pairs).unwrap();
+        let m = cylroll::model::input::model_from_pairs(&pairs).unwrap();
         Oracle::new(&m, digits).unwrap().separation().unwrap()
     }
 

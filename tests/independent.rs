@@ -5,7 +5,7 @@
 //! models; every value must agree to the digits compared here.
 
 use cylroll::exact::Exact;
-use cylroll::input::{model_from_pairs, Pairs};
+use cylroll::model::input::{model_from_pairs, Pairs};
 use cylroll::numeric::decimal::to_sig;
 use cylroll::oracle::{Oracle, FORCE_KEYS};
 

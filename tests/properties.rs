@@ -171,8 +171,8 @@ prop_compose! {
         m1 in 1i64..40, m2 in 1i64..40, r1 in 2i64..30, r2 in 2i64..30,
         k1 in 1i64..20, k2 in 1i64..20,
         th0 in 3i64..40, mf in 0usize..6, mc in 0usize..6, ks in any::<bool>(),
-    ) -> (Model, cylroll::friction::Friction) {
-        use cylroll::friction::{Friction, Law};
+    ) -> (Model, cylroll::motion::Friction) {
+        use cylroll::motion::{Friction, Law};
         let params = Params {
             m1: rat(m1, 10), m2: rat(m2, 10), r1: rat(r1, 10), r2: rat(r2, 10),
             k1: rat(k1, 10), k2: rat(k2, 10), g: rat(1, 1),
@@ -198,10 +198,10 @@ proptest! {
     /// once are refusals, not numbers.
     #[test]
     fn invariants_of_the_motion_with_friction(mf in any_friction_model()) {
-        use cylroll::friction::{self, Kind};
+        use cylroll::motion::{self, Kind};
         let (model, fr) = mf;
-        let h = friction::default_horizon(&model);
-        let m = match friction::solve(&model, &fr, 120, &[], true, &h) {
+        let h = motion::default_horizon(&model);
+        let m = match motion::solve(&model, &fr, 120, &[], true, &h) {
             Ok(m) => m,
             Err(Error::NotConverged { quantity, .. }) if quantity == "mode" || quantity == "separation" => return Ok(()),
             Err(Error::NotPhysical { .. }) => return Ok(()),

@@ -2,7 +2,7 @@
 //! much higher precision (or a closed form), and shrinks with the precision.
 
 use cylroll::exact::Exact;
-use cylroll::input::{model_from_pairs, Pairs};
+use cylroll::model::input::{model_from_pairs, Pairs};
 use cylroll::model::Model;
 use cylroll::oracle::Oracle;
 use rug::float::Constant;
@@ -351,19 +351,19 @@ fn where_sticking_ends_is_proved_with_friction() {
         fn law(x: Option<&str>) -> &str {
             x.unwrap_or("inf")
         }
-        let fr = cylroll::friction::Friction {
-            floor: cylroll::friction::Law::parse("mu_floor", law(mf)).unwrap(),
-            contact: cylroll::friction::Law::parse("mu_contact", law(mc)).unwrap(),
+        let fr = cylroll::motion::Friction {
+            floor: cylroll::motion::Law::parse("mu_floor", law(mf)).unwrap(),
+            contact: cylroll::motion::Law::parse("mu_contact", law(mc)).unwrap(),
         };
         // the verified event at 60 digits
-        let ans = cylroll::friction::answer::separation(&m, &fr, 60).unwrap();
+        let ans = cylroll::motion::answer::separation(&m, &fr, 60).unwrap();
         let ev = &ans.events[0];
         assert_eq!(
             ev.which,
             Some(if floor_first {
-                cylroll::friction::Which::Floor
+                cylroll::motion::Which::Floor
             } else {
-                cylroll::friction::Which::Contact
+                cylroll::motion::Which::Contact
             }),
             "{pairs:?}"
         );
@@ -436,11 +436,11 @@ fn where_sticking_ends_is_proved_with_friction() {
     assert_eq!(code, 0);
     // the proved digits are those of the motion integrated at 40 digits
     let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
-    let fr = cylroll::friction::Friction {
-        floor: cylroll::friction::Law::Roll,
-        contact: cylroll::friction::Law::parse("mu_contact", "2").unwrap(),
+    let fr = cylroll::motion::Friction {
+        floor: cylroll::motion::Law::Roll,
+        contact: cylroll::motion::Law::parse("mu_contact", "2").unwrap(),
     };
-    let a = cylroll::friction::answer::separation(&m, &fr, 40).unwrap();
+    let a = cylroll::motion::answer::separation(&m, &fr, 40).unwrap();
     for (key, label) in [
         ("theta_s", "theta_s         = "),
         ("t_s", "t_s             = "),
@@ -461,7 +461,7 @@ fn where_sticking_ends_is_proved_with_friction() {
 #[test]
 fn every_golden_case_is_enclosed_around_its_verified_values() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("golden");
-    let cases = cylroll::record::load_cases(&dir).unwrap();
+    let cases = cylroll::golden::load_cases(&dir).unwrap();
     let (mut ideal, mut friction) = (0, 0);
     for case in &cases {
         match &case.friction {
@@ -488,13 +488,13 @@ fn every_golden_case_is_enclosed_around_its_verified_values() {
                 ideal += 1;
             }
             Some(fr) => {
-                let ans = cylroll::friction::answer::separation(&case.model, fr, 30).unwrap();
+                let ans = cylroll::motion::answer::separation(&case.model, fr, 30).unwrap();
                 let Ok(slots) =
                     cylroll::oracle::rigorous::stick_end_proved(&case.model, fr, &ans, 30)
                 else {
                     continue; // a start that slips at once: nothing enclosed, said so
                 };
-                let more = cylroll::friction::answer::separation(&case.model, fr, 45).unwrap();
+                let more = cylroll::motion::answer::separation(&case.model, fr, 45).unwrap();
                 let ev = &more.events[0];
                 for (_, v, pv) in slots {
                     let pv = pv.unwrap_or_else(|| panic!("{}: {} not enclosed", case.name, v.name));

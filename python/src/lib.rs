@@ -15,15 +15,15 @@
 //! caught on that thread and raised as `cylroll.InternalError`; it never
 //! unwinds into Python.
 
+use cylroll::check::CheckReport;
 use cylroll::error::Error;
 use cylroll::exact::Exact;
-use cylroll::friction::{self, Friction};
-use cylroll::input::{self, Pairs, FRICTION_KEYS, MODEL_KEYS};
+use cylroll::golden::Case;
+use cylroll::model::input::{self, Pairs, FRICTION_KEYS, MODEL_KEYS};
 use cylroll::model::Model;
+use cylroll::motion::{self, Friction};
 use cylroll::numeric::verify::Verified;
 use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
-use cylroll::record::check::CheckReport;
-use cylroll::record::Case;
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -272,7 +272,7 @@ fn case_parts(name: &str, text: &str) -> cylroll::Result<(Pairs, String, u32)> {
             format!("not valid TOML: {}", e.message().trim()),
         )
     })?;
-    cylroll::record::case_parts(&table)
+    cylroll::golden::case_parts(&table)
 }
 
 fn parse_angle(name: &str, text: &str) -> cylroll::Result<Exact> {
@@ -307,7 +307,7 @@ fn separation<'py>(
                      is computed (see the events)",
                 ));
             }
-            let ans = friction::answer::separation(&model, &fr, digits)?;
+            let ans = motion::answer::separation(&model, &fr, digits)?;
             let events = ans
                 .events
                 .iter()
@@ -365,7 +365,7 @@ fn time(
         let th = parse_angle("theta", &theta)?;
         match fr {
             Some(fr) => {
-                let (t, mode) = friction::answer::time_at(&model, &fr, digits, &th)?;
+                let (t, mode) = motion::answer::time_at(&model, &fr, digits, &th)?;
                 Ok((value(&t), Some(mode)))
             }
             None => Ok((value(&Oracle::new(&model, digits)?.time_at(&th)?), None)),
@@ -388,7 +388,7 @@ fn forces(
         let th = parse_angle("theta", &theta)?;
         match fr {
             Some(fr) => {
-                let (v, mode) = friction::answer::forces_at(&model, &fr, digits, &th)?;
+                let (v, mode) = motion::answer::forces_at(&model, &fr, digits, &th)?;
                 Ok((values(&v), Some(mode)))
             }
             None => {
@@ -418,9 +418,9 @@ fn trajectory(py: Python<'_>, pairs: Pairs, digits: u32, times: Vec<String>) -> 
         }
         match fr {
             Some(fr) => {
-                let ans = friction::answer::trajectory(&model, &fr, digits, &times)?;
+                let ans = motion::answer::trajectory(&model, &fr, digits, &times)?;
                 let rows = ans.rows.iter().map(|r| values(r)).collect();
-                Ok((friction::columns(), rows, Some(ans.modes)))
+                Ok((motion::columns(), rows, Some(ans.modes)))
             }
             None => {
                 let rows = Oracle::new(&model, digits)?.trajectory(&times)?;
@@ -479,7 +479,7 @@ fn enclose(
             if what != "separation" || theta.is_some() {
                 return Err(cylroll::oracle::rigorous::unsupported("with friction"));
             }
-            let ans = friction::answer::separation(&model, &fr, digits)?;
+            let ans = motion::answer::separation(&model, &fr, digits)?;
             let slots = cylroll::oracle::rigorous::stick_end_proved(&model, &fr, &ans, digits)
                 .map_err(|why| {
                     Error::not_physical(format!("with friction nothing is enclosed: {why}"))
@@ -526,7 +526,7 @@ fn run_check(
     atol: f64,
     digits: u32,
 ) -> cylroll::Result<CheckReport> {
-    cylroll::record::check::check(csv, source, case, rtol, atol, digits)
+    cylroll::check::check(csv, source, case, rtol, atol, digits)
 }
 
 /// `check`: judges candidate CSV text against a golden case (by name) or a
@@ -606,9 +606,9 @@ fn _cylroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MODEL_KEYS", MODEL_KEYS.to_vec())?;
     m.add("FRICTION_KEYS", FRICTION_KEYS.to_vec())?;
     m.add("TRAJECTORY_COLUMNS", TRAJECTORY_COLUMNS.to_vec())?;
-    m.add("FRICTION_COLUMNS", friction::columns())?;
+    m.add("FRICTION_COLUMNS", motion::columns())?;
     m.add("FORCE_KEYS", FORCE_KEYS.to_vec())?;
-    m.add("FRICTION_FORCE_KEYS", friction::answer::force_keys())?;
+    m.add("FRICTION_FORCE_KEYS", motion::answer::force_keys())?;
     m.add("MAX_DIGITS", cylroll::oracle::MAX_DIGITS)?;
     m.add("LIBRARY_VERSION", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;

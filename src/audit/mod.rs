@@ -294,7 +294,7 @@ pub fn run(equation: Option<&str>, reports_dir: &Path) -> Result<String> {
             let rows = audit_all()?;
             let md = render_report(&rows);
             let path = reports_dir.join("audit.md");
-            crate::record::write_atomic(&path, md.as_bytes())?;
+            crate::golden::write_atomic(&path, md.as_bytes())?;
             let errata = rows
                 .iter()
                 .filter(|r| r.verdict() == Verdict::Erratum)

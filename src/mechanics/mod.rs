@@ -28,6 +28,7 @@
 
 pub mod dynamics;
 pub mod kkt;
+pub mod system;
 
 use crate::error::{Error, Result};
 use crate::model::{Contact, Floor, Model};

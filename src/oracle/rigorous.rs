@@ -45,9 +45,9 @@
 use super::{Oracle, FORCE_KEYS};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::friction::Friction;
 use crate::mechanics::{PHI1, PSI2, X1};
 use crate::model::{Contact, Floor, Model};
+use crate::motion::Friction;
 use crate::numeric::ccrig;
 use crate::numeric::interval::{not_enclosed, Cx, Iv};
 use crate::numeric::verify::Verified;
@@ -1035,10 +1035,10 @@ pub type ProvedSlots = Vec<(Option<usize>, Verified, Option<Proved>)>;
 pub fn stick_end_proved(
     model: &Model,
     fr: &Friction,
-    ans: &crate::friction::answer::SeparationAnswer,
+    ans: &crate::motion::answer::SeparationAnswer,
     digits: u32,
 ) -> std::result::Result<ProvedSlots, String> {
-    use crate::friction::{Kind, Law, Mode, State, Which};
+    use crate::motion::{Kind, Law, Mode, State, Which};
     let both_stick = Mode {
         floor: State::Stick,
         contact: State::Stick,

@@ -12,9 +12,9 @@ use super::plot::{
 use super::Config;
 use crate::error::Result;
 use crate::exact::Exact;
-use crate::friction::answer::{self, SeparationAnswer};
-use crate::friction::{columns, Friction, Kind, Law};
 use crate::model::{Contact, Floor, Model, Params, Start};
+use crate::motion::answer::{self, SeparationAnswer};
+use crate::motion::{columns, Friction, Kind, Law};
 use crate::oracle::Oracle;
 
 /// θ0 of the friction section (the main case's start).

@@ -243,7 +243,7 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     ] {
         files.push((name.into(), text.as_bytes().to_vec()));
     }
-    crate::record::fileset::write_set(dir, &files)?;
+    crate::golden::fileset::write_set(dir, &files)?;
     pb.finish_and_clear();
 
     let mut out = format!(

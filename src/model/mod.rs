@@ -4,6 +4,8 @@
 //! of the crate may assume its invariants (positive masses, radii and g,
 //! non-negative inertia factors, a start inside the supported range).
 
+pub mod input;
+
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use rug::Rational;

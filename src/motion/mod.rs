@@ -5,12 +5,12 @@
 //! * [`law`]: the contact laws (`Roll` = μ ∞, `Slip` = μ 0, `Coulomb` with
 //!   μs ≥ μk) and the modes (each contact sticking or slipping either way).
 //! * This module: one constrained system per mode, built by the second
-//!   route's KKT machinery ([`crate::dae::system`]): a sticking contact is a
+//!   route's KKT machinery ([`crate::mechanics::system`]): a sticking contact is a
 //!   velocity constraint whose multiplier is its tangential force; a
 //!   slipping one is the applied force −μk σ N along its slip direction,
 //!   with N the multiplier of its normal row (so the KKT matrix gains μk σ
 //!   J_t in N's column). Each mode is integrated by Chebyshev spectral
-//!   quadrature in the angle ([`crate::dae::spectral`]: q̈ and λ are affine
+//!   quadrature in the angle ([`crate::integrate::spectral`]: q̈ and λ are affine
 //!   in θ̇², so θ̇² solves a linear ODE in θ), with the dissipated work
 //!   E(0) − E(t) = ∫ μk N |s| dt among the quadratures; its events (cone
 //!   reached, slip speed zero, N12 = 0, N1 = 0) are roots of the
@@ -41,15 +41,17 @@
 pub mod answer;
 pub mod flight;
 pub mod law;
+pub mod point;
 
 pub use law::{Friction, Law, Mode, State};
 
-use crate::dae::solve::{self, Event, Opts, Sample, Start, Watch};
-use crate::dae::system::{self as sy, Row, SlipTerm, StackModel, System, Tangent};
-use crate::dae::{time_scale, TwoState, TOL_GUARD};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
+use crate::integrate::solve::{self, Event, Opts, Sample, Start, Watch};
+use crate::integrate::{time_scale, TOL_GUARD};
+use crate::mechanics::system::{self as sy, Row, SlipTerm, StackModel, System, Tangent};
 use crate::model::{Contact, Floor, Model};
+use point::TwoState;
 use rug::{Float, Rational};
 
 /// Which contact an event concerns.
@@ -444,7 +446,7 @@ fn tangential(ctx: &Ctx, sys: &System, mode: Mode, w: Which, s: &Sample) -> Floa
 
 fn point(ctx: &Ctx, sys: &mut System, mode: Mode, s: &Sample) -> Point {
     let p = sys.prec;
-    let mut state = crate::dae::two_state(sys, s);
+    let mut state = crate::motion::point::two_state(sys, s);
     // a slipping contact's force is an applied force, not a multiplier
     state.f1 = tangential(ctx, sys, mode, Which::Floor, s);
     state.f21 = tangential(ctx, sys, mode, Which::Contact, s);
@@ -793,7 +795,7 @@ pub fn default_horizon(model: &Model) -> Float {
 /// The integrator of the modes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Method {
-    /// Chebyshev spectral integration in the angle ([`crate::dae::spectral`]),
+    /// Chebyshev spectral integration in the angle ([`crate::integrate::spectral`]),
     /// the default; a mode it declines is integrated by [`Method::Gbs`].
     Spectral,
     /// Gragg–Bulirsch–Stoer extrapolation.
@@ -1051,13 +1053,13 @@ fn solve_full(
             snap: snap.clone(),
         };
         let spectral = match method {
-            Method::Spectral => crate::dae::spectral::run(
+            Method::Spectral => crate::integrate::spectral::run(
                 &mut sys,
                 &start,
                 &times[next..],
                 &t_end,
                 &evs,
-                &crate::dae::spectral::Settings {
+                &crate::integrate::spectral::Settings {
                     tol: ctx.opts.tol.clone(),
                     full: !theta_only,
                     ts: ctx.ts.clone(),
@@ -1079,7 +1081,7 @@ fn solve_full(
             }
             (None, Method::Collocation) => {
                 let stages = (wp as usize / 12).clamp(4, 24);
-                let mut co = crate::dae::collocation::Collocation::new(
+                let mut co = crate::integrate::collocation::Collocation::new(
                     wp,
                     ctx.opts.tol.clone(),
                     ctx.opts.h0.clone(),

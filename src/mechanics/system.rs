@@ -1004,12 +1004,11 @@ impl System {
         t + vpot
     }
 
-    /// The largest drifts of energy and momenta from `e0`, `p0` over every
-    /// state a run recorded (outputs, events, the last state): |E − E0|/escale
-    /// and max_c |p_c − p_c0|/pscale.
-    pub fn drifts(
+    /// The largest drifts of energy and momenta from `e0`, `p0` over the
+    /// given states (q, q̇): |E − E0|/escale and max_c |p_c − p_c0|/pscale.
+    pub fn drifts<'a>(
         &mut self,
-        run: &super::solve::Run,
+        states: impl Iterator<Item = (&'a [Float], &'a [Float])>,
         e0: &Float,
         p0: &[Float],
         escale: &Float,
@@ -1018,17 +1017,12 @@ impl System {
         let p = self.prec;
         let mut energy = Float::new(p);
         let mut momentum = Float::new(p);
-        let states = run
-            .outputs
-            .iter()
-            .chain(run.hits.iter().map(|h| &h.at))
-            .chain(std::iter::once(&run.last));
-        for st in states {
-            let de = Float::with_val(p, &self.energy(&st.q, &st.v) - e0).abs() / escale;
+        for (q, v) in states {
+            let de = Float::with_val(p, &self.energy(q, v) - e0).abs() / escale;
             if de > energy {
                 energy = de;
             }
-            for (a, b) in self.momenta(&st.q, &st.v).iter().zip(p0) {
+            for (a, b) in self.momenta(q, v).iter().zip(p0) {
                 let d = Float::with_val(p, a - b).abs() / pscale;
                 if d > momentum {
                     momentum = d;

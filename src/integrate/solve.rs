@@ -16,8 +16,8 @@
 //! integration tolerance.
 
 use super::gbs::{Gbs, Rhs, Stats, Stepper};
-use super::system::System;
 use crate::error::{Error, Result};
+use crate::mechanics::system::System;
 use rug::{Assign, Float};
 
 /// What an event watches.
@@ -116,6 +116,18 @@ pub struct Run {
     /// invariants too (the ends of the spectral route's pieces; empty for
     /// the time integrators).
     pub checkpoints: Vec<Sample>,
+}
+
+impl Run {
+    /// Every state the run recorded (outputs, events, the last state), as
+    /// (q, q̇).
+    pub fn states(&self) -> impl Iterator<Item = (&[Float], &[Float])> {
+        self.outputs
+            .iter()
+            .chain(self.hits.iter().map(|h| &h.at))
+            .chain(std::iter::once(&self.last))
+            .map(|s| (s.q.as_slice(), s.v.as_slice()))
+    }
 }
 
 /// Settings of a run.

@@ -1,15 +1,17 @@
 //! Stacks of n ≥ 2 cylinders (paper footnote 3): which contact opens first,
 //! and when, verified at two precisions.
 
-use super::solve::{self, Event, Opts, Run, Sample, Watch};
-use super::spec::Spec;
-use super::system::{self, Row, StackModel, System};
-use super::{time_scale, TOL_GUARD};
+pub mod spec;
+
 use crate::error::{Error, Result};
 use crate::exact::rational_text;
+use crate::integrate::solve::{self, Event, Opts, Run, Sample, Watch};
+use crate::integrate::{time_scale, TOL_GUARD};
+use crate::mechanics::system::{self, Row, StackModel, System};
 use crate::numeric::decimal::short;
 use crate::numeric::verify::{ladder, Estimate, Verified};
 use rug::{Float, Rational};
+use spec::Spec;
 
 /// Precision of the run that finds the sequence of events.
 const SCAN_PREC: u32 = 128;
@@ -146,7 +148,7 @@ pub fn solve_stack(spec: &Spec, prec: u32, times: &[Float]) -> Result<StackSolut
     escale += Float::with_val(prec, &mr * &sys.g);
     // momentum scale: Σ m r · sqrt(g / r1)-like speeds: m r² / time scale
     let pscale = Float::with_val(prec, &mr / &ts) * &sys.rho[0];
-    let (energy_drift, momentum_drift) = sys.drifts(&run, &e0, &p0, &escale, &pscale);
+    let (energy_drift, momentum_drift) = sys.drifts(run.states(), &e0, &p0, &escale, &pscale);
     Ok(StackSolution {
         prec: requested,
         work_prec: prec,
@@ -463,4 +465,18 @@ fn split_pair(p: &str) -> String {
     } else {
         p.to_string()
     }
+}
+
+/// Solves a stack of cylinders described by `spec` (see [`spec::HELP`];
+/// `"help"` returns that text) and returns the report (`json`: as a JSON
+/// object with decimal strings).
+///
+/// Errors: a bad SPEC ([`Error::InvalidParameter`]), a start where a contact
+/// is already open, digits that cannot be verified.
+pub fn stack_report(spec: &str, digits: u32, json: bool) -> Result<String> {
+    if spec.trim() == "help" {
+        return Ok(spec::HELP.to_string());
+    }
+    let sp = spec::parse(spec)?;
+    report(&sp, digits, json)
 }

@@ -41,8 +41,8 @@
 
 use super::gbs::Stats;
 use super::solve::{watch_value, Event, Hit, Run, Sample, Start, Watch};
-use super::system::{self as sy, Accel, Row, System};
 use crate::error::Result;
+use crate::mechanics::system::{self as sy, Accel, Row, System};
 use crate::model::Floor;
 use crate::numeric::cheb::{smooth_at_least, ChebFit, Roots};
 use rug::{Assign, Float};
@@ -1183,9 +1183,9 @@ pub fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dae::solve::{self, Opts};
-    use crate::dae::system::{SlipTerm, StackModel, Tangent};
     use crate::exact::Exact;
+    use crate::integrate::solve::{self, Opts};
+    use crate::mechanics::system::{SlipTerm, StackModel, Tangent};
     use crate::model::{Contact, Model};
 
     const P: u32 = 200;

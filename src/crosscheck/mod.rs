@@ -36,107 +36,24 @@
 //! of agreeing digits), [`stack_report`] (footnote 3: n ≥ 2 cylinders),
 //! [`two_cylinder`] (route 2 for a [`Model`] at one precision).
 
-pub mod collocation;
-pub mod gbs;
 pub mod golden;
-pub mod solve;
-pub mod spec;
-pub mod spectral;
-mod stack;
-pub mod system;
 mod verify;
 
-pub use stack::{row_name, solve_stack, StackOpening, StackSolution};
 pub use verify::{agreement, cases, compare_case, CaseReport, Comparison, VerifyCase};
 
 use crate::error::{Error, Result};
+use crate::integrate::solve::{self, Event, Opts, Run, Watch};
+use crate::integrate::{time_scale, TOL_GUARD};
+use crate::mechanics::system::{self, Row, StackModel, System};
 use crate::model::{Floor, Model};
+use crate::motion::point::{two_state, TwoState};
 use rug::Float;
-use solve::{Event, Opts, Run, Sample, Watch};
-use system::{Row, StackModel, System};
 
 /// Runs both routes on the built-in case set and returns the agreement table.
 ///
 /// Errors: a route that cannot verify `digits` digits of some quantity.
 pub fn verify_report(digits: u32) -> Result<verify::VerifyReport> {
     verify::report(digits)
-}
-
-/// Solves a stack of cylinders described by `spec` (see [`spec::HELP`];
-/// `"help"` returns that text) and returns the report (`json`: as a JSON
-/// object with decimal strings).
-///
-/// Errors: a bad SPEC ([`Error::InvalidParameter`]), a start where a contact
-/// is already open, digits that cannot be verified.
-pub fn stack_report(spec: &str, digits: u32, json: bool) -> Result<String> {
-    if spec.trim() == "help" {
-        return Ok(spec::HELP.to_string());
-    }
-    let sp = spec::parse(spec)?;
-    stack::report(&sp, digits, json)
-}
-
-/// Guard bits between the working precision and the integrator's tolerance.
-pub const TOL_GUARD: u32 = 8;
-
-/// The natural time scale sqrt(r/g) of a stack (r = r1 + r2).
-pub fn time_scale(sm: &StackModel, prec: u32) -> Float {
-    let r = Float::with_val(prec, &sm.r[0]) + Float::with_val(prec, &sm.r[1]);
-    let g = Float::with_val(prec, &sm.g);
-    Float::with_val(prec, r / g).sqrt()
-}
-
-/// Two cylinders: route 2's values at one sample, in the conventions of the
-/// README (and of [`crate::oracle::TRAJECTORY_COLUMNS`]).
-#[derive(Debug, Clone)]
-pub struct TwoState {
-    /// t.
-    pub t: Float,
-    /// θ.
-    pub theta: Float,
-    /// θ̇.
-    pub theta_dot: Float,
-    /// θ̈.
-    pub theta_ddot: Float,
-    /// φ1 (clockwise).
-    pub phi1: Float,
-    /// φ2 = ψ2 + θ (the paper's angle).
-    pub phi2: Float,
-    /// x1.
-    pub x1: Float,
-    /// x2.
-    pub x2: Float,
-    /// y2.
-    pub y2: Float,
-    /// F1 (floor's or holder's x force on cylinder 1; 0 on a frictionless floor).
-    pub f1: Float,
-    /// N1.
-    pub n1: Float,
-    /// F21 (0 at a frictionless contact).
-    pub f21: Float,
-    /// N12.
-    pub n12: Float,
-}
-
-impl TwoState {
-    /// The values in [`crate::oracle::TRAJECTORY_COLUMNS`] order, t first.
-    pub fn columns(&self) -> [Float; 13] {
-        [
-            self.t.clone(),
-            self.theta.clone(),
-            self.theta_dot.clone(),
-            self.theta_ddot.clone(),
-            self.phi1.clone(),
-            self.phi2.clone(),
-            self.x1.clone(),
-            self.x2.clone(),
-            self.y2.clone(),
-            self.f1.clone(),
-            self.n1.clone(),
-            self.f21.clone(),
-            self.n12.clone(),
-        ]
-    }
 }
 
 /// Route 2 for a two-cylinder model at one precision.
@@ -173,38 +90,6 @@ pub struct TwoOpts {
     pub phi1_events: bool,
     /// Angles θ at which to record the state (the first crossing of each).
     pub reach: Vec<Float>,
-}
-
-fn row_value(sys: &System, s: &Sample, row: Row) -> Float {
-    sys.rows
-        .iter()
-        .position(|r| *r == row)
-        .map(|i| s.lambda[i].clone())
-        .unwrap_or_else(|| Float::new(sys.prec))
-}
-
-/// The columns of a two-cylinder sample (the multipliers as forces).
-pub(crate) fn two_state(sys: &System, s: &Sample) -> TwoState {
-    let p = sys.prec;
-    let q = &s.q;
-    let th = &q[system::th(0)];
-    let r = &q[system::rr(0)];
-    let (sn, cs) = th.clone().sin_cos(Float::new(p));
-    TwoState {
-        t: s.t.clone(),
-        theta: th.clone(),
-        theta_dot: s.v[system::th(0)].clone(),
-        theta_ddot: s.qdd[system::th(0)].clone(),
-        phi1: q[system::PHI1].clone(),
-        phi2: Float::with_val(p, &q[system::psi(0)] + th),
-        x1: q[system::X1].clone(),
-        x2: Float::with_val(p, r * &sn) + &q[system::X1],
-        y2: Float::with_val(p, r * &cs) + &q[system::Y1],
-        f1: row_value(sys, s, Row::FloorFriction),
-        n1: row_value(sys, s, Row::FloorNormal),
-        f21: row_value(sys, s, Row::Friction(0)),
-        n12: row_value(sys, s, Row::Normal(0)),
-    }
 }
 
 /// Integrates a two-cylinder model at `prec` bits from t = 0, sampling at
@@ -326,6 +211,6 @@ pub fn two_cylinder(
     let escale = Float::with_val(prec, e0.abs_ref()) + Float::with_val(prec, &sys.g * &sys.m[1]);
     // momenta: absolute drift
     let one = Float::with_val(prec, 1u32);
-    (out.energy_drift, out.momentum_drift) = sys.drifts(&run, &e0, &p0, &escale, &one);
+    (out.energy_drift, out.momentum_drift) = sys.drifts(run.states(), &e0, &p0, &escale, &one);
     Ok(out)
 }

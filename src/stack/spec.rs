@@ -21,9 +21,9 @@
 //!
 //! Example: `n=3;floor=roll;m=1,1,1;r=1,1,1;k=1/2,1/2,1/2;theta0=0.1,0.05;contacts=roll,roll`.
 
-use super::system::StackModel;
 use crate::error::{Error, Result};
 use crate::exact::Exact;
+use crate::mechanics::system::StackModel;
 use crate::model::{Contact, Floor};
 use rug::Rational;
 

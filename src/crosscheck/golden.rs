@@ -6,7 +6,7 @@
 use super::{two_cylinder, TwoOpts, TwoState};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::input::{model_from_pairs, Pairs, MODEL_KEYS};
+use crate::model::input::{model_from_pairs, Pairs, MODEL_KEYS};
 use crate::numeric::bits_for_digits;
 use crate::oracle::TRAJECTORY_COLUMNS;
 use rug::ops::Pow;
@@ -60,7 +60,7 @@ pub fn check_golden(json: &str, prec: u32) -> Result<GoldenCheck> {
     let d: serde_json::Value =
         serde_json::from_str(json).map_err(|e| Error::invalid("golden", "json", e.to_string()))?;
     let case = d["case"].as_str().unwrap_or("?").to_string();
-    if d["schema"].as_str() == Some(crate::record::SCHEMA_FRICTION) {
+    if d["schema"].as_str() == Some(crate::golden::SCHEMA_FRICTION) {
         // computed by this route already (the modes of friction are
         // integrated here): nothing independent to recompute
         return Ok(GoldenCheck {

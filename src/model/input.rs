@@ -30,15 +30,15 @@ pub const FRICTION_KEYS: [&str; 2] = ["mu_floor", "mu_contact"];
 /// The friction laws of key/value pairs (`roll` limits where absent).
 ///
 /// Errors: a coefficient that does not parse or is out of range.
-pub fn friction_from_pairs(vals: &Pairs) -> Result<crate::friction::Friction> {
-    use crate::friction::Law;
+pub fn friction_from_pairs(vals: &Pairs) -> Result<crate::motion::Friction> {
+    use crate::motion::Law;
     let law = |k: &str| -> Result<Law> {
         match vals.get(k) {
             None => Ok(Law::Roll),
             Some(s) => Law::parse(k, s),
         }
     };
-    Ok(crate::friction::Friction {
+    Ok(crate::motion::Friction {
         floor: law("mu_floor")?,
         contact: law("mu_contact")?,
     })
@@ -49,8 +49,8 @@ pub fn friction_from_pairs(vals: &Pairs) -> Result<crate::friction::Friction> {
 /// contact the model declares frictionless, contradicts the model.
 ///
 /// Errors: as [`friction_from_pairs`], and those contradictions.
-pub fn friction_for(vals: &Pairs, model: &Model) -> Result<crate::friction::Friction> {
-    use crate::friction::Law;
+pub fn friction_for(vals: &Pairs, model: &Model) -> Result<crate::motion::Friction> {
+    use crate::motion::Law;
     let fr = friction_from_pairs(vals)?;
     if let Some(v) = vals.get("mu_floor") {
         if model.floor() == Floor::Fixed {
@@ -92,12 +92,12 @@ pub const CASE_KEYS: [&str; 2] = ["description", "steps"];
 /// a finite coefficient.
 ///
 /// Errors: as [`model_from_pairs`], [`friction_for`] and
-/// [`crate::friction::check_laws`].
-pub fn model_and_friction(vals: &Pairs) -> Result<(Model, Option<crate::friction::Friction>)> {
+/// [`crate::motion::check_laws`].
+pub fn model_and_friction(vals: &Pairs) -> Result<(Model, Option<crate::motion::Friction>)> {
     let model = model_from_pairs(vals)?;
     let fr = friction_for(vals, &model)?;
-    crate::friction::check_laws(&model, &fr)?;
-    let eff = crate::friction::effective_model(&model, &fr)?;
+    crate::motion::check_laws(&model, &fr)?;
+    let eff = crate::motion::effective_model(&model, &fr)?;
     let coulomb = fr.floor.is_coulomb() || fr.contact.is_coulomb();
     Ok((eff, coulomb.then_some(fr)))
 }

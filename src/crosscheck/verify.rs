@@ -553,8 +553,8 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
             seconds: Some(rep.seconds),
         });
     }
-    for (name, model, fr) in crate::friction::answer::verify_cases() {
-        let rows = crate::friction::answer::cross_check(&model, &fr, digits)?;
+    for (name, model, fr) in crate::motion::answer::verify_cases() {
+        let rows = crate::motion::answer::cross_check(&model, &fr, digits)?;
         let mut out = Vec::new();
         for r in &rows {
             let a = r.digits.floor().max(0.0) as u32;
@@ -593,7 +593,7 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
     let mut golden_lines = Vec::new();
     if golden.is_dir() {
         // finish an interrupted update first: the set is whole or old, never mixed
-        crate::record::fileset::recover(golden)?;
+        crate::golden::fileset::recover(golden)?;
         let mut files: Vec<_> = std::fs::read_dir(golden)
             .map_err(|e| Error::Io {
                 path: golden.display().to_string(),

@@ -5,9 +5,9 @@
 //! times (no interpolation of either side). A value fails when
 //! |candidate − oracle| > atol + rtol·|oracle| (numpy's `isclose` rule).
 
-use super::Case;
 use crate::error::{Error, Result};
 use crate::exact::Exact;
+use crate::golden::Case;
 use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
 use rug::Float;
 use serde_json::{json, Value};
@@ -273,7 +273,7 @@ pub fn check_reader<R: BufRead>(
                 ))
             }
             Some(l) if l.trim().is_empty() => continue,
-            Some(l) => break crate::input::strip_bom(&l).to_string(),
+            Some(l) => break crate::model::input::strip_bom(&l).to_string(),
         }
     };
     let cols: Vec<String> = header
@@ -281,7 +281,7 @@ pub fn check_reader<R: BufRead>(
         .map(|c| c.trim().trim_matches('"').to_string())
         .collect();
     let known: Vec<&str> = if case.friction.is_some() {
-        crate::friction::columns()
+        crate::motion::columns()
     } else {
         TRAJECTORY_COLUMNS.to_vec()
     };
@@ -354,7 +354,7 @@ pub fn check_reader<R: BufRead>(
             let times: Vec<Exact> = chunk.iter().map(|d| d.0.clone()).collect();
             let orows = match &case.friction {
                 Some(fr) => {
-                    crate::friction::answer::trajectory(&case.model, fr, digits, &times)?.rows
+                    crate::motion::answer::trajectory(&case.model, fr, digits, &times)?.rows
                 }
                 None => {
                     // one oracle for every chunk (it keeps its per-precision constants)

@@ -17,11 +17,11 @@
 //! positive — otherwise the free motion would interpenetrate and the
 //! rigid-body model has no continuation (an error, never a silent number).
 
+use super::point::TwoState;
 use super::{Ctx, EventRec, Kind, Law, Mode, Point, State, Which};
-use crate::dae::solve::Sample;
-use crate::dae::system::{self as sy, System};
-use crate::dae::TwoState;
 use crate::error::{Error, Result};
+use crate::integrate::solve::Sample;
+use crate::mechanics::system::{self as sy, System};
 use rug::Float;
 
 /// Where the first impact happens.
@@ -107,7 +107,7 @@ pub(super) fn floor_accel(
     if fixed || sticking || !law.is_coulomb() {
         return Float::new(p);
     }
-    let s1 = sys.slip_speed(crate::dae::system::Tangent::Floor, q, v);
+    let s1 = sys.slip_speed(crate::mechanics::system::Tangent::Floor, q, v);
     if s1.is_zero() {
         return Float::new(p);
     }

@@ -5,14 +5,13 @@
 //! Everything rendered is deterministic text: decimal strings, a stable key
 //! order, no timestamps or paths. Files are written atomically.
 
-pub mod check;
 pub mod fileset;
 
 use crate::error::{Error, Result};
 use crate::exact::{rational_text, Exact};
-use crate::friction::Friction;
-use crate::input::{pairs_from_toml, read_toml};
+use crate::model::input::{pairs_from_toml, read_toml};
 use crate::model::Model;
+use crate::motion::Friction;
 use crate::numeric::verify::Verified;
 use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
 use rug::Rational;
@@ -46,8 +45,8 @@ pub struct Case {
 /// `steps` (optional, default 40).
 ///
 /// Errors: an unknown key or a value out of range.
-pub fn case_parts(table: &toml::Table) -> Result<(crate::input::Pairs, String, u32)> {
-    let pairs = pairs_from_toml(table, "case", &crate::input::CASE_KEYS)?;
+pub fn case_parts(table: &toml::Table) -> Result<(crate::model::input::Pairs, String, u32)> {
+    let pairs = pairs_from_toml(table, "case", &crate::model::input::CASE_KEYS)?;
     let description = match table.get("description") {
         Some(toml::Value::String(s)) => s.clone(),
         _ => String::new(),
@@ -71,7 +70,7 @@ pub fn case_parts(table: &toml::Table) -> Result<(crate::input::Pairs, String, u
 pub fn load_case(path: &Path) -> Result<Case> {
     let table = read_toml(path, "case")?;
     let (pairs, description, steps) = case_parts(&table)?;
-    let (model, friction) = crate::input::model_and_friction(&pairs)?;
+    let (model, friction) = crate::model::input::model_and_friction(&pairs)?;
     let name = path
         .file_stem()
         .and_then(|s| s.to_str())
@@ -285,7 +284,7 @@ pub const SCHEMA_FRICTION: &str = "cylroll-golden-friction/1";
 /// separation and the first impact, and the rows of every phase on a grid
 /// from 0 to the impact time rounded down to 3 significant digits.
 fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
-    let sep = crate::friction::answer::separation(&case.model, fr, GOLDEN_DIGITS)?;
+    let sep = crate::motion::answer::separation(&case.model, fr, GOLDEN_DIGITS)?;
     let t_imp = sep
         .values
         .iter()
@@ -295,7 +294,7 @@ fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
     let times: Vec<Exact> = (0..=case.steps)
         .map(|i| Exact::rational(&end * Rational::from((i, case.steps))))
         .collect();
-    let traj = crate::friction::answer::trajectory(&case.model, fr, GOLDEN_DIGITS, &times)?;
+    let traj = crate::motion::answer::trajectory(&case.model, fr, GOLDEN_DIGITS, &times)?;
     let mut model = model_map(&case.model);
     model.insert("mu_floor".into(), fr.floor.to_string().into());
     model.insert("mu_contact".into(), fr.contact.to_string().into());
@@ -313,7 +312,7 @@ fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
             })
         })
         .collect();
-    let mut columns: Vec<&str> = crate::friction::columns();
+    let mut columns: Vec<&str> = crate::motion::columns();
     columns.push("mode");
     let rows_json: Vec<Value> = traj
         .rows
