@@ -1,7 +1,7 @@
 //! Both integrators of the motion with friction on one case:
 //! `cargo run --release --example cross_check -- DIGITS MU_FLOOR MU_CONTACT`.
 use cylroll::exact::Exact;
-use cylroll::model::Model;
+use cylroll::model::Ideal;
 use cylroll::motion::{answer, Friction, Law};
 
 fn main() {
@@ -12,7 +12,7 @@ fn main() {
         floor: law(2),
         contact: law(3),
     };
-    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).expect("theta0"));
+    let m = Ideal::paper_default(Exact::parse("theta0", "1/10", false).expect("theta0"));
     let t = std::time::Instant::now();
     match answer::cross_check(&m, &fr, digits) {
         Ok(rows) => {

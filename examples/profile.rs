@@ -14,7 +14,7 @@
 //! wall time per run to stderr (use `benches/tasks.rs` for measurements).
 
 use cylroll::exact::Exact;
-use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::model::{Contact, Floor, Ideal, Params, Start};
 use cylroll::oracle::Oracle;
 use rug::Rational;
 use std::time::Instant;
@@ -26,10 +26,10 @@ fn q(s: &str) -> Exact {
     Exact::parse("value", s, false).expect("exact")
 }
 
-fn model(m2: i64, theta0: &str) -> Model {
+fn model(m2: i64, theta0: &str) -> Ideal {
     let mut p = Params::identical_solid();
     p.m2 = Rational::from(m2);
-    Model::new(p, Floor::Roll, Contact::Roll, Start::rest(q(theta0))).expect("model")
+    Ideal::new(p, Floor::Roll, Contact::Roll, Start::rest(q(theta0))).expect("model")
 }
 
 fn main() {

@@ -48,7 +48,7 @@ mod tests {
             .join()
             .unwrap();
         // a computation on this thread stops at its next check
-        let m = crate::model::Model::paper_default(
+        let m = crate::model::Ideal::paper_default(
             crate::exact::Exact::parse("theta0", "1/10", false).unwrap(),
         );
         let r = crate::oracle::Oracle::new(&m, 30).and_then(|mut o| o.separation());

@@ -5,7 +5,7 @@
 
 use cylroll::exact::Exact;
 use cylroll::mechanics::Reduced;
-use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::model::{Contact, Floor, Ideal, Params, Start};
 use cylroll::numeric::decimal::to_sig;
 use cylroll::oracle::Oracle;
 use rug::{Float, Rational};
@@ -14,11 +14,11 @@ fn q(s: &str) -> Rational {
     Exact::parse("q", s, false).unwrap().coef
 }
 
-fn model(floor: Floor, contact: Contact, k2: &str, m2: &str, theta0: &str) -> Model {
+fn model(floor: Floor, contact: Contact, k2: &str, m2: &str, theta0: &str) -> Ideal {
     let mut p = Params::identical_solid();
     p.k2 = q(k2);
     p.m2 = q(m2);
-    Model::new(
+    Ideal::new(
         p,
         floor,
         contact,
@@ -62,7 +62,7 @@ fn fixed_lower_cylinder_eq_36() {
 fn identical_solid_cylinders_separate_at_pi_over_3() {
     // bench T2: for m1 = m2, k1 = k2 = 1/2 both rolling, θs = π/3 exactly
     for digits in [30, 300, 1000] {
-        let m = Model::paper_default(Exact::zero());
+        let m = Ideal::paper_default(Exact::zero());
         let mut o = Oracle::new(&m, digits).unwrap();
         let s = o.separation().unwrap();
         let pi3 = Float::with_val(digits * 4 + 64, rug::float::Constant::Pi) / 3u32;
@@ -85,7 +85,7 @@ fn bench_t2b_non_degenerate_root() {
 #[test]
 fn bench_t1_time_integral() {
     // T1 = 4.924315468243287509589438907674409756197297165837… (Arb, 1100 digits)
-    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+    let m = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
     let mut o = Oracle::new(&m, 48).unwrap();
     let t = o
         .time_at(&Exact::parse("to", "9/10", false).unwrap())
@@ -97,7 +97,7 @@ fn bench_t1_time_integral() {
 fn bench_t3_theta_at_t_end() {
     // θ(t_end) = 1.017720047898565541324320788879807079184492603… at
     // t_end = 5.146758983122540901696317082705216339477… (Arb reference)
-    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+    let m = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
     let mut o = Oracle::new(&m, 38).unwrap();
     let t_end = Exact::parse("t", "5.146758983122540901696317082705216339477", false).unwrap();
     let rows = o.trajectory(&[t_end]).unwrap();
@@ -138,7 +138,7 @@ fn slip_slip_corrected_eq_43() {
 fn energy_forms_of_footnotes_6_and_11() {
     // footnote 6 (roll/roll, identical, k = 1/2): θ̇² = 12 g(1 − cos θ)/(a(17 + 4 cos θ − 4 cos²θ)), a = r/2
     //   ⇔ K(c) = (17 + 4c − 4c²)/12
-    let red = Reduced::new(&Model::paper_default(Exact::zero())).unwrap();
+    let red = Reduced::new(&Ideal::paper_default(Exact::zero())).unwrap();
     assert_eq!(red.q, [q("17/12"), q("1/3"), q("-1/3")]);
     // footnote 11 (slip/roll, k1 = k2 = 1/2): (3 m1 + 2 m2 sin²θ) θ̇² = 4 (m1+m2) g (1 − cos θ)/r
     //   ⇔ K(c) = (3 m1 + 2 m2 (1 − c²)) / (2 (m1 + m2)), for several mass ratios
@@ -146,7 +146,7 @@ fn energy_forms_of_footnotes_6_and_11() {
         let mut p = Params::identical_solid();
         p.m1 = q(m1);
         p.m2 = q(m2);
-        let m = Model::new(
+        let m = Ideal::new(
             p.clone(),
             Floor::Slip,
             Contact::Roll,
@@ -167,7 +167,7 @@ fn routh_roll_together_footnote_12() {
     let mut p = Params::identical_solid();
     p.k1 = q("3/10");
     p.k2 = q("3/10");
-    let m = Model::new(p, Floor::Slip, Contact::Roll, Start::rest(Exact::zero())).unwrap();
+    let m = Ideal::new(p, Floor::Slip, Contact::Roll, Start::rest(Exact::zero())).unwrap();
     let red = Reduced::new(&m).unwrap();
     // φ̇1 = (α + β c) θ̇ with α = 1, β = 0
     assert_eq!(red.alpha[1], Rational::from(1));

@@ -7,7 +7,7 @@ use cylroll::exact::Exact;
 use cylroll::mechanics::dynamics::Dyn;
 use cylroll::mechanics::kkt::{self, Bodies};
 use cylroll::mechanics::Reduced;
-use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::model::{Contact, Floor, Ideal, Params, Start};
 use cylroll::oracle::Oracle;
 use rug::{Float, Rational};
 
@@ -57,7 +57,7 @@ fn reduced_forces_match_lagrange_multipliers_and_newton_euler() {
                     thetadot0: q(td0),
                     omega0: q(w0),
                 };
-                let m = Model::new(params.clone(), floor, contact, start).unwrap();
+                let m = Ideal::new(params.clone(), floor, contact, start).unwrap();
                 let red = Reduced::new(&m).unwrap();
                 let d = Dyn::new(&m, &red, prec).unwrap();
                 let bodies = Bodies {
@@ -182,7 +182,7 @@ fn energy_and_canonical_momenta_are_conserved_along_the_motion() {
                     thetadot0: q(td0),
                     omega0: q(w0),
                 };
-                let m = Model::new(params.clone(), floor, contact, start).unwrap();
+                let m = Ideal::new(params.clone(), floor, contact, start).unwrap();
                 let red = Reduced::new(&m).unwrap();
                 let d = Dyn::new(&m, &red, prec).unwrap();
                 let s0 = d.state(&Float::new(prec));
@@ -206,7 +206,7 @@ fn energy_and_canonical_momenta_are_conserved_along_the_motion() {
 fn trajectory_is_consistent_with_its_own_time_integral_and_derivative() {
     // θ(t) from the trajectory, then t(θ) from the quadrature: round trip;
     // and a centred difference of θ(t) against θ̇ (error O(h²)).
-    let m = Model::new(
+    let m = Ideal::new(
         Params::identical_solid(),
         Floor::Roll,
         Contact::Roll,
@@ -250,7 +250,7 @@ fn same_digits_at_two_requested_precisions() {
         (Floor::Slip, Contact::Roll),
         (Floor::Roll, Contact::Slip),
     ] {
-        let m = Model::new(
+        let m = Ideal::new(
             Params::identical_solid(),
             floor,
             contact,
@@ -271,7 +271,7 @@ fn same_digits_at_two_requested_precisions() {
 #[test]
 fn mirror_image_motion() {
     let mk = |th0: &str, w0: &str| {
-        Model::new(
+        Ideal::new(
             Params::identical_solid(),
             Floor::Roll,
             Contact::Roll,

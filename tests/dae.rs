@@ -9,7 +9,7 @@ use cylroll::exact::Exact;
 use cylroll::integrate::solve::Sample;
 use cylroll::mechanics::kkt::{self, Bodies};
 use cylroll::mechanics::system::{self, Row, StackModel, System};
-use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::model::{Contact, Floor, Ideal, Params, Start};
 use cylroll::numeric::bits_for_digits;
 use cylroll::oracle::Oracle;
 use cylroll::stack::{solve_stack, spec, stack_report};
@@ -169,7 +169,7 @@ fn stack_kkt_equals_two_cylinder_kkt() {
                 thetadot0: q("0.45"),
                 omega0: q(w0),
             };
-            let m = Model::new(a.clone(), floor, contact, start).unwrap();
+            let m = Ideal::new(a.clone(), floor, contact, start).unwrap();
             let sm = StackModel::from_model(&m);
             let mut sys = System::new(&sm, prec).unwrap();
             let (q0, v0) = sys.initial_state(&sm).unwrap();
@@ -356,7 +356,7 @@ fn stack_of_two_equals_first_route() {
             thetadot0: sm.thetadot0[0].clone(),
             omega0: sm.omega0.clone(),
         };
-        let model = Model::new(params, floor, contact, start).unwrap();
+        let model = Ideal::new(params, floor, contact, start).unwrap();
         let mut o = Oracle::new(&model, digits).unwrap();
         let sep = o.separation().unwrap();
         let prec = bits_for_digits(digits) + 40;
@@ -598,7 +598,7 @@ fn massless_spins_agree_with_first_route() {
             thetadot0: q("0.2"),
             omega0: q("0.3"),
         };
-        let m = Model::new(p, floor, contact, start).unwrap();
+        let m = Ideal::new(p, floor, contact, start).unwrap();
         let case = VerifyCase {
             name: format!("{floor}-{contact} k1={k1} k2={k2}"),
             model: m,

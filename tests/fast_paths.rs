@@ -11,7 +11,7 @@
 //! (reference.json, T3_reference.txt), copied here.
 
 use cylroll::exact::Exact;
-use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::model::{Contact, Floor, Ideal, Params, Start};
 use cylroll::numeric::decimal::to_sig;
 use cylroll::oracle::Oracle;
 use rug::{Float, Rational};
@@ -41,8 +41,8 @@ const T3_ROWS: [(u32, &str); 7] = [
     (999, "1.01772004789856554132432078887980707918449260327807644975088123511602809941281270965137749309973304086448380853"),
 ];
 
-fn t3_model() -> Model {
-    Model::paper_default(q("1/10"))
+fn t3_model() -> Ideal {
+    Ideal::paper_default(q("1/10"))
 }
 
 fn t3_time(i: u32) -> Exact {
@@ -116,7 +116,7 @@ fn taylor_works_for_every_contact_model_and_a_moving_start() {
             thetadot0: q(td0).coef,
             omega0: Rational::new(),
         };
-        let m = Model::new(p, floor, contact, start).unwrap();
+        let m = Ideal::new(p, floor, contact, start).unwrap();
         let mut o = Oracle::new(&m, 35).unwrap();
         let th = o.theta_at_times(&[q("1.5")]).unwrap();
         let back = o.time_at(&q(&th[0].text)).unwrap();
@@ -152,7 +152,7 @@ fn separation_angle_is_separation_theta_s() {
             thetadot0: q(td0).coef,
             omega0: Rational::new(),
         };
-        let m = Model::new(p, floor, contact, start).unwrap();
+        let m = Ideal::new(p, floor, contact, start).unwrap();
         for digits in [20u32, 60] {
             let mut o = Oracle::new(&m, digits).unwrap();
             let fast = o.separation_angle().unwrap();
@@ -175,11 +175,11 @@ fn time_integral_matches_the_bench_t1_value_to_300_digits() {
 fn separation_angle_matches_the_bench_t2b_root_to_300_digits() {
     let mut p = Params::identical_solid();
     p.m2 = Rational::from(2);
-    let m = Model::new(p, Floor::Roll, Contact::Roll, Start::rest(Exact::zero())).unwrap();
+    let m = Ideal::new(p, Floor::Roll, Contact::Roll, Start::rest(Exact::zero())).unwrap();
     let mut o = Oracle::new(&m, 300).unwrap();
     assert_eq!(o.separation_angle().unwrap().text, rounded(T2B, 300));
     // T2: exactly π/3
-    let mut o = Oracle::new(&Model::paper_default(Exact::zero()), 300).unwrap();
+    let mut o = Oracle::new(&Ideal::paper_default(Exact::zero()), 300).unwrap();
     let pi3 = Float::with_val(1300, rug::float::Constant::Pi) / 3u32;
     assert_eq!(o.separation_angle().unwrap().text, to_sig(&pi3, 300));
 }
@@ -212,7 +212,7 @@ fn taylor_is_independent_of_the_time_unit() {
     ] {
         let mut p = Params::identical_solid();
         p.g = q(g).coef;
-        let m = Model::new(p, Floor::Roll, Contact::Roll, Start::rest(q("1/10"))).unwrap();
+        let m = Ideal::new(p, Floor::Roll, Contact::Roll, Start::rest(q("1/10"))).unwrap();
         let mut o = Oracle::new(&m, digits).unwrap();
         let th = o.theta_at_times(&[q(t)]).unwrap();
         let back = o.time_at(&q(&th[0].text)).unwrap();
@@ -272,35 +272,35 @@ fn chebyshev_and_taylor_trajectories_agree() {
     let mut hollow = Params::identical_solid();
     hollow.k2 = Rational::from(1);
     let models = [
-        Model::new(
+        Ideal::new(
             Params::identical_solid(),
             Floor::Roll,
             Contact::Roll,
             moving,
         )
         .unwrap(),
-        Model::new(
+        Ideal::new(
             Params::identical_solid(),
             Floor::Slip,
             Contact::Roll,
             Start::rest(q("3/10")),
         )
         .unwrap(),
-        Model::new(
+        Ideal::new(
             Params::identical_solid(),
             Floor::Roll,
             Contact::Slip,
             Start::rest(q("1/4")),
         )
         .unwrap(),
-        Model::new(
+        Ideal::new(
             Params::identical_solid(),
             Floor::Fixed,
             Contact::Roll,
             Start::rest(q("1/5")),
         )
         .unwrap(),
-        Model::new(hollow, Floor::Roll, Contact::Roll, Start::rest(q("1/10"))).unwrap(),
+        Ideal::new(hollow, Floor::Roll, Contact::Roll, Start::rest(q("1/10"))).unwrap(),
     ];
     let mut compared = 0;
     for (mi, m) in models.iter().enumerate() {
@@ -340,7 +340,7 @@ fn chebyshev_and_taylor_trajectories_agree() {
 /// (the Taylor run could not follow: exit 3 after 26 s).
 #[test]
 fn trajectory_from_very_near_the_top_is_the_linear_motion() {
-    let m = Model::paper_default(q("1e-100"));
+    let m = Ideal::paper_default(q("1e-100"));
     for (digits, times) in [(30u32, vec!["97", "194"]), (100, vec!["97"])] {
         let mut o = Oracle::new(&m, digits).unwrap();
         let ts: Vec<Exact> = times.iter().map(|t| q(t)).collect();
@@ -381,7 +381,7 @@ fn chebyshev_inversion_from_a_moving_start_on_a_held_cylinder() {
         thetadot0: Rational::from((1, 10)),
         omega0: Rational::new(),
     };
-    let m = Model::new(params, Floor::Fixed, Contact::Roll, start).unwrap();
+    let m = Ideal::new(params, Floor::Fixed, Contact::Roll, start).unwrap();
     let t = [q("1.997953303458")];
     let a = Oracle::new(&m, 40).unwrap().theta_at_times(&t).unwrap();
     let b = Oracle::new(&m, 190).unwrap().theta_at_times(&t).unwrap();
@@ -429,7 +429,7 @@ fn a_tiny_time_from_a_moving_start_is_the_taylor_polynomial() {
         thetadot0: Rational::from((1, 4)),
         omega0: Rational::new(),
     };
-    let m = Model::new(Params::identical_solid(), Floor::Roll, Contact::Roll, start).unwrap();
+    let m = Ideal::new(Params::identical_solid(), Floor::Roll, Contact::Roll, start).unwrap();
     for (digits, t) in [(100u32, "1e-40"), (200, "1e-80"), (200, "1e-400")] {
         let te = Exact::parse("t", t, false).unwrap();
         let rows = Oracle::new(&m, digits)

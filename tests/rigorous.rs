@@ -3,12 +3,12 @@
 
 use cylroll::exact::Exact;
 use cylroll::model::input::{model_from_pairs, Pairs};
-use cylroll::model::Model;
+use cylroll::model::Ideal;
 use cylroll::oracle::Oracle;
 use rug::float::Constant;
 use rug::Float;
 
-fn model(pairs: &[(&str, &str)]) -> Model {
+fn model(pairs: &[(&str, &str)]) -> Ideal {
     let mut p = Pairs::new();
     for (k, v) in pairs {
         p.insert(k.to_string(), v.to_string());
@@ -435,7 +435,7 @@ fn where_sticking_ends_is_proved_with_friction() {
     ]);
     assert_eq!(code, 0);
     // the proved digits are those of the motion integrated at 40 digits
-    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+    let m = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
     let fr = cylroll::motion::Friction {
         floor: cylroll::motion::Law::Roll,
         contact: cylroll::motion::Law::parse("mu_contact", "2").unwrap(),

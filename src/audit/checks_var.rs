@@ -14,7 +14,7 @@ use crate::error::Result;
 use crate::exact::Exact;
 use crate::mechanics::dynamics::Dyn;
 use crate::mechanics::Reduced;
-use crate::model::{Contact, Floor, Model, Params, Start};
+use crate::model::{Contact, Floor, Ideal, Params, Start};
 use crate::paper::appendix::{QP1, QX1};
 use crate::paper::{sec2, sec3, Sym, X};
 use rug::{Float, Rational};
@@ -305,7 +305,7 @@ pub fn fn12_routh(cx: &mut Ctx) -> Result<Finding> {
 
 /// θ̈ at rest at θ0 (both rolling), from the reduced dynamics.
 fn thdd_at_rest(p: &Point, theta0: &Rational) -> Result<(X, X)> {
-    let m = Model::new(
+    let m = Ideal::new(
         p.params.clone(),
         Floor::Roll,
         Contact::Roll,

@@ -20,7 +20,7 @@ use crate::exact::Exact;
 use crate::mechanics::dynamics::{Dyn, State};
 use crate::mechanics::kkt::{self, Bodies};
 use crate::mechanics::{Reduced, PHI1, PSI2, X1};
-use crate::model::{Contact, Floor, Model, Start};
+use crate::model::{Contact, Floor, Ideal, Start};
 use crate::oracle::Oracle;
 use crate::paper::appendix::{QP1, QP2, QR, QTH, QX1, QY1};
 use crate::paper::{Sym, X};
@@ -96,7 +96,7 @@ pub struct Case {
     /// "P1 roll/roll rest", for messages.
     pub name: String,
     /// The model.
-    pub model: Model,
+    pub model: Ideal,
     /// Exact reduced dynamics.
     pub red: Reduced,
     /// The dynamics at [`PREC`].
@@ -114,7 +114,7 @@ pub struct Case {
 }
 
 /// The model of `point` with the given contacts and start.
-pub fn model_of(point: &Point, floor: Floor, contact: Contact, start: StartKind) -> Result<Model> {
+pub fn model_of(point: &Point, floor: Floor, contact: Contact, start: StartKind) -> Result<Ideal> {
     let (th0, td0, w0) = match start {
         StartKind::Rest => (Rational::new(), Rational::new(), Rational::new()),
         StartKind::General => (
@@ -133,7 +133,7 @@ pub fn model_of(point: &Point, floor: Floor, contact: Contact, start: StartKind)
     } else {
         w0
     };
-    Model::new(
+    Ideal::new(
         point.params.clone(),
         floor,
         contact,
@@ -150,7 +150,7 @@ fn fx(q: &Rational) -> X {
 }
 
 /// δs located by a coarse scan of N12 (for placing the sample angles only).
-fn coarse_delta_s(model: &Model, red: &Reduced) -> Result<Float> {
+fn coarse_delta_s(model: &Ideal, red: &Reduced) -> Result<Float> {
     let p = 64;
     let d = Dyn::new(model, red, p)?;
     let th0 = model.start().theta0.to_float(p);
@@ -278,7 +278,9 @@ impl Case {
             x1: x(&pos[X1]),
             y1: fx(&p.r1),
             phi1: x(&pos[PHI1]),
-            phi2: x(&pos[PSI2]) + x(&st.theta),
+            // the paper's gauge: r2 φ2 = r1(φ1 − θ) with no constant for a
+            // rolling contact (cylroll's φ2 starts at 0: φ2 − r1 θ0/r2)
+            phi2: x(&pos[PSI2]) + x(&st.theta) - paper_phi2_shift(&self.model, &d.th0),
             th: x(&st.theta),
             x1d: x(&st.v[X1]),
             y1d: zero.clone(),
@@ -599,4 +601,16 @@ pub fn random_state(template: &Sym, sys: Sys, seed: u64) -> Sym {
     }
     sys.embed(&mut y);
     y
+}
+
+/// cylroll's φ2 (0 at t = 0) minus the paper's (eq. 2, r2 φ2 = r1(φ1 − θ)
+/// for a rolling contact): r1 θ0/r2 for a rolling contact, 0 otherwise.
+fn paper_phi2_shift(model: &Ideal, th0: &Float) -> X {
+    let p = model.params();
+    match model.contact() {
+        crate::model::Contact::Roll => {
+            X(Float::with_val(PREC, &p.r1 * th0) / Float::with_val(PREC, &p.r2))
+        }
+        crate::model::Contact::Slip => X::int(PREC, 0),
+    }
 }

@@ -8,13 +8,32 @@
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::golden::Case;
-use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
+use crate::oracle::{Options, Row};
 use rug::Float;
 use serde_json::{json, Value};
 use std::io::{BufRead, Read};
 
-/// One candidate cell: (golden column index, its text, its value).
+/// One candidate cell: (golden column index, its text, its value; NaN for
+/// the `mode` column's text).
 type Cell = (usize, String, f64);
+
+/// The columns a candidate may have: every trajectory column and `mode`.
+fn known_columns() -> Vec<&'static str> {
+    let mut k = crate::motion::COLUMNS.to_vec();
+    k.push("mode");
+    k
+}
+
+/// The index of the `mode` column in [`known_columns`].
+const MODE: usize = crate::motion::COLUMNS.len();
+
+/// The full column lists of the first golden schema: a candidate whose
+/// header is exactly one of them is read as schema 1 (φ2 of a rolling
+/// contact in the paper's gauge, r1 θ0/r2 below today's).
+const V1_HEADERS: [&str; 2] = [
+    "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12",
+    "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12,s1,s12,work,mode",
+];
 
 /// Rows evaluated by the oracle at once: memory stays bounded by this many
 /// rows whatever the candidate's length.
@@ -203,6 +222,7 @@ pub fn check(
         atol,
         digits,
         max_rows: DEFAULT_MAX_ROWS,
+        schema: None,
     };
     check_reader(std::io::Cursor::new(csv.as_bytes()), source, case, &lim)
 }
@@ -218,6 +238,9 @@ pub struct Limits {
     pub digits: u32,
     /// Largest number of data rows accepted.
     pub max_rows: usize,
+    /// The candidate's schema: 1 (φ2 in the paper's gauge), 2, or `None`
+    /// (2, unless the header is exactly a full schema-1 column list).
+    pub schema: Option<u32>,
 }
 
 /// Reads one line of at most [`MAX_LINE_BYTES`] (without its line end);
@@ -280,10 +303,16 @@ pub fn check_reader<R: BufRead>(
         .split(',')
         .map(|c| c.trim().trim_matches('"').to_string())
         .collect();
-    let known: Vec<&str> = if case.friction.is_some() {
-        crate::motion::columns()
+    let known = known_columns();
+    let schema1 = lim.schema == Some(1)
+        || (lim.schema.is_none() && V1_HEADERS.contains(&cols.join(",").as_str()));
+    // φ2 of schema 1: the paper's gauge for a contact that starts rolling
+    let phi2_shift = if schema1 && *case.model.contact() != crate::model::Law::Frictionless {
+        let pr = case.model.params();
+        let th0 = case.model.start().theta0.to_float(256);
+        Float::with_val(256, &pr.r1) * th0 / Float::with_val(256, &pr.r2)
     } else {
-        TRAJECTORY_COLUMNS.to_vec()
+        Float::new(256)
     };
     let mut idx = Vec::new();
     for c in &cols {
@@ -327,7 +356,6 @@ pub fn check_reader<R: BufRead>(
         })
         .collect();
     let mut first = None;
-    let mut oracle: Option<Oracle> = None;
     let mut rows = 0usize;
     let mut chunk: Vec<(Exact, Vec<Cell>)> = Vec::with_capacity(CHUNK_ROWS);
     loop {
@@ -352,19 +380,8 @@ pub fn check_reader<R: BufRead>(
         }
         if chunk.len() == CHUNK_ROWS || (done && !chunk.is_empty()) {
             let times: Vec<Exact> = chunk.iter().map(|d| d.0.clone()).collect();
-            let orows = match &case.friction {
-                Some(fr) => {
-                    crate::motion::answer::trajectory(&case.model, fr, digits, &times)?.rows
-                }
-                None => {
-                    // one oracle for every chunk (it keeps its per-precision constants)
-                    let o = match &mut oracle {
-                        Some(o) => o,
-                        None => oracle.insert(Oracle::new(&case.model, digits)?),
-                    };
-                    o.trajectory(&times)?
-                }
-            };
+            let orows =
+                crate::oracle::trajectory(&case.model, &times, &Options::digits(digits))?.rows;
             let row0 = rows - chunk.len();
             for (r, ((t, vals), orow)) in chunk.iter().zip(&orows).enumerate() {
                 compare_row(
@@ -373,6 +390,7 @@ pub fn check_reader<R: BufRead>(
                     vals,
                     orow,
                     (rtol, atol),
+                    &phi2_shift,
                     &mut stats,
                     &mut first,
                 )?;
@@ -433,6 +451,10 @@ fn parse_row(
         if k == t_col {
             continue;
         }
+        if idx[k] == MODE {
+            vals.push((MODE, cell.to_string(), f64::NAN));
+            continue;
+        }
         let v: f64 = cell.parse().map_err(|_| {
             Error::invalid(
                 "candidate",
@@ -457,19 +479,52 @@ fn parse_row(
 }
 
 /// Holds one row against the oracle's, updating the statistics.
+#[allow(clippy::too_many_arguments)]
 fn compare_row(
     row: usize,
     t: &Exact,
     vals: &[Cell],
-    orow: &[crate::numeric::verify::Verified],
+    orow: &Row,
     (rtol, atol): (f64, f64),
+    phi2_shift: &Float,
     stats: &mut [ColumnStats],
     first: &mut Option<FirstFailure>,
 ) -> Result<()> {
     let p = 128;
     for (j, (gi, text, _)) in vals.iter().enumerate() {
-        let o = &orow[*gi];
-        let cand = Exact::parse("value", text, false)?.to_float(p);
+        if *gi == MODE {
+            // the phase: the same mode, or flight
+            let tag = orow.phase.tag();
+            let st = &mut stats[j];
+            let same = text.trim() == tag;
+            if !same {
+                st.failures += 1;
+                st.worst_ratio = f64::INFINITY;
+                st.worst_bound = "mode";
+                if st.max_abs_t == "-" {
+                    st.max_abs_t = t.to_string();
+                }
+                if first.is_none() {
+                    *first = Some(FirstFailure {
+                        row,
+                        t: t.to_string(),
+                        column: st.name.clone(),
+                        candidate: text.clone(),
+                        oracle: tag,
+                        limit: 0.0,
+                        bound: "mode",
+                    });
+                }
+            } else if st.worst_bound == "-" {
+                st.worst_bound = "mode";
+            }
+            continue;
+        }
+        let o = &orow.values[*gi];
+        let mut cand = Exact::parse("value", text, false)?.to_float(p);
+        if crate::motion::COLUMNS[*gi] == "phi2" {
+            cand += phi2_shift;
+        }
         // a value printed as 0 is 0 to the verified accuracy: compare
         // with 0 (and no relative error), not with its unverified digits
         let ov = if o.digits == 0 && o.text == "0" {

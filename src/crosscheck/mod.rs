@@ -34,9 +34,10 @@
 //!
 //! Entry points: [`verify_report`] (both routes on a set of cases, a table
 //! of agreeing digits), [`stack_report`] (footnote 3: n ≥ 2 cylinders),
-//! [`two_cylinder`] (route 2 for a [`Model`] at one precision).
+//! [`two_cylinder`] (route 2 for a [`Ideal`] at one precision).
 
 pub mod golden;
+pub mod routes;
 mod verify;
 
 pub use verify::{agreement, cases, compare_case, CaseReport, Comparison, VerifyCase};
@@ -45,7 +46,7 @@ use crate::error::{Error, Result};
 use crate::integrate::solve::{self, Event, Opts, Run, Watch};
 use crate::integrate::{time_scale, TOL_GUARD};
 use crate::mechanics::system::{self, Row, StackModel, System};
-use crate::model::{Floor, Model};
+use crate::model::{Floor, Ideal};
 use crate::motion::point::{two_state, TwoState};
 use rug::Float;
 
@@ -98,7 +99,7 @@ pub struct TwoOpts {
 /// Errors: a start exactly at rest at the top (nothing ever moves); a start
 /// where the cylinders already part; numerical failures of the integrator.
 pub fn two_cylinder(
-    model: &Model,
+    model: &Ideal,
     prec: u32,
     times: &[Float],
     t_end: &Float,

@@ -4,7 +4,7 @@
 use super::{two_cylinder, TwoOpts, TwoRun, TwoState};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::model::{Contact, Floor, Model, Params, Start};
+use crate::model::{Contact, Floor, Ideal, Params, Start};
 use crate::numeric::decimal::short;
 use crate::numeric::verify::{ladder, Estimate, Verified};
 use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
@@ -18,7 +18,7 @@ pub struct VerifyCase {
     /// Short name.
     pub name: String,
     /// The model.
-    pub model: Model,
+    pub model: Ideal,
 }
 
 fn q(s: &str) -> Rational {
@@ -55,7 +55,7 @@ fn start(theta0: &str, td0: &str, w0: &str) -> Start {
 /// to the left (θ0 < 0, which the first route solves as a mirror image).
 pub fn cases() -> Vec<VerifyCase> {
     let mut out = Vec::new();
-    let mut push = |name: String, m: Result<Model>| {
+    let mut push = |name: String, m: Result<Ideal>| {
         if let Ok(model) = m {
             out.push(VerifyCase { name, model });
         }
@@ -64,7 +64,7 @@ pub fn cases() -> Vec<VerifyCase> {
         for contact in [Contact::Roll, Contact::Slip] {
             push(
                 format!("{floor}-{contact}"),
-                Model::new(unequal(), floor, contact, start("0.1", "0", "0")),
+                Ideal::new(unequal(), floor, contact, start("0.1", "0", "0")),
             );
         }
     }
@@ -73,11 +73,11 @@ pub fn cases() -> Vec<VerifyCase> {
     bob.r1 = q("1/2");
     push(
         "bobbin".into(),
-        Model::new(bob, Floor::Roll, Contact::Roll, start("0.1", "0", "0")),
+        Ideal::new(bob, Floor::Roll, Contact::Roll, start("0.1", "0", "0")),
     );
     push(
         "moving-roll".into(),
-        Model::new(
+        Ideal::new(
             unequal(),
             Floor::Roll,
             Contact::Roll,
@@ -86,7 +86,7 @@ pub fn cases() -> Vec<VerifyCase> {
     );
     push(
         "moving-slip".into(),
-        Model::new(
+        Ideal::new(
             unequal(),
             Floor::Slip,
             Contact::Roll,
@@ -95,7 +95,7 @@ pub fn cases() -> Vec<VerifyCase> {
     );
     push(
         "paper-left".into(),
-        Model::new(
+        Ideal::new(
             Params::identical_solid(),
             Floor::Roll,
             Contact::Roll,
@@ -270,7 +270,7 @@ pub fn compare_case(case: &VerifyCase, digits: u32) -> Result<CaseReport> {
                             Some((i - 1, c))
                         })
                         .ok_or_else(|| Error::not_physical(format!("unknown quantity {name}")))?;
-                    let v = run.rows[i].columns()[col].clone();
+                    let v = run.rows[i].ideal_columns()[col].clone();
                     let exact_zero = (col == 9 && floor == Floor::Slip)
                         || (col == 11 && contact == Contact::Slip);
                     if exact_zero {
@@ -553,8 +553,8 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
             seconds: Some(rep.seconds),
         });
     }
-    for (name, model, fr) in crate::motion::answer::verify_cases() {
-        let rows = crate::motion::answer::cross_check(&model, &fr, digits)?;
+    for (name, model) in super::routes::friction_cases() {
+        let rows = super::routes::cross_check(&model, digits)?;
         let mut out = Vec::new();
         for r in &rows {
             let a = r.digits.floor().max(0.0) as u32;
@@ -578,12 +578,7 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
         sections.push(VerifySection {
             kind: "friction",
             name: name.clone(),
-            description: format!(
-                "{}, mu_floor = {}, mu_contact = {}",
-                model.describe(),
-                fr.floor,
-                fr.contact
-            ),
+            description: model.describe(),
             rows: out,
             route2: None,
             seconds: None,

@@ -11,9 +11,8 @@ use crate::error::{Error, Result};
 use crate::exact::{rational_text, Exact};
 use crate::model::input::{pairs_from_toml, read_toml};
 use crate::model::Model;
-use crate::motion::Friction;
 use crate::numeric::verify::Verified;
-use crate::oracle::{Oracle, TRAJECTORY_COLUMNS};
+use crate::oracle::{self, Answer, Options};
 use rug::Rational;
 use serde_json::{json, Map, Value};
 use std::path::{Path, PathBuf};
@@ -21,8 +20,14 @@ use std::path::{Path, PathBuf};
 /// Significant digits of the stored golden data.
 pub const GOLDEN_DIGITS: u32 = 30;
 
-/// The format tag of the JSON files.
-pub const SCHEMA: &str = "cylroll-golden/1";
+/// The format tag of the JSON files: one schema for every contact law.
+pub const SCHEMA: &str = "cylroll-golden/2";
+
+/// The format tags of the first schema (read by `check` and the migration
+/// test): the ideal models' files and those with friction. In both, φ2 of a
+/// rolling contact is the paper's (r2 φ2 = r1(φ1 − θ)), r1 θ0/r2 below
+/// today's φ2.
+pub const SCHEMAS_V1: [&str; 2] = ["cylroll-golden/1", "cylroll-golden-friction/1"];
 
 /// A curated case.
 #[derive(Debug, Clone)]
@@ -31,12 +36,8 @@ pub struct Case {
     pub name: String,
     /// One line of prose.
     pub description: String,
-    /// The validated model (with friction: the ideal base, contacts rolling
-    /// where a coefficient is given).
+    /// The validated model.
     pub model: Model,
-    /// Finite Coulomb friction (`mu_floor`, `mu_contact` in the case file),
-    /// if any contact has it.
-    pub friction: Option<Friction>,
     /// Intervals of the time grid.
     pub steps: u32,
 }
@@ -70,7 +71,8 @@ pub fn case_parts(table: &toml::Table) -> Result<(crate::model::input::Pairs, St
 pub fn load_case(path: &Path) -> Result<Case> {
     let table = read_toml(path, "case")?;
     let (pairs, description, steps) = case_parts(&table)?;
-    let (model, friction) = crate::model::input::model_and_friction(&pairs)?;
+    let model = crate::model::input::model_from_pairs(&pairs)
+        .map_err(|e| Error::invalid("case", path.display(), format!("has a bad value: {e}")))?;
     let name = path
         .file_stem()
         .and_then(|s| s.to_str())
@@ -80,7 +82,6 @@ pub fn load_case(path: &Path) -> Result<Case> {
         name,
         description,
         model,
-        friction,
         steps,
     })
 }
@@ -159,8 +160,8 @@ pub struct Rendered {
     pub csv: String,
 }
 
-/// The end of the time grid: t_s rounded *down* to 3 significant digits, so
-/// every grid time is an exact decimal before separation.
+/// The end of the time grid: a time rounded *down* to 3 significant
+/// digits, so that every grid time is an exact decimal before it.
 fn grid_end(t_s: &Verified) -> Result<Rational> {
     let e = Exact::parse("t_s", &t_s.text, false)?;
     if e.signum() <= 0 {
@@ -183,63 +184,115 @@ fn grid_end(t_s: &Verified) -> Result<Rational> {
     Ok(n * scale)
 }
 
-/// Renders a case (deterministic).
-pub fn render(case: &Case) -> Result<Rendered> {
-    if let Some(fr) = &case.friction {
-        return render_friction(case, fr);
+/// The time at which the motion ends (the first impact, a lift-off).
+fn end_time(sep: &Answer) -> Result<&Verified> {
+    sep.value("t_impact")
+        .or_else(|| sep.events.last().map(|e| &e.t))
+        .ok_or_else(|| Error::not_physical("the motion has no end"))
+}
+
+/// The method of each route, for the provenance.
+fn provenance(sep: &Answer) -> String {
+    use crate::motion::Route;
+    let mut parts = Vec::new();
+    if sep.routes.contains(&Route::Energy) {
+        parts.push(
+            "the conservative first phase by the energy route (theta_dot^2 in closed form, t(theta) by \
+             quadrature, theta(t) by Taylor series or Chebyshev inversion, events as roots of \
+             polynomials in cos theta)",
+        );
     }
-    let mut o = Oracle::new(&case.model, GOLDEN_DIGITS)?;
-    let sep = o.separation()?;
-    let t_s = sep.t_s.clone().ok_or_else(|| {
-        Error::not_physical(format!(
-            "case {}: infinite times (rest at the top)",
-            case.name
-        ))
-    })?;
-    let end = grid_end(&t_s)?;
+    if sep.routes.contains(&Route::Spectral) || sep.routes.contains(&Route::Gbs) {
+        parts.push(
+            "dissipative phases by Chebyshev spectral quadrature in the angle of the \
+             Lagrange-multiplier equations (theta_dot^2 from its linear ODE in theta), events \
+             located on the interpolants and corrected by the exact constraint forces, every \
+             continuation tested for consistency (cross-checked by Gragg-Bulirsch-Stoer \
+             extrapolation and Gauss-Legendre collocation: cylroll verify)",
+        );
+    }
+    parts.push("the free flight in closed form");
+    parts.push(
+        "every value verified at two working precisions with identical event sequences and the \
+         energy balance",
+    );
+    parts.join("; ")
+}
+
+/// Renders a case (deterministic): the motion to its end (events, scalars,
+/// notes) and the rows of every phase on a grid from 0 to the end of the
+/// motion (the first impact) rounded down to 3 significant digits.
+pub fn render(case: &Case) -> Result<Rendered> {
+    let opts = Options::digits(GOLDEN_DIGITS);
+    let sep = oracle::separation(&case.model, &opts)?;
+    let end = grid_end(end_time(&sep)?)?;
     let times: Vec<Exact> = (0..=case.steps)
         .map(|i| Exact::rational(&end * Rational::from((i, case.steps))))
         .collect();
-    let rows = o.trajectory(&times)?;
-
-    let model = model_map(&case.model);
-    let (scalars, bounds) = scalar_maps(
-        std::iter::once(&sep.theta_s)
-            .chain(sep.t_s.iter())
-            .chain(sep.extra.iter()),
-    );
-    let rows_json: Vec<Value> = rows
+    let traj = oracle::trajectory(&case.model, &times, &opts)?;
+    let (scalars, bounds) = scalar_maps(&sep.values);
+    let events: Vec<Value> = sep
+        .events
         .iter()
-        .map(|r| Value::Array(r.iter().map(|v| Value::from(v.text.clone())).collect()))
+        .map(|e| {
+            json!({
+                "kind": e.kind.name(),
+                "contact": e.which.map(|w| w.name()),
+                "mode": e.phase.map(|p| p.tag()),
+                "t": e.t.text,
+                "theta": e.theta.text,
+            })
+        })
+        .collect();
+    let mut columns: Vec<&str> = crate::motion::COLUMNS.to_vec();
+    columns.push("mode");
+    let rows_json: Vec<Value> = traj
+        .rows
+        .iter()
+        .map(|r| {
+            let mut a: Vec<Value> = r
+                .values
+                .iter()
+                .map(|v| Value::from(v.text.clone()))
+                .collect();
+            a.push(Value::from(r.phase.tag()));
+            Value::Array(a)
+        })
         .collect();
     let doc = json!({
         "schema": SCHEMA,
         "case": case.name,
         "description": case.description,
-        "model": model,
+        "model": model_map(&case.model),
+        "branch": sep.branch.name(),
         "digits": GOLDEN_DIGITS.to_string(),
         "provenance": {
             "program": format!("cylroll {}", env!("CARGO_PKG_VERSION")),
-            "method": "energy quadrature (tanh-sinh in theta - theta0) for t(theta); Newton inversion for theta(t); \
-                       bracketed roots for angles; every value verified at two working precisions",
+            "method": provenance(&sep),
         },
         "grid": {
             "t_end": rational_text(&end),
             "steps": case.steps.to_string(),
-            "note": "t_i = i t_end / steps; t_end is t_s rounded down to 3 significant digits",
+            "note": "t_i = i t_end / steps; t_end is the end of the motion (the first impact) rounded down to 3 significant digits",
         },
+        "start_mode": sep.start_mode.map(|m| m.tag()),
+        "end": sep.end.map(|e| e.name()),
+        "events": events,
         "scalars": scalars,
         "scalar_error_bounds": bounds,
         "notes": sep.notes,
-        "columns": TRAJECTORY_COLUMNS,
+        "columns": columns,
         "rows": rows_json,
     });
     let json =
         serde_json::to_string_pretty(&doc).map_err(|e| Error::not_physical(e.to_string()))? + "\n";
     let csv = csv_text(
-        &TRAJECTORY_COLUMNS,
-        rows.iter()
-            .map(|r| r.iter().map(|v| v.text.as_str()).collect()),
+        &columns,
+        traj.rows.iter().map(|r| {
+            let mut line: Vec<String> = r.values.iter().map(|v| v.text.clone()).collect();
+            line.push(r.phase.tag());
+            line
+        }),
     );
     Ok(Rendered { json, csv })
 }
@@ -267,7 +320,7 @@ fn scalar_maps<'a>(
 }
 
 /// A CSV with a header row.
-fn csv_text<'a>(columns: &[&str], rows: impl Iterator<Item = Vec<&'a str>>) -> String {
+fn csv_text(columns: &[&str], rows: impl Iterator<Item = Vec<String>>) -> String {
     let mut csv = columns.join(",");
     csv.push('\n');
     for line in rows {
@@ -275,100 +328,6 @@ fn csv_text<'a>(columns: &[&str], rows: impl Iterator<Item = Vec<&'a str>>) -> S
         csv.push('\n');
     }
     csv
-}
-
-/// The format tag of golden files with friction.
-pub const SCHEMA_FRICTION: &str = "cylroll-golden-friction/1";
-
-/// Renders a case with friction: the event list, the scalars of the
-/// separation and the first impact, and the rows of every phase on a grid
-/// from 0 to the impact time rounded down to 3 significant digits.
-fn render_friction(case: &Case, fr: &Friction) -> Result<Rendered> {
-    let sep = crate::motion::answer::separation(&case.model, fr, GOLDEN_DIGITS)?;
-    let t_imp = sep
-        .values
-        .iter()
-        .find(|v| v.name == "t_impact")
-        .ok_or_else(|| Error::not_physical("no impact"))?;
-    let end = grid_end(t_imp)?;
-    let times: Vec<Exact> = (0..=case.steps)
-        .map(|i| Exact::rational(&end * Rational::from((i, case.steps))))
-        .collect();
-    let traj = crate::motion::answer::trajectory(&case.model, fr, GOLDEN_DIGITS, &times)?;
-    let mut model = model_map(&case.model);
-    model.insert("mu_floor".into(), fr.floor.to_string().into());
-    model.insert("mu_contact".into(), fr.contact.to_string().into());
-    let (scalars, bounds) = scalar_maps(&sep.values);
-    let events: Vec<Value> = sep
-        .events
-        .iter()
-        .map(|e| {
-            json!({
-                "kind": e.kind.name(),
-                "contact": e.which.map(|w| w.name()),
-                "mode": e.mode,
-                "t": e.t.text,
-                "theta": e.theta.text,
-            })
-        })
-        .collect();
-    let mut columns: Vec<&str> = crate::motion::columns();
-    columns.push("mode");
-    let rows_json: Vec<Value> = traj
-        .rows
-        .iter()
-        .zip(&traj.modes)
-        .map(|(r, m)| {
-            let mut a: Vec<Value> = r.iter().map(|v| Value::from(v.text.clone())).collect();
-            a.push(Value::from(m.clone()));
-            Value::Array(a)
-        })
-        .collect();
-    let mut notes = sep.notes.clone();
-    notes.insert(
-        0,
-        format!("the first impact is on the {}", sep.impact_surface),
-    );
-    let doc = json!({
-        "schema": SCHEMA_FRICTION,
-        "case": case.name,
-        "description": case.description,
-        "model": model,
-        "digits": GOLDEN_DIGITS.to_string(),
-        "provenance": {
-            "program": format!("cylroll {}", env!("CARGO_PKG_VERSION")),
-            "method": "modes of the Coulomb contacts integrated by Chebyshev spectral quadrature in the angle \
-                       of the Lagrange-multiplier equations (theta_dot^2 from its linear ODE in theta), events \
-                       located as roots on the interpolants and corrected by the exact constraint forces, every \
-                       continuation tested for consistency, free flight in closed form; every value verified at \
-                       two working precisions with identical event sequences and the energy balance; the same \
-                       motion by Gragg-Bulirsch-Stoer extrapolation and Gauss-Legendre collocation agrees \
-                       (cylroll verify)",
-        },
-        "grid": {
-            "t_end": rational_text(&end),
-            "steps": case.steps.to_string(),
-            "note": "t_i = i t_end / steps; t_end is the first impact's time rounded down to 3 significant digits",
-        },
-        "start_mode": sep.start_mode,
-        "events": events,
-        "scalars": scalars,
-        "scalar_error_bounds": bounds,
-        "notes": notes,
-        "columns": columns,
-        "rows": rows_json,
-    });
-    let json =
-        serde_json::to_string_pretty(&doc).map_err(|e| Error::not_physical(e.to_string()))? + "\n";
-    let csv = csv_text(
-        &columns,
-        traj.rows.iter().zip(&traj.modes).map(|(r, m)| {
-            let mut line: Vec<&str> = r.iter().map(|v| v.text.as_str()).collect();
-            line.push(m);
-            line
-        }),
-    );
-    Ok(Rendered { json, csv })
 }
 
 pub use fileset::write_atomic;

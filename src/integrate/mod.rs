@@ -10,6 +10,7 @@
 //!   interpolants in θ), the default route of a dissipative mode.
 
 pub mod collocation;
+pub mod energy;
 pub mod gbs;
 pub mod solve;
 pub mod spectral;

@@ -39,6 +39,21 @@ pub enum Watch {
         /// The value.
         value: Float,
     },
+    /// r θ̇² − g cos θ − a sin θ (θ = q_th, θ̇ = q̇_th): the relative normal
+    /// acceleration of two centres at distance r along the line of centres
+    /// θ if the upper body fell freely and the lower one accelerated
+    /// horizontally by `a` (the free relative normal acceleration of a
+    /// contact; positive: the free motion separates).
+    FreeNormal {
+        /// Index of θ.
+        th: usize,
+        /// r.
+        r: Float,
+        /// g.
+        g: Float,
+        /// The lower body's horizontal acceleration.
+        a: Float,
+    },
     /// offset + r cos q_th: a height above the floor of a point at distance
     /// r along the line of centres θ = q_th (e.g. cylinder 2's lowest point).
     Height {
@@ -245,6 +260,12 @@ pub fn watch_value(w: &Watch, s: &Sample) -> Float {
             c * r + offset
         }
         Watch::Reach { i, value } => Float::with_val(s.q[*i].prec(), &s.q[*i] - value),
+        Watch::FreeNormal { th, r, g, a } => {
+            let p = s.q[*th].prec();
+            let (sn, cs) = s.q[*th].clone().sin_cos(Float::new(p));
+            let td2 = Float::with_val(p, s.v[*th].square_ref());
+            Float::with_val(p, r * &td2) - Float::with_val(p, g * &cs) - Float::with_val(p, a * &sn)
+        }
     }
 }
 
@@ -549,6 +570,13 @@ fn rate_of(sys: &mut System, w: &Watch, s: &Sample) -> Result<Float> {
         Watch::Height { th, r, .. } => {
             let sn = Float::with_val(p, s.q[*th].sin_ref());
             Ok(-(sn * r * &s.v[*th]))
+        }
+        Watch::FreeNormal { th, r, g, a } => {
+            // d/dt (r θ̇² − g cos θ − a sin θ) = θ̇ (2 r θ̈ + g sin θ − a cos θ)
+            let (sn, cs) = s.q[*th].clone().sin_cos(Float::new(p));
+            let inner = Float::with_val(p, r * &s.qdd[*th]) * 2u32 + Float::with_val(p, g * &sn)
+                - Float::with_val(p, a * &cs);
+            Ok(inner * &s.v[*th])
         }
         Watch::Multiplier(k) => Ok(lambda_rates(sys, s)?.swap_remove(*k)),
         Watch::Lin(terms) => {

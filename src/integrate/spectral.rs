@@ -236,7 +236,7 @@ fn reads_positions(w: &Watch) -> bool {
     match w {
         Watch::Coord(i) | Watch::Reach { i, .. } => *i != sy::th(0),
         Watch::Lin(terms) => terms.iter().any(|(w, _)| reads_positions(w)),
-        Watch::Height { th, .. } => *th != sy::th(0),
+        Watch::Height { th, .. } | Watch::FreeNormal { th, .. } => *th != sy::th(0),
         Watch::Multiplier(_) | Watch::Rate(_) => false,
     }
 }
@@ -1186,7 +1186,7 @@ mod tests {
     use crate::exact::Exact;
     use crate::integrate::solve::{self, Opts};
     use crate::mechanics::system::{SlipTerm, StackModel, Tangent};
-    use crate::model::{Contact, Model};
+    use crate::model::{Contact, Ideal};
 
     const P: u32 = 200;
 
@@ -1197,7 +1197,7 @@ mod tests {
     /// The two cylinders of the paper in a mode: `slips` lists the sliding
     /// contacts with the sign of their slip (μk = 3/10).
     fn system(floor: Floor, contact: Contact, slips: &[(Tangent, i32)]) -> System {
-        let model = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+        let model = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
         let mut sm = StackModel::from_model(&model);
         sm.floor = floor;
         sm.contacts[0] = contact;

@@ -8,7 +8,7 @@
 
 use super::{Reduced, PSI2, X1};
 use crate::error::Result;
-use crate::model::{Contact, Floor, Model};
+use crate::model::{Contact, Floor, Ideal};
 use rug::{Assign, Float, Rational};
 
 /// Constants of a model at one precision.
@@ -101,7 +101,7 @@ pub struct Forces {
 
 impl Dyn {
     /// Constants of `model` (which must move towards growing θ) at `prec` bits.
-    pub fn new(model: &Model, red: &Reduced, prec: u32) -> Result<Self> {
+    pub fn new(model: &Ideal, red: &Reduced, prec: u32) -> Result<Self> {
         let f = |q: &rug::Rational| Float::with_val(prec, q);
         let p = model.params();
         let st = model.start();
@@ -117,12 +117,10 @@ impl Dyn {
         let gr = Float::with_val(prec, &g / &r);
         let r1 = f(&p.r1);
         let r2 = f(&p.r2);
-        let psi0 = match model.contact() {
-            // the paper's holonomic r2 φ2 = r1(φ1 − θ) with φ1(0) = 0, φ2 = ψ2 + θ
-            Contact::Roll => -Float::with_val(prec, &r * &th0) / &r2,
-            // φ2(0) = 0: the point of cylinder 2 touching cylinder 1 at t = 0
-            Contact::Slip => Float::with_val(prec, -&th0),
-        };
+        // φ2 = ψ2 + θ starts at 0 for every contact model (ψ2(0) = −θ0), as
+        // φ1 does; a rolling contact then reads r2 φ2 = r1(φ1 − θ + θ0), the
+        // paper's eq. 2 with its constant (the paper's φ2 is φ2 − r1 θ0/r2)
+        let psi0 = Float::with_val(prec, -&th0);
         Ok(Dyn {
             prec,
             floor: model.floor(),

@@ -31,7 +31,7 @@ pub mod kkt;
 pub mod system;
 
 use crate::error::{Error, Result};
-use crate::model::{Contact, Floor, Model};
+use crate::model::{Contact, Floor, Ideal};
 use nalgebra::{DMatrix, DVector};
 use rug::Rational;
 
@@ -115,7 +115,7 @@ fn invert(c: &DMatrix<Rational>) -> Result<DMatrix<Rational>> {
 
 impl Reduced {
     /// Derives the reduced dynamics of `model` (exact).
-    pub fn new(model: &Model) -> Result<Self> {
+    pub fn new(model: &Ideal) -> Result<Self> {
         let p = model.params();
         let rr = p.r();
         let i1 = Rational::from(&p.k1 * &p.m1) * &p.r1 * &p.r1;
@@ -242,7 +242,7 @@ mod tests {
     #[test]
     fn roll_roll_matches_eq_17_and_22() {
         // identical solid cylinders: A = 1/3, K = 1 + k2 − A(c − k2)²
-        let m = Model::paper_default(Exact::zero());
+        let m = Ideal::paper_default(Exact::zero());
         let red = Reduced::new(&m).unwrap();
         // K = 3/2 − (c² − c + 1/4)/3 = 17/12 + c/3 − c²/3
         assert_eq!(red.q, [q(17, 12), q(1, 3), q(-1, 3)]);
@@ -256,7 +256,7 @@ mod tests {
     fn fixed_roll_is_a_rolling_cylinder_on_a_log() {
         let mut p = Params::identical_solid();
         p.k2 = q(2, 5);
-        let m = Model::new(p, Floor::Fixed, Contact::Roll, Start::rest(Exact::zero())).unwrap();
+        let m = Ideal::new(p, Floor::Fixed, Contact::Roll, Start::rest(Exact::zero())).unwrap();
         let red = Reduced::new(&m).unwrap();
         assert_eq!(red.q, [q(7, 5), q(0, 1), q(0, 1)]);
         assert!(red.cyclic.is_empty());
@@ -268,7 +268,7 @@ mod tests {
         let mut p = Params::identical_solid();
         p.k1 = q(0, 1);
         p.k2 = q(0, 1);
-        let m = Model::new(p, Floor::Slip, Contact::Slip, Start::rest(Exact::zero())).unwrap();
+        let m = Ideal::new(p, Floor::Slip, Contact::Slip, Start::rest(Exact::zero())).unwrap();
         let red = Reduced::new(&m).unwrap();
         assert_eq!(red.cyclic, vec!["x1"]);
         // eq. (40): K = (m1 + m2 sin²θ)/(m1+m2) = 1 − c²/2

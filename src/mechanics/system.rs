@@ -44,7 +44,7 @@
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::model::{Contact, Floor, Model};
+use crate::model::{Contact, Floor, Ideal};
 use rug::ops::NegAssign;
 use rug::{Assign, Float, Rational};
 
@@ -112,8 +112,8 @@ impl StackModel {
         self.m.len()
     }
 
-    /// The two-cylinder stack of a [`Model`].
-    pub fn from_model(model: &Model) -> Self {
+    /// The two-cylinder stack of a [`Ideal`].
+    pub fn from_model(model: &Ideal) -> Self {
         let p = model.params();
         let st = model.start();
         StackModel {
@@ -558,10 +558,9 @@ impl System {
     }
 
     /// The initial state (q0, q̇0) of `model`: x1 = φ1 = 0, y1 = r1,
-    /// r_j = ρ_j + ρ_{j+1}, θ_j = θ0_j; a rolling contact's spin angle makes
-    /// the rolling constraint's constant 0 (for n = 2: r2 φ2 = r1(φ1 − θ),
-    /// the paper's eq. 2), a slipping one starts with φ_{j+1} = ψ_{j+1} + θ_j
-    /// = 0. Velocities: θ̇_j = θ̇0_j, the momenta of the cyclic directions
+    /// r_j = ρ_j + ρ_{j+1}, θ_j = θ0_j, and every φ_{j+1} = ψ_{j+1} + θ_j
+    /// = 0 (whatever the contact: a rolling contact's constraint carries the
+    /// constant; for n = 2, r2 φ2 = r1(φ1 − θ + θ0)). Velocities: θ̇_j = θ̇0_j, the momenta of the cyclic directions
     /// equal to those of the state with every θ̇ = 0 rolling at ω0.
     pub fn initial_state(&mut self, model: &StackModel) -> Result<(Vec<Float>, Vec<Float>)> {
         let p = self.prec;
@@ -569,21 +568,15 @@ impl System {
         let nq = self.nq();
         let mut q = vec![Float::new(p); nq];
         q[Y1].assign(&self.rho[0]);
-        let mut ang = Float::new(p); // counter-clockwise angle of the cylinder below (−φ1)
         for j in 0..n - 1 {
             let t0 = model.theta0[j].to_float(p);
             let rj = Float::with_val(p, &self.rho[j] + &self.rho[j + 1]);
-            let a = match self.contacts[j] {
-                Contact::Roll => {
-                    let s = Float::with_val(p, &rj * &t0) + Float::with_val(p, &self.rho[j] * &ang);
-                    -s / &self.rho[j + 1]
-                }
-                Contact::Slip => Float::with_val(p, -&t0),
-            };
+            // φ_{j+1} = ψ_{j+1} + θ_j starts at 0 for every contact (a
+            // rolling contact's constraint carries the constant)
+            let a = Float::with_val(p, -&t0);
             q[psi(j)].assign(&a);
             q[th(j)].assign(&t0);
             q[rr(j)].assign(&rj);
-            ang = a;
         }
         // reference velocity: every θ̇ = 0, everything rolling at ω0
         let w0 = Float::with_val(p, &model.omega0);

@@ -3,7 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::model::{Contact, Floor, Model, Params, Start};
+use crate::model::{Law, Model, Params, Start, Which};
 use rug::Rational;
 use std::collections::BTreeMap;
 
@@ -23,84 +23,63 @@ pub const MODEL_KEYS: [&str; 12] = [
     "omega0",
 ];
 
-/// The friction keys (`inf`, a number >= 0, or `S,K`), read by
-/// [`friction_from_pairs`].
+/// The friction keys: `inf`, a number >= 0, or `S,K` (static, kinetic).
 pub const FRICTION_KEYS: [&str; 2] = ["mu_floor", "mu_contact"];
 
-/// The friction laws of key/value pairs (`roll` limits where absent).
+/// The law of one contact from its keyword (`floor` / `contact`: roll,
+/// slip, fixed, coulomb) and its coefficient (`mu_floor` / `mu_contact`),
+/// either of which may be absent: a coefficient applies to a rolling (or
+/// `coulomb`) contact; `0` agrees with `slip`, `inf` with `roll`; a held
+/// cylinder has no floor coefficient (`none` is accepted, as echoed).
 ///
-/// Errors: a coefficient that does not parse or is out of range.
-pub fn friction_from_pairs(vals: &Pairs) -> Result<crate::motion::Friction> {
-    use crate::motion::Law;
-    let law = |k: &str| -> Result<Law> {
-        match vals.get(k) {
-            None => Ok(Law::Roll),
-            Some(s) => Law::parse(k, s),
-        }
+/// Errors: a keyword or coefficient that does not parse; a coefficient
+/// that contradicts the keyword; `coulomb` without a coefficient.
+pub fn law_of(vals: &Pairs, w: Which) -> Result<Law> {
+    let kw_key = w.name();
+    let mu_key = w.mu_key();
+    let kw = vals.get(kw_key).map(|s| s.trim().to_ascii_lowercase());
+    let mu = vals.get(mu_key);
+    let coulomb_kw = kw.as_deref() == Some("coulomb");
+    let base = match kw.as_deref() {
+        None | Some("coulomb") => None,
+        Some(_) => Some(Law::parse_keyword(w, &vals[kw_key])?),
     };
-    Ok(crate::motion::Friction {
-        floor: law("mu_floor")?,
-        contact: law("mu_contact")?,
-    })
-}
-
-/// [`friction_from_pairs`] checked against the model's contacts: a
-/// coefficient given for a fixed floor, or `inf` (rolling) given for a
-/// contact the model declares frictionless, contradicts the model.
-///
-/// Errors: as [`friction_from_pairs`], and those contradictions.
-pub fn friction_for(vals: &Pairs, model: &Model) -> Result<crate::motion::Friction> {
-    use crate::motion::Law;
-    let fr = friction_from_pairs(vals)?;
-    if let Some(v) = vals.get("mu_floor") {
-        if model.floor() == Floor::Fixed {
+    let Some(mu_text) = mu else {
+        if coulomb_kw {
             return Err(Error::invalid(
-                "mu_floor",
-                v,
-                "a fixed floor (cylinder 1 held) has no floor contact: drop mu_floor",
+                kw_key,
+                "coulomb",
+                format!("needs its coefficient: give {mu_key} (a number >= 0 or S,K)"),
             ));
         }
-        if model.floor() == Floor::Slip && fr.floor == Law::Roll {
-            return Err(Error::invalid(
-                "mu_floor",
-                v,
-                "inf is a rolling floor, which contradicts floor = slip",
-            ));
+        return Ok(base.unwrap_or(Law::Rolling));
+    };
+    if base == Some(Law::Held) {
+        if mu_text.trim().eq_ignore_ascii_case("none") {
+            return Ok(Law::Held);
         }
+        return Err(Error::invalid(
+            mu_key,
+            mu_text,
+            "a fixed floor (cylinder 1 held) has no floor contact: drop mu_floor",
+        ));
     }
-    if let Some(v) = vals.get("mu_contact") {
-        if model.contact() == Contact::Slip && fr.contact == Law::Roll {
-            return Err(Error::invalid(
-                "mu_contact",
-                v,
-                "inf is a rolling contact, which contradicts contact = slip",
-            ));
-        }
+    let law = Law::parse_mu(mu_key, mu_text)?;
+    match (&base, &law) {
+        (Some(Law::Frictionless), Law::Frictionless) | (None | Some(Law::Rolling), _) => Ok(law),
+        (Some(Law::Frictionless), _) => Err(Error::invalid(
+            mu_key,
+            mu_text,
+            format!("contradicts {kw_key} = slip (frictionless, mu = 0): drop one of them"),
+        )),
+        _ => Ok(law),
     }
-    Ok(fr)
 }
 
 /// Keys of a golden case file besides the model's; a `--params` file may
 /// carry them (so that every golden case is also a parameter file) and they
 /// are ignored there.
 pub const CASE_KEYS: [&str; 2] = ["description", "steps"];
-
-/// The model and its friction laws from key/value pairs, as every entry
-/// point builds them (flags, `--params`, golden cases, the Python package):
-/// the laws checked against the model, the model made the equal ideal one
-/// where a law is an ideal limit, and the friction `None` when no contact has
-/// a finite coefficient.
-///
-/// Errors: as [`model_from_pairs`], [`friction_for`] and
-/// [`crate::motion::check_laws`].
-pub fn model_and_friction(vals: &Pairs) -> Result<(Model, Option<crate::motion::Friction>)> {
-    let model = model_from_pairs(vals)?;
-    let fr = friction_for(vals, &model)?;
-    crate::motion::check_laws(&model, &fr)?;
-    let eff = crate::motion::effective_model(&model, &fr)?;
-    let coulomb = fr.floor.is_coulomb() || fr.contact.is_coulomb();
-    Ok((eff, coulomb.then_some(fr)))
-}
 
 /// Key → exact text.
 pub type Pairs = BTreeMap<String, String>;
@@ -210,9 +189,10 @@ pub fn read_toml(path: &std::path::Path, what: &str) -> Result<toml::Table> {
     })
 }
 
-/// Builds and validates a model from key/value pairs; missing keys take the
-/// defaults (identical solid cylinders m = r = g = 1, k = 1/2, both contacts
-/// rolling, from rest at θ0 = 0).
+/// Builds and validates a model from key/value pairs, as every entry point
+/// builds it (flags, `--params`, golden cases, the Python package); missing
+/// keys take the defaults (identical solid cylinders m = r = g = 1,
+/// k = 1/2, both contacts rolling, from rest at θ0 = 0).
 pub fn model_from_pairs(vals: &Pairs) -> Result<Model> {
     let get = |k: &str| vals.get(k).cloned();
     let num = |k: &str, default: Rational| -> Result<Rational> {
@@ -231,8 +211,8 @@ pub fn model_from_pairs(vals: &Pairs) -> Result<Model> {
         k2: num("k2", d.k2)?,
         g: num("g", d.g)?,
     };
-    let floor: Floor = get("floor").as_deref().unwrap_or("roll").parse()?;
-    let contact: Contact = get("contact").as_deref().unwrap_or("roll").parse()?;
+    let floor = law_of(vals, Which::Floor)?;
+    let contact = law_of(vals, Which::Contact)?;
     let theta0 = match get("theta0") {
         None => Exact::zero(),
         Some(s) => Exact::parse("theta0", &s, true)?,

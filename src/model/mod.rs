@@ -1,10 +1,19 @@
-//! The model: parameters, contact models and the start, all exact.
+//! The model: parameters, contact laws and the start, all exact.
 //!
-//! A [`Model`] is validated on construction ([`Model::new`]); every other part
-//! of the crate may assume its invariants (positive masses, radii and g,
+//! A [`Model`] is what a user asks about: the parameters, one [`Law`] per
+//! contact (rolling, frictionless, Coulomb, or a held lower cylinder) and
+//! the start. An [`Ideal`] is the same system with a fixed constraint at
+//! each contact ([`Floor`], [`Contact`]): the model of a *conservative
+//! phase*, in which every contact rolls, sticks or is frictionless, so that
+//! the energy integral holds and the motion reduces to one degree of
+//! freedom. Both are validated on construction; every other part of the
+//! crate may assume their invariants (positive masses, radii and g,
 //! non-negative inertia factors, a start inside the supported range).
 
 pub mod input;
+pub mod law;
+
+pub use law::{Law, Which};
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
@@ -13,7 +22,8 @@ use serde::Serialize;
 use std::fmt;
 use std::str::FromStr;
 
-/// How cylinder 1 meets the floor.
+/// The constraint at the floor in a conservative phase: how cylinder 1
+/// meets the floor while its contact does not change state.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Floor {
@@ -25,7 +35,7 @@ pub enum Floor {
     Fixed,
 }
 
-/// How cylinder 2 meets cylinder 1.
+/// The constraint between the cylinders in a conservative phase.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Contact {
@@ -153,9 +163,10 @@ pub const VARIANTS: [(Floor, Contact); 6] = [
     (Floor::Fixed, Contact::Slip),
 ];
 
-/// A validated model: parameters, contact models and start.
+/// A validated model of a conservative phase: parameters, the constraint
+/// at each contact, and the start (the paper's contact models).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Model {
+pub struct Ideal {
     params: Params,
     floor: Floor,
     contact: Contact,
@@ -165,61 +176,68 @@ pub struct Model {
 /// Upper bound on |θ0|: the start must have the upper centre above the lower one.
 const THETA0_RANGE: &str = "must satisfy -pi/2 < theta0 < pi/2";
 
-impl Model {
+/// The checks every model shares: m1, m2, r1, r2, g > 0; k1, k2 ≥ 0;
+/// |θ0| < π/2; θ0·θ̇0 ≥ 0; ω0 = 0 when cylinder 1 is `held`.
+fn validate(params: &Params, start: &Start, held: bool) -> Result<()> {
+    for (name, v) in [
+        ("m1", &params.m1),
+        ("m2", &params.m2),
+        ("r1", &params.r1),
+        ("r2", &params.r2),
+        ("g", &params.g),
+    ] {
+        if *v <= 0 {
+            return Err(Error::invalid(
+                name,
+                crate::exact::rational_text(v),
+                "must be > 0",
+            ));
+        }
+    }
+    for (name, v) in [("k1", &params.k1), ("k2", &params.k2)] {
+        if *v < 0 {
+            return Err(Error::invalid(
+                name,
+                crate::exact::rational_text(v),
+                "must be >= 0 (k > 1 is a bobbin)",
+            ));
+        }
+    }
+    // |θ0| < π/2: compare with π/2 at a safe precision (θ0 is exact).
+    let th = start.theta0.to_float(256);
+    let half_pi = rug::Float::with_val(256, rug::float::Constant::Pi) / 2u32;
+    if th.clone().abs() >= half_pi
+        || start.theta0.coef.clone().abs() >= Rational::from((1, 2)) && start.theta0.times_pi
+    {
+        return Err(Error::invalid("theta0", &start.theta0, THETA0_RANGE));
+    }
+    if start.theta0.signum() * (start.thetadot0.cmp0() as i32) < 0 {
+        return Err(Error::invalid(
+            "thetadot0",
+            crate::exact::rational_text(&start.thetadot0),
+            "must not point towards the top: theta0*thetadot0 >= 0 \
+         (a start that climbs back over the top is not supported)",
+        ));
+    }
+    if held && start.omega0 != 0 {
+        return Err(Error::invalid(
+            "omega0",
+            crate::exact::rational_text(&start.omega0),
+            "must be 0 when the floor is fixed (cylinder 1 cannot roll)",
+        ));
+    }
+    Ok(())
+}
+
+impl Ideal {
     /// Validates and builds a model.
     ///
     /// Errors: [`Error::InvalidParameter`] naming the parameter and its range
     /// (m1, m2, r1, r2, g > 0; k1, k2 ≥ 0; |θ0| < π/2; θ0·θ̇0 ≥ 0; ω0 = 0 when
     /// the floor is `fixed`).
     pub fn new(params: Params, floor: Floor, contact: Contact, start: Start) -> Result<Self> {
-        for (name, v) in [
-            ("m1", &params.m1),
-            ("m2", &params.m2),
-            ("r1", &params.r1),
-            ("r2", &params.r2),
-            ("g", &params.g),
-        ] {
-            if *v <= 0 {
-                return Err(Error::invalid(
-                    name,
-                    crate::exact::rational_text(v),
-                    "must be > 0",
-                ));
-            }
-        }
-        for (name, v) in [("k1", &params.k1), ("k2", &params.k2)] {
-            if *v < 0 {
-                return Err(Error::invalid(
-                    name,
-                    crate::exact::rational_text(v),
-                    "must be >= 0 (k > 1 is a bobbin)",
-                ));
-            }
-        }
-        // |θ0| < π/2: compare with π/2 at a safe precision (θ0 is exact).
-        let th = start.theta0.to_float(256);
-        let half_pi = rug::Float::with_val(256, rug::float::Constant::Pi) / 2u32;
-        if th.clone().abs() >= half_pi
-            || start.theta0.coef.clone().abs() >= Rational::from((1, 2)) && start.theta0.times_pi
-        {
-            return Err(Error::invalid("theta0", &start.theta0, THETA0_RANGE));
-        }
-        if start.theta0.signum() * (start.thetadot0.cmp0() as i32) < 0 {
-            return Err(Error::invalid(
-                "thetadot0",
-                crate::exact::rational_text(&start.thetadot0),
-                "must not point towards the top: theta0*thetadot0 >= 0 \
-                 (a start that climbs back over the top is not supported)",
-            ));
-        }
-        if floor == Floor::Fixed && start.omega0 != 0 {
-            return Err(Error::invalid(
-                "omega0",
-                crate::exact::rational_text(&start.omega0),
-                "must be 0 when the floor is fixed (cylinder 1 cannot roll)",
-            ));
-        }
-        Ok(Model {
+        validate(&params, &start, floor == Floor::Fixed)?;
+        Ok(Ideal {
             params,
             floor,
             contact,
@@ -230,7 +248,7 @@ impl Model {
     /// The paper's main case: identical solid cylinders, both contacts rolling,
     /// from rest at θ0.
     pub fn paper_default(theta0: Exact) -> Self {
-        Model::new(
+        Ideal::new(
             Params::identical_solid(),
             Floor::Roll,
             Contact::Roll,
@@ -280,7 +298,7 @@ impl Model {
     /// The mirror image (x → −x): θ0, θ̇0, ω0 change sign. The motion of the
     /// mirror is the mirror of the motion, so the oracle computes with θ growing.
     pub fn mirrored(&self) -> Self {
-        Model {
+        Ideal {
             params: self.params.clone(),
             floor: self.floor,
             contact: self.contact,
@@ -331,5 +349,191 @@ impl Model {
             ("thetadot0", t(&self.start.thetadot0)),
             ("omega0", t(&self.start.omega0)),
         ]
+    }
+}
+
+/// A validated model: parameters, the law of each contact, and the start.
+///
+/// The ideal contact models of the paper are the limits of Coulomb
+/// friction (rolling μ = ∞, frictionless μ = 0), so every model — ideal or
+/// not — is one `Model`, and every question about it has one answer
+/// ([`crate::oracle`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Model {
+    params: Params,
+    floor: Law,
+    contact: Law,
+    start: Start,
+}
+
+impl Model {
+    /// Validates and builds a model.
+    ///
+    /// Errors: [`Error::InvalidParameter`] naming the parameter: those of
+    /// [`Ideal::new`]; a contact between the cylinders that is `held`; a
+    /// spin that sliding friction would turn without inertia (k2 = 0 under
+    /// a contact with kinetic friction; k1 = 0 where the floor can slide and
+    /// a contact has kinetic friction).
+    pub fn new(params: Params, floor: Law, contact: Law, start: Start) -> Result<Self> {
+        validate(&params, &start, floor == Law::Held)?;
+        if contact == Law::Held {
+            return Err(Error::invalid(
+                "contact",
+                "fixed",
+                "only cylinder 1 can be held (by the floor): expected roll, slip or a \
+                 friction coefficient",
+            ));
+        }
+        let kinetic = |l: &Law| l.kinetic().is_some_and(|k| k > 0);
+        // cylinder 1's spin is free of the floor only where the floor can slide
+        let floor_slides = matches!(floor, Law::Frictionless | Law::Coulomb { .. });
+        if params.k1 == 0 && floor_slides && (kinetic(&floor) || kinetic(&contact)) {
+            return Err(Error::invalid(
+                "k1",
+                "0",
+                "must be > 0 with finite friction (a spin without inertia cannot slide under friction)",
+            ));
+        }
+        if params.k2 == 0 && kinetic(&contact) {
+            return Err(Error::invalid(
+                "k2",
+                "0",
+                "must be > 0 with finite friction (a spin without inertia cannot slide under friction)",
+            ));
+        }
+        Ok(Model {
+            params,
+            floor,
+            contact,
+            start,
+        })
+    }
+
+    /// The model of an ideal (paper) contact model: `roll` is
+    /// [`Law::Rolling`], `slip` [`Law::Frictionless`], `fixed` [`Law::Held`].
+    pub fn from_ideal(ideal: &Ideal) -> Self {
+        Model {
+            params: ideal.params.clone(),
+            floor: match ideal.floor {
+                Floor::Roll => Law::Rolling,
+                Floor::Slip => Law::Frictionless,
+                Floor::Fixed => Law::Held,
+            },
+            contact: match ideal.contact {
+                Contact::Roll => Law::Rolling,
+                Contact::Slip => Law::Frictionless,
+            },
+            start: ideal.start.clone(),
+        }
+    }
+
+    /// The paper's main case: identical solid cylinders, both contacts
+    /// rolling, from rest at θ0.
+    pub fn paper_default(theta0: Exact) -> Self {
+        Model::from_ideal(&Ideal::paper_default(theta0))
+    }
+
+    /// Parameters.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+    /// The law at the floor.
+    pub fn floor(&self) -> &Law {
+        &self.floor
+    }
+    /// The law between the cylinders.
+    pub fn contact(&self) -> &Law {
+        &self.contact
+    }
+    /// The law of one contact.
+    pub fn law(&self, w: Which) -> &Law {
+        match w {
+            Which::Floor => &self.floor,
+            Which::Contact => &self.contact,
+        }
+    }
+    /// Initial conditions.
+    pub fn start(&self) -> &Start {
+        &self.start
+    }
+
+    /// The same model with other laws (validated again).
+    ///
+    /// Errors: as [`Model::new`].
+    pub fn with_laws(&self, floor: Law, contact: Law) -> Result<Self> {
+        Model::new(self.params.clone(), floor, contact, self.start.clone())
+    }
+
+    /// Whether some contact has Coulomb friction.
+    pub fn has_coulomb(&self) -> bool {
+        self.floor.is_coulomb() || self.contact.is_coulomb()
+    }
+
+    /// The ideal model equal to this one when no contact has Coulomb
+    /// friction (`None` otherwise).
+    pub fn ideal(&self) -> Option<Ideal> {
+        (!self.has_coulomb()).then(|| self.sticking())
+    }
+
+    /// The conservative model of the phase in which every Coulomb contact
+    /// sticks (rolls): the motion from the start as long as no contact
+    /// slips.
+    pub fn sticking(&self) -> Ideal {
+        let floor = match self.floor {
+            Law::Held => Floor::Fixed,
+            Law::Frictionless => Floor::Slip,
+            Law::Rolling | Law::Coulomb { .. } => Floor::Roll,
+        };
+        let contact = match self.contact {
+            Law::Frictionless => Contact::Slip,
+            _ => Contact::Roll,
+        };
+        Ideal {
+            params: self.params.clone(),
+            floor,
+            contact,
+            start: self.start.clone(),
+        }
+    }
+
+    /// Whether the motion starts from rest exactly at the top (θ0 = θ̇0 = 0):
+    /// the paper's limiting case, where every time is infinite.
+    pub fn starts_at_equilibrium(&self) -> bool {
+        self.start.theta0.is_zero() && self.start.thetadot0 == 0
+    }
+
+    /// The sign of the motion: +1 if θ grows, −1 if it falls to the left.
+    pub fn direction(&self) -> i32 {
+        self.sticking().direction()
+    }
+
+    /// A one-line description for messages.
+    pub fn describe(&self) -> String {
+        let mut s = format!(
+            "floor={} contact={}",
+            self.floor.mu_text(),
+            self.contact.mu_text()
+        );
+        let ideal = self.sticking().describe();
+        if let Some(rest) = ideal.split_once(" m1=").map(|(_, r)| r) {
+            s.push_str(" m1=");
+            s.push_str(rest);
+        }
+        s
+    }
+
+    /// The model as (key, exact text) pairs, in a stable order, for records:
+    /// `floor`, `contact` (roll, slip, fixed, coulomb), `mu_floor`,
+    /// `mu_contact` (inf, 0, μ or μs,μk; `none` for a held cylinder), then
+    /// the parameters and the start.
+    pub fn echo(&self) -> Vec<(&'static str, String)> {
+        let mut out = vec![
+            ("floor", self.floor.keyword().to_string()),
+            ("contact", self.contact.keyword().to_string()),
+            ("mu_floor", self.floor.mu_text()),
+            ("mu_contact", self.contact.mu_text()),
+        ];
+        out.extend(self.sticking().echo().into_iter().skip(2));
+        out
     }
 }

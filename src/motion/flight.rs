@@ -17,31 +17,15 @@
 //! positive — otherwise the free motion would interpenetrate and the
 //! rigid-body model has no continuation (an error, never a silent number).
 
-use super::point::TwoState;
-use super::{Ctx, EventRec, Kind, Law, Mode, Point, State, Which};
+use super::ctx::Ctx;
+use super::mode::{Kind, Mode, Phase, State, Surface};
+use super::point::{Point, TwoState};
+use super::EventRec;
 use crate::error::{Error, Result};
 use crate::integrate::solve::Sample;
 use crate::mechanics::system::{self as sy, System};
+use crate::model::Which;
 use rug::Float;
-
-/// Where the first impact happens.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Surface {
-    /// Cylinder 2 lands on the floor.
-    Floor,
-    /// Cylinder 2 touches cylinder 1 again.
-    Cylinder,
-}
-
-impl Surface {
-    /// `floor` or `cylinder`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Surface::Floor => "floor",
-            Surface::Cylinder => "cylinder",
-        }
-    }
-}
 
 /// The state just before the first impact.
 #[derive(Debug, Clone)]
@@ -71,7 +55,7 @@ pub struct Impact {
 impl Impact {
     /// Cylinder 2 landing on the floor while still touching cylinder 1 (the
     /// state `s` of a closed mode, `at` its columns).
-    pub(super) fn in_contact(sys: &System, s: &Sample, at: &Point) -> Impact {
+    pub fn in_contact(sys: &System, s: &Sample, at: &Point) -> Impact {
         let p = sys.prec;
         let th = &s.q[sy::th(0)];
         let (sn, cs) = th.clone().sin_cos(Float::new(p));
@@ -79,7 +63,7 @@ impl Impact {
         let thd = &s.v[sy::th(0)];
         let vx1 = Float::with_val(p, &s.v[sy::X1]);
         Impact {
-            surface: Surface::Floor,
+            surface: Surface::FloorInContact,
             t: at.t.clone(),
             x1: at.x1.clone(),
             x2: at.x2.clone(),
@@ -90,32 +74,6 @@ impl Impact {
             vy2: -(Float::with_val(p, r * &sn) * thd),
             psi2_dot: Float::with_val(p, &s.v[sy::psi(0)]),
         }
-    }
-}
-
-/// The acceleration ẍ1 of cylinder 1 alone on its floor at (q, q̇).
-pub(super) fn floor_accel(
-    fixed: bool,
-    law: &Law,
-    mu_k: &Float,
-    sys: &System,
-    q: &[Float],
-    v: &[Float],
-    sticking: bool,
-) -> Float {
-    let p = sys.prec;
-    if fixed || sticking || !law.is_coulomb() {
-        return Float::new(p);
-    }
-    let s1 = sys.slip_speed(crate::mechanics::system::Tangent::Floor, q, v);
-    if s1.is_zero() {
-        return Float::new(p);
-    }
-    let a = Float::with_val(p, mu_k * &sys.g);
-    if s1.is_sign_positive() {
-        -a
-    } else {
-        a
     }
 }
 
@@ -160,7 +118,7 @@ impl Flight {
     ///
     /// Errors: a free motion that would interpenetrate at once, a cylinder 2
     /// already on the floor, an undecidable leading term.
-    pub(super) fn new(ctx: &Ctx, sys: &System, mode: Mode, s: &Sample, at: &Point) -> Result<Self> {
+    pub fn new(ctx: &Ctx, sys: &System, mode: Mode, s: &Sample, at: &Point) -> Result<Self> {
         let p = sys.prec;
         let f = |x: &Float| Float::with_val(p, x);
         let q = &s.q;
@@ -184,16 +142,9 @@ impl Flight {
         let s1 = f(&at.s1);
         // a floor whose slip ends at the separation itself rolls on
         let tiny = Float::with_val(p, Float::with_val(p, &g * &r).sqrt()) * &ctx.rel_tiny;
-        let sticking = mode.floor == State::Stick || Float::with_val(p, s1.abs_ref()) <= tiny;
-        let mut a1 = floor_accel(
-            ctx.fixed,
-            &ctx.laws.floor,
-            &ctx.mu_k[0],
-            sys,
-            q,
-            v,
-            sticking,
-        );
+        let sticking = matches!(mode.floor, State::Stick | State::Held)
+            || Float::with_val(p, s1.abs_ref()) <= tiny;
+        let mut a1 = ctx.floor_accel(sys, q, v, sticking);
         let mut al1 = Float::new(p);
         let mut tau_stick = None;
         let mu_k_m1g = Float::with_val(p, &ctx.mu_k[0] * &m1) * &g;
@@ -204,7 +155,7 @@ impl Flight {
             let tau = Float::with_val(p, s1.abs_ref()) / Float::with_val(p, sdot.abs_ref());
             tau_stick = Some(tau);
         }
-        if ctx.fixed {
+        if ctx.held {
             a1 = Float::new(p);
         }
         // landing on the floor: y2 + vy2 τ − g τ²/2 = r2
@@ -225,7 +176,7 @@ impl Flight {
             i2,
             r1: r1.clone(),
             g: g.clone(),
-            fixed: ctx.fixed,
+            fixed: ctx.held,
             x1,
             vx1,
             phi1: f(&q[sy::PHI1]),
@@ -242,7 +193,11 @@ impl Flight {
             psi2: f(&q[sy::psi(0)]),
             w2: f(&v[sy::psi(0)]),
             work: f(&s.work),
-            mode_floor: if sticking { State::Stick } else { mode.floor },
+            mode_floor: if sticking && mode.floor != State::Held {
+                State::Stick
+            } else {
+                mode.floor
+            },
             impact: Impact {
                 surface: Surface::Floor,
                 t: Float::new(p),
@@ -409,7 +364,7 @@ impl Flight {
     }
 
     /// Events inside the flight before the impact: the floor's slip ending.
-    pub(super) fn events(&self) -> Vec<EventRec> {
+    pub fn events(&self) -> Vec<EventRec> {
         let p = self.p;
         let mut out = Vec::new();
         if let Some(ts) = &self.tau_stick {
@@ -418,9 +373,12 @@ impl Flight {
                 out.push(EventRec {
                     kind: Kind::Stick,
                     which: Some(Which::Floor),
-                    mode: None,
+                    phase: Some(Phase::Flight {
+                        floor: State::Stick,
+                    }),
                     at: self.point(&t),
                     t_err: Float::new(p),
+                    theta_err: Float::new(p),
                 });
             }
         }
@@ -459,6 +417,7 @@ impl Flight {
         let theta_ddot = (n2 - Float::with_val(p, &theta_dot * &rad) * 2u32) / &dd;
         let psi2 = Float::with_val(p, &self.w2 * &tau) + &self.psi2;
         let phi2 = Float::with_val(p, &psi2 + &theta);
+        let phi2_dot = Float::with_val(p, &self.w2 + &theta_dot);
         // floor force and slip
         let (f1, s1, work) = if self.fixed {
             (Float::new(p), Float::new(p), self.work.clone())
@@ -489,6 +448,21 @@ impl Flight {
             (Float::new(p), s1, self.work.clone())
         };
         let n1 = Float::with_val(p, &self.m1 * &self.g);
+        let floor = if self.fixed {
+            State::Held
+        } else if slipping || (self.tau_stick.is_none() && self.mode_floor != State::Stick) {
+            self.mode_floor
+        } else {
+            State::Stick
+        };
+        let bit = Point::zero_bit;
+        let mut zero = bit("F21") | bit("N12") | bit("s12");
+        if matches!(floor, State::Stick | State::Held) {
+            zero |= bit("s1");
+        }
+        if self.work.is_zero() && self.tau_stick.is_none() {
+            zero |= bit("work");
+        }
         // energy T + V
         let half = |m: &Float, v: &Float| {
             Float::with_val(p, m * Float::with_val(p, v.square_ref())) / 2u32
@@ -510,6 +484,11 @@ impl Flight {
                 x1,
                 x2,
                 y2,
+                x1_dot: vx1,
+                phi1_dot: w1,
+                x2_dot: self.vx2.clone(),
+                y2_dot: vy2,
+                phi2_dot,
                 f1,
                 n1,
                 f21: Float::new(p),
@@ -519,7 +498,9 @@ impl Flight {
             s12: Float::new(p),
             work,
             energy,
-            mode: None,
+            phase: Phase::Flight { floor },
+            err: None,
+            exact_zero: zero,
         }
     }
 }

@@ -1,165 +1,58 @@
-//! Finite Coulomb friction: the motion as a sequence of modes separated by
-//! events, through slipping to separation, and the free flight to the first
-//! impact.
+//! One hybrid motion for every contact law: a sequence of phases — a mode
+//! of the contacts, or the free flight after separation — separated by
+//! typed events, from the start to the end of the model (the first impact,
+//! or a lift-off).
 //!
-//! * [`law`]: the contact laws (`Roll` = μ ∞, `Slip` = μ 0, `Coulomb` with
-//!   μs ≥ μk) and the modes (each contact sticking or slipping either way).
-//! * This module: one constrained system per mode, built by the second
-//!   route's KKT machinery ([`crate::mechanics::system`]): a sticking contact is a
-//!   velocity constraint whose multiplier is its tangential force; a
-//!   slipping one is the applied force −μk σ N along its slip direction,
-//!   with N the multiplier of its normal row (so the KKT matrix gains μk σ
-//!   J_t in N's column). Each mode is integrated by Chebyshev spectral
-//!   quadrature in the angle ([`crate::integrate::spectral`]: q̈ and λ are affine
-//!   in θ̇², so θ̇² solves a linear ODE in θ), with the dissipated work
-//!   E(0) − E(t) = ∫ μk N |s| dt among the quadratures; its events (cone
-//!   reached, slip speed zero, N12 = 0, N1 = 0) are roots of the
-//!   interpolants. A mode the angle cannot parametrise (θ̇ reaching 0) is
-//!   integrated by Gragg–Bulirsch–Stoer extrapolation in time instead, and
-//!   [`Method`] selects GBS or Gauss–Legendre collocation throughout for
-//!   the cross-checks.
-//! * At the start and at every event every candidate continuation is tested
-//!   for consistency just after it ([`decide`]): each contact sticking
-//!   (needed |F| ≤ μs N), slipping either way (slip speed of that sign,
-//!   N > 0) and the contact between the cylinders opening (free relative
-//!   normal acceleration > 0). The unique consistent one is taken; none or
-//!   several (Painlevé-type situations), or a singular constraint system,
-//!   stop with [`Error::NotConverged`] (exit 3) naming the place.
+//! * [`mode`]: the vocabulary (contact states, modes, phases, event kinds,
+//!   how the motion ends, which branch to follow where it is not unique).
+//! * [`ctx`]: the fixed parts at one working precision; the constrained
+//!   system of each mode (a sticking contact is a velocity constraint whose
+//!   multiplier is its tangential force; a slipping one the applied force
+//!   −μk σ N with N the multiplier of its normal row).
+//! * [`decide`]: at the start and at every event every candidate
+//!   continuation is tested for consistency just after it; a contact at
+//!   rest sticks if it can; where a closed mode and the contact opening are
+//!   both consistent (a branch point) the requested [`Branch`] decides.
+//! * [`watch`]: the functions whose zeros end a mode.
+//! * [`conservative`]: the fast path of a conservative first phase (every
+//!   contact rolling, sticking, frictionless or held): the energy route,
+//!   with its closed forms and quadratures.
+//! * A dissipative phase is integrated by Chebyshev spectral quadrature in
+//!   the angle ([`crate::integrate::spectral`]); a mode the angle cannot
+//!   parametrise by Gragg–Bulirsch–Stoer extrapolation in time.
 //! * [`flight`]: after separation, cylinder 2 flies ballistically and
 //!   cylinder 1 goes on under its floor law, in closed form, to the first
-//!   impact (cylinder 2 on the floor or on cylinder 1 again).
-//! * [`answer`]: the verified answers (two working precisions, the event
-//!   sequences compared, every number judged by the precision ladder).
+//!   impact.
 //!
-//! Slip speeds (README, "Conventions"): floor s1 = ẋ1 − r1 φ̇1, the velocity
-//! of cylinder 1's contact point over the floor along +x; contact s12 =
-//! r θ̇ + r2 ψ̇2 − r1 φ̇1 (ψ2 = φ2 − θ the counter-clockwise rotation of
-//! cylinder 2), the velocity of cylinder 2's contact point over cylinder 1's
-//! along (cos θ, −sin θ). A slipping contact's tangential force is
+//! [`run`] computes the motion at one working precision; the verified
+//! answers (two precisions, the precision ladder) are [`crate::oracle`]'s.
+//!
+//! Slip speeds (README, "Conventions"): floor s1 = ẋ1 − r1 φ̇1, contact
+//! s12 = r θ̇ + r2 ψ̇2 − r1 φ̇1 (ψ2 = φ2 − θ the counter-clockwise rotation
+//! of cylinder 2). A slipping contact's tangential force is
 //! F1 = −μk N1 sgn s1, F21 = −μk N12 sgn s12.
 
-pub mod answer;
+pub mod conservative;
+pub mod ctx;
+pub mod decide;
 pub mod flight;
-pub mod law;
+pub mod mode;
 pub mod point;
+pub mod watch;
 
-pub use law::{Friction, Law, Mode, State};
+pub use mode::{Branch, End, Kind, Mode, Phase, State, Surface};
+pub use point::{Point, TwoState, COLUMNS};
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::integrate::solve::{self, Event, Opts, Sample, Start, Watch};
-use crate::integrate::{time_scale, TOL_GUARD};
-use crate::mechanics::system::{self as sy, Row, SlipTerm, StackModel, System, Tangent};
-use crate::model::{Contact, Floor, Model};
-use point::TwoState;
-use rug::{Float, Rational};
-
-/// Which contact an event concerns.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Which {
-    /// The floor under cylinder 1.
-    Floor,
-    /// The contact between the cylinders.
-    Contact,
-}
-
-impl Which {
-    /// `floor` or `contact`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Which::Floor => "floor",
-            Which::Contact => "contact",
-        }
-    }
-}
-
-/// What happened at an event.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
-    /// A sticking contact's needed |F|/N reached μs; it slips from here.
-    SlipOnset,
-    /// A slipping contact's slip speed returned to 0 and it sticks.
-    Stick,
-    /// A slipping contact's slip speed returned to 0 and it slips the other way.
-    SlipReversal,
-    /// N12 = 0: the cylinders part.
-    Separation,
-    /// N1 = 0: cylinder 1 leaves the floor (the motion after it is outside
-    /// the model).
-    LiftOff,
-    /// The first impact after separation (impact laws are outside the model).
-    Impact,
-}
-
-impl Kind {
-    /// The JSON name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Kind::SlipOnset => "slip_onset",
-            Kind::Stick => "stick",
-            Kind::SlipReversal => "slip_reversal",
-            Kind::Separation => "separation",
-            Kind::LiftOff => "lift_off",
-            Kind::Impact => "impact",
-        }
-    }
-}
-
-/// Every column of the motion at one time: the columns of the ideal
-/// models ([`TwoState`], reached through `Deref`: `point.theta`), the slip
-/// speeds and the dissipated work.
-#[derive(Debug, Clone)]
-pub struct Point {
-    /// t, θ (in flight: the direction of the line of centres), its rates,
-    /// the angles, positions and the forces F1, N1, F21, N12 (the contact's
-    /// are 0 in flight).
-    pub state: TwoState,
-    /// Floor slip speed s1.
-    pub s1: Float,
-    /// Contact slip speed s12 (0 in flight, where there is no contact).
-    pub s12: Float,
-    /// Energy dissipated by friction since t = 0.
-    pub work: Float,
-    /// Total energy T + V.
-    pub energy: Float,
-    /// The mode (None: free flight after separation).
-    pub mode: Option<Mode>,
-}
-
-impl std::ops::Deref for Point {
-    type Target = TwoState;
-    fn deref(&self) -> &TwoState {
-        &self.state
-    }
-}
-
-/// The columns a motion with friction adds to those of the ideal models
-/// ([`crate::oracle::TRAJECTORY_COLUMNS`]).
-pub const EXTRA_COLUMNS: [&str; 3] = ["s1", "s12", "work"];
-
-/// The column names of [`Point::columns`]: the ideal models' columns, then
-/// [`EXTRA_COLUMNS`].
-pub fn columns() -> Vec<&'static str> {
-    crate::oracle::TRAJECTORY_COLUMNS
-        .iter()
-        .chain(&EXTRA_COLUMNS)
-        .copied()
-        .collect()
-}
-
-impl Point {
-    /// The values in [`columns`] order.
-    pub fn columns(&self) -> Vec<Float> {
-        let mut v = self.state.columns().to_vec();
-        v.extend([self.s1.clone(), self.s12.clone(), self.work.clone()]);
-        v
-    }
-
-    /// The mode's tag, or `flight`.
-    pub fn mode_tag(&self) -> String {
-        self.mode.map_or_else(|| "flight".to_string(), |m| m.tag())
-    }
-}
+use crate::integrate::energy::Route as EnergyRoute;
+use crate::integrate::solve::{self, Event, Sample, Start, Watch};
+use crate::mechanics::system::{self as sy};
+use crate::model::{Model, Which};
+use crate::numeric::verify::Run;
+use ctx::Ctx;
+use rug::Float;
+use watch::What;
 
 /// A located event.
 #[derive(Debug, Clone)]
@@ -168,25 +61,97 @@ pub struct EventRec {
     pub kind: Kind,
     /// The contact concerned (None for an impact).
     pub which: Option<Which>,
-    /// The mode entered (None: flight, or the end of the model).
-    pub mode: Option<Mode>,
-    /// The state there (the values of the mode before the event).
+    /// The phase entered (None: the end of the model).
+    pub phase: Option<Phase>,
+    /// The state there (the values of the phase before the event).
     pub at: Point,
     /// The estimated error of the event time.
     pub t_err: Float,
+    /// The estimated error of the event angle.
+    pub theta_err: Float,
 }
 
-/// How the computed motion ended.
+/// The route that computed a phase.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum End {
-    /// At the last requested time (before separation).
+pub enum Route {
+    /// The energy route of a conservative phase (closed forms, quadrature).
+    Energy,
+    /// Chebyshev spectral integration in the angle.
+    Spectral,
+    /// Gragg–Bulirsch–Stoer extrapolation in time.
+    Gbs,
+    /// Gauss–Legendre collocation in time.
+    Collocation,
+    /// The free flight in closed form.
+    Flight,
+}
+
+impl Route {
+    /// A short name for notes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Route::Energy => "energy quadrature",
+            Route::Spectral => "spectral in theta",
+            Route::Gbs => "GBS",
+            Route::Collocation => "collocation",
+            Route::Flight => "closed-form flight",
+        }
+    }
+}
+
+/// Which integrators to use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// The fastest verified route per phase: the energy route for a
+    /// conservative first phase, the spectral route in θ for the others,
+    /// GBS where it declines.
+    Auto,
+    /// Every contact phase by the spectral route (GBS where it declines):
+    /// the hybrid engine without the energy route, to check it.
+    Spectral,
+    /// Every contact phase by GBS.
+    Gbs,
+    /// Every contact phase by Gauss–Legendre collocation.
+    Collocation,
+}
+
+/// How far to compute.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Until {
+    /// To the last requested time.
     LastTime,
-    /// At the first impact after separation.
-    Impact,
-    /// At lift-off of cylinder 1 (outside the model).
-    LiftOff,
-    /// Where θ reached the target angle.
-    Target,
+    /// To the end of the model (the first impact, or a lift-off).
+    End,
+    /// To the first time θ reaches the angle (`name`: the parameter named
+    /// in errors).
+    Angle {
+        /// The angle (user frame).
+        theta: Exact,
+        /// The parameter it was given as.
+        name: String,
+    },
+}
+
+/// What a motion is computed for.
+#[derive(Debug, Clone)]
+pub struct Request {
+    /// Times at which to sample every column (ascending, ≥ 0).
+    pub times: Vec<Exact>,
+    /// How far to compute.
+    pub until: Until,
+    /// θ only at the times (not the other columns).
+    pub theta_only: bool,
+    /// The branch to follow where the motion is not unique.
+    pub branch: Branch,
+    /// The integrators.
+    pub method: Method,
+    /// The time beyond which a motion that has not ended is an error
+    /// ([`default_horizon`]).
+    pub horizon: Float,
+    /// Which run of the ladder this is.
+    pub run: Run,
+    /// Digits requested (for messages).
+    pub digits: u32,
 }
 
 /// The motion at one working precision.
@@ -198,562 +163,67 @@ pub struct Motion {
     pub events: Vec<EventRec>,
     /// The rows at the requested times.
     pub rows: Vec<Point>,
+    /// θ, the phase and (from the energy route) θ's error bound at the
+    /// requested times ([`Request::theta_only`]).
+    pub thetas: Vec<(Float, Phase, Option<Float>)>,
     /// The state at separation, if reached.
     pub separation: Option<Point>,
-    /// The first impact after separation (the state just before it).
+    /// The first impact (the state just before it).
     pub impact: Option<flight::Impact>,
+    /// How it ended (None: at the last time, before the end of the model).
+    pub end: Option<End>,
+    /// The state where θ first reached the target angle.
+    pub target: Option<Point>,
     /// Largest |E(t) + W(t) − E(0)| over every computed state, relative to
     /// the energy scale m2 g r.
     pub energy_drift: Float,
-    /// How it ended.
-    pub end: End,
-    /// Integrator work over all modes: (accepted steps, evaluations of the
-    /// equations of motion).
+    /// Integrator work over all phases: (accepted steps or pieces,
+    /// evaluations of the equations of motion).
     pub work_done: (u64, u64),
-    /// The state where θ first reached the target angle of [`solve_to_angle`].
-    pub target: Option<Point>,
-    /// θ and the mode (None: flight) at the requested times, for
-    /// [`solve_theta`] (empty otherwise).
-    pub thetas: Vec<(Float, Option<Mode>)>,
-    /// The integrator that computed each mode, in order ([`Method::Spectral`]
-    /// falls back to [`Method::Gbs`] where it declines).
-    pub routes: Vec<Method>,
+    /// The route of each phase, in order.
+    pub routes: Vec<Route>,
+    /// Where parting was lawful while the cylinders stayed together: (θ
+    /// where it became so, θ where it stopped — None: up to the end of the
+    /// closed branch). Empty where the motion is unique.
+    pub windows: Vec<(Float, Option<Float>)>,
 }
 
-/// Checks that the laws fit the model ([`check_laws`]) and that the motion
-/// has a finite time scale (not from rest exactly at the top).
-///
-/// Errors: [`Error::InvalidParameter`] naming the parameter;
-/// [`Error::NotPhysical`] for a start from rest at the top.
-pub fn validate(model: &Model, fr: &Friction) -> Result<()> {
-    check_laws(model, fr)?;
-    if model.starts_at_equilibrium() {
-        return Err(Error::not_physical(
-            "the motion starts from rest exactly at the unstable top: every time is infinite",
-        ));
+impl Motion {
+    /// The working precision of the motion.
+    pub fn prec(&self) -> u32 {
+        self.energy_drift.prec()
     }
-    Ok(())
 }
 
-/// Checks that the laws fit the model: friction coefficients belong to a
-/// rolling base (`--floor roll`, `--contact roll`), a fixed floor has no
-/// floor law, and a spin that sliding friction turns has inertia (k2 > 0
-/// under a frictional contact; k1 > 0 where the floor can slide too).
-///
-/// Errors: [`Error::InvalidParameter`] naming the parameter.
-pub fn check_laws(model: &Model, fr: &Friction) -> Result<()> {
-    if model.floor() == Floor::Fixed && fr.floor != Law::Roll {
-        return Err(Error::invalid(
-            "mu_floor",
-            &fr.floor,
-            "a fixed floor (cylinder 1 held) has no floor contact: drop --mu-floor",
-        ));
-    }
-    if fr.floor.is_coulomb() && model.floor() != Floor::Roll {
-        return Err(Error::invalid(
-            "mu_floor",
-            &fr.floor,
-            "friction coefficients apply to --floor roll (slip is mu_floor = 0)",
-        ));
-    }
-    if fr.contact.is_coulomb() && model.contact() != Contact::Roll {
-        return Err(Error::invalid(
-            "mu_contact",
-            &fr.contact,
-            "friction coefficients apply to --contact roll (slip is mu_contact = 0)",
-        ));
-    }
-    let p = model.params();
-    let kinetic = |l: &Law| l.kinetic().is_some_and(|k| k > 0);
-    // cylinder 1's spin is free of the floor only where the floor can slide
-    let floor_slides = fr.floor != Law::Roll && model.floor() != Floor::Fixed;
-    if p.k1 == 0 && floor_slides && (kinetic(&fr.floor) || kinetic(&fr.contact)) {
-        return Err(Error::invalid(
-            "k1",
-            "0",
-            "must be > 0 with finite friction (a spin without inertia cannot slide under friction)",
-        ));
-    }
-    if p.k2 == 0 && kinetic(&fr.contact) {
-        return Err(Error::invalid(
-            "k2",
-            "0",
-            "must be > 0 with finite friction (a spin without inertia cannot slide under friction)",
-        ));
-    }
-    Ok(())
+/// The energy routes a motion may use, kept by the caller across the
+/// precisions of a ladder (explicit caches: the quadrature engines, δs and
+/// t_s per precision).
+#[derive(Default)]
+pub struct Caches {
+    /// The energy route of the model with every Coulomb contact sticking.
+    pub sticking: Option<EnergyRoute>,
 }
 
-/// The ideal model equal to `model` with `fr` (a Coulomb contact starts
-/// rolling; `inf` is roll, `0` is slip).
-pub fn effective_model(model: &Model, fr: &Friction) -> Result<Model> {
-    let floor = match (model.floor(), &fr.floor) {
-        (Floor::Fixed, _) => Floor::Fixed,
-        (f, Law::Roll) => f,
-        (_, Law::Slip) => Floor::Slip,
-        (_, Law::Coulomb { .. }) => Floor::Roll,
-    };
-    let contact = match (&fr.contact, model.contact()) {
-        (Law::Roll, c) => c,
-        (Law::Slip, _) => Contact::Slip,
-        (Law::Coulomb { .. }, _) => Contact::Roll,
-    };
-    Model::new(
-        model.params().clone(),
-        floor,
-        contact,
-        model.start().clone(),
-    )
-}
-
-/// The laws actually in force: the model's ideal contacts, overridden by
-/// `fr` where it is not `Roll`.
-fn laws(model: &Model, fr: &Friction) -> Friction {
-    let floor = match (model.floor(), &fr.floor) {
-        (Floor::Slip, Law::Roll) => Law::Slip,
-        (_, l) => l.clone(),
-    };
-    let contact = match (model.contact(), &fr.contact) {
-        (Contact::Slip, Law::Roll) => Law::Slip,
-        (_, l) => l.clone(),
-    };
-    Friction { floor, contact }
-}
-
-/// The computation's fixed parts at one working precision.
-struct Ctx {
-    base: StackModel,
-    laws: Friction,
-    fixed: bool,
-    /// Working precision of the integrator.
-    wp: u32,
-    opts: Opts,
-    /// Time scale sqrt(r/g).
-    ts: Float,
-    /// Energy scale m2 g r.
-    escale: Float,
-    /// r = r1 + r2.
-    base_r: Float,
-    /// √tol: the relative size below which a quantity that vanishes in
-    /// exact arithmetic (a slip speed at rest, N12 at separation, …) is
-    /// taken as 0 — the integration and the event location leave errors
-    /// of order tol, far below it, and no genuine value comes that close.
-    rel_tiny: Float,
-    mu_s: [Option<Float>; 2],
-    mu_k: [Float; 2],
-}
-
-impl Ctx {
-    fn law(&self, w: Which) -> &Law {
-        match w {
-            Which::Floor => &self.laws.floor,
-            Which::Contact => &self.laws.contact,
+impl Caches {
+    /// The energy route of `model.sticking()`, built on first use.
+    ///
+    /// Errors: as [`EnergyRoute::new`].
+    pub fn sticking(&mut self, model: &Model) -> Result<&mut EnergyRoute> {
+        if self.sticking.is_none() {
+            self.sticking = Some(EnergyRoute::new(&model.sticking())?);
         }
-    }
-
-    /// The constrained system of a mode.
-    fn system(&self, mode: Mode) -> Result<System> {
-        let wp = self.wp;
-        let mut sm = self.base.clone();
-        sm.floor = if self.fixed {
-            Floor::Fixed
-        } else {
-            match mode.floor {
-                State::Stick => Floor::Roll,
-                State::Slip(_) => Floor::Slip,
-            }
-        };
-        sm.contacts[0] = match mode.contact {
-            State::Stick => Contact::Roll,
-            State::Slip(_) => Contact::Slip,
-        };
-        let mut sys = System::new(&sm, wp)?;
-        for (w, st) in [(Which::Floor, mode.floor), (Which::Contact, mode.contact)] {
-            if let State::Slip(sg) = st {
-                let mk = &self.mu_k[w as usize];
-                if sg != 0 && !mk.is_zero() {
-                    let normal = row(&sys, normal_row(w)).ok_or_else(|| {
-                        Error::not_physical("internal: a slipping contact without a normal row")
-                    })?;
-                    sys.slips.push(SlipTerm {
-                        at: tangent(w),
-                        normal,
-                        mu_sigma: Float::with_val(wp, mk * i32::from(sg)),
-                    });
-                }
-            }
-        }
-        Ok(sys)
-    }
-
-    /// The candidate states of a contact.
-    fn candidates(&self, w: Which) -> Vec<State> {
-        if w == Which::Floor && self.fixed {
-            return vec![State::Stick];
-        }
-        match self.law(w) {
-            Law::Roll => vec![State::Stick],
-            Law::Slip => vec![State::Slip(0)],
-            Law::Coulomb { .. } => vec![State::Stick, State::Slip(1), State::Slip(-1)],
-        }
-    }
-}
-
-fn normal_row(w: Which) -> Row {
-    match w {
-        Which::Floor => Row::FloorNormal,
-        Which::Contact => Row::Normal(0),
-    }
-}
-
-fn tangent(w: Which) -> Tangent {
-    match w {
-        Which::Floor => Tangent::Floor,
-        Which::Contact => Tangent::Line(0),
-    }
-}
-
-fn row(sys: &System, r: Row) -> Option<usize> {
-    sys.rows.iter().position(|x| *x == r)
-}
-
-fn lam(sys: &System, s: &Sample, r: Row) -> Float {
-    row(sys, r).map_or_else(|| Float::new(sys.prec), |i| s.lambda[i].clone())
-}
-
-/// The tangential force of a contact in a mode (a multiplier while it
-/// sticks, −μk σ N while it slips).
-fn tangential(ctx: &Ctx, sys: &System, mode: Mode, w: Which, s: &Sample) -> Float {
-    let st = match w {
-        Which::Floor => mode.floor,
-        Which::Contact => mode.contact,
-    };
-    match st {
-        State::Stick => lam(
-            sys,
-            s,
-            match w {
-                Which::Floor => Row::FloorFriction,
-                Which::Contact => Row::Friction(0),
-            },
-        ),
-        State::Slip(sg) => {
-            let n = lam(sys, s, normal_row(w));
-            -(n * &ctx.mu_k[w as usize]) * i32::from(sg)
-        }
-    }
-}
-
-fn point(ctx: &Ctx, sys: &mut System, mode: Mode, s: &Sample) -> Point {
-    let p = sys.prec;
-    let mut state = crate::motion::point::two_state(sys, s);
-    // a slipping contact's force is an applied force, not a multiplier
-    state.f1 = tangential(ctx, sys, mode, Which::Floor, s);
-    state.f21 = tangential(ctx, sys, mode, Which::Contact, s);
-    Point {
-        state,
-        s1: if ctx.fixed {
-            Float::new(p)
-        } else {
-            sys.slip_speed(Tangent::Floor, &s.q, &s.v)
-        },
-        s12: sys.slip_speed(Tangent::Line(0), &s.q, &s.v),
-        work: s.work.clone(),
-        energy: sys.energy(&s.q, &s.v),
-        mode: Some(mode),
-    }
-}
-
-/// The events watched in a mode: N12 = 0 (separation), N1 = 0 (lift-off,
-/// not on a fixed floor), the cone μs N ∓ F = 0 of each sticking Coulomb
-/// contact, the slip speed of each sliding Coulomb contact.
-fn events(ctx: &Ctx, sys: &System, mode: Mode) -> Vec<Event> {
-    let p = sys.prec;
-    let mut ev = Vec::new();
-    if let Some(i) = row(sys, Row::Normal(0)) {
-        ev.push(Event {
-            name: "separation".into(),
-            watch: Watch::Multiplier(i),
-            terminal: true,
-        });
-    }
-    if !ctx.fixed {
-        if let Some(i) = row(sys, Row::FloorNormal) {
-            ev.push(Event {
-                name: "lift_off".into(),
-                watch: Watch::Multiplier(i),
-                terminal: true,
-            });
-        }
-    }
-    // cylinder 2 reaching the floor while still on cylinder 1: y2 − r2 =
-    // r1 + r cos θ − r2 = 0
-    ev.push(Event {
-        name: "floor_impact".into(),
-        watch: Watch::Height {
-            th: sy::th(0),
-            r: Float::with_val(p, &sys.rho[0] + &sys.rho[1]),
-            offset: Float::with_val(p, &sys.rho[0] - &sys.rho[1]),
-        },
-        terminal: true,
-    });
-    for (w, st) in [(Which::Floor, mode.floor), (Which::Contact, mode.contact)] {
-        if !ctx.law(w).is_coulomb() || (w == Which::Floor && ctx.fixed) {
-            continue;
-        }
-        match st {
-            State::Stick => {
-                let (Some(n), Some(f), Some(mu)) = (
-                    row(sys, normal_row(w)),
-                    row(
-                        sys,
-                        match w {
-                            Which::Floor => Row::FloorFriction,
-                            Which::Contact => Row::Friction(0),
-                        },
-                    ),
-                    ctx.mu_s[w as usize].clone(),
-                ) else {
-                    continue;
-                };
-                for sign in [1i32, -1] {
-                    ev.push(Event {
-                        name: format!("cone:{}", w.name()),
-                        watch: Watch::Lin(vec![
-                            (Watch::Multiplier(n), mu.clone()),
-                            (Watch::Multiplier(f), Float::with_val(p, -sign)),
-                        ]),
-                        terminal: true,
-                    });
-                }
-            }
-            State::Slip(sg) if sg != 0 => {
-                let mut q = vec![Float::new(p); sys.nq()];
-                q[sy::rr(0)] = Float::with_val(p, &sys.rho[0] + &sys.rho[1]);
-                let terms = sys
-                    .tangent_coeffs(tangent(w), &q)
-                    .into_iter()
-                    .map(|(i, c)| (Watch::Rate(i), c))
-                    .collect();
-                ev.push(Event {
-                    name: format!("slip:{}", w.name()),
-                    watch: Watch::Lin(terms),
-                    terminal: true,
-                });
-            }
-            State::Slip(_) => {}
-        }
-    }
-    ev
-}
-
-/// Why a candidate mode is not consistent (None: it is).
-fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Option<String>> {
-    let mut sys = ctx.system(mode)?;
-    let p = sys.prec;
-    let acc = match sys.accel(q, v) {
-        Ok(a) => a,
-        Err(_) => return Ok(Some("its constraint system is singular".into())),
-    };
-    // just after: one Euler step of ε = 2^−(p/3)·T along the mode's flow
-    let eps = Float::with_val(p, &ctx.ts) >> (p as i32 / 3);
-    let q1: Vec<Float> = q
-        .iter()
-        .zip(v)
-        .map(|(x, d)| Float::with_val(p, x + Float::with_val(p, d * &eps)))
-        .collect();
-    let v1: Vec<Float> = v
-        .iter()
-        .zip(&acc.qdd)
-        .map(|(x, d)| Float::with_val(p, x + Float::with_val(p, d * &eps)))
-        .collect();
-    let a1 = match sys.accel(&q1, &v1) {
-        Ok(a) => a,
-        Err(_) => return Ok(Some("its constraint system is singular".into())),
-    };
-    // a second step, for slip speeds that leave 0 only at second order (at
-    // a slip onset with μs = μk the sliding force equals the sticking one,
-    // so ṡ = 0 there and the sign of s̈ decides): s(2ε) ≈ s + 2ε ṡ + ε² s̈
-    let v2: Vec<Float> = v1
-        .iter()
-        .zip(&a1.qdd)
-        .map(|(x, d)| Float::with_val(p, x + Float::with_val(p, d * &eps)))
-        .collect();
-    let s1 = Sample {
-        t: Float::new(p),
-        q: q1.clone(),
-        v: v1.clone(),
-        qdd: a1.qdd,
-        lambda: a1.lambda,
-        work: Float::new(p),
-        power: Float::new(p),
-    };
-    let n12 = lam(&sys, &s1, Row::Normal(0));
-    if !n12.is_sign_positive() || n12.is_zero() {
-        return Ok(Some(format!("N12 would be {:.3e} <= 0", n12.to_f64())));
-    }
-    if !ctx.fixed {
-        let n1 = lam(&sys, &s1, Row::FloorNormal);
-        if !n1.is_sign_positive() || n1.is_zero() {
-            return Ok(Some(format!("N1 would be {:.3e} <= 0", n1.to_f64())));
-        }
-    }
-    for (w, st) in [(Which::Floor, mode.floor), (Which::Contact, mode.contact)] {
-        if w == Which::Floor && ctx.fixed {
-            continue;
-        }
-        match (st, ctx.law(w)) {
-            (State::Stick, Law::Coulomb { .. }) => {
-                // a contact can stick only where it does not slide
-                let s0 = sys.slip_speed(tangent(w), q, v);
-                let vscale = Float::with_val(p, &ctx.base_r / &ctx.ts);
-                if Float::with_val(p, s0.abs_ref()) > vscale * &ctx.rel_tiny {
-                    return Ok(Some(format!(
-                        "the {} slides (slip speed {:.3e}): it cannot stick",
-                        w.name(),
-                        s0.to_f64()
-                    )));
-                }
-                let n = lam(&sys, &s1, normal_row(w));
-                let f = tangential(ctx, &sys, mode, w, &s1);
-                let mu = ctx.mu_s[w as usize]
-                    .clone()
-                    .unwrap_or_else(|| Float::new(p));
-                let room = Float::with_val(p, &mu * &n) - Float::with_val(p, f.abs_ref());
-                if room.is_sign_negative() {
-                    return Ok(Some(format!(
-                        "sticking at the {} would need |F|/N = {:.6e} > mu_s",
-                        w.name(),
-                        (Float::with_val(p, f.abs_ref()) / &n).to_f64()
-                    )));
-                }
-            }
-            (State::Slip(sg), Law::Coulomb { .. }) if sg != 0 => {
-                let s = sys.slip_speed(tangent(w), &q1, &v2);
-                if s.is_zero() || s.is_sign_negative() != (sg < 0) {
-                    return Ok(Some(format!(
-                        "slipping {} at the {} would need a slip speed of that sign (it would be {:.3e})",
-                        if sg > 0 { "forwards" } else { "backwards" },
-                        w.name(),
-                        s.to_f64()
-                    )));
-                }
-            }
-            _ => {}
-        }
-    }
-    Ok(None)
-}
-
-/// The relative normal acceleration r̈ of the centres if the contact
-/// between the cylinders were open at (q, q̇): cylinder 2 falls freely,
-/// cylinder 1 moves under its floor law alone.
-fn free_normal_accel(ctx: &Ctx, sys: &System, q: &[Float], v: &[Float]) -> Float {
-    let p = sys.prec;
-    let th = &q[sy::th(0)];
-    let (sn, cs) = th.clone().sin_cos(Float::new(p));
-    let r = &q[sy::rr(0)];
-    let thd = &v[sy::th(0)];
-    let s1 = sys.slip_speed(Tangent::Floor, q, v);
-    let snap = Float::with_val(p, ctx.ts.recip_ref()) * &ctx.base_r * &ctx.rel_tiny;
-    let sticking = Float::with_val(p, s1.abs_ref()) <= snap;
-    let a1x = flight::floor_accel(
-        ctx.fixed,
-        &ctx.laws.floor,
-        &ctx.mu_k[0],
-        sys,
-        q,
-        v,
-        sticking,
-    );
-    // r̈ = n·(a2 − a1) + r θ̇², a2 = (0, −g)
-    let mut rdd = Float::with_val(p, thd.square_ref()) * r;
-    rdd -= Float::with_val(p, &sys.g * &cs);
-    rdd -= Float::with_val(p, &sn * &a1x);
-    rdd
-}
-
-/// The unique consistent continuation at (q, q̇): every combination of the
-/// contacts' states is tested just after the present state.
-///
-/// Returns the mode, or None when the contact between the cylinders opening
-/// is the one consistent continuation.
-///
-/// Errors: none consistent, or more than one, with the reasons.
-fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float) -> Result<Option<Mode>> {
-    let mut ok = Vec::new();
-    let mut why = Vec::new();
-    for f in ctx.candidates(Which::Floor) {
-        for c in ctx.candidates(Which::Contact) {
-            let m = Mode {
-                floor: f,
-                contact: c,
-            };
-            match inconsistency(ctx, m, q, v)? {
-                None => ok.push(m),
-                Some(r) => why.push(format!("{}: {r}", m.tag())),
-            }
-        }
-    }
-    // the contact opening: consistent when the free motion separates
-    let sys = ctx.system(ok.first().copied().unwrap_or(Mode {
-        floor: State::Stick,
-        contact: State::Stick,
-    }))?;
-    let rdd = free_normal_accel(ctx, &sys, q, v);
-    let opens = rdd.is_sign_positive() && !rdd.is_zero();
-    let theta = q[sy::th(0)].to_f64();
-    let at = format!("t = {:.12}, theta = {:.12}", t.to_f64(), theta);
-    // Coulomb's law: a contact at rest relative to its partner sticks if the
-    // force that holds it is within μs N; sliding from rest is the
-    // continuation only where sticking is not (this settles the choice
-    // between sticking and kinetic sliding when μk < μs)
-    if ok.len() > 1 && !opens {
-        for w in [Which::Floor, Which::Contact] {
-            let st = |m: &Mode| match w {
-                Which::Floor => m.floor,
-                Which::Contact => m.contact,
-            };
-            if ok.iter().any(|m| st(m) == State::Stick) {
-                ok.retain(|m| st(m) == State::Stick);
-            }
-        }
-    }
-    match (ok.len(), opens) {
-        (1, false) => Ok(Some(ok[0])),
-        (0, true) => Ok(None),
-        (0, false) => Err(Error::NotConverged {
-            quantity: "mode".into(),
-            requested: 0,
-            reached: format!("no consistent continuation at {at}"),
-            detail: format!(
-                "every candidate fails ({}; the contact cannot open: free relative normal \
-                 acceleration {:.3e}): a Painlevé-type inconsistency of the rigid-body model",
-                why.join("; "),
-                rdd.to_f64()
-            ),
-        }),
-        (n, o) => Err(Error::NotConverged {
-            quantity: "mode".into(),
-            requested: 0,
-            reached: format!("{} consistent continuations at {at}", n + usize::from(o)),
-            detail: format!(
-                "{}{}: the rigid-body model does not decide (Painlevé-type non-uniqueness)",
-                ok.iter().map(|m| m.tag()).collect::<Vec<_>>().join(", "),
-                if o { ", contact opening" } else { "" }
-            ),
-        }),
+        Ok(self.sticking.as_mut().expect("set above"))
     }
 }
 
 /// A requested time after the end of the model (`what` ended it at `end`).
-fn after_end(t: &Float, end: &Float, what: &str) -> Error {
+fn after_end(t: &Exact, end: &Float, what: &str) -> Error {
     Error::invalid(
         "times",
-        t.to_string_radix(10, Some(17)),
+        t,
         format!(
             "must not be after {what} at t = {} (the model ends there)",
-            end.to_string_radix(10, Some(17))
+            crate::numeric::decimal::to_sig(end, 17)
         ),
     )
 }
@@ -769,299 +239,357 @@ pub const MAX_MODES: usize = 64;
 /// once for both precisions of their ladder.
 pub fn default_horizon(model: &Model) -> Float {
     let prec = 64;
-    let sm = StackModel::from_model(model);
-    let ts = time_scale(&sm, prec);
-    let floor = if model.floor() == Floor::Fixed {
-        Floor::Fixed
-    } else {
-        Floor::Roll
-    };
-    let rolling = Model::new(
+    let ideal = model.sticking();
+    let sm = crate::mechanics::system::StackModel::from_model(&ideal);
+    let ts = crate::integrate::time_scale(&sm, prec);
+    let rolling = crate::model::Ideal::new(
         model.params().clone(),
-        floor,
-        Contact::Roll,
+        if ideal.floor() == crate::model::Floor::Fixed {
+            crate::model::Floor::Fixed
+        } else {
+            crate::model::Floor::Roll
+        },
+        crate::model::Contact::Roll,
         model.start().clone(),
     );
-    let t_roll = rolling
-        .and_then(|m| crate::oracle::Oracle::new(&m, 12)?.separation())
-        .ok()
-        .and_then(|s| s.t_s.map(|t| t.value));
+    let t_roll = rolling.ok().and_then(|m| {
+        let mut r = EnergyRoute::new(&m).ok()?;
+        let (ds, _) = r.delta_s(prec).ok()?;
+        let (t, _) = r.engine(prec).ok()?.time(&ds);
+        Some(t)
+    });
     match t_roll {
         Some(t) => Float::with_val(prec, &t * 4u32) + ts * 50u32,
         None => ts * 200u32,
     }
 }
 
-/// The integrator of the modes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Method {
-    /// Chebyshev spectral integration in the angle ([`crate::integrate::spectral`]),
-    /// the default; a mode it declines is integrated by [`Method::Gbs`].
-    Spectral,
-    /// Gragg–Bulirsch–Stoer extrapolation.
-    Gbs,
-    /// Gauss–Legendre collocation, the independent second integrator.
-    Collocation,
+/// The mutable state of [`run`].
+struct Walk<'a> {
+    ctx: &'a Ctx,
+    req: &'a Request,
+    out: Motion,
+    /// Index of the next requested time.
+    next: usize,
+    /// Requested times at this precision.
+    tf: Vec<Float>,
+    e0: Float,
+    /// No work has been dissipated so far.
+    conservative: bool,
 }
 
-/// Solves the motion at working precision `prec` from t = 0, sampling at
-/// `times` (ascending, ≥ 0) and going on to the first impact after
-/// separation when `to_impact`, else stopping at the last time.
-///
-/// Errors: invalid laws ([`validate`]); a time after the first impact or
-/// after lift-off ([`Error::NotPhysical`]); an undecidable mode change or a
-/// numerical failure ([`Error::NotConverged`]); no separation before
-/// `horizon` when `to_impact`.
-pub fn solve(
-    model: &Model,
-    fr: &Friction,
-    prec: u32,
-    times: &[Float],
-    to_impact: bool,
-    horizon: &Float,
-) -> Result<Motion> {
-    solve_with(model, fr, prec, times, to_impact, horizon, Method::Spectral)
+impl Walk<'_> {
+    fn note(&mut self, pt: &Point) {
+        let d = Float::with_val(self.ctx.wp, &pt.energy + &pt.work) - &self.e0;
+        let d = d.abs() / &self.ctx.escale;
+        if d > self.out.energy_drift {
+            self.out.energy_drift = d;
+        }
+    }
+
+    fn push_row(&mut self, pt: Point) {
+        self.note(&pt);
+        if self.req.theta_only {
+            self.out.thetas.push((pt.theta.clone(), pt.phase, None));
+        } else {
+            self.out.rows.push(pt);
+        }
+    }
+
+    /// The motion ends at `at` (`what` for messages): every time still
+    /// requested lies after the end.
+    fn end_here(&mut self, end: End, at: &Float, what: &str) -> Result<()> {
+        if self.next < self.req.times.len() {
+            return Err(after_end(&self.req.times[self.next], at, what));
+        }
+        self.out.end = Some(end);
+        Ok(())
+    }
+
+    fn target_error(&self, what: &str, theta: &Float) -> Result<()> {
+        if let Until::Angle { theta: th, name } = &self.req.until {
+            return Err(Error::invalid(
+                name,
+                th,
+                format!(
+                    "must be reached while the cylinders touch: {what} at theta = {}",
+                    crate::numeric::decimal::to_sig(theta, 17)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The flight from a separation state (of `mode` in its system) to the
+    /// first impact; the separation event itself is pushed by the caller.
+    fn fly(&mut self, mode: Mode, s: &Sample, at: &Point) -> Result<()> {
+        let sys = self.ctx.system(mode)?;
+        let fli = flight::Flight::new(self.ctx, &sys, mode, s, at)?;
+        self.out.routes.push(Route::Flight);
+        for e in fli.events() {
+            self.out.events.push(e);
+        }
+        while self.next < self.tf.len() {
+            let tt = self.tf[self.next].clone();
+            if tt > fli.impact.t {
+                return Err(after_end(
+                    &self.req.times[self.next],
+                    &fli.impact.t,
+                    "the first impact",
+                ));
+            }
+            let pt = fli.point(&tt);
+            self.push_row(pt);
+            self.next += 1;
+        }
+        let imp_pt = fli.point(&fli.impact.t);
+        self.note(&imp_pt);
+        self.out.events.push(EventRec {
+            kind: Kind::Impact,
+            which: None,
+            phase: None,
+            at: imp_pt,
+            t_err: Float::new(self.ctx.wp),
+            theta_err: Float::new(self.ctx.wp),
+        });
+        self.out.separation = Some(at.clone());
+        self.out.end = Some(End::Impact(fli.impact.surface));
+        self.out.impact = Some(fli.impact);
+        Ok(())
+    }
 }
 
-/// [`solve`] with a chosen integrator.
+/// The motion of `model` at working precision `prec`.
 ///
-/// Errors: see [`solve`].
-pub fn solve_with(
-    model: &Model,
-    fr: &Friction,
-    prec: u32,
-    times: &[Float],
-    to_impact: bool,
-    horizon: &Float,
-    method: Method,
-) -> Result<Motion> {
-    solve_full(
-        model, fr, prec, times, to_impact, horizon, method, None, false,
-    )
-}
-
-/// The motion up to the first time θ reaches `theta` (an angle beyond θ0 in
-/// the direction of the motion, before separation); `name` is the
-/// parameter named in errors; `horizon` bounds the search ([`default_horizon`]).
-/// The state there is [`Motion::target`].
-///
-/// Errors: an angle behind the start, or not reached before the cylinders
-/// part ([`Error::InvalidParameter`]); see [`solve`].
-pub fn solve_to_angle(
-    model: &Model,
-    fr: &Friction,
-    prec: u32,
-    theta: &Exact,
-    name: &str,
-    horizon: &Float,
-) -> Result<Motion> {
-    let h = Float::with_val(prec, horizon);
-    let th0 = model.start().theta0.clone();
-    let dir = model.direction();
-    let d = theta.to_float(prec + 64) - th0.to_float(prec + 64);
-    if d.cmp0().map(|o| o as i32 * dir.signum()) == Some(-1) {
-        return Err(Error::invalid(
-            name,
-            theta,
-            "must lie beyond theta0 in the direction of the motion",
+/// Errors: a start from rest exactly at the top (every time infinite); a
+/// requested time after the end of the model, or an angle not reached
+/// while the cylinders touch ([`Error::InvalidParameter`]); an undecidable
+/// mode change (Painlevé-type situations) or a grazing event
+/// ([`Error::NotConverged`]); an integrator's failure.
+pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<Motion> {
+    if model.starts_at_equilibrium() {
+        return Err(Error::not_physical(
+            "the motion starts from rest exactly at the unstable top: every time is infinite",
         ));
     }
-    solve_full(
-        model,
-        fr,
-        prec,
-        &[],
-        true,
-        &h,
-        Method::Spectral,
-        Some(Target {
-            theta: theta.to_float(prec),
-            name,
-            text: theta.to_string(),
-            at_start: d.is_zero(),
-        }),
-        false,
-    )
-}
-
-/// θ alone at `times` (ascending, ≥ 0, before the first impact), into
-/// [`Motion::thetas`]: the spectral route skips the other columns (and
-/// their KKT solves); `rows` stays empty.
-///
-/// Errors: see [`solve`].
-pub fn solve_theta(
-    model: &Model,
-    fr: &Friction,
-    prec: u32,
-    times: &[Float],
-    horizon: &Float,
-) -> Result<Motion> {
-    solve_full(
-        model,
-        fr,
-        prec,
-        times,
-        false,
-        horizon,
-        Method::Spectral,
-        None,
-        true,
-    )
-}
-
-/// An angle to stop at ([`solve_to_angle`]).
-struct Target<'a> {
-    theta: Float,
-    /// The parameter named in errors, and the angle as given.
-    name: &'a str,
-    text: String,
-    /// The angle is θ0 itself.
-    at_start: bool,
-}
-
-impl Target<'_> {
-    fn not_reached(&self, what: &str, at: &Float) -> Error {
-        Error::invalid(
-            self.name,
-            &self.text,
-            format!(
-                "must be reached while the contacts hold: {what} at theta = {}",
-                at.to_string_radix(10, Some(17))
-            ),
-        )
-    }
-}
-
-#[allow(clippy::too_many_arguments)]
-fn solve_full(
-    model: &Model,
-    fr: &Friction,
-    prec: u32,
-    times: &[Float],
-    to_impact: bool,
-    horizon: &Float,
-    method: Method,
-    target: Option<Target>,
-    theta_only: bool,
-) -> Result<Motion> {
-    validate(model, fr)?;
-    let eff = effective_model(model, fr)?;
-    let laws = laws(model, fr);
-    let base = StackModel::from_model(&eff);
-    let ts = time_scale(&base, prec);
-    let mut opts = Opts::for_prec(prec, TOL_GUARD, &ts);
-    opts.hcap = Some(Float::with_val(opts.prec, &ts * 2u32));
-    let wp = opts.prec;
-    let mut sys0 = System::new(&base, wp)?;
-    let (q0, v0) = sys0.initial_state(&base)?;
-    let fl = |q: &Rational| Float::with_val(wp, q);
-    let pm = eff.params();
-    let escale = fl(&pm.m2) * fl(&pm.g) * fl(&pm.r());
-    let mu_s = [&laws.floor, &laws.contact].map(|l| match l {
-        Law::Coulomb { mu_s, .. } => Some(fl(mu_s)),
-        _ => None,
-    });
-    let mu_k = [&laws.floor, &laws.contact]
-        .map(|l| l.kinetic().map_or_else(|| Float::new(wp), |k| fl(&k)));
-    let rel_tiny = Float::with_val(wp, opts.tol.sqrt_ref());
-    let ctx = Ctx {
-        base,
-        laws,
-        fixed: eff.floor() == Floor::Fixed,
-        wp,
-        opts,
-        ts: Float::with_val(wp, &ts),
-        escale,
-        base_r: fl(&pm.r()),
-        rel_tiny,
-        mu_s,
-        mu_k,
-    };
+    let ctx = Ctx::new(model, prec)?;
+    let wp = ctx.wp;
+    let mut sys0 = ctx.system(Mode {
+        floor: ctx.candidates(Which::Floor)[0],
+        contact: State::Stick,
+    })?;
+    let (q0, v0) = sys0.initial_state(&ctx.base)?;
     let e0 = sys0.energy(&q0, &v0);
     let zero = Float::new(wp);
-    let mut mode = decide(&ctx, &q0, &v0, &zero)?.ok_or_else(|| {
-        Error::not_physical("the cylinders part at once: N12 <= 0 at the start in every mode")
+    let choice = decide::decide(&ctx, &q0, &v0, &zero, &req.branch)?;
+    let mut mode = choice.mode.ok_or_else(|| {
+        Error::not_physical(
+            "the cylinders part at once: N12 <= 0 at the start in every mode \
+             (thetadot0 too large for theta0)",
+        )
     })?;
-    let start_mode = mode;
+    let mut w = Walk {
+        ctx: &ctx,
+        req,
+        out: Motion {
+            start_mode: mode,
+            events: Vec::new(),
+            rows: Vec::new(),
+            thetas: Vec::new(),
+            separation: None,
+            impact: None,
+            end: None,
+            target: None,
+            energy_drift: Float::new(wp),
+            work_done: (0, 0),
+            routes: Vec::new(),
+            windows: Vec::new(),
+        },
+        next: 0,
+        tf: req.times.iter().map(|t| t.to_float(wp)).collect(),
+        e0,
+        conservative: true,
+    };
+    let mut t = Float::new(wp);
     let mut q = q0;
     let mut v = v0;
-    let mut t = Float::new(wp);
     let mut work = Float::new(wp);
-    let mut out = Motion {
-        start_mode,
-        events: Vec::new(),
-        rows: Vec::new(),
-        separation: None,
-        impact: None,
-        energy_drift: Float::new(wp),
-        end: End::LastTime,
-        work_done: (0, 0),
-        target: None,
-        routes: Vec::new(),
-        thetas: Vec::new(),
+    let mut window_open = false;
+    // the angle to stop at, in the user frame
+    let target_theta = match &req.until {
+        Until::Angle { theta, .. } => Some(theta.clone()),
+        _ => None,
     };
-    let mut next = 0usize;
-    let t_last = times.last().cloned();
-    let t_end = if to_impact {
-        Float::with_val(wp, horizon)
-    } else {
-        t_last
-            .clone()
-            .map_or_else(|| Float::new(wp), |x| Float::with_val(wp, x))
+    let t_end = match req.until {
+        Until::LastTime => w.tf.last().cloned().unwrap_or_else(|| Float::new(wp)),
+        _ => Float::with_val(wp, &req.horizon),
     };
-    let snap = Float::with_val(wp, &ctx.escale / &ctx.ts) * &ctx.rel_tiny;
-    let note_drift = |pt: &Point, drift: &mut Float| {
-        let d = Float::with_val(wp, &pt.energy + &pt.work) - &e0;
-        let d = d.abs() / &ctx.escale;
-        if d > *drift {
-            *drift = d;
+    // --- a conservative first phase: the energy route
+    if req.method == Method::Auto && mode.is_conservative() {
+        let route = caches.sticking(model)?;
+        let wants = conservative::Wants {
+            times: &req.times,
+            run: req.run,
+            digits: req.digits,
+            theta_only: req.theta_only,
+            branch: &req.branch,
+            target: target_theta.as_ref(),
+        };
+        let fast = conservative::first_phase(&ctx, route, mode, &wants, prec)?;
+        w.out.routes.push(Route::Energy);
+        for e in fast.events {
+            w.note(&e.at);
+            w.out.events.push(e);
+            window_open = true;
         }
-    };
+        if let Some(win) = fast.window {
+            w.out.windows.push(win);
+        }
+        for pt in fast.rows {
+            w.push_row(pt);
+        }
+        for th in fast.thetas {
+            w.out.thetas.push(th);
+        }
+        w.next = fast.covered;
+        let at = fast.end_point;
+        w.note(&at);
+        let (t_err, theta_err) = fast.end_err;
+        let ev = |kind, which, phase| EventRec {
+            kind,
+            which,
+            phase,
+            at: at.clone(),
+            t_err: t_err.clone(),
+            theta_err: theta_err.clone(),
+        };
+        use conservative::Ending;
+        match fast.ending {
+            Ending::Target => {
+                w.out.target = Some(at);
+                return Ok(w.out);
+            }
+            Ending::LiftOff => {
+                w.target_error("cylinder 1 lifts off", &at.theta)?;
+                w.out
+                    .events
+                    .push(ev(Kind::LiftOff, Some(Which::Floor), None));
+                w.end_here(End::LiftOff, &at.t, "the lift-off of cylinder 1")?;
+                return Ok(w.out);
+            }
+            Ending::FloorImpact => {
+                w.target_error("cylinder 2 lands on the floor", &at.theta)?;
+                w.out.events.push(ev(Kind::Impact, None, None));
+                w.end_here(
+                    End::Impact(Surface::FloorInContact),
+                    &at.t,
+                    "the first impact (cylinder 2 reaches the floor while still on cylinder 1)",
+                )?;
+                let sys = ctx.system(mode)?;
+                w.out.impact = Some(flight::Impact::in_contact(&sys, &fast.end_sample, &at));
+                return Ok(w.out);
+            }
+            Ending::Separation | Ending::BranchPart | Ending::PartAt => {
+                w.target_error("the cylinders part", &at.theta)?;
+                if fast.ending != Ending::Separation && !window_open {
+                    w.out.events.push(ev(
+                        Kind::Indeterminate,
+                        Some(Which::Contact),
+                        Some(Phase::Flight { floor: mode.floor }),
+                    ));
+                }
+                w.out.events.push(ev(
+                    Kind::Separation,
+                    Some(Which::Contact),
+                    Some(Phase::Flight { floor: mode.floor }),
+                ));
+                w.fly(mode, &fast.end_sample, &at)?;
+                return Ok(w.out);
+            }
+            Ending::Cone(which) => {
+                let s = fast.end_sample;
+                let choice = decide::decide(&ctx, &s.q, &s.v, &s.t, &req.branch)?;
+                let new = match choice.mode {
+                    Some(m) => m,
+                    None => {
+                        // no closed mode is consistent: the contact opens
+                        w.target_error("the cylinders part", &at.theta)?;
+                        w.out.events.push(ev(
+                            Kind::Separation,
+                            Some(Which::Contact),
+                            Some(Phase::Flight { floor: mode.floor }),
+                        ));
+                        w.fly(mode, &s, &at)?;
+                        return Ok(w.out);
+                    }
+                };
+                if new == mode {
+                    return Err(grazing(&format!("cone:{}", which.name()), &at.t, mode));
+                }
+                push_changes(&mut w.out, mode, new, &at, &t_err, &theta_err);
+                t = s.t.clone();
+                q = s.q.clone();
+                v = s.v.clone();
+                work = s.work.clone();
+                mode = new;
+            }
+        }
+    }
+    // --- the other phases: the spectral route in θ, GBS where it declines
     for _ in 0..MAX_MODES {
         let mut sys = ctx.system(mode)?;
-        let mut evs = events(&ctx, &sys, mode);
-        if let Some(tg) = &target {
-            if tg.at_start {
-                let acc = sys.accel(&q, &v)?;
-                let smp = Sample {
-                    t: t.clone(),
-                    q: q.clone(),
-                    v: v.clone(),
-                    qdd: acc.qdd,
-                    lambda: acc.lambda,
-                    work: work.clone(),
-                    power: Float::new(wp),
-                };
-                out.target = Some(point(&ctx, &mut sys, mode, &smp));
-                out.end = End::Target;
-                return Ok(out);
-            }
-            evs.push(Event {
+        // the branch watch (parting becoming lawful) while the contact holds
+        let branch_watch = !ctx.held;
+        let mut ws = watch::of_mode(&ctx, &sys, mode, branch_watch);
+        if let Some(th) = &target_theta {
+            ws.events.push(Event {
                 name: "target".into(),
                 watch: Watch::Reach {
                     i: sy::th(0),
-                    value: Float::with_val(wp, &tg.theta),
+                    value: th.to_float(wp),
                 },
                 terminal: true,
             });
+            ws.what.push(What::Target);
+        }
+        if let Branch::PartAt(th) = &req.branch {
+            ws.events.push(Event {
+                name: "part_at".into(),
+                watch: Watch::Reach {
+                    i: sy::th(0),
+                    value: th.to_float(wp),
+                },
+                terminal: true,
+            });
+            ws.what.push(What::PartAt);
+        }
+        // a target at the present angle
+        if let Some(th) = &target_theta {
+            if Float::with_val(wp, &q[sy::th(0)] - th.to_float(wp)).is_zero() {
+                let acc = sys.accel(&q, &v)?;
+                let smp = sample(&t, &q, &v, acc, &work);
+                w.out.target = Some(ctx.point(&mut sys, mode, &smp, w.conservative));
+                return Ok(w.out);
+            }
         }
         let start = Start {
             t: t.clone(),
             q: &q,
             v: &v,
             work: work.clone(),
-            snap: snap.clone(),
+            snap: Float::with_val(wp, &ctx.escale / &ctx.ts) * &ctx.rel_tiny,
         };
-        let spectral = match method {
-            Method::Spectral => crate::integrate::spectral::run(
+        let times = &w.tf[w.next..];
+        let spectral = match req.method {
+            Method::Auto | Method::Spectral => crate::integrate::spectral::run(
                 &mut sys,
                 &start,
-                &times[next..],
+                times,
                 &t_end,
-                &evs,
+                &ws.events,
                 &crate::integrate::spectral::Settings {
                     tol: ctx.opts.tol.clone(),
-                    full: !theta_only,
+                    full: !req.theta_only,
                     ts: ctx.ts.clone(),
                     r: ctx.base_r.clone(),
                     escale: ctx.escale.clone(),
@@ -1069,16 +597,13 @@ fn solve_full(
             )?,
             _ => None,
         };
-        out.routes.push(match (&spectral, method) {
-            (Some(_), _) => Method::Spectral,
-            (None, Method::Collocation) => Method::Collocation,
-            (None, _) => Method::Gbs,
+        w.out.routes.push(match (&spectral, req.method) {
+            (Some(_), _) => Route::Spectral,
+            (None, Method::Collocation) => Route::Collocation,
+            (None, _) => Route::Gbs,
         });
-        let run = match (spectral, method) {
+        let run = match (spectral, req.method) {
             (Some(run), _) => run,
-            (None, Method::Gbs | Method::Spectral) => {
-                solve::run_from(&mut sys, &start, &times[next..], &t_end, &evs, &ctx.opts)?
-            }
             (None, Method::Collocation) => {
                 let stages = (wp as usize / 12).clamp(4, 24);
                 let mut co = crate::integrate::collocation::Collocation::new(
@@ -1088,205 +613,268 @@ fn solve_full(
                     stages,
                 );
                 solve::run_with(
-                    &mut sys,
-                    &start,
-                    &times[next..],
-                    &t_end,
-                    &evs,
-                    &ctx.opts,
-                    &mut co,
+                    &mut sys, &start, times, &t_end, &ws.events, &ctx.opts, &mut co,
                 )?
             }
+            (None, _) => solve::run_from(&mut sys, &start, times, &t_end, &ws.events, &ctx.opts)?,
         };
-        out.work_done.0 += run.stats.steps;
-        out.work_done.1 += run.stats.evals;
-        for s in &run.checkpoints {
-            let pt = point(&ctx, &mut sys, mode, s);
-            note_drift(&pt, &mut out.energy_drift);
+        w.out.work_done.0 += run.stats.steps;
+        w.out.work_done.1 += run.stats.evals;
+        if !mode.is_conservative() {
+            w.conservative = false;
         }
-        let full = !theta_only || out.routes.last() != Some(&Method::Spectral);
+        for s in &run.checkpoints {
+            let pt = ctx.point(&mut sys, mode, s, w.conservative);
+            w.note(&pt);
+        }
+        let full = !req.theta_only || w.out.routes.last() != Some(&Route::Spectral);
         for s in &run.outputs {
-            if theta_only {
-                out.thetas.push((s.q[sy::th(0)].clone(), Some(mode)));
+            if req.theta_only {
+                w.out
+                    .thetas
+                    .push((s.q[sy::th(0)].clone(), Phase::Contact(mode), None));
             }
             if !full {
                 continue;
             }
-            let pt = point(&ctx, &mut sys, mode, s);
-            note_drift(&pt, &mut out.energy_drift);
-            if !theta_only {
-                out.rows.push(pt);
+            let pt = ctx.point(&mut sys, mode, s, w.conservative);
+            w.note(&pt);
+            if !req.theta_only {
+                w.out.rows.push(pt);
             }
         }
-        next += run.outputs.len();
+        w.next += run.outputs.len();
         if !run.stopped {
-            let end_pt = point(&ctx, &mut sys, mode, &run.last);
-            note_drift(&end_pt, &mut out.energy_drift);
-            if to_impact {
+            let end_pt = ctx.point(&mut sys, mode, &run.last, w.conservative);
+            w.note(&end_pt);
+            if req.until != Until::LastTime {
                 return Err(Error::NotConverged {
-                    quantity: "separation".into(),
-                    requested: 0,
+                    quantity: "motion".into(),
+                    requested: req.digits,
                     reached: format!(
-                        "no separation before t = {:.6} (the horizon searched)",
+                        "no end of the motion before t = {:.6} (the horizon searched)",
                         t_end.to_f64()
                     ),
                     detail: "the horizon is four times the rolling model's separation time".into(),
                 });
             }
-            out.end = End::LastTime;
-            return Ok(out);
+            return Ok(w.out);
         }
         let hit = run
             .hits
             .last()
             .ok_or_else(|| Error::not_physical("internal: a stop without an event"))?;
-        let at = point(&ctx, &mut sys, mode, &hit.at);
-        note_drift(&at, &mut out.energy_drift);
-        let name = evs[hit.event].name.clone();
-        if name == "target" {
-            out.target = Some(at);
-            out.end = End::Target;
-            return Ok(out);
-        }
-        if let Some(tg) = &target {
-            let what = match name.as_str() {
-                "separation" => Some("the cylinders part"),
-                "lift_off" => Some("cylinder 1 lifts off"),
-                "floor_impact" => Some("cylinder 2 lands on the floor"),
-                _ => None,
-            };
-            if let Some(what) = what {
-                return Err(tg.not_reached(what, &at.theta));
+        let at = ctx.point(&mut sys, mode, &hit.at, w.conservative);
+        w.note(&at);
+        let mut what = ws.what[hit.event];
+        // ρ̈_free vanishes with N12 where the contact slides (no force left
+        // between the cylinders) or cylinder 1 is held: that zero is the
+        // separation, not a branch point
+        if what == What::FreeNormal {
+            let tiny_n = Float::with_val(wp, &ctx.escale / &ctx.base_r) * &ctx.rel_tiny;
+            if Float::with_val(wp, at.n12.abs_ref()) <= tiny_n {
+                what = What::Separation;
             }
         }
-        if name == "floor_impact" {
-            // cylinder 2 lands on the floor before the cylinders part
-            out.events.push(EventRec {
-                kind: Kind::Impact,
-                which: None,
-                mode: None,
-                at: at.clone(),
-                t_err: hit.t_err.clone(),
-            });
-            if next < times.len() {
-                return Err(after_end(
-                    &times[next],
+        let theta_err = Float::with_val(wp, at.theta_dot.abs_ref()) * &hit.t_err;
+        let ev = |kind, which, phase| EventRec {
+            kind,
+            which,
+            phase,
+            at: at.clone(),
+            t_err: hit.t_err.clone(),
+            theta_err: theta_err.clone(),
+        };
+        let flight_phase = Phase::Flight { floor: mode.floor };
+        match what {
+            What::Target => {
+                w.out.target = Some(at);
+                return Ok(w.out);
+            }
+            What::FloorImpact => {
+                w.target_error("cylinder 2 lands on the floor", &at.theta)?;
+                w.out.events.push(ev(Kind::Impact, None, None));
+                w.end_here(
+                    End::Impact(Surface::FloorInContact),
                     &at.t,
                     "the first impact (cylinder 2 reaches the floor while still on cylinder 1)",
+                )?;
+                w.out.impact = Some(flight::Impact::in_contact(&sys, &hit.at, &at));
+                return Ok(w.out);
+            }
+            What::LiftOff => {
+                w.target_error("cylinder 1 lifts off", &at.theta)?;
+                w.out
+                    .events
+                    .push(ev(Kind::LiftOff, Some(Which::Floor), None));
+                w.end_here(End::LiftOff, &at.t, "the lift-off of cylinder 1")?;
+                return Ok(w.out);
+            }
+            What::Separation => {
+                w.target_error("the cylinders part", &at.theta)?;
+                w.out.events.push(ev(
+                    Kind::Separation,
+                    Some(Which::Contact),
+                    Some(flight_phase),
                 ));
+                w.fly(mode, &hit.at, &at)?;
+                return Ok(w.out);
             }
-            out.impact = Some(flight::Impact::in_contact(&sys, &hit.at, &at));
-            out.end = End::Impact;
-            return Ok(out);
-        }
-        // a change of friction state, or the contact opening
-        let next_mode = if name == "separation" || name == "lift_off" {
-            None
-        } else {
-            decide(&ctx, &hit.at.q, &hit.at.v, &hit.at.t)?
-        };
-        if next_mode.is_none() {
-            if let Some(tg) = &target {
-                return Err(tg.not_reached("the cylinders part", &at.theta));
-            }
-            let lift = name == "lift_off";
-            out.events.push(EventRec {
-                kind: if lift {
-                    Kind::LiftOff
-                } else {
-                    Kind::Separation
-                },
-                which: Some(if lift { Which::Floor } else { Which::Contact }),
-                mode: None,
-                at: at.clone(),
-                t_err: hit.t_err.clone(),
-            });
-            if lift {
-                if next < times.len() {
-                    return Err(after_end(&times[next], &at.t, "the lift-off of cylinder 1"));
+            What::FreeNormal | What::PartAt => {
+                // parting becomes lawful (the free motion separates while
+                // the contact still holds), or stops being so
+                let rising = what == What::PartAt || !window_open;
+                if what == What::FreeNormal {
+                    if rising {
+                        window_open = true;
+                        w.out.windows.push((at.theta.clone(), None));
+                        w.out.events.push(ev(
+                            Kind::Indeterminate,
+                            Some(Which::Contact),
+                            Some(if req.branch == Branch::Part {
+                                flight_phase
+                            } else {
+                                Phase::Contact(mode)
+                            }),
+                        ));
+                    } else {
+                        window_open = false;
+                        if let Some(last) = w.out.windows.last_mut() {
+                            last.1 = Some(at.theta.clone());
+                        }
+                    }
                 }
-                out.end = End::LiftOff;
-                return Ok(out);
-            }
-            let fli = flight::Flight::new(&ctx, &sys, mode, &hit.at, &at)?;
-            for e in fli.events() {
-                out.events.push(e);
-            }
-            for tt in &times[next..] {
-                if *tt > fli.impact.t {
-                    return Err(after_end(tt, &fli.impact.t, "the first impact"));
+                let part_now = match (&req.branch, what) {
+                    (Branch::Part, What::FreeNormal) => rising,
+                    (Branch::PartAt(_), What::PartAt) => {
+                        if !window_open {
+                            let th = match &req.branch {
+                                Branch::PartAt(a) => a.to_string(),
+                                _ => String::new(),
+                            };
+                            return Err(Error::invalid(
+                                "part-at",
+                                th,
+                                "must lie where parting is lawful (the window between the \
+                                 branch point theta_indeterminate and the end of the closed \
+                                 branch)",
+                            ));
+                        }
+                        true
+                    }
+                    _ => false,
+                };
+                if part_now {
+                    w.target_error("the cylinders part", &at.theta)?;
+                    w.out.events.push(ev(
+                        Kind::Separation,
+                        Some(Which::Contact),
+                        Some(flight_phase),
+                    ));
+                    w.fly(mode, &hit.at, &at)?;
+                    return Ok(w.out);
                 }
-                let pt = fli.point(tt);
-                note_drift(&pt, &mut out.energy_drift);
-                if theta_only {
-                    out.thetas.push((pt.theta.clone(), None));
-                } else {
-                    out.rows.push(pt);
-                }
-            }
-            let imp_pt = fli.point(&fli.impact.t);
-            note_drift(&imp_pt, &mut out.energy_drift);
-            out.events.push(EventRec {
-                kind: Kind::Impact,
-                which: None,
-                mode: None,
-                at: imp_pt,
-                t_err: Float::new(wp),
-            });
-            out.separation = Some(at);
-            out.impact = Some(fli.impact);
-            out.end = End::Impact;
-            return Ok(out);
-        }
-        let new = next_mode.ok_or_else(|| Error::not_physical("internal: no mode"))?;
-        if new == mode {
-            return Err(Error::NotConverged {
-                quantity: "mode".into(),
-                requested: 0,
-                reached: format!(
-                    "event {name} at t = {:.12} leaves the mode {} unchanged",
-                    at.t.to_f64(),
-                    mode.tag()
-                ),
-                detail: "a grazing event the rigid-body model cannot resolve at this precision"
-                    .into(),
-            });
-        }
-        for (w, old_s, new_s) in [
-            (Which::Floor, mode.floor, new.floor),
-            (Which::Contact, mode.contact, new.contact),
-        ] {
-            if old_s == new_s {
+                // the same mode goes on from here
+                t = hit.at.t.clone();
+                q = hit.at.q.clone();
+                v = hit.at.v.clone();
+                work = hit.at.work.clone();
                 continue;
             }
-            let kind = match (old_s, new_s) {
-                (State::Stick, _) => Kind::SlipOnset,
-                (State::Slip(_), State::Stick) => Kind::Stick,
-                (State::Slip(_), State::Slip(_)) => Kind::SlipReversal,
-            };
-            out.events.push(EventRec {
-                kind,
-                which: Some(w),
-                mode: Some(new),
-                at: at.clone(),
-                t_err: hit.t_err.clone(),
-            });
+            What::Cone(_) | What::SlipZero(_) => {}
         }
+        // a change of friction state, or the contact opening
+        let choice = decide::decide(&ctx, &hit.at.q, &hit.at.v, &hit.at.t, &req.branch)?;
+        if choice.branch_point && !window_open {
+            window_open = true;
+            w.out.windows.push((at.theta.clone(), None));
+            w.out.events.push(ev(
+                Kind::Indeterminate,
+                Some(Which::Contact),
+                Some(choice.mode.map_or(flight_phase, Phase::Contact)),
+            ));
+        }
+        let Some(new) = choice.mode else {
+            w.target_error("the cylinders part", &at.theta)?;
+            w.out.events.push(ev(
+                Kind::Separation,
+                Some(Which::Contact),
+                Some(flight_phase),
+            ));
+            w.fly(mode, &hit.at, &at)?;
+            return Ok(w.out);
+        };
+        if new == mode {
+            return Err(grazing(&ws.events[hit.event].name, &at.t, mode));
+        }
+        push_changes(&mut w.out, mode, new, &at, &hit.t_err, &theta_err);
         t = hit.at.t.clone();
         q = hit.at.q.clone();
         v = hit.at.v.clone();
         work = hit.at.work.clone();
-        // a contact that starts to stick has the rolling constraint's
-        // constant of its new start (positions drift is measured from it)
         mode = new;
     }
     Err(Error::NotConverged {
         quantity: "mode".into(),
-        requested: 0,
+        requested: req.digits,
         reached: format!("more than {MAX_MODES} mode changes"),
         detail: format!(
             "stopped at t = {:.12} (a Zeno cascade of stick-slip events?)",
             t.to_f64()
         ),
     })
+}
+
+fn sample(
+    t: &Float,
+    q: &[Float],
+    v: &[Float],
+    acc: crate::mechanics::system::Accel,
+    work: &Float,
+) -> Sample {
+    Sample {
+        t: t.clone(),
+        q: q.to_vec(),
+        v: v.to_vec(),
+        qdd: acc.qdd,
+        lambda: acc.lambda,
+        work: work.clone(),
+        power: Float::new(t.prec()),
+    }
+}
+
+fn grazing(name: &str, t: &Float, mode: Mode) -> Error {
+    Error::NotConverged {
+        quantity: "mode".into(),
+        requested: 0,
+        reached: format!(
+            "event {name} at t = {:.12} leaves the mode {} unchanged",
+            t.to_f64(),
+            mode.tag()
+        ),
+        detail: "a grazing event the rigid-body model cannot resolve at this precision".into(),
+    }
+}
+
+/// The events of a change of contact states from `old` to `new` at `at`.
+fn push_changes(out: &mut Motion, old: Mode, new: Mode, at: &Point, t_err: &Float, th_err: &Float) {
+    for w in [Which::Floor, Which::Contact] {
+        let (o, n) = (old.of(w), new.of(w));
+        if o == n {
+            continue;
+        }
+        let kind = match (o, n) {
+            (State::Stick, _) => Kind::SlipOnset,
+            (State::Slip(_), State::Stick) => Kind::Stick,
+            _ => Kind::SlipReversal,
+        };
+        out.events.push(EventRec {
+            kind,
+            which: Some(w),
+            phase: Some(Phase::Contact(new)),
+            at: at.clone(),
+            t_err: t_err.clone(),
+            theta_err: th_err.clone(),
+        });
+    }
 }

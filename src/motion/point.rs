@@ -1,11 +1,49 @@
-//! The columns of one state of the motion.
+//! The columns of one state of the motion, the same for every contact law.
 
+use super::mode::Phase;
 use crate::integrate::solve::Sample;
 use crate::mechanics::system::{self, Row, System};
 use rug::Float;
 
-/// Two cylinders: route 2's values at one sample, in the conventions of the
-/// README (and of [`crate::oracle::TRAJECTORY_COLUMNS`]).
+/// The columns of a trajectory row, in order (the `mode` column, a text,
+/// follows them): time; the angle of the line of centres and its rates;
+/// the angles and positions; the velocities; the forces; the slip speeds
+/// and the work dissipated by friction.
+pub const COLUMNS: [&str; 21] = [
+    "t",
+    "theta",
+    "theta_dot",
+    "theta_ddot",
+    "phi1",
+    "phi2",
+    "x1",
+    "x2",
+    "y2",
+    "x1_dot",
+    "phi1_dot",
+    "x2_dot",
+    "y2_dot",
+    "phi2_dot",
+    "F1",
+    "N1",
+    "F21",
+    "N12",
+    "s1",
+    "s12",
+    "work",
+];
+
+/// Index of a column in [`COLUMNS`].
+pub fn column_index(name: &str) -> Option<usize> {
+    COLUMNS.iter().position(|c| *c == name)
+}
+
+/// The mechanical state at one time, in the conventions of the README:
+/// θ (in flight the direction of the line of centres), its rates, the
+/// angles φ1 (cylinder 1, clockwise) and φ2 (cylinder 2 relative to the
+/// line of centres, the paper's angle, with φ2 = 0 at t = 0), the centres,
+/// the velocities and the forces F1, N1 (floor on cylinder 1), F21, N12
+/// (between the cylinders; 0 in flight).
 #[derive(Debug, Clone)]
 pub struct TwoState {
     /// t.
@@ -18,7 +56,8 @@ pub struct TwoState {
     pub theta_ddot: Float,
     /// φ1 (clockwise).
     pub phi1: Float,
-    /// φ2 = ψ2 + θ (the paper's angle).
+    /// φ2 = ψ2 + θ (the paper's angle; ψ2 is cylinder 2's counter-clockwise
+    /// rotation).
     pub phi2: Float,
     /// x1.
     pub x1: Float,
@@ -26,6 +65,16 @@ pub struct TwoState {
     pub x2: Float,
     /// y2.
     pub y2: Float,
+    /// ẋ1.
+    pub x1_dot: Float,
+    /// φ̇1.
+    pub phi1_dot: Float,
+    /// ẋ2.
+    pub x2_dot: Float,
+    /// ẏ2.
+    pub y2_dot: Float,
+    /// φ̇2.
+    pub phi2_dot: Float,
     /// F1 (floor's or holder's x force on cylinder 1; 0 on a frictionless floor).
     pub f1: Float,
     /// N1.
@@ -37,8 +86,35 @@ pub struct TwoState {
 }
 
 impl TwoState {
-    /// The values in [`crate::oracle::TRAJECTORY_COLUMNS`] order, t first.
-    pub fn columns(&self) -> [Float; 13] {
+    /// The values of the first 18 [`COLUMNS`] (t … N12).
+    pub fn values(&self) -> [&Float; 18] {
+        [
+            &self.t,
+            &self.theta,
+            &self.theta_dot,
+            &self.theta_ddot,
+            &self.phi1,
+            &self.phi2,
+            &self.x1,
+            &self.x2,
+            &self.y2,
+            &self.x1_dot,
+            &self.phi1_dot,
+            &self.x2_dot,
+            &self.y2_dot,
+            &self.phi2_dot,
+            &self.f1,
+            &self.n1,
+            &self.f21,
+            &self.n12,
+        ]
+    }
+}
+
+impl TwoState {
+    /// The 13 values of the ideal oracle's rows
+    /// ([`crate::oracle::TRAJECTORY_COLUMNS`]: t … y2, F1 … N12).
+    pub fn ideal_columns(&self) -> [Float; 13] {
         [
             self.t.clone(),
             self.theta.clone(),
@@ -65,26 +141,93 @@ fn row_value(sys: &System, s: &Sample, row: Row) -> Float {
         .unwrap_or_else(|| Float::new(sys.prec))
 }
 
-/// The columns of a two-cylinder sample (the multipliers as forces).
+/// The state of a two-cylinder sample of a constrained system (the
+/// multipliers as forces).
 pub fn two_state(sys: &System, s: &Sample) -> TwoState {
     let p = sys.prec;
     let q = &s.q;
-    let th = &q[system::th(0)];
+    let v = &s.v;
+    let ith = system::th(0);
+    let th = &q[ith];
     let r = &q[system::rr(0)];
     let (sn, cs) = th.clone().sin_cos(Float::new(p));
+    let thd = &v[ith];
+    let rd = &v[system::rr(0)];
+    // C2 = C1 + r (sin θ, cos θ)
+    let x2_dot = Float::with_val(p, r * &cs) * thd + Float::with_val(p, rd * &sn) + &v[system::X1];
+    let y2_dot = Float::with_val(p, rd * &cs) - Float::with_val(p, r * &sn) * thd + &v[system::Y1];
     TwoState {
         t: s.t.clone(),
         theta: th.clone(),
-        theta_dot: s.v[system::th(0)].clone(),
-        theta_ddot: s.qdd[system::th(0)].clone(),
+        theta_dot: thd.clone(),
+        theta_ddot: s.qdd[ith].clone(),
         phi1: q[system::PHI1].clone(),
         phi2: Float::with_val(p, &q[system::psi(0)] + th),
         x1: q[system::X1].clone(),
         x2: Float::with_val(p, r * &sn) + &q[system::X1],
         y2: Float::with_val(p, r * &cs) + &q[system::Y1],
+        x1_dot: v[system::X1].clone(),
+        phi1_dot: v[system::PHI1].clone(),
+        x2_dot,
+        y2_dot,
+        phi2_dot: Float::with_val(p, &v[system::psi(0)] + thd),
         f1: row_value(sys, s, Row::FloorFriction),
         n1: row_value(sys, s, Row::FloorNormal),
         f21: row_value(sys, s, Row::Friction(0)),
         n12: row_value(sys, s, Row::Normal(0)),
+    }
+}
+
+/// Every column of the motion at one time, and the phase it belongs to.
+#[derive(Debug, Clone)]
+pub struct Point {
+    /// The mechanical state (reached through `Deref`: `point.theta`).
+    pub state: TwoState,
+    /// Floor slip speed s1 = ẋ1 − r1 φ̇1 (exactly 0 while the floor rolls or
+    /// holds).
+    pub s1: Float,
+    /// Contact slip speed s12 = r θ̇ + r2 ψ̇2 − r1 φ̇1 (exactly 0 while the
+    /// contact rolls; 0 in flight, where there is no contact).
+    pub s12: Float,
+    /// Energy dissipated by friction since t = 0.
+    pub work: Float,
+    /// Total energy T + V.
+    pub energy: Float,
+    /// The phase (mode, or flight).
+    pub phase: Phase,
+    /// The route's estimate of each column's absolute error, in
+    /// [`COLUMNS`] order, where it has one of its own (the energy route:
+    /// from the bound on δ = θ − θ0); `None`: a few units of the
+    /// integrator's tolerance.
+    pub err: Option<Vec<Float>>,
+    /// Columns that are exactly 0 by the laws (a rolling contact's slip
+    /// speed, a frictionless contact's force, the work of a conservative
+    /// phase), as a bit set over [`COLUMNS`].
+    pub exact_zero: u32,
+}
+
+impl std::ops::Deref for Point {
+    type Target = TwoState;
+    fn deref(&self) -> &TwoState {
+        &self.state
+    }
+}
+
+impl Point {
+    /// The values in [`COLUMNS`] order.
+    pub fn columns(&self) -> Vec<Float> {
+        let mut v: Vec<Float> = self.state.values().into_iter().cloned().collect();
+        v.extend([self.s1.clone(), self.s12.clone(), self.work.clone()]);
+        v
+    }
+
+    /// Whether column `i` of [`COLUMNS`] is exactly 0 by the laws.
+    pub fn is_exact_zero(&self, i: usize) -> bool {
+        self.exact_zero & (1 << i) != 0
+    }
+
+    /// The bit of column `name` in [`Point::exact_zero`].
+    pub fn zero_bit(name: &str) -> u32 {
+        column_index(name).map_or(0, |i| 1 << i)
     }
 }

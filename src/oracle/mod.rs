@@ -1,69 +1,64 @@
-//! The questions users ask, answered with verified digits.
+//! The questions users ask, answered with verified digits, for every
+//! contact law: one typed [`Answer`].
 //!
-//! An [`Oracle`] holds a model and a requested number of significant digits.
-//! Each method runs its computation through the precision ladder
-//! ([`crate::numeric::verify::ladder`]) and returns [`Verified`] numbers.
+//! * [`separation`]: the motion to its end — the events (slip onsets,
+//!   sticks, reversals, the branch point, separation), the free flight and
+//!   the first impact (or a lift-off, or cylinder 2 reaching the floor while
+//!   still on cylinder 1); θs, t_s and, for the ideal models, the findings
+//!   of the paper's closed forms over the closed branch.
+//! * [`time`], [`forces`]: where θ first reaches an angle.
+//! * [`trajectory`]: every column at given times, through every phase.
 //!
-//! Routes: `separation()` scans N12 and refines with Illinois regula falsi
-//! (its output is part of the golden data and does not change);
-//! `separation_angle()` roots an exact polynomial in cos θ; `time_at()` uses
-//! the half-angle quadrature (tanh-sinh, then Gauss–Legendre once it pays);
-//! `trajectory()` and `theta_at_times()` one Taylor-series run per precision
-//! for all times. The oracle caches what depends only on the model and the
-//! precision (engines with their node sets, the scan bracket, θs and t_s per
-//! precision), never a requested answer.
-//!
-//! A model that falls to the left (θ0 < 0, or θ0 = 0 with θ̇0 < 0) is solved as
-//! its mirror image and the odd quantities (θ, θ̇, θ̈, φ1, φ2, x1, x2, F1, F21)
-//! change sign on the way out.
+//! Each is the hybrid motion of [`crate::motion`] computed at the two
+//! working precisions of the precision ladder ([`ladder`]). Where the
+//! question stays inside a conservative phase of an ideal model (`time`
+//! and `forces` before the cylinders part, on the `stay` branch) the
+//! energy route of [`ideal::Oracle`] answers directly: the same numbers,
+//! by the same route, with its own ladder.
 
-mod engine;
-pub mod rigorous;
+pub mod answer;
+pub mod ideal;
+pub use ideal::rigorous;
+pub mod ladder;
+
+pub use answer::{Answer, EventAnswer, Question, Row};
+pub use ideal::{friction_ratio, Oracle, Separation, FORCE_KEYS, MAX_DIGITS, TRAJECTORY_COLUMNS};
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::mechanics::Reduced;
-use crate::model::{Contact, Floor, Model};
-use crate::numeric::taylor::{self, Conservative};
-use crate::numeric::verify::{ladder, ladder_runs, ladder_table, Estimate, Run, Verified};
-use engine::Engine;
-use rug::{Assign, Float};
-use std::collections::HashMap;
+use crate::model::{Law, Model, Which};
+use crate::motion::{self, Branch, Caches, Kind, Method, Motion, Phase, Request, Until};
+use crate::numeric::verify::{ladder, precisions, Estimate, Run, Verified};
+use ladder::{event_estimates, event_names, events_of, integrated, laddered, Runs};
+use rug::Float;
 
-/// Largest number of significant digits accepted.
-pub const MAX_DIGITS: u32 = 2000;
+/// How to answer.
+#[derive(Debug, Clone)]
+pub struct Options {
+    /// Significant digits (1 to [`MAX_DIGITS`]).
+    pub digits: u32,
+    /// The branch to follow where the motion is not unique.
+    pub branch: Branch,
+    /// The integrators ([`Method::Auto`]: the fastest verified route per
+    /// phase).
+    pub method: Method,
+}
 
-/// Names of the columns of a trajectory row, in order.
-pub const TRAJECTORY_COLUMNS: [&str; 13] = [
-    "t",
-    "theta",
-    "theta_dot",
-    "theta_ddot",
-    "phi1",
-    "phi2",
-    "x1",
-    "x2",
-    "y2",
-    "F1",
-    "N1",
-    "F21",
-    "N12",
-];
+impl Options {
+    /// `digits` digits on the default branch and routes.
+    pub fn digits(digits: u32) -> Self {
+        Options {
+            digits,
+            branch: Branch::Stay,
+            method: Method::Auto,
+        }
+    }
+}
 
-/// From this working precision on (about 170 digits) the trajectory's θ(t)
-/// comes from inverting t(θ) on a Chebyshev interpolant
-/// ([`engine::Inverse`]) rather than from a Taylor run of θ̈ = F(θ): the
-/// Taylor run's cost grows like the cube of the precision, an inversion's
-/// like its square times the interpolant's size.
-pub const TRAJECTORY_CHEB_MIN_BITS: u32 = 600;
-
-/// Below this |θ0| the trajectory takes the Chebyshev route at every
-/// precision: its pieces grade towards the start's singularity, where a
-/// Taylor run needs ever shorter steps (θ0 = 1e-100 failed after 26 s).
-pub const NEAR_TOP: f64 = 1e-6;
-
-/// Names of the quantities of [`Oracle::forces_at`], in order.
-pub const FORCE_KEYS: [&str; 8] = [
+/// The keys of `forces`, for every law: F1, N1, F21, N12, θ̇, θ̈, the
+/// friction each contact needs (|F1|/N1, |F21|/N12), the slip speeds and
+/// the work dissipated.
+pub const FORCES_KEYS: [&str; 11] = [
     "F1",
     "N1",
     "F21",
@@ -72,1433 +67,554 @@ pub const FORCE_KEYS: [&str; 8] = [
     "theta_ddot",
     "mu_floor",
     "mu_contact",
+    "s1",
+    "s12",
+    "work",
 ];
 
-/// What `separation` reports.
-#[derive(Debug, Clone)]
-pub struct Separation {
-    /// θs: the angle where N12 = 0.
-    pub theta_s: Verified,
-    /// The time from the start to separation (`None`: infinite, start from rest
-    /// at the top).
-    pub t_s: Option<Verified>,
-    /// Further verified quantities (sign-change angles, F21 at separation, the
-    /// angles where rolling would first fail for `--mu`, where N1 vanishes).
-    pub extra: Vec<Verified>,
-    /// Plain-language findings (what does not exist, what coincides).
-    pub notes: Vec<String>,
-}
+/// The impact keys of `separation`: the state just before the first impact.
+pub const IMPACT_KEYS: [&str; 9] = [
+    "t_impact",
+    "x1_impact",
+    "x2_impact",
+    "y2_impact",
+    "x1_dot_impact",
+    "phi1_dot_impact",
+    "x2_dot_impact",
+    "y2_dot_impact",
+    "psi2_dot_impact",
+];
 
-/// The oracle for one model at one requested accuracy.
-pub struct Oracle {
-    model: Model,
-    work: Model,
-    sign: i32,
-    red: Reduced,
-    digits: u32,
-    engines: HashMap<u32, Engine>,
-    mu: Option<Exact>,
-    /// t_s at each precision asked for (for the trajectory's time check).
-    t_s_at: HashMap<u32, Float>,
-    /// The first sign change of N12 on the 96-bit scan (computed once).
-    scan_s: Option<Option<(Float, Float)>>,
-    /// δs = θs − θ0 refined at each precision asked for.
-    delta_s_at: HashMap<u32, (Float, Float)>,
-    /// N12·K²/m2 as an exact polynomial in cos θ (built on first use).
-    n12_poly: Option<crate::mechanics::dynamics::N12Poly>,
-    /// N1, F1, F21 as exact polynomials in cos θ (built on first use).
-    force_polys: Option<crate::mechanics::dynamics::ForcePolys>,
-}
-
-/// Where an extremum along [θ0, θs] lies.
-#[derive(Debug, Clone)]
-enum At {
-    /// θ0.
-    Start,
-    /// θs.
-    Separation,
-    /// A given angle inside the motion.
-    Angle(Exact),
-    /// An interior root c of a polynomial in c = cos θ (found at
-    /// `SCAN_PREC` bits), refined at each precision.
-    Root(Float, crate::mechanics::dynamics::HPoly),
-}
-
-/// Constants of the trajectory rows at one precision.
-struct RowContext {
-    p: u32,
-    /// Natural scales of the 12 columns after t.
-    scales: [Float; 12],
-    /// √(r/g).
-    ts: Float,
-    /// r = r1 + r2.
-    rr: Float,
-    /// r1.
-    r1: Float,
-}
-
-/// Whether `q` has a terminating decimal expansion (its reduced denominator
-/// has no prime factors but 2 and 5).
-pub(crate) fn terminating(q: &rug::Rational) -> bool {
-    let mut d = q.denom().clone();
-    d.remove_factor_mut(&rug::Integer::from(2));
-    d.remove_factor_mut(&rug::Integer::from(5));
-    d == 1
-}
-
-/// The one value of a one-name ladder.
-fn single(v: Vec<Verified>) -> Result<Verified> {
-    v.into_iter()
-        .next()
-        .ok_or_else(|| Error::not_physical("internal: the ladder returned no value"))
-}
-
-/// Precision of the scans that locate brackets (refined afterwards).
-const SCAN_PREC: u32 = 96;
-/// Scan steps over the motion.
-const SCAN_STEPS: u32 = 512;
-
-impl Oracle {
-    /// An oracle for `model` answering with `digits` significant digits.
-    ///
-    /// Errors: digits outside 1..=[`MAX_DIGITS`]; a start where the cylinders
-    /// already part (N12 ≤ 0) or cylinder 1 already lifts (N1 ≤ 0).
-    pub fn new(model: &Model, digits: u32) -> Result<Self> {
-        if digits == 0 || digits > MAX_DIGITS {
-            return Err(Error::invalid(
-                "digits",
-                digits,
-                format!("must be between 1 and {MAX_DIGITS}"),
-            ));
-        }
-        let sign = model.direction();
-        let work = if sign < 0 {
-            model.mirrored()
-        } else {
-            model.clone()
-        };
-        let red = Reduced::new(&work)?;
-        let mut o = Oracle {
-            model: model.clone(),
-            work,
-            sign,
-            red,
+fn check_digits(digits: u32) -> Result<()> {
+    if digits == 0 || digits > MAX_DIGITS {
+        return Err(Error::invalid(
+            "digits",
             digits,
-            engines: HashMap::new(),
-            mu: None,
-            scan_s: None,
-            t_s_at: HashMap::new(),
-            delta_s_at: HashMap::new(),
-            n12_poly: None,
-            force_polys: None,
+            format!("must be between 1 and {MAX_DIGITS}"),
+        ));
+    }
+    Ok(())
+}
+
+fn check_times(times: &[Exact]) -> Result<()> {
+    for w in times.windows(2) {
+        if w[1].to_float(256) < w[0].to_float(256) {
+            return Err(Error::invalid("times", &w[1], "must be ascending"));
+        }
+    }
+    if let Some(t) = times.iter().find(|t| t.signum() < 0) {
+        return Err(Error::invalid(
+            "times",
+            t,
+            "must be >= 0 (the start is at t = 0)",
+        ));
+    }
+    Ok(())
+}
+
+fn infinite(model: &Model, what: &str) -> Error {
+    let _ = model;
+    Error::not_physical(format!(
+        "{what} is infinite: the motion starts from rest exactly at the unstable top (theta0 = 0, thetadot0 = 0); \
+         give a small --theta0 or --thetadot0 (forces and the separation angle are defined as the limit theta0 -> 0+)"
+    ))
+}
+
+fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -> Runs<'a> {
+    Runs {
+        model,
+        req: Request {
+            times,
+            until,
+            theta_only: false,
+            branch: opts.branch.clone(),
+            method: opts.method,
+            horizon: motion::default_horizon(model),
+            run: Run::Low,
+            digits: opts.digits,
+        },
+        caches: Caches::default(),
+    }
+}
+
+fn empty_answer(question: Question, model: &Model, opts: &Options) -> Answer {
+    Answer {
+        question,
+        model: model.clone(),
+        digits: opts.digits,
+        branch: opts.branch.clone(),
+        start_mode: None,
+        events: Vec::new(),
+        end: None,
+        values: Vec::new(),
+        proved: Vec::new(),
+        rows: Vec::new(),
+        proved_rows: Vec::new(),
+        phase: None,
+        routes: Vec::new(),
+        notes: Vec::new(),
+    }
+}
+
+/// The notes every motion answer carries: the energy balance where work
+/// was dissipated, the routes, the window where parting was lawful.
+fn motion_notes(first: &Motion, opts: &Options) -> Vec<String> {
+    let mut notes = Vec::new();
+    let dissipative = first
+        .routes
+        .iter()
+        .any(|r| *r != motion::Route::Energy && *r != motion::Route::Flight)
+        || first
+            .events
+            .iter()
+            .any(|e| e.at.work.is_sign_positive() && !e.at.work.is_zero());
+    if dissipative {
+        notes.push(format!(
+            "energy balance E(0) - E(t) = W(t) (W: work of sliding friction) held to {} of m2 g r along the motion",
+            crate::numeric::decimal::short(&first.energy_drift)
+        ));
+    }
+    if first.events.iter().any(|e| e.kind == Kind::Indeterminate) {
+        let on = match &opts.branch {
+            Branch::Stay => "the cylinders stay together (the branch followed, the limit of stiff \
+                             compliant contact); parting is lawful from theta_indeterminate to the \
+                             end of the closed branch (velocity-level complementarity engines part \
+                             at theta_indeterminate: --branch part)"
+                .to_string(),
+            Branch::Part => "the cylinders part at the first instant they may (--branch part, as \
+                             velocity-level complementarity engines do)"
+                .to_string(),
+            Branch::PartAt(a) => format!("the cylinders part where theta reaches {a} (--part-at)"),
         };
-        let e = o.engine(SCAN_PREC)?;
-        let z = Float::new(SCAN_PREC);
-        let st = e.dynm.state(&z);
-        let f = e.dynm.forces(&st);
-        if !f.n12.is_sign_positive() || f.n12.is_zero() {
-            return Err(Error::not_physical(format!(
-                "the cylinders part at once: N12 = {:.3e} <= 0 at the start (thetadot0 too large for theta0)",
-                f.n12.to_f64()
-            )));
-        }
-        if !f.n1.is_sign_positive() || f.n1.is_zero() {
-            return Err(Error::not_physical(format!(
-                "cylinder 1 lifts off the floor at once: N1 = {:.3e} <= 0 at the start",
-                f.n1.to_f64()
-            )));
-        }
-        Ok(o)
+        notes.push(format!(
+            "the rigid-body motion is not unique from the branch point theta_indeterminate: the \
+             free relative normal acceleration r thetadot^2 - g cos(theta) - x1ddot_free sin(theta) \
+             turns positive while N12 > 0, so the cylinders may stay together or part; {on}"
+        ));
     }
+    notes
+}
 
-    /// Sets the friction coefficient μ for which `separation` reports where
-    /// rolling without slipping would first fail (μ ≥ 0).
-    pub fn with_mu(mut self, mu: Option<Exact>) -> Result<Self> {
-        if let Some(m) = &mu {
-            if m.signum() < 0 {
-                return Err(Error::invalid("mu", m, "must be >= 0"));
-            }
-        }
-        self.mu = mu;
-        Ok(self)
-    }
-
-    /// The model as given.
-    pub fn model(&self) -> &Model {
-        &self.model
-    }
-
-    /// The requested significant digits.
-    pub fn digits(&self) -> u32 {
-        self.digits
-    }
-
-    fn engine(&mut self, prec: u32) -> Result<&mut Engine> {
-        if !self.engines.contains_key(&prec) {
-            let e = Engine::new(&self.work, &self.red, prec)?;
-            self.engines.insert(prec, e);
-        }
-        Ok(self.engines.get_mut(&prec).expect("inserted"))
-    }
-
-    fn infinite_time_error(&self, what: &str) -> Error {
-        Error::not_physical(format!(
-            "{what} is infinite: the motion starts from rest exactly at the unstable top (theta0 = 0, thetadot0 = 0); \
-             give a small --theta0 or --thetadot0 (forces and the separation angle are defined as the limit theta0 -> 0+)"
-        ))
-    }
-
-    /// The coefficients (ascending in c = cos θ) of N12·K²/m2 at `prec` bits
-    /// ([`crate::mechanics::dynamics::N12Poly`], built once in exact
-    /// rationals; the start enters through A_H).
-    fn n12_coefficients(&mut self, prec: u32) -> Result<Vec<Float>> {
-        use crate::mechanics::dynamics::N12Poly;
-        let a_h = N12Poly::a_h(&self.engine(prec)?.dynm);
-        let poly = self
-            .n12_poly
-            .get_or_insert_with(|| N12Poly::new(&self.red, self.work.params()));
-        Ok(poly.at(&a_h, prec))
-    }
-
-    /// The 96-bit scan's bracket of the first sign change of N12 (cached).
-    ///
-    /// The scan evaluates N12·K²/m2, the polynomial in c = cos θ of
-    /// [`crate::mechanics::dynamics::N12Poly`] (one `cos` and a Horner sum per
-    /// point; K > 0, so it has N12's sign), rather than the full dynamics: the
-    /// same grid and the same signs at about a fifth of the cost, which is
-    /// most of a cold `time_at`.
-    fn scan_bracket(&mut self) -> Result<(Float, Float)> {
-        if self.scan_s.is_none() {
-            let coef = self.n12_coefficients(SCAN_PREC)?;
-            let th0 = self.work.start().theta0.to_float(SCAN_PREC);
-            let hi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi) - &th0;
-            let zero = Float::new(SCAN_PREC);
-            let mut c = Float::new(SCAN_PREC);
-            let bracket = crate::numeric::root::first_sign_change(&zero, &hi, SCAN_STEPS, |d| {
-                c.assign(&th0 + d);
-                c.cos_mut();
-                let mut v = Float::new(SCAN_PREC);
-                crate::numeric::poly::horner(&coef, &c, &mut v);
-                v
-            });
-            self.scan_s = Some(bracket);
-        }
-        match &self.scan_s {
-            Some(Some(b)) => Ok(b.clone()),
-            _ => Err(Error::not_physical(
-                "N12 stays positive up to theta = pi: the cylinders never separate",
-            )),
-        }
-    }
-
-    /// δs = θs − θ0 at `prec`, as (value, error), with the bracket scanned at
-    /// low precision first. Both are deterministic and cached.
-    fn delta_s(&mut self, prec: u32) -> Result<(Float, Float)> {
-        if let Some(v) = self.delta_s_at.get(&prec) {
-            return Ok(v.clone());
-        }
-        let (lo, hi) = self.scan_bracket()?;
-        let e = self.engine(prec)?;
-        let v = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
-        self.delta_s_at.insert(prec, v.clone());
-        Ok(v)
-    }
-
-    /// θ in the working frame from a user angle.
-    fn to_work(&self, theta: &Exact) -> Exact {
-        if self.sign < 0 {
-            theta.neg()
-        } else {
-            theta.clone()
-        }
-    }
-
-    fn odd(&self, x: Float) -> Float {
-        if self.sign < 0 {
-            -x
-        } else {
-            x
-        }
-    }
-
-    fn scale_force(&self, p: u32) -> Float {
-        let pr = self.work.params();
-        Float::with_val(p, &rug::Rational::from(&pr.m1 + &pr.m2)) * &pr.g
-    }
-
-    fn scale_time(&self, p: u32) -> Float {
-        let pr = self.work.params();
-        Float::with_val(p, Float::with_val(p, &pr.r()) / &pr.g).sqrt()
-    }
-
-    /// The separation angle θs (where N12 = 0), the separation time, and the
-    /// findings listed in [`Separation`].
-    pub fn separation(&mut self) -> Result<Separation> {
-        let digits = self.digits;
-        let finite = !self.work.starts_at_equilibrium();
-        let mut names = vec!["theta_s"];
-        if finite {
-            names.push("t_s");
-        }
-        let main = ladder(digits, &names, |p| {
-            let (ds, err) = self.delta_s(p)?;
-            let th0 = self.work.start().theta0.to_float(p);
-            let one = Float::with_val(p, 1u32);
-            let th = Float::with_val(p, &th0 + &ds);
-            let mut out = vec![Estimate::new(self.odd(th), err.clone(), one)];
-            if finite {
-                let ts = self.scale_time(p);
-                let e = self.engine(p)?;
-                let (t, terr) = e.time(&ds);
-                let st = e.dynm.state(&ds);
-                let prop = Float::with_val(p, &err / &st.thetadot);
-                out.push(Estimate::new(t, terr + prop, ts));
-            }
-            Ok(out)
+/// The motion to its end, verified: the events, θs, t_s, the work
+/// dissipated, the branch point, the first impact; for an ideal model on
+/// the `stay` branch also the closed forms' findings over the closed
+/// branch (the least N1, the most friction needed, sign changes of φ̇1, φ1,
+/// F21 at θs).
+///
+/// Errors: bad digits; a start at rest exactly at the top with Coulomb
+/// friction (every time and event angle is infinite or a limit); see
+/// [`motion::run`].
+pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
+    check_digits(opts.digits)?;
+    let digits = opts.digits;
+    let mut ans = empty_answer(Question::Separation, model, opts);
+    if model.starts_at_equilibrium() {
+        // the limit θ0 → 0+: the closed branch's angles are finite, every
+        // time infinite (the ideal models' closed forms)
+        let ideal = model.ideal().ok_or_else(|| {
+            infinite(
+                model,
+                "every time along the motion (and with friction every event)",
+            )
         })?;
-        let mut it = main.into_iter();
-        let theta_s = it.next().expect("theta_s");
-        let t_s = it.next();
+        let mut o = Oracle::new(&ideal, digits)?;
+        let sep = o.separation()?;
+        ans.values.push(sep.theta_s);
+        ans.values.extend(sep.extra);
+        ans.notes = sep.notes;
+        return Ok(ans);
+    }
+    let mut runs = runs(model, opts, Vec::new(), Until::End);
+    let (p1, _) = precisions(digits, 0);
+    let first = runs.at(p1, Run::Low)?;
+    let n_ev = first.events.len();
+    let mut names = event_names(n_ev);
+    let sep_ev = first.events.iter().position(|e| e.kind == Kind::Separation);
+    let ind_ev = first
+        .events
+        .iter()
+        .position(|e| e.kind == Kind::Indeterminate);
+    let has_impact = first.impact.is_some();
+    if sep_ev.is_some() {
+        names.extend(["theta_s", "t_s", "work_s"].map(String::from));
+    }
+    if ind_ev.is_some() {
+        names.extend(["theta_indeterminate", "t_indeterminate"].map(String::from));
+    }
+    if has_impact {
+        names.extend(IMPACT_KEYS.map(String::from));
+    }
+    let vals = laddered(&mut runs, first.clone(), &names, 1, |m| {
+        let mut out = Vec::new();
+        event_estimates(m, &mut out);
+        let p = m.prec();
+        if let Some(i) = sep_ev {
+            out.push(out[2 * i + 1].clone());
+            out.push(out[2 * i].clone());
+            let w = &m.events[i].at.work;
+            out.push(if m.events[i].at.is_exact_zero(20) {
+                Estimate::zero(p, Float::with_val(p, 1u32))
+            } else {
+                integrated(w, Float::with_val(p, 1u32))
+            });
+        }
+        if let Some(i) = ind_ev {
+            out.push(out[2 * i + 1].clone());
+            out.push(out[2 * i].clone());
+        }
+        if let Some(imp) = &m.impact {
+            let ev_err = sep_ev
+                .map(|i| m.events[i].t_err.clone())
+                .unwrap_or_else(|| Float::new(p));
+            for v in [
+                &imp.t,
+                &imp.x1,
+                &imp.x2,
+                &imp.y2,
+                &imp.vx1,
+                &imp.phi1_dot,
+                &imp.vx2,
+                &imp.vy2,
+                &imp.psi2_dot,
+            ] {
+                let mut e = integrated(v, Float::with_val(p, 1u32));
+                e.err += Float::with_val(p, &ev_err) * 16u32;
+                out.push(e);
+            }
+        }
+        Ok(out)
+    })?;
+    let mut vals = vals.into_iter().next().unwrap_or_default();
+    let rest = vals.split_off(2 * n_ev);
+    for (v, name) in rest.into_iter().zip(names.iter().skip(2 * n_ev)) {
+        let mut v = v;
+        v.name = name.clone();
+        ans.values.push(v);
+    }
+    ans.events = events_of(&first, &vals);
+    ans.start_mode = Some(first.start_mode);
+    ans.end = first.end;
+    ans.routes = first.routes.clone();
+    ans.notes = motion_notes(&first, opts);
+    if let (Some(i), Some(imp)) = (sep_ev, &first.impact) {
+        let n = first.events[i].at.n12.to_f64();
+        if n.abs() > 1e-12
+            && first.events[..i]
+                .iter()
+                .all(|e| e.kind != Kind::Indeterminate || opts.branch == Branch::Stay)
+        {
+            if opts.branch == Branch::Stay {
+                ans.notes.push(format!(
+                    "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
+                     event no mode with the contact closed is consistent and the free motion \
+                     separates, so the normal force drops to 0 at once"
+                ));
+            }
+        }
+        ans.notes.push(format!(
+            "the first impact is on the {}{}",
+            imp.surface.name().replace('_', " "),
+            if imp.surface == motion::Surface::Cylinder {
+                " (cylinder 2 touches cylinder 1 again before it reaches the floor)"
+            } else {
+                ""
+            }
+        ));
+    }
+    match first.end {
+        Some(motion::End::LiftOff) => ans.notes.push(
+            "cylinder 1 leaves the floor (N1 = 0) before the cylinders part: the model ends there"
+                .into(),
+        ),
+        Some(motion::End::Impact(motion::Surface::FloorInContact)) => ans.notes.push(
+            "the cylinders do not part: cylinder 2 reaches the floor while still on cylinder 1, \
+             an impact the model does not continue through"
+                .into(),
+        ),
+        _ => {}
+    }
+    ans.notes
+        .push("the model ends at the first impact (impact laws are outside it)".into());
+    // the closed forms' findings over the closed branch
+    let closed_branch = first.routes.first() == Some(&motion::Route::Energy)
+        && sep_ev.is_some_and(|i| {
+            first.events[..i]
+                .iter()
+                .all(|e| e.kind == Kind::Indeterminate)
+        });
+    if let (Some(ideal), Branch::Stay, true) = (model.ideal(), &opts.branch, closed_branch) {
+        let route = runs
+            .caches
+            .sticking
+            .take()
+            .ok_or_else(|| Error::not_physical("internal: no energy route"))?;
+        let mut o = Oracle::with_route(&ideal, digits, route)?;
+        let theta_s = ans
+            .value("theta_s")
+            .cloned()
+            .ok_or_else(|| Error::not_physical("internal: no theta_s"))?;
         let mut extra = Vec::new();
         let mut notes = Vec::new();
-        if !finite {
-            notes.push(
-                "t_s is infinite: the start is rest exactly at the unstable top; theta_s is the limit theta0 -> 0+"
-                    .to_string(),
-            );
+        o.separation_findings(&theta_s, &mut extra, &mut notes)?;
+        let at = ans
+            .values
+            .iter()
+            .position(|v| v.name == "work_s")
+            .map_or(0, |i| i + 1);
+        let at = if ind_ev.is_some() { at + 2 } else { at };
+        for (k, v) in extra.into_iter().enumerate() {
+            ans.values.insert(at + k, v);
         }
-        self.separation_findings(&theta_s, &mut extra, &mut notes)?;
-        Ok(Separation {
-            theta_s,
-            t_s,
-            extra,
-            notes,
-        })
+        ans.notes.extend(notes);
     }
+    Ok(ans)
+}
 
-    /// θs alone: the first angle past θ0 where N12 = 0, with verified digits
-    /// (the same quantity as [`Separation::theta_s`], without the other
-    /// findings of [`Oracle::separation`]).
-    ///
-    /// Method: N12·K²/m2 is a polynomial of degree ≤ 5 in c = cos θ
-    /// ([`crate::mechanics::dynamics::Dyn::n12_polynomial`]); its sign changes
-    /// on [−1, cos θ0] are isolated at 64 bits by the monotone pieces between
-    /// the roots of its derivatives (so, unlike a scan, no pair of close roots
-    /// is missed), the largest one (the first in θ) is refined by Newton steps
-    /// at doubling precision to a bracket [c − ε, c + ε] across which the
-    /// polynomial changes sign, and θs = acos c with error ε/sin θs. Each call
-    /// computes from scratch (nothing is memoised between calls).
-    ///
-    /// Errors: no sign change before θ = π.
-    pub fn separation_angle(&mut self) -> Result<Verified> {
-        use crate::numeric::poly;
-        const ISO: u32 = 64;
-        let c0 = self.engine(ISO)?.dynm.c0.clone();
-        let coef = self.n12_coefficients(ISO)?;
-        let roots = poly::sign_change_roots(&coef, &Float::with_val(ISO, -1), &c0);
-        let start = roots.into_iter().rev().find(|c| *c < c0).ok_or_else(|| {
-            Error::not_physical("N12 stays positive up to theta = pi: the cylinders never separate")
-        })?;
-        let v = ladder(self.digits, &["theta_s"], |p| {
-            let coef = self.n12_coefficients(p + 16)?;
-            let (c, eps) = poly::refine_root("theta_s", &coef, &start, p)?;
-            let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
-            // dθ = −dc / sin θ, sin θ = √(1 − c²) (> 0 on (0, π)); ×(1 + 2^-16)
-            let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
-            let mut err = Float::with_val(p, &eps / &sin);
-            err += Float::with_val(p, &err >> 16);
-            err += th_err;
-            Ok(vec![Estimate::new(
-                self.odd(th),
-                err,
-                Float::with_val(p, 1u32),
-            )])
-        })?;
-        single(v)
+/// Whether a question at an angle stays in the closed branch of an ideal
+/// model, where the energy route answers it directly.
+fn ideal_at_angle(model: &Model, opts: &Options) -> Option<crate::model::Ideal> {
+    (opts.branch == Branch::Stay && opts.method == Method::Auto && !model.has_coulomb())
+        .then(|| model.ideal())
+        .flatten()
+}
+
+/// The state where θ first reaches `theta`, verified: `keys` of it by
+/// `est`, and the phase there.
+fn at_angle(
+    model: &Model,
+    opts: &Options,
+    theta: &Exact,
+    name: &str,
+    keys: &[&str],
+    est: impl Fn(&motion::Point) -> Vec<Estimate>,
+) -> Result<(Vec<Verified>, Phase)> {
+    check_digits(opts.digits)?;
+    if model.starts_at_equilibrium() {
+        return Err(infinite(model, "the time to any angle"));
     }
-
-    /// N1, F1, F21 as polynomials in cos θ (built once).
-    fn force_polys(&mut self) -> crate::mechanics::dynamics::ForcePolys {
-        let (floor, contact) = (self.work.floor(), self.work.contact());
-        self.force_polys
-            .get_or_insert_with(|| {
-                crate::mechanics::dynamics::ForcePolys::new(
-                    &self.red,
-                    self.work.params(),
-                    floor,
-                    contact,
-                )
-            })
-            .clone()
+    let dir = model.direction();
+    let th0 = model.start().theta0.to_float(256);
+    let d = theta.to_float(256) - th0;
+    if d.cmp0().map(|o| o as i32 * dir.signum()) == Some(-1) {
+        return Err(Error::invalid(
+            name,
+            theta,
+            "must lie beyond theta0 in the direction of the motion",
+        ));
     }
+    let mut runs = runs(
+        model,
+        opts,
+        Vec::new(),
+        Until::Angle {
+            theta: theta.clone(),
+            name: name.to_string(),
+        },
+    );
+    let (p1, _) = precisions(opts.digits, 0);
+    let first = runs.at(p1, Run::Low)?;
+    let phase = first
+        .target
+        .as_ref()
+        .map(|t| t.phase)
+        .ok_or_else(|| Error::not_physical("internal: the angle was not reached"))?;
+    let names: Vec<String> = keys.iter().map(|k| k.to_string()).collect();
+    let rows = laddered(&mut runs, first, &names, 1, |m| {
+        m.target
+            .as_ref()
+            .map(&est)
+            .ok_or_else(|| Error::not_physical("internal: the angle was not reached"))
+    })?;
+    Ok((rows.into_iter().next().unwrap_or_default(), phase))
+}
 
-    /// N1 on [θ0, θs] from N1·K², a polynomial in c = cos θ (K > 0): its
-    /// real roots on [cos θs, cos θ0] are isolated (by the monotone pieces
-    /// between the roots of its derivatives, [`crate::numeric::poly`]), so
-    /// "N1 > 0 up to separation" is a statement about every angle, not about
-    /// scan points. Its minimum is at an end or at a root of
-    /// D = B'K − 2BK' (B = N1·K²); the largest friction the floor needs,
-    /// |F1|/N1 = sin θ·|A|/B (A = F1·K²/sin θ), at an end or a root of
-    /// E = cAB − (1 − c²)(A'B − AB'). Each is verified like θs: the root
-    /// refined at both precisions, θ = acos c, the value at θ.
-    fn n1_findings(
-        &mut self,
-        ds_scan: &Float,
-        extra: &mut Vec<Verified>,
-        notes: &mut Vec<String>,
-    ) -> Result<()> {
-        use crate::mechanics::dynamics::{HPoly, N12Poly};
-        use crate::numeric::poly;
-        let fp = self.force_polys();
-        let q = |v: i64| rug::Rational::from(v);
-        let k = HPoly::constant(&fp.k);
-        let b = HPoly::linear(&fp.n1);
-        let d = b.deriv().mul(&k).add_scaled(&b.mul(&k.deriv()), &q(-2));
-
-        let p = SCAN_PREC;
-        let (c0, a_h) = {
-            let eng = self.engine(p)?;
-            (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
-        };
-        let th_s = Float::with_val(p, self.work.start().theta0.to_float(p) + ds_scan);
-        let cs = Float::with_val(p, th_s.cos_ref());
-        if cs >= c0 {
-            return Ok(());
-        }
-        let roots_in = |hp: &HPoly| -> Vec<Float> {
-            poly::sign_change_roots(&hp.at(&a_h, p), &cs, &c0)
-                .into_iter()
-                .filter(|c| *c > cs && *c < c0)
-                .collect()
-        };
-        let eval = |hp: &HPoly, c: &Float| -> Float {
-            let mut v = Float::new(p);
-            poly::horner(&hp.at(&a_h, p), c, &mut v);
-            v
-        };
-        // the first root of N1 in θ: the largest c
-        if let Some(cz) = roots_in(&b).into_iter().next_back() {
-            let v = self.verify_at("theta_N1_zero", None, &At::Root(cz, b.clone()))?;
-            notes.push(format!(
-                "N1 vanishes at theta = {} before separation: cylinder 1 would leave the floor there, \
-                 and the motion after that angle (including theta_s) is not the model's",
-                v[0].text
-            ));
-            extra.extend(v);
-            return Ok(());
-        }
-        notes.push(
-            "N1 > 0 at every angle from theta0 to theta_s (N1 K^2, a polynomial in cos theta, \
-             has no root there): cylinder 1 stays on the floor"
-                .to_string(),
-        );
-        // candidates: the ends and the interior extrema
-        let pick = |cands: Vec<At>, f: &dyn Fn(&Float) -> Float, max: bool| -> At {
-            let mut best: Option<(Float, At)> = None;
-            for at in cands {
-                let c = match &at {
-                    At::Start => c0.clone(),
-                    At::Separation | At::Angle(_) => cs.clone(),
-                    At::Root(c, _) => c.clone(),
-                };
-                let v = f(&c);
-                let better = match &best {
-                    None => true,
-                    Some((bv, _)) => {
-                        if max {
-                            v > *bv
-                        } else {
-                            v < *bv
-                        }
-                    }
-                };
-                if better {
-                    best = Some((v, at));
-                }
-            }
-            best.map(|b| b.1).unwrap_or(At::Start)
-        };
-        let kq = |c: &Float| eval(&k, c);
-        let n1_of = |c: &Float| -> Float {
-            let kk = kq(c);
-            Float::with_val(p, eval(&b, c) / Float::with_val(p, kk.square_ref()))
-        };
-        let mut cands = vec![At::Start, At::Separation];
-        cands.extend(roots_in(&d).into_iter().map(|c| At::Root(c, d.clone())));
-        let at_min = pick(cands, &n1_of, false);
-        let v = self.verify_at("theta_N1_min", Some("N1_min"), &at_min)?;
-        extra.extend(v);
-        if self.work.floor() != Floor::Slip {
-            extra.extend(self.needed_max(false, At::Separation, &cs)?);
-        }
-        Ok(())
+/// The time at which θ first reaches `theta`.
+///
+/// Errors: an angle behind the start or not reached while the cylinders
+/// touch; see [`motion::run`].
+pub fn time(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
+    let mut ans = empty_answer(Question::Time, model, opts);
+    if let Some(ideal) = ideal_at_angle(model, opts) {
+        check_digits(opts.digits)?;
+        let mut o = Oracle::new(&ideal, opts.digits)?;
+        ans.values.push(o.time_at(theta)?);
+        ans.phase = Some(Phase::Contact(conservative_mode(model)));
+        ans.routes.push(motion::Route::Energy);
+        return Ok(ans);
     }
+    let (v, phase) = at_angle(model, opts, theta, "to", &["t"], |pt| {
+        vec![integrated(&pt.t, Float::with_val(pt.t.prec(), 1u32))]
+    })?;
+    ans.values = v;
+    ans.phase = Some(phase);
+    Ok(ans)
+}
 
-    /// The largest friction a rolling contact needs over [θ0, end] — the
-    /// floor (|F1|/N1) or, with `contact_side`, the contact between the
-    /// cylinders (|F21|/N12) — and where: the ratio is sin θ·|A|/B with A, B
-    /// polynomials in c = cos θ ([`crate::mechanics::dynamics::ForcePolys`],
-    /// B > 0 inside the motion), so its maximum is at an end or at a root of
-    /// E = cAB − (1 − c²)(A'B − AB') on [c_end, cos θ0]; the candidates are
-    /// compared at 96 bits and the winner verified ([`Oracle::verify_at`]).
-    /// `c_end` is cos of the end angle at 96 bits.
-    fn needed_max(&mut self, contact_side: bool, end: At, c_end: &Float) -> Result<Vec<Verified>> {
-        use crate::mechanics::dynamics::{HPoly, N12Poly};
-        use crate::numeric::poly;
-        let fp = self.force_polys();
-        let q = |v: i64| rug::Rational::from(v);
-        let (a, b) = if contact_side {
-            let np = self
-                .n12_poly
-                .get_or_insert_with(|| N12Poly::new(&self.red, self.work.params()))
-                .clone();
-            let m2 = self.work.params().m2.clone();
-            // N12·K² = m2 · (N12·K²/m2)
-            let b = HPoly::default().add_scaled(&HPoly::linear(&(np.base, np.per_h)), &m2);
-            (HPoly::linear(&fp.f21), b)
-        } else {
-            (HPoly::linear(&fp.f1), HPoly::linear(&fp.n1))
-        };
-        let cpoly = HPoly::constant(&[q(0), q(1)]);
-        let one_m_c2 = HPoly::constant(&[q(1), q(0), q(-1)]);
-        let apb = a.deriv().mul(&b).add_scaled(&a.mul(&b.deriv()), &q(-1));
-        let e = cpoly
-            .mul(&a)
-            .mul(&b)
-            .add_scaled(&one_m_c2.mul(&apb), &q(-1));
-        let p = SCAN_PREC;
-        let (c0, a_h) = {
-            let eng = self.engine(p)?;
-            (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
-        };
-        let (theta_name, value_name) = if contact_side {
-            ("theta_mu_contact_max", "mu_contact_max")
-        } else {
-            ("theta_mu_floor_max", "mu_floor_max")
-        };
-        let eval = |hp: &HPoly, c: &Float| -> Float {
-            let mut v = Float::new(p);
-            poly::horner(&hp.at(&a_h, p), c, &mut v);
-            v
-        };
-        let ratio = |c: &Float| -> Float {
-            let s = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
-            Float::with_val(p, s * eval(&a, c) / eval(&b, c)).abs()
-        };
-        let mut best = (ratio(&c0), At::Start);
-        if *c_end < c0 {
-            let v = ratio(c_end);
-            if v > best.0 {
-                best = (v, end);
-            }
-            for c in poly::sign_change_roots(&e.at(&a_h, p), c_end, &c0) {
-                if c > *c_end && c < c0 {
-                    let v = ratio(&c);
-                    if v > best.0 {
-                        best = (v, At::Root(c, e.clone()));
-                    }
-                }
-            }
-        }
-        self.verify_at(theta_name, Some(value_name), &best.1)
+/// The contacts' states of an ideal model.
+fn conservative_mode(model: &Model) -> motion::Mode {
+    let st = |l: &Law| match l {
+        Law::Held => motion::State::Held,
+        Law::Frictionless => motion::State::Slip(0),
+        _ => motion::State::Stick,
+    };
+    motion::Mode {
+        floor: st(model.floor()),
+        contact: st(model.contact()),
     }
+}
 
-    /// The angle `at` (named `theta_name`) and, with `value`, the quantity
-    /// there (`N1_min`: N1; `mu_floor_max`: |F1|/N1), verified at two
-    /// precisions. The value's error includes its change across the angle's
-    /// error bound.
-    fn verify_at(
-        &mut self,
-        theta_name: &str,
-        value: Option<&str>,
-        at: &At,
-    ) -> Result<Vec<Verified>> {
-        use crate::mechanics::dynamics::N12Poly;
-        let mut names = vec![theta_name];
-        if let Some(v) = value {
-            names.push(v);
-        }
-        ladder(self.digits, &names, |p| {
-            let th0 = self.work.start().theta0.to_float(p);
-            let (delta, derr) = match at {
-                At::Start => (Float::new(p), Float::new(p)),
-                At::Separation => self.delta_s(p)?,
-                At::Angle(th) => (self.delta_of("theta", th, p)?, Float::new(p)),
-                At::Root(c_iso, hp) => {
-                    let a_h = N12Poly::a_h(&self.engine(p)?.dynm);
-                    let coef = hp.at(&a_h, p + 16);
-                    let (c, eps) = crate::numeric::poly::refine_root(theta_name, &coef, c_iso, p)?;
-                    let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
-                    let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
-                    let mut err = Float::with_val(p, &eps / &sin);
-                    err += Float::with_val(p, &err >> 16);
-                    err += th_err;
-                    (Float::with_val(p, th - &th0), err)
+/// The forces, rates, friction needed, slip speeds and work where θ first
+/// reaches `theta` ([`FORCES_KEYS`]); for an ideal model also the most
+/// friction each rolling contact needs over [θ0, θ], and where.
+///
+/// Errors: as [`time`].
+pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
+    let mut ans = empty_answer(Question::Forces, model, opts);
+    let digits = opts.digits;
+    if let Some(ideal) = ideal_at_angle(model, opts) {
+        check_digits(digits)?;
+        let mut o = Oracle::new(&ideal, digits)?;
+        let mut values = o.forces_at(theta)?;
+        // the slip speeds and the work: exactly 0 where the contact rolls,
+        // and the work of a conservative motion
+        let mode = conservative_mode(model);
+        let extra = ladder(digits, &["s1", "s12", "work"], |p| {
+            let d = o.route.delta_of("theta", theta, p)?;
+            let (cols, _) = o.route.columns_at(&d, &Float::new(p), p)?;
+            let sc = ladder::column_scales(model, p);
+            let z = |i: usize, zero: bool| {
+                if zero {
+                    Estimate::zero(p, sc[i].clone())
+                } else {
+                    Estimate::rounded(cols[i].clone(), sc[i].clone())
                 }
             };
-            let th = Float::with_val(p, &th0 + &delta);
-            let one = Float::with_val(p, 1u32);
-            let mut out = vec![if derr.is_zero() {
-                Estimate::rounded(self.odd(th), one.clone())
-            } else {
-                Estimate::new(self.odd(th), derr.clone(), one.clone())
-            }];
-            if let Some(name) = value {
-                let sf = self.scale_force(p);
-                let e = self.engine(p)?;
-                let q = |d: &Float| -> Float {
-                    let f = e.dynm.forces(&e.dynm.state(d));
-                    match name {
-                        "N1_min" => f.n1,
-                        "mu_contact_max" => Float::with_val(p, f.f21.abs_ref()) / &f.n12,
-                        _ => Float::with_val(p, f.f1.abs_ref()) / &f.n1,
-                    }
-                };
-                let v = q(&delta);
-                let mut err = Float::new(p);
-                if !derr.is_zero() {
-                    for sg in [1i32, -1] {
-                        let d2 = Float::with_val(p, &delta + Float::with_val(p, &derr * sg));
-                        if d2.is_sign_negative() {
-                            continue;
-                        }
-                        let dv = Float::with_val(p, &q(&d2) - &v).abs();
-                        if dv > err {
-                            err = dv;
-                        }
-                    }
-                }
-                let ulps = Float::with_val(p, v.abs_ref()) >> (p as i32 - 4);
-                err += ulps;
-                let scale = if name == "N1_min" { sf } else { one };
-                out.push(Estimate::new(v, err, scale));
-            }
-            Ok(out)
-        })
-    }
-
-    /// Sign-change angles, N1 > 0, friction needed, slip angles for μ.
-    fn separation_findings(
-        &mut self,
-        theta_s: &Verified,
-        extra: &mut Vec<Verified>,
-        notes: &mut Vec<String>,
-    ) -> Result<()> {
-        let digits = self.digits;
-        let th0 = self.work.start().theta0.to_float(SCAN_PREC);
-        let ds_scan = Float::with_val(SCAN_PREC, self.odd(theta_s.value.clone())) - &th0;
-        let floor = self.work.floor();
-        let contact = self.work.contact();
-        let finite = !self.work.starts_at_equilibrium();
-        let sign = self.sign;
-
-        // --- N1 along the motion: its sign, its minimum, the friction the
-        // floor needs (from the polynomials in cos θ: certified, not a scan)
-        self.n1_findings(&ds_scan, extra, notes)?;
-
-        // --- where φ̇1 and φ1 change sign
-        let phi_moves = floor != Floor::Fixed
-            && (self.red.alpha[1] != 0 || self.red.beta[1] != 0 || self.red.gamma[1] != 0);
-        if phi_moves {
-            let gamma0 = self.red.gamma[1] == 0;
-            for (name, label) in [
-                ("theta_phi1dot_zero", "phi1_dot"),
-                ("theta_phi1_zero", "phi1"),
-            ] {
-                let needs_time = name == "theta_phi1_zero" && !gamma0;
-                if needs_time && !finite {
-                    notes.push(format!(
-                        "{label} sign change not computed: it depends on the (infinite) time"
-                    ));
-                    continue;
-                }
-                let f = |e: &mut Engine, d: &Float| -> Float {
-                    if name == "theta_phi1dot_zero" {
-                        e.phi1_dot(d)
-                    } else {
-                        e.phi1(d)
-                    }
-                };
-                let step = Float::with_val(SCAN_PREC, &ds_scan / SCAN_STEPS);
-                let found = {
-                    let scan = self.engine(SCAN_PREC)?;
-                    let lo0 = Float::with_val(SCAN_PREC, &step / 4u32);
-                    // include a sliver past θs so a root at separation is seen
-                    let hi0 = Float::with_val(SCAN_PREC, &ds_scan + &step);
-                    crate::numeric::root::first_sign_change(&lo0, &hi0, SCAN_STEPS + 1, |d| {
-                        f(scan, d)
-                    })
-                };
-                // none up to θs: the formulas continued past θs (while θ̇ > 0,
-                // up to θ = π) may still change sign there; a property of
-                // the formulas the paper discusses, reported as such
-                let (found, after) = match found {
-                    Some(b) => (Some(b), false),
-                    None => {
-                        let scan = self.engine(SCAN_PREC)?;
-                        let lo0 = Float::with_val(SCAN_PREC, &ds_scan + &step);
-                        let pi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi);
-                        let hi0 = Float::with_val(SCAN_PREC, &pi - &th0);
-                        let hi0 = Float::with_val(
-                            SCAN_PREC,
-                            &hi0 - (Float::with_val(SCAN_PREC, &hi0 >> 10)),
-                        );
-                        let b = if hi0 > lo0 {
-                            crate::numeric::root::first_sign_change(&lo0, &hi0, SCAN_STEPS, |d| {
-                                f(scan, d)
-                            })
-                        } else {
-                            None
-                        };
-                        (b, true)
-                    }
-                };
-                match found {
-                    None => notes.push(format!(
-                        "{label} keeps its sign from the start to separation (and on the formulas \
-                         continued up to theta = pi)"
-                    )),
-                    Some((lo, hi)) => {
-                        let v = ladder(digits, &[name], |p| {
-                            let (d, err) =
-                                self.engine(p)?
-                                    .refine_root(name, &lo, &hi, |e, d| f(e, d))?;
-                            let th = Float::with_val(p, self.work.start().theta0.to_float(p) + d);
-                            Ok(vec![Estimate::new(
-                                self.odd(th),
-                                err,
-                                Float::with_val(p, 1u32),
-                            )])
-                        })?;
-                        let v = v.into_iter().next().expect("one");
-                        let bound =
-                            Float::with_val(v.value.prec(), &v.err_bound + &theta_s.err_bound);
-                        let gap = Float::with_val(v.value.prec(), &v.value - &theta_s.value).abs();
-                        if gap <= bound {
-                            notes.push(format!(
-                                "{label} changes sign at separation (equal to all digits verified)"
-                            ));
-                        } else if after || (v.value.clone() * sign) > (theta_s.value.clone() * sign)
-                        {
-                            // past θs: marked in its name and in a note
-                            let mut v = v;
-                            v.name = format!("{name}_after_separation");
-                            notes.push(format!(
-                                "{label} keeps its sign from the start to separation; the formulas \
-                                 continued past theta_s change its sign at theta = {} \
-                                 ({}: a property of the formulas, not of the motion)",
-                                v.text, v.name
-                            ));
-                            extra.push(v);
-                            continue;
-                        }
-                        extra.push(v);
-                    }
-                }
-            }
-        }
-
-        // --- friction: F21 at separation (μ needed at the contact diverges if ≠ 0)
-        if contact == Contact::Roll {
-            let v = ladder(digits, &["F21_at_s"], |p| {
-                let (ds, err) = self.delta_s(p)?;
-                let sf = self.scale_force(p);
-                let e = self.engine(p)?;
-                let st = e.dynm.state(&ds);
-                let f = e.dynm.forces(&st);
-                let d2 = Float::with_val(p, &ds + &err);
-                let f2 = e.dynm.forces(&e.dynm.state(&d2));
-                let prop = Float::with_val(p, &f2.f21 - &f.f21).abs();
-                Ok(vec![Estimate::new(self.odd(f.f21), prop, sf)])
-            })?;
-            if v[0].text != "0" {
-                notes.push(
-                    "F21 != 0 at separation while N12 -> 0: the friction coefficient the contact needs, |F21|/N12, grows without bound as theta -> theta_s, so the upper cylinder slips before it separates for any finite mu"
-                        .to_string(),
-                );
-            }
-            extra.extend(v);
-        }
-        if let Some(mu) = self.mu.clone() {
-            let checks: Vec<(&str, bool)> = vec![
-                ("theta_slip_floor", floor == Floor::Roll),
-                ("theta_slip_contact", contact == Contact::Roll),
-            ];
-            for (name, applies) in checks {
-                if !applies {
-                    continue;
-                }
-                let floor_side = name == "theta_slip_floor";
-                let g = move |e: &mut Engine, d: &Float, mu: &Float| -> Float {
-                    let st = e.dynm.state(d);
-                    let f = e.dynm.forces(&st);
-                    let (fr, n) = if floor_side {
-                        (f.f1, f.n1)
-                    } else {
-                        (f.f21, f.n12)
-                    };
-                    Float::with_val(d.prec(), mu * n) - fr.abs()
-                };
-                let found = {
-                    let mu_s = mu.to_float(SCAN_PREC);
-                    let scan = self.engine(SCAN_PREC)?;
-                    let z = Float::new(SCAN_PREC);
-                    crate::numeric::root::first_sign_change(&z, &ds_scan, SCAN_STEPS, |d| {
-                        g(scan, d, &mu_s)
-                    })
-                };
-                match found {
-                    None => notes.push(format!(
-                        "{name}: rolling holds up to separation with mu = {mu}"
-                    )),
-                    Some((lo, hi)) => {
-                        let v = ladder(digits, &[name], |p| {
-                            let mu_p = mu.to_float(p);
-                            let (d, err) =
-                                self.engine(p)?
-                                    .refine_root(name, &lo, &hi, |e, d| g(e, d, &mu_p))?;
-                            let th = Float::with_val(p, self.work.start().theta0.to_float(p) + d);
-                            Ok(vec![Estimate::new(
-                                self.odd(th),
-                                err,
-                                Float::with_val(p, 1u32),
-                            )])
-                        })?;
-                        extra.extend(v);
-                    }
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// δ = θ − θ0 (working frame) for a user angle, checked to lie in the motion.
-    fn delta_of(&mut self, param: &str, theta: &Exact, p: u32) -> Result<Float> {
-        let w = self.to_work(theta);
-        let th0 = self.work.start().theta0.clone();
-        let d = Float::with_val(p, w.to_float(p) - th0.to_float(p));
-        // Inside the motion by a clear margin below the scan's bracket of δs:
-        // no need to refine δs at this precision.
-        let (lo, _) = self.scan_bracket()?;
-        if !d.is_sign_negative() || d.is_zero() {
-            let margin = Float::with_val(p, lo.abs_ref()) >> (p.min(SCAN_PREC) as i32 - 4);
-            if Float::with_val(p.max(SCAN_PREC), &d + &margin) < lo {
-                return Ok(d);
-            }
-        }
-        let (ds, _) = self.delta_s(p)?;
-        let th_s = Float::with_val(p, th0.to_float(p) + &ds);
-        let range = format!(
-            "must lie in the motion, between theta0 = {} and the separation angle theta_s = {}",
-            self.model.start().theta0,
-            crate::numeric::decimal::to_sig(&self.odd(th_s), 12)
-        );
-        if d.is_sign_negative() && !d.is_zero() {
-            return Err(Error::invalid(
-                param,
-                theta,
-                format!("{range} (it is before the start)"),
-            ));
-        }
-        // Before or after separation, decided whatever the digits asked: θ is
-        // compared with the bracket [δs − ε, δs + ε] of the root of N12 (and
-        // the rounding of θ − θ0), at doubling precision until the bracket
-        // lies on one side. A θ that stays inside the bracket up to 8p bits
-        // (at least 1024) is θs itself to that accuracy, where the forces
-        // are defined (N12 = 0): it is answered, not refused.
-        let cap = (8 * p).clamp(1024, 1 << 15);
-        let mut q = p;
-        loop {
-            let (ds, err) = self.delta_s(q)?;
-            let dq = Float::with_val(q, w.to_float(q) - th0.to_float(q));
-            let ulp = Float::with_val(q, dq.abs_ref()) >> (q as i32 - 4);
-            let margin = Float::with_val(q, &err + &ulp);
-            if Float::with_val(q, &dq + &margin) < ds {
-                return Ok(d);
-            }
-            if Float::with_val(q, &dq - &margin) > ds {
-                return Err(Error::invalid(
-                    param,
-                    theta,
-                    format!("{range} (it is after separation)"),
-                ));
-            }
-            if q >= cap {
-                return Ok(d);
-            }
-            q = (2 * q).min(cap);
-        }
-    }
-
-    /// t(θ): the time from the start to the angle θ (energy quadrature).
-    ///
-    /// Method: for θ ≤ 2π/3 the integral in s = sin(θ/2), an algebraic
-    /// integrand ([`crate::mechanics::dynamics::HalfAngleTime`]); the ladder's
-    /// first run by tanh-sinh, its second by tanh-sinh too — or, once this
-    /// oracle has spent more on tanh-sinh integrals at that precision than a
-    /// Gauss–Legendre rule costs to build, by Gauss–Legendre with its a-priori
-    /// error model (two methods at two precisions). Beyond 2π/3 the θ form.
-    ///
-    /// Errors: θ outside [θ0, θs]; a start from rest at the top (infinite).
-    pub fn time_at(&mut self, theta: &Exact) -> Result<Verified> {
-        if self.work.starts_at_equilibrium() {
-            return Err(self.infinite_time_error("the time to any angle"));
-        }
-        let v = ladder_runs(self.digits, &["t"], |p, run| {
-            let d = self.delta_of("to", theta, p)?;
-            let ts = self.scale_time(p);
-            let (t, err, _) = self.engine(p)?.time_fast(&d, run == Run::High, true);
-            Ok(vec![Estimate::new(t, err, ts)])
-        })?;
-        Ok(v.into_iter().next().expect("one"))
-    }
-
-    /// F1, N1, F21, N12, θ̇, θ̈ and the friction coefficients needed
-    /// (|F1|/N1 at a rolling floor, |F21|/N12 at a rolling contact; 0 where the
-    /// contact slips or the floor is fixed) at angle θ, in [`FORCE_KEYS`] order.
-    pub fn forces_at(&mut self, theta: &Exact) -> Result<Vec<Verified>> {
-        let floor = self.work.floor();
-        let contact = self.work.contact();
-        let mut out = ladder(self.digits, &FORCE_KEYS[..6], |p| {
-            let d = self.delta_of("theta", theta, p)?;
-            let sf = self.scale_force(p);
-            let ts = self.scale_time(p);
-            let e = self.engine(p)?;
-            let st = e.dynm.state(&d);
-            let f = e.dynm.forces(&st);
-            let one = Float::with_val(p, 1u32);
             Ok(vec![
-                self.force_est(f.f1.clone(), &sf, floor == Floor::Slip, true),
-                Estimate::rounded(f.n1.clone(), sf.clone()),
-                self.force_est(f.f21.clone(), &sf, contact == Contact::Slip, true),
-                Estimate::rounded(f.n12.clone(), sf.clone()),
-                Estimate::rounded(
-                    self.odd(st.thetadot.clone()),
-                    Float::with_val(p, one.clone() / &ts),
-                ),
-                Estimate::rounded(
-                    self.odd(st.thetaddot.clone()),
-                    Float::with_val(p, one.clone() / &ts) / &ts,
-                ),
+                z(18, mode.floor != motion::State::Slip(0)),
+                z(19, mode.contact != motion::State::Slip(0)),
+                Estimate::zero(p, sc[20].clone()),
             ])
         })?;
-        // The friction each contact needs, |F|/N, wherever F is a reaction
-        // (a rolling floor, a held cylinder 1: the coefficient a floor would
-        // need to hold it by friction; a rolling contact); 0 where the contact
-        // is frictionless (F = 0). Where N is 0 to within its bound (at θs,
-        // N12 = 0) the ratio has no finite verified value: it is given as the
-        // lower bound |F|/bound(N), marked ">=".
-        for (key, fi, ni, applies) in [
-            ("mu_floor", 0usize, 1usize, floor != Floor::Slip),
-            ("mu_contact", 2, 3, contact == Contact::Roll),
-        ] {
-            let (fv, nv) = (&out[fi], &out[ni]);
-            let v = if !applies {
-                ladder(self.digits, &[key], |p| {
-                    Ok(vec![Estimate::zero(p, Float::with_val(p, 1u32))])
-                })?
-                .remove(0)
-            } else if nv.digits == 0 && fv.digits > 0 {
-                let p = fv.value.prec();
-                let lower = Float::with_val(p, fv.value.abs_ref()) / &nv.err_bound;
-                Verified {
-                    name: key.to_string(),
-                    text: format!(">={}", crate::numeric::decimal::short(&lower)),
-                    value: lower,
-                    digits: 0,
-                    err_bound: Float::with_val(p, f64::INFINITY),
-                    precs: fv.precs,
-                }
-            } else {
-                // |F|/N from the verified F and N: relative bounds add, and
-                // the ratio keeps the digits they support (no more than N12
-                // keeps just before θs)
-                let p = fv.value.prec().max(nv.value.prec());
-                let ratio = Float::with_val(p, fv.value.abs_ref()) / &nv.value;
-                let fa = Float::with_val(p, fv.value.abs_ref());
-                let na = Float::with_val(p, nv.value.abs_ref());
-                let rel = Float::with_val(p, &fv.err_bound / &fa)
-                    + Float::with_val(p, &nv.err_bound / &na);
-                let ra = Float::with_val(p, ratio.abs_ref());
-                let ulps = Float::with_val(p, &ra >> (p as i32 - 4));
-                let err = Float::with_val(p, &rel * &ra) + ulps;
-                let dg = if fv.digits == 0 { 0 } else { self.digits };
-                if dg == 0 {
-                    // F is 0 to within its bound: so is the ratio
-                    Verified {
-                        name: key.to_string(),
-                        text: "0".into(),
-                        value: Float::new(p),
-                        digits: 0,
-                        err_bound: Float::with_val(p, &fv.err_bound / &nv.value),
-                        precs: fv.precs,
-                    }
-                } else {
-                    crate::numeric::verify::verified_from(key, ratio, err, dg)?
-                }
-            };
-            out.push(v);
-        }
-        Ok(out)
+        values.extend(extra);
+        values.extend(o.friction_needed(theta)?);
+        ans.values = values;
+        ans.phase = Some(Phase::Contact(mode));
+        ans.routes.push(motion::Route::Energy);
+        return Ok(ans);
     }
+    let scales_of = |m: &Model, p: u32| ladder::column_scales(m, p);
+    let idx = |name: &str| motion::point::column_index(name).unwrap_or(0);
+    let keys = [
+        "F1",
+        "N1",
+        "F21",
+        "N12",
+        "theta_dot",
+        "theta_ddot",
+        "s1",
+        "s12",
+        "work",
+    ];
+    let (v, phase) = at_angle(model, opts, theta, "theta", &keys, |pt| {
+        let p = pt.t.prec();
+        let all = ladder::point_estimates(pt, &scales_of(model, p), None);
+        keys.iter().map(|k| all[idx(k)].clone()).collect()
+    })?;
+    let mut values: Vec<Verified> = v[..6].to_vec();
+    let mode = phase.mode();
+    for (key, fi, ni, which) in [
+        ("mu_floor", 0usize, 1usize, Which::Floor),
+        ("mu_contact", 2, 3, Which::Contact),
+    ] {
+        let applies = *model.law(which) != Law::Frictionless
+            && mode.is_some_and(|m| m.of(which) != motion::State::Slip(0));
+        values.push(friction_ratio(key, &v[fi], &v[ni], applies, digits)?);
+    }
+    values.extend(v[6..].iter().cloned());
+    ans.values = values;
+    ans.phase = Some(phase);
+    Ok(ans)
+}
 
-    /// The largest friction each rolling contact needs over [θ0, θ], and
-    /// where: `theta_mu_floor_max`, `mu_floor_max` (a rolling or held floor)
-    /// and `theta_mu_contact_max`, `mu_contact_max` (a rolling contact),
-    /// verified like [`Oracle::separation`]'s extrema. Where N12 is 0 at θ to
-    /// within its bound (θ = θs), the contact's maximum is only bounded below
-    /// (text `>=…`), as in [`Oracle::forces_at`].
-    ///
-    /// Errors: θ outside the motion (as [`Oracle::forces_at`]).
-    pub fn friction_needed(&mut self, theta: &Exact) -> Result<Vec<Verified>> {
-        let forces = self.forces_at(theta)?;
-        let w = self.to_work(theta).to_float(SCAN_PREC);
-        let c_end = Float::with_val(SCAN_PREC, w.cos_ref());
+/// Every column at `times` (ascending, ≥ 0), through every phase to the
+/// first impact: one row per time, in [`crate::motion::COLUMNS`] order,
+/// with its phase; and the events up to the last time.
+///
+/// Errors: a negative or descending time; a time after the end of the
+/// model; see [`motion::run`].
+pub fn trajectory(model: &Model, times: &[Exact], opts: &Options) -> Result<Answer> {
+    check_digits(opts.digits)?;
+    check_times(times)?;
+    if model.starts_at_equilibrium() {
+        return Err(infinite(model, "every time along the motion"));
+    }
+    let mut ans = empty_answer(Question::Trajectory, model, opts);
+    let exact_t = ladder::exact_times(times);
+    let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
+    let (p1, _) = precisions(opts.digits, 0);
+    let first = runs.at(p1, Run::Low)?;
+    let n_ev = first.events.len();
+    let names: Vec<String> = motion::COLUMNS.iter().map(|s| s.to_string()).collect();
+    let n_rows = times.len();
+    let mut table = laddered(&mut runs, first.clone(), &names, n_rows + n_ev, |m| {
+        let p = m.prec();
+        let sc = ladder::column_scales(model, p);
         let mut out = Vec::new();
-        if self.work.floor() != Floor::Slip {
-            out.extend(self.needed_max(false, At::Angle(theta.clone()), &c_end)?);
+        for (pt, text) in m.rows.iter().zip(&exact_t) {
+            out.extend(ladder::point_estimates(pt, &sc, text.as_ref()));
         }
-        if self.work.contact() == Contact::Roll {
-            let mu = forces.iter().find(|v| v.name == "mu_contact");
-            match mu {
-                Some(m) if m.text.starts_with(">=") => {
-                    let th = ladder(self.digits, &["theta_mu_contact_max"], |p| {
-                        let d = self.delta_of("theta", theta, p)?;
-                        let th0 = self.work.start().theta0.to_float(p);
-                        let th = Float::with_val(p, th0 + d);
-                        Ok(vec![Estimate::rounded(
-                            self.odd(th),
-                            Float::with_val(p, 1u32),
-                        )])
-                    })?;
-                    out.extend(th);
-                    let mut m = m.clone();
-                    m.name = "mu_contact_max".into();
-                    out.push(m);
-                }
-                _ => out.extend(self.needed_max(true, At::Angle(theta.clone()), &c_end)?),
+        // the events' times and angles, as rows of their own columns
+        let mut ev = Vec::new();
+        event_estimates(m, &mut ev);
+        for pair in ev.chunks(2) {
+            let mut row = vec![pair[0].clone(), pair[1].clone()];
+            for s in sc.iter().skip(2) {
+                row.push(Estimate::zero(p, s.clone()));
             }
+            out.extend(row);
         }
         Ok(out)
-    }
+    })?;
+    let ev_rows = table.split_off(n_rows);
+    let ev_vals: Vec<Verified> = ev_rows
+        .into_iter()
+        .flat_map(|r| r.into_iter().take(2))
+        .collect();
+    ans.events = events_of(&first, &ev_vals);
+    ans.rows = ladder::rows_of(&first, table);
+    ans.start_mode = Some(first.start_mode);
+    ans.end = first.end;
+    ans.routes = first.routes.clone();
+    ans.notes = motion_notes(&first, opts);
+    Ok(ans)
+}
 
-    fn force_est(&self, v: Float, scale: &Float, exact_zero: bool, odd: bool) -> Estimate {
-        if exact_zero {
-            Estimate::zero(v.prec(), scale.clone())
-        } else {
-            let v = if odd { self.odd(v) } else { v };
-            Estimate::rounded(v, scale.clone())
-        }
+/// θ alone at `times`, verified like [`trajectory`]'s `theta` column but
+/// without the other columns, and the phase of each time.
+///
+/// Errors: as [`trajectory`].
+pub fn theta_at_times(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+) -> Result<(Vec<Verified>, Vec<Phase>)> {
+    check_digits(opts.digits)?;
+    check_times(times)?;
+    if model.starts_at_equilibrium() {
+        return Err(infinite(model, "every time along the motion"));
     }
-
-    /// The trajectory at the given times: one row per time with the columns of
-    /// [`TRAJECTORY_COLUMNS`] (t first, as given).
-    ///
-    /// Method: one Taylor-series run of θ̈ = F(θ) per working precision
-    /// ([`crate::numeric::taylor`]) serves every time (dense output); each row
-    /// then follows from δ = θ − θ0 as before. Verified by the precision
-    /// ladder row by row ([`crate::numeric::verify::ladder_table`]), with the
-    /// integrator's error estimate, and checked at the last time against the
-    /// energy quadrature: t(θ ∓ ε) must bracket it.
-    ///
-    /// Errors: a start from rest at the top; a negative time; a time after
-    /// separation.
-    pub fn trajectory(&mut self, times: &[Exact]) -> Result<Vec<Vec<Verified>>> {
-        self.check_times(times)?;
-        let floor = self.work.floor();
-        let contact = self.work.contact();
-        let mut cache = (0, Vec::new());
-        // the time is an input: printed exactly when it is a terminating
-        // decimal (a denominator of 2s and 5s only; checked first, as writing
-        // out a long fraction costs more than the whole row), so that a time
-        // such as 0.125 at two digits is not a rounding tie to decide
-        let exact_t: Vec<Option<String>> = times
-            .iter()
-            .map(|t| {
-                (!t.times_pi && terminating(&t.coef)).then(|| crate::exact::rational_text(&t.coef))
-            })
-            .collect();
-        let rows = ladder_table(self.digits, &TRAJECTORY_COLUMNS, times.len(), |p, run| {
-            let deltas = self.deltas_at(times, p, run, true, &mut cache)?;
-            let ctx = self.row_context(p);
-            let mut out = Vec::with_capacity(times.len() * TRAJECTORY_COLUMNS.len());
-            for ((t, (d, derr)), text) in times.iter().zip(deltas).zip(&exact_t) {
-                let mut row = self.row_estimates(t, &d, &derr, &ctx, floor, contact)?;
-                row[0].exact_text = text.clone();
-                out.extend(row);
-            }
-            Ok(out)
-        })?;
-        Ok(rows)
-    }
-
-    /// θ alone at the given times (the `theta` column of
-    /// [`Oracle::trajectory`], with the same digits), without the other
-    /// columns: one Taylor run per working precision and one Horner
-    /// evaluation per time.
-    ///
-    /// Errors: as [`Oracle::trajectory`].
-    pub fn theta_at_times(&mut self, times: &[Exact]) -> Result<Vec<Verified>> {
-        self.check_times(times)?;
-        let mut cache = (0, Vec::new());
-        let rows = ladder_table(self.digits, &["theta"], times.len(), |p, run| {
-            let deltas = self.deltas_at(times, p, run, false, &mut cache)?;
-            let th0 = self.work.start().theta0.to_float(p);
-            let one = Float::with_val(p, 1u32);
-            let mut ulps = Float::new(p);
-            Ok(deltas
-                .into_iter()
-                .map(|(d, mut err)| {
-                    let th = Float::with_val(p, &th0 + &d);
-                    ulps.assign(th.abs_ref());
-                    ulps >>= p as i32 - 4;
-                    err += &ulps;
-                    Estimate::new(self.odd(th), err, one.clone())
-                })
-                .collect())
-        })?;
-        Ok(rows
-            .into_iter()
+    let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
+    runs.req.theta_only = true;
+    let (p1, _) = precisions(opts.digits, 0);
+    let first = runs.at(p1, Run::Low)?;
+    let phases = ladder::theta_phases(&first);
+    let rows = laddered(&mut runs, first, &["theta".to_string()], times.len(), |m| {
+        Ok(ladder::theta_estimates(m))
+    })?;
+    Ok((
+        rows.into_iter()
             .filter_map(|r| r.into_iter().next())
-            .collect())
-    }
-
-    fn check_times(&self, times: &[Exact]) -> Result<()> {
-        if self.work.starts_at_equilibrium() {
-            return Err(self.infinite_time_error("every time along the motion"));
-        }
-        for t in times {
-            if t.signum() < 0 {
-                return Err(Error::invalid(
-                    "times",
-                    t,
-                    "must be >= 0 (the start is at t = 0)",
-                ));
-            }
-        }
-        Ok(())
-    }
-
-    /// t_s at precision `p` (cached: a fact of the model).
-    fn t_s_at(&mut self, p: u32) -> Result<Float> {
-        if let Some(t) = self.t_s_at.get(&p) {
-            return Ok(t.clone());
-        }
-        let (ds, _) = self.delta_s(p)?;
-        let (t_s, _, _) = self.engine(p)?.time_fast(&ds, false, false);
-        self.t_s_at.insert(p, t_s.clone());
-        Ok(t_s)
-    }
-
-    /// The right-hand side θ̈ = sin θ·P(c)/K(c)² of the model at `p` bits:
-    /// with A_H = K(θ0)θ̇0² + 2(g/r) cos θ0, P = (g/r) q0 + q1 A_H/2 +
-    /// q2 A_H c − (g/r) q2 c² (θ̈ = sin θ (g/r + ½K'θ̇²)/K with θ̇² = H/K).
-    fn taylor_rhs(&mut self, p: u32) -> Result<Conservative> {
-        let d = &self.engine(p)?.dynm;
-        let a_h = crate::mechanics::dynamics::N12Poly::a_h(d);
-        let e0 = Float::with_val(p, &d.gr * &d.q[0]) + Float::with_val(p, &d.q[1] * &a_h) / 2u32;
-        let e1 = Float::with_val(p, &d.q[2] * &a_h);
-        let e2 = -Float::with_val(p, &d.gr * &d.q[2]);
-        Ok(Conservative {
-            e: [e0, e1, e2],
-            k: d.q.clone(),
-        })
-    }
-
-    /// δ = θ − θ0 and its error bound ε at each time, at precision `p`: the
-    /// separation-time check (each time ≤ t_s), one Taylor run to the last
-    /// time, and the quadrature check there. ε is twice the estimate (at
-    /// least |δ|·2^-(p−9)), as the Newton inversion used to report it.
-    /// `cache` holds the times as Floats (converted once per rung).
-    fn deltas_at(
-        &mut self,
-        times: &[Exact],
-        p: u32,
-        run: Run,
-        rel_delta: bool,
-        cache: &mut (u32, Vec<Float>),
-    ) -> Result<Vec<(Float, Float)>> {
-        let t_s = self.t_s_at(p)?;
-        // fixed-point bits for the smallest positive time: δ ≈ θ̈0 t²/2 there
-        // (only the trajectory's rows need δ to full relative accuracy)
-        let t_min = times
-            .iter()
-            .filter(|t| !t.is_zero())
-            .map(|t| t.to_f64())
-            .fold(f64::INFINITY, f64::min);
-        let lt = t_min.max(1e-300).log2();
-        let extra = if rel_delta && lt < 0.0 {
-            ((-2.0 * lt).ceil() as u32 + 8).min(p)
-        } else {
-            0
-        };
-        let tq = taylor::time_prec_for(p, extra);
-        if cache.0 < tq {
-            // once for both runs of a rung: at the p2 run's precision
-            let hi = taylor::time_prec_for(p + p / 8 + 40, extra);
-            *cache = (hi, times.iter().map(|t| t.to_float(hi)).collect());
-        }
-        let tt_all = &cache.1;
-        // the separation-time check, and the last time
-        let mut i_max = None;
-        for (i, (t, tt)) in times.iter().zip(tt_all).enumerate() {
-            if *tt > t_s {
-                return Err(Error::invalid(
-                    "times",
-                    t,
-                    format!(
-                        "must be <= the separation time t_s = {}: the model ends when the cylinders part",
-                        crate::numeric::decimal::to_sig(&t_s, 12)
-                    ),
-                ));
-            }
-            if !tt.is_zero() && i_max.is_none_or(|m: usize| *tt >= tt_all[m]) {
-                i_max = Some(i);
-            }
-        }
-        let Some(i_max) = i_max else {
-            let zero = Float::new(p);
-            return Ok(vec![(zero.clone(), zero); times.len()]);
-        };
-        // the Chebyshev route at high precision, and from a start near the
-        // top at any (its pieces are graded towards the start; the Taylor
-        // run crawls there)
-        let near_top = self.work.start().theta0.to_f64().abs() < NEAR_TOP;
-        let by_cheb = p >= TRAJECTORY_CHEB_MIN_BITS || near_top;
-        let cheb = if by_cheb {
-            self.deltas_cheb(times, tt_all, p, extra)?
-        } else {
-            None
-        };
-        let mut out = match cheb {
-            Some(out) => out,
-            None => self.deltas_taylor(times, tt_all, i_max, p, extra)?,
-        };
-        let t_last = Float::with_val(tq, &tt_all[i_max]);
-        let (d, eps) = out[i_max].clone();
-        // certify at the last time: t(δ − ε) ≤ t ≤ t(δ + ε) by the energy
-        // quadrature. One integral suffices when |t(δ) − t| + its error is
-        // below ε/θ̇(δ) = ε dt/dδ (less 2^-16: θ̇ varies by far less over [δ−ε, δ+ε]);
-        // otherwise both ends are integrated.
-        let high = run == Run::High;
-        let e = self.engine(p)?;
-        let (tm, tm_err) = e.time_check(&d, high, near_top);
-        let gap = Float::with_val(p, &tm - &t_last).abs() + &tm_err;
-        // t(δ ± ε) − t(δ) ≈ ±ε dt/dδ = ±ε/θ̇
-        let room = Float::with_val(p, &eps * e.inv_thetadot(&d));
-        let room = Float::with_val(p, &room - Float::with_val(p, &room >> 16));
-        let mut certified = gap <= room || {
-            let dlo = Float::with_val(p, &d - &eps);
-            let dhi = Float::with_val(p, &d + &eps);
-            let tlo = if dlo.is_sign_positive() {
-                e.time_check(&dlo, high, near_top).0
-            } else {
-                Float::new(p)
-            };
-            let thi = e.time_check(&dhi, high, near_top).0;
-            tlo <= t_last && t_last <= thi
-        };
-        if !certified {
-            // The bracket is too narrow for the quadrature at this precision
-            // to decide: widen every ε by the same factor until the one-integral
-            // test passes (a more conservative bound; the ladder then decides
-            // how many digits remain verified).
-            let mut widen = Float::with_val(p, 1u32);
-            for _ in 0..6 {
-                widen <<= 4;
-                if gap <= Float::with_val(p, &room * &widen) {
-                    certified = true;
-                    for (_, x) in out.iter_mut() {
-                        *x *= &widen;
-                    }
-                    break;
-                }
-            }
-        }
-        if !certified {
-            return Err(Error::NotConverged {
-                quantity: "theta(t)".into(),
-                requested: self.digits,
-                reached: format!("no certified bracket at {p} bits"),
-                detail: format!("t = {}", crate::numeric::decimal::to_sig(&t_last, 20)),
-            });
-        }
-        Ok(out)
-    }
-
-    /// δ and its error at each time by one Taylor run to the last time
-    /// ([`crate::numeric::taylor`], dense output), `extra` fixed-point bits.
-    fn deltas_taylor(
-        &mut self,
-        times: &[Exact],
-        tt_all: &[Float],
-        i_max: usize,
-        p: u32,
-        extra: u32,
-    ) -> Result<Vec<(Float, Float)>> {
-        let rhs = self.taylor_rhs(p)?;
-        let th0 = self.work.start().theta0.to_float(p);
-        let td0 = Float::with_val(p, &self.work.start().thetadot0);
-        let t_end = tt_all[i_max].clone();
-        let mut traj = taylor::integrate(&rhs, &th0, &td0, &t_end, p, extra)?;
-        let mut out = Vec::with_capacity(times.len());
-        let mut floor = Float::new(p);
-        for (t, tt) in times.iter().zip(tt_all) {
-            if t.is_zero() {
-                out.push((Float::new(p), Float::new(p)));
-                continue;
-            }
-            let (d, mut e) = traj.delta_at(tt).ok_or_else(|| Error::NotConverged {
-                quantity: "theta(t)".into(),
-                requested: self.digits,
-                reached: format!("no Taylor output at {p} bits"),
-                detail: format!("t = {}", crate::numeric::decimal::to_sig(tt, 20)),
-            })?;
-            floor.assign(d.abs_ref());
-            floor >>= p as i32 - 8;
-            if e < floor {
-                e.assign(&floor);
-            }
-            e <<= 1;
-            out.push((d, e));
-        }
-        Ok(out)
-    }
-
-    /// δ and its error at each time by inverting t(θ) on one Chebyshev
-    /// interpolant over [θ0, θs] ([`engine::Inverse`]), at `p` + `extra`
-    /// bits (the extra bits keep δ's relative accuracy at small times, as
-    /// the Taylor route's fixed-point bits do), rounded to `p`. `None` where
-    /// the interpolant does not apply (θs beyond 2π/3, a start so near the
-    /// top that the integrand's singularity crowds the interval).
-    fn deltas_cheb(
-        &mut self,
-        times: &[Exact],
-        tt_all: &[Float],
-        p: u32,
-        extra: u32,
-    ) -> Result<Option<Vec<(Float, Float)>>> {
-        let pe = p + extra;
-        let (ds, _) = self.delta_s(pe)?;
-        let Some(inv) = self.engine(pe)?.inverse(&ds) else {
-            return Ok(None);
-        };
-        let mut out = Vec::with_capacity(times.len());
-        for (t, tt) in times.iter().zip(tt_all) {
-            if t.is_zero() {
-                out.push((Float::new(p), Float::new(p)));
-                continue;
-            }
-            let (d, e) = inv.delta_at(&Float::with_val(pe, tt));
-            let d = Float::with_val(p, d);
-            let mut e = Float::with_val(p, e);
-            e += Float::with_val(p, d.abs_ref()) >> (p as i32 - 2);
-            out.push((d, e));
-        }
-        Ok(Some(out))
-    }
-
-    /// The per-run constants of the trajectory rows at precision `p`.
-    fn row_context(&self, p: u32) -> RowContext {
-        let sf = self.scale_force(p);
-        let ts = self.scale_time(p);
-        let pr = self.work.params();
-        let rr = Float::with_val(p, &pr.r());
-        let r1 = Float::with_val(p, &pr.r1);
-        let one = Float::with_val(p, 1u32);
-        let inv_ts = Float::with_val(p, &one / &ts);
-        let inv_ts2 = Float::with_val(p, &inv_ts / &ts);
-        RowContext {
-            p,
-            scales: [
-                one.clone(),
-                inv_ts,
-                inv_ts2,
-                one.clone(),
-                one,
-                rr.clone(),
-                rr.clone(),
-                rr.clone(),
-                sf.clone(),
-                sf.clone(),
-                sf.clone(),
-                sf,
-            ],
-            ts,
-            rr,
-            r1,
-        }
-    }
-
-    /// The estimates of one trajectory row at time `t` from δ and its bound.
-    fn row_estimates(
-        &mut self,
-        t: &Exact,
-        d: &Float,
-        derr: &Float,
-        ctx: &RowContext,
-        floor: Floor,
-        contact: Contact,
-    ) -> Result<Vec<Estimate>> {
-        let p = ctx.p;
-        let tf = t.to_float(p);
-        let (rr, r1) = (&ctx.rr, &ctx.r1);
-        let e = self.engine(p)?;
-        let st = e.dynm.state(d);
-        let d2 = Float::with_val(p, d + derr);
-        let st2 = e.dynm.state(&d2);
-        let vals = |st: &crate::mechanics::dynamics::State, e: &Engine| -> Vec<Float> {
-            let pos = e.dynm.positions(st, &tf);
-            let f = e.dynm.forces(st);
-            let x2 = Float::with_val(p, rr * &st.s) + &pos[0];
-            let y2 = Float::with_val(p, rr * &st.c) + r1;
-            let phi2 = Float::with_val(p, &pos[2] + &st.theta);
-            vec![
-                st.theta.clone(),
-                st.thetadot.clone(),
-                st.thetaddot.clone(),
-                pos[1].clone(),
-                phi2,
-                pos[0].clone(),
-                x2,
-                y2,
-                f.f1,
-                f.n1,
-                f.f21,
-                f.n12,
-            ]
-        };
-        let a = vals(&st, e);
-        let b = vals(&st2, e);
-        let scales = &ctx.scales;
-        // odd columns change sign in the mirror
-        let odd = [
-            true, true, true, true, true, true, true, false, true, false, true, false,
-        ];
-        let mut out = vec![Estimate {
-            value: tf.clone(),
-            err: Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2),
-            exact_zero: t.is_zero(),
-            scale: ctx.ts.clone(),
-            exact_text: None,
-        }];
-        for i in 0..12 {
-            let prop = Float::with_val(p, &b[i] - &a[i]).abs();
-            let ulps = Float::with_val(p, a[i].abs_ref()) >> (p as i32 - 4);
-            let zero = (i == 8 && floor == Floor::Slip) || (i == 10 && contact == Contact::Slip);
-            let v = if odd[i] {
-                self.odd(a[i].clone())
-            } else {
-                a[i].clone()
-            };
-            out.push(Estimate {
-                value: v,
-                err: prop + ulps,
-                exact_zero: zero,
-                scale: scales[i].clone(),
-                exact_text: None,
-            });
-        }
-        Ok(out)
-    }
+            .collect(),
+        phases,
+    ))
 }

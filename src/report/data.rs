@@ -6,7 +6,7 @@
 use super::Config;
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::model::{Contact, Floor, Model, Params, Start};
+use crate::model::{Contact, Floor, Ideal, Params, Start};
 use crate::numeric::verify::Verified;
 use crate::oracle::{Oracle, Separation};
 use indicatif::ProgressBar;
@@ -64,8 +64,8 @@ fn rational(name: &str, text: &str) -> Result<Rational> {
 }
 
 /// Identical solid cylinders with the given contact model, from rest at θ0.
-pub fn variant_model(v: (Floor, Contact), theta0: &str) -> Result<Model> {
-    Model::new(
+pub fn variant_model(v: (Floor, Contact), theta0: &str) -> Result<Ideal> {
+    Ideal::new(
         Params::identical_solid(),
         v.0,
         v.1,
@@ -75,11 +75,11 @@ pub fn variant_model(v: (Floor, Contact), theta0: &str) -> Result<Model> {
 
 /// The parameter plane's model: m1 = r1 = r2 = g = 1, k1 = 1/2, m2 = ratio,
 /// k2 as given, from rest at the top.
-pub fn plane_model(floor: Floor, ratio: &str, k2: &str) -> Result<Model> {
+pub fn plane_model(floor: Floor, ratio: &str, k2: &str) -> Result<Ideal> {
     let mut p = Params::identical_solid();
     p.m2 = rational("m2", ratio)?;
     p.k2 = rational("k2", k2)?;
-    Model::new(p, floor, Contact::Roll, Start::rest(Exact::zero()))
+    Ideal::new(p, floor, Contact::Roll, Start::rest(Exact::zero()))
 }
 
 /// A rational just below `x`: ⌊x·10⁶⌋/10⁶ − 10⁻⁶ (for grids that must stay

@@ -12,10 +12,9 @@ use super::plot::{
 use super::Config;
 use crate::error::Result;
 use crate::exact::Exact;
-use crate::model::{Contact, Floor, Model, Params, Start};
-use crate::motion::answer::{self, SeparationAnswer};
-use crate::motion::{columns, Friction, Kind, Law};
-use crate::oracle::Oracle;
+use crate::model::{Contact, Floor, Ideal, Law, Model, Params, Start};
+use crate::motion::{Kind, COLUMNS};
+use crate::oracle::{self, Answer as SeparationAnswer, Options, Oracle};
 
 /// θ0 of the friction section (the main case's start).
 const THETA0: &str = "1/10";
@@ -38,20 +37,19 @@ pub struct FrictionData {
 }
 
 fn main_model() -> Model {
-    Model::new(
-        Params::identical_solid(),
-        Floor::Roll,
-        Contact::Roll,
-        Start::rest(Exact::parse("theta0", THETA0, false).expect("theta0")),
-    )
-    .expect("main model")
+    Model::paper_default(Exact::parse("theta0", THETA0, false).expect("theta0"))
 }
 
-fn both(mu_floor: &str, mu_contact: &str) -> Result<Friction> {
-    Ok(Friction {
-        floor: Law::parse("mu_floor", mu_floor)?,
-        contact: Law::parse("mu_contact", mu_contact)?,
-    })
+/// The main model with coefficients μ at the floor and between the cylinders.
+fn both(mu_floor: &str, mu_contact: &str) -> Result<Model> {
+    main_model().with_laws(
+        Law::parse_mu("mu_floor", mu_floor)?,
+        Law::parse_mu("mu_contact", mu_contact)?,
+    )
+}
+
+fn separation(m: &Model, digits: u32) -> Result<SeparationAnswer> {
+    oracle::separation(m, &Options::digits(digits))
 }
 
 fn value(a: &SeparationAnswer, name: &str) -> f64 {
@@ -62,7 +60,7 @@ fn value(a: &SeparationAnswer, name: &str) -> f64 {
 }
 
 fn ideal_theta_s(floor: Floor, contact: Contact, digits: u32) -> f64 {
-    let m = Model::new(
+    let m = Ideal::new(
         Params::identical_solid(),
         floor,
         contact,
@@ -76,19 +74,18 @@ fn ideal_theta_s(floor: Floor, contact: Contact, digits: u32) -> f64 {
 
 /// Computes the section's data.
 pub fn compute(cfg: &Config) -> FrictionData {
-    let model = main_model();
     let cases: Vec<(String, Result<SeparationAnswer>)> = ["0.3", "1", "10"]
         .iter()
         .map(|mu| {
             (
                 mu.to_string(),
-                both(mu, mu).and_then(|fr| answer::separation(&model, &fr, cfg.digits)),
+                both(mu, mu).and_then(|m| separation(&m, cfg.digits)),
             )
         })
         .collect();
     let traj = (|| {
-        let fr = both("0.3", "0.3")?;
-        let sep = answer::separation(&model, &fr, cfg.plot_digits)?;
+        let m = both("0.3", "0.3")?;
+        let sep = separation(&m, cfg.plot_digits)?;
         let t_imp = value(&sep, "t_impact");
         // the grid ends at the impact time rounded down to 3 decimals
         let end = rug::Rational::from(((t_imp * 1000.0).floor() as i64, 1000));
@@ -96,19 +93,20 @@ pub fn compute(cfg: &Config) -> FrictionData {
         let times: Vec<Exact> = (0..=n)
             .map(|i| Exact::rational(&end * rug::Rational::from((i, n))))
             .collect();
-        let tr = answer::trajectory(&model, &fr, cfg.plot_digits, &times)?;
+        let tr = oracle::trajectory(&m, &times, &Options::digits(cfg.plot_digits))?;
         let rows = tr
             .rows
             .iter()
-            .map(|r| r.iter().map(|v| v.value.to_f64()).collect())
+            .map(|r| r.values.iter().map(|v| v.value.to_f64()).collect())
             .collect();
-        Ok((rows, tr.modes, sep))
+        let modes = tr.rows.iter().map(|r| r.phase.tag()).collect();
+        Ok((rows, modes, sep))
     })();
     let mut map = Vec::new();
     let mut map_failed = Vec::new();
     for mu in log_grid(-2, 2, cfg.friction_per_decade) {
         let x = text_f64(&mu);
-        match both(&mu, &mu).and_then(|fr| answer::separation(&model, &fr, cfg.plot_digits)) {
+        match both(&mu, &mu).and_then(|m| separation(&m, cfg.plot_digits)) {
             Ok(a) => {
                 let onset = a
                     .events
@@ -129,7 +127,7 @@ pub fn compute(cfg: &Config) -> FrictionData {
             grid.iter()
                 .map(|mf| {
                     both(mf, mc)
-                        .and_then(|fr| answer::separation(&model, &fr, cfg.plot_digits))
+                        .and_then(|m| separation(&m, cfg.plot_digits))
                         .ok()
                         .map(|a| value(&a, "theta_s"))
                 })
@@ -163,7 +161,8 @@ pub fn table(d: &FrictionData) -> Table {
                         e.which.map_or("–", |w| w.name()).to_string(),
                         format!("={}", e.t.text),
                         format!("={}", e.theta.text),
-                        e.mode.clone().unwrap_or_else(|| "end of the model".into()),
+                        e.phase
+                            .map_or_else(|| "end of the model".into(), |p| p.to_string()),
                     ]);
                 }
             }
@@ -243,7 +242,7 @@ fn range(series: &[&[(f64, f64)]]) -> (f64, f64) {
 }
 
 fn col(rows: &[Vec<f64>], c: &str) -> Vec<(f64, f64)> {
-    let i = columns().iter().position(|x| *x == c).unwrap_or(0);
+    let i = COLUMNS.iter().position(|x| *x == c).unwrap_or(0);
     rows.iter().map(|r| (r[0], r[i])).collect()
 }
 

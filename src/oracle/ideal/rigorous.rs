@@ -46,8 +46,7 @@ use super::{Oracle, FORCE_KEYS};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::mechanics::{PHI1, PSI2, X1};
-use crate::model::{Contact, Floor, Model};
-use crate::motion::Friction;
+use crate::model::{Contact, Floor};
 use crate::numeric::ccrig;
 use crate::numeric::interval::{not_enclosed, Cx, Iv};
 use crate::numeric::verify::Verified;
@@ -151,12 +150,12 @@ struct Consts {
 
 impl Oracle {
     fn consts(&self, p: u32) -> Consts {
-        let pr = self.work.params();
+        let pr = self.route.work.params();
         let ri = |q: &Rational| Iv::rational(p, q);
         let arr = |a: &[Rational; 3]| [ri(&a[0]), ri(&a[1]), ri(&a[2])];
-        let st = self.work.start();
+        let st = self.route.work.start();
         let th0 = Iv::exact(p, &st.theta0);
-        let q = arr(&self.red.q);
+        let q = arr(&self.route.red.q);
         let c0 = th0.cos();
         let k0 = Iv::horner(&q, &c0);
         let td0 = ri(&st.thetadot0);
@@ -164,9 +163,9 @@ impl Oracle {
         let r = ri(&pr.r());
         Consts {
             p,
-            alpha: arr(&self.red.alpha),
-            beta: arr(&self.red.beta),
-            gamma: arr(&self.red.gamma),
+            alpha: arr(&self.route.red.alpha),
+            beta: arr(&self.route.red.beta),
+            gamma: arr(&self.route.red.gamma),
             gr: ri(&Rational::from(&pr.g / &pr.r())),
             g: ri(&pr.g),
             r,
@@ -178,13 +177,13 @@ impl Oracle {
             h0,
             from_rest: st.thetadot0 == 0,
             q,
-            floor: self.work.floor(),
-            contact: self.work.contact(),
+            floor: self.route.work.floor(),
+            contact: self.route.work.contact(),
         }
     }
 
     fn odd_iv(&self, x: Iv) -> Iv {
-        if self.sign < 0 {
+        if self.route.sign < 0 {
             x.neg()
         } else {
             x
@@ -200,8 +199,8 @@ impl Oracle {
         // isolation as the verified answer does it (64 bits), then Newton on
         // the midpoints at p bits: only a starting point, the proof follows
         const ISO: u32 = 64;
-        let c0_iso = self.engine(ISO)?.dynm.c0.clone();
-        let coef_iso = self.n12_coefficients(ISO)?;
+        let c0_iso = self.route.engine(ISO)?.dynm.c0.clone();
+        let coef_iso = self.route.n12_coefficients(ISO)?;
         let roots = poly::sign_change_roots(&coef_iso, &Float::with_val(ISO, -1), &c0_iso);
         let start = roots
             .into_iter()
@@ -242,9 +241,11 @@ impl Oracle {
     /// The coefficients of N12·K²/m2 as intervals (A_H enclosed).
     fn n12_interval_coefficients(&mut self, k: &Consts) -> Result<Vec<Iv>> {
         let poly = self
+            .route
+            .caches
             .n12_poly
             .get_or_insert_with(|| {
-                crate::mechanics::dynamics::N12Poly::new(&self.red, self.work.params())
+                crate::mechanics::dynamics::N12Poly::new(&self.route.red, self.route.work.params())
             })
             .clone();
         // A_H = K(θ0)θ̇0² + 2(g/r) cos θ0
@@ -337,7 +338,7 @@ impl Oracle {
         // inside the motion, as the verified answer decides
         self.forces_at(theta)?;
         let k = self.consts(p);
-        let th = Iv::exact(p, &self.to_work(theta));
+        let th = Iv::exact(p, &self.route.to_work(theta));
         let vals = self.rigorous_state(&k, &th)?;
         let odd = [true, false, true, false, true, true, false, false];
         Ok(vals
@@ -361,8 +362,8 @@ impl Oracle {
     /// ellipse on which analyticity could not be proved.
     pub fn rigorous_time_iv(&mut self, th: &Iv, p: u32) -> Result<Iv> {
         let k = self.consts(p);
-        if self.work.starts_at_equilibrium() {
-            return Err(self.infinite_time_error("the time"));
+        if self.route.work.starts_at_equilibrium() {
+            return Err(self.route.infinite_time_error("the time"));
         }
         let two_thirds_pi = Iv::pi(p).mul_q(&Rational::from((2, 3)));
         if th.hi > two_thirds_pi.lo {
@@ -395,7 +396,7 @@ impl Oracle {
         // where the integrand of x is singular: x² = sin²u at the singular
         // points of the half-angle form (an f64 estimate; the covering proves)
         let x2_sing = {
-            let e = self.engine(64)?;
+            let e = self.route.engine(64)?;
             let ds = Float::with_val(64, &dsig.lo);
             e.half_singular_sin2(&ds)
         };
@@ -536,7 +537,7 @@ impl Oracle {
             k.th0.clone()
         } else {
             let v = self.theta_at_times(std::slice::from_ref(t))?.remove(0);
-            let th_v = Float::with_val(p, self.odd(v.value.clone()));
+            let th_v = Float::with_val(p, self.route.odd(v.value.clone()));
             let mut w = Float::with_val(p, &v.err_bound * 4u32)
                 + (Float::with_val(p, th_v.abs_ref()) >> (p as i32 - 8));
             let mut found = None;
@@ -568,11 +569,9 @@ impl Oracle {
                 .add(&k.alpha[i].mul(&delta))
                 .add(&k.beta[i].mul(&ds))
         };
-        let pr = self.work.params();
-        let psi0 = match self.work.contact() {
-            Contact::Roll => k.r.mul(&k.th0).div(&k.r2)?.neg(),
-            Contact::Slip => k.th0.neg(),
-        };
+        let pr = self.route.work.params();
+        // φ2(0) = 0 for every contact model (README, "Conventions")
+        let psi0 = k.th0.neg();
         let x1 = pos(X1);
         let phi1 = pos(PHI1);
         let phi2 = pos(PSI2).add(&psi0).add(&th);
@@ -622,11 +621,11 @@ impl Oracle {
     pub fn rigorous_time(&mut self, theta: &Exact, p: u32) -> Result<Proved> {
         // inside the motion (decided as the verified answer decides it, at
         // the scan's precision; the verified time itself is not needed)
-        if self.work.starts_at_equilibrium() {
-            return Err(self.infinite_time_error("the time to any angle"));
+        if self.route.work.starts_at_equilibrium() {
+            return Err(self.route.infinite_time_error("the time to any angle"));
         }
-        self.delta_of("to", theta, 64)?;
-        let th = Iv::exact(p, &self.to_work(theta));
+        self.route.delta_of("to", theta, 64)?;
+        let th = Iv::exact(p, &self.route.to_work(theta));
         let t = self.rigorous_time_iv(&th, p)?;
         Ok(Proved::new("t", t, self.digits))
     }
@@ -640,7 +639,7 @@ impl Oracle {
         p: u32,
     ) -> Result<(Proved, std::result::Result<Proved, String>)> {
         let th = self.rigorous_theta_s(p)?;
-        let ts = if self.work.starts_at_equilibrium() {
+        let ts = if self.route.work.starts_at_equilibrium() {
             Err("t_s is infinite".to_string())
         } else {
             let w = self.odd_iv(th.clone());
@@ -703,7 +702,7 @@ impl Oracle {
                 })
                 .collect()
         };
-        let fp = self.force_polys();
+        let fp = self.route.force_polys();
         if floor {
             Ok((split(&fp.f1), split(&fp.n1)))
         } else {
@@ -757,7 +756,7 @@ impl Oracle {
         p: u32,
     ) -> Result<Iv> {
         use crate::numeric::poly;
-        if self.work.floor() != Floor::Roll || self.work.contact() != Contact::Roll {
+        if self.route.work.floor() != Floor::Roll || self.route.work.contact() != Contact::Roll {
             return Err(not_enclosed(
                 "stick end: the sticking phase must be the rolling model",
             ));
@@ -769,7 +768,7 @@ impl Oracle {
         let r_w = self.stick_poly(&k, floor_first, mu_w)?;
         let c0 = k.th0.cos();
         let mids: Vec<Float> = r_w.iter().map(|c| c.mid_rad().0).collect();
-        let guess = Float::with_val(p, self.odd(theta_guess.clone()).cos_ref());
+        let guess = Float::with_val(p, self.route.odd(theta_guess.clone()).cos_ref());
         let (c_star, eps0) = poly::refine_root("stick end", &mids, &guess, p)?;
         let mut eps = Float::with_val(p, eps0 * 4u32);
         let min_eps = Float::with_val(p, 1u32) >> (p as i32 - 8);
@@ -1033,23 +1032,31 @@ pub fn enclosure_why(e: &Error) -> String {
 pub type ProvedSlots = Vec<(Option<usize>, Verified, Option<Proved>)>;
 
 pub fn stick_end_proved(
-    model: &Model,
-    fr: &Friction,
-    ans: &crate::motion::answer::SeparationAnswer,
+    model: &crate::model::Model,
+    ans: &crate::oracle::Answer,
     digits: u32,
 ) -> std::result::Result<ProvedSlots, String> {
-    use crate::motion::{Kind, Law, Mode, State, Which};
+    use crate::model::{Law, Which};
+    use crate::motion::{Branch, Kind, Mode, State};
     let both_stick = Mode {
         floor: State::Stick,
         contact: State::Stick,
     };
-    if ans.start_mode != both_stick.to_string() {
+    if ans.start_mode != Some(both_stick) {
         return Err(format!(
             "the start mode is {}: only a start where both contacts stick has closed forms",
             ans.start_mode
+                .map_or_else(|| "undefined".to_string(), |m| m.to_string())
         ));
     }
-    let ev = ans.events.first().ok_or("no event")?;
+    if ans.branch == Branch::Part && ans.events.iter().any(|e| e.kind == Kind::Indeterminate) {
+        return Err("on the part branch the closed phase ends at the branch point".into());
+    }
+    let ev = ans
+        .events
+        .iter()
+        .find(|e| e.kind != Kind::Indeterminate)
+        .ok_or("no event")?;
     let floor_first = match (ev.kind, ev.which) {
         (Kind::SlipOnset, Some(w)) => w == Which::Floor,
         (Kind::Separation, Some(Which::Contact)) => false,
@@ -1057,11 +1064,11 @@ pub fn stick_end_proved(
     };
     let mu = |l: &Law| match l {
         Law::Coulomb { mu_s, .. } => Ok(Some(mu_s.clone())),
-        Law::Roll => Ok(None),
-        Law::Slip => Err("a frictionless contact".to_string()),
+        Law::Rolling => Ok(None),
+        Law::Frictionless | Law::Held => Err("a frictionless or held contact".to_string()),
     };
-    let (mf, mc) = (mu(&fr.floor)?, mu(&fr.contact)?);
-    let mut o = Oracle::new(model, digits).map_err(|e| e.to_string())?;
+    let (mf, mc) = (mu(model.floor())?, mu(model.contact())?);
+    let mut o = Oracle::new(&model.sticking(), digits).map_err(|e| e.to_string())?;
     let mut th_iv = None;
     let th = prove_with(
         digits,

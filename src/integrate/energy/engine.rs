@@ -4,7 +4,7 @@
 use crate::error::Result;
 use crate::mechanics::dynamics::{Dyn, HalfAngleTime, Scratch, TinyStart};
 use crate::mechanics::{Reduced, PHI1};
-use crate::model::Model;
+use crate::model::Ideal;
 use crate::numeric::cheb::{self, ChebFit, Roots};
 use crate::numeric::gauss::{self, GaussLegendre, HalfPiRule};
 use crate::numeric::quad::{QuadResult, Stop, TanhSinh};
@@ -12,7 +12,7 @@ use crate::numeric::root;
 use rug::Float;
 use std::collections::HashMap;
 
-pub(super) struct Engine {
+pub struct Engine {
     pub dynm: Dyn,
     /// The rule of [`Engine::time`] (its nodes are part of `separation()`'s
     /// recorded output, so they stay bit for bit as they were).
@@ -67,7 +67,7 @@ pub enum Rule {
 }
 
 impl Engine {
-    pub fn new(model: &Model, red: &Reduced, prec: u32) -> Result<Self> {
+    pub fn new(model: &Ideal, red: &Reduced, prec: u32) -> Result<Self> {
         let dynm = Dyn::new(model, red, prec)?;
         let half = HalfAngleTime::new(&dynm);
         let half_limit = Float::with_val(prec, rug::float::Constant::Pi) * 2u32 / 3u32 - &dynm.th0;
@@ -736,7 +736,7 @@ mod tests {
 
     #[test]
     fn tanh_sinh_and_gauss_legendre_routes_agree_within_their_estimates() {
-        let m = Model::paper_default(Exact::parse("t", "1/10", false).unwrap());
+        let m = Ideal::paper_default(Exact::parse("t", "1/10", false).unwrap());
         let red = Reduced::new(&m).unwrap();
         let reference = Float::with_val(800, Float::parse(T1).unwrap());
         for p in [128u32, 400, 600] {
@@ -772,7 +772,7 @@ mod tests {
     #[test]
     fn chebyshev_route_agrees_with_arb_and_tanh_sinh() {
         let reference = Float::with_val(800, Float::parse(T1).unwrap());
-        let m = Model::paper_default(Exact::parse("t", "1/10", false).unwrap());
+        let m = Ideal::paper_default(Exact::parse("t", "1/10", false).unwrap());
         let red = Reduced::new(&m).unwrap();
         for p in [256u32, 400, 700] {
             let mut e = Engine::new(&m, &red, p).unwrap();
@@ -797,7 +797,7 @@ mod tests {
                     omega0: rug::Rational::new(),
                 },
             ] {
-                let model = Model::new(Params::identical_solid(), floor, contact, start).unwrap();
+                let model = Ideal::new(Params::identical_solid(), floor, contact, start).unwrap();
                 let red = Reduced::new(&model).unwrap();
                 let p = 300;
                 let mut e = Engine::new(&model, &red, p).unwrap();
@@ -822,7 +822,7 @@ mod tests {
     #[test]
     fn graded_pieces_near_the_top_agree_with_tanh_sinh() {
         for th0 in ["1/1000", "1/1000000", "1/10000000000"] {
-            let m = Model::paper_default(Exact::parse("t", th0, false).unwrap());
+            let m = Ideal::paper_default(Exact::parse("t", th0, false).unwrap());
             let red = Reduced::new(&m).unwrap();
             let p = 400;
             let mut e = Engine::new(&m, &red, p).unwrap();
@@ -858,7 +858,7 @@ mod tests {
     fn a_start_near_the_top_takes_the_graded_route_first() {
         use crate::model::{Contact, Floor, Params, Start};
         let th0 = Exact::parse("t", "1e-30", false).unwrap();
-        let m = Model::new(
+        let m = Ideal::new(
             Params::identical_solid(),
             Floor::Slip,
             Contact::Roll,

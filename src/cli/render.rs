@@ -1,0 +1,450 @@
+//! The one answer, printed: text, JSON or CSV, the same for every contact
+//! law.
+
+use super::Format;
+use cylroll::numeric::verify::Verified;
+use cylroll::oracle::rigorous::Proved;
+use cylroll::oracle::{Answer, Question};
+use serde_json::{json, Map, Value};
+
+/// The answer in the requested format.
+pub fn render(mut a: Answer, format: Format) -> String {
+    // a finding is stated once, however many routes reached it
+    let mut seen = std::collections::HashSet::new();
+    a.notes.retain(|n| seen.insert(n.clone()));
+    match format {
+        Format::Text => text(&a),
+        Format::Json => json_text(&a),
+        Format::Csv => csv(&a),
+    }
+}
+
+/// The table's columns: every column and `mode`.
+fn columns() -> Vec<&'static str> {
+    let mut c = cylroll::motion::COLUMNS.to_vec();
+    c.push("mode");
+    c
+}
+
+/// The proved cell of a row's column, if the row is enclosed.
+fn proved_cell<'a>(a: &'a Answer, row: usize, col: &str) -> Option<&'a Proved> {
+    a.proved_rows
+        .get(row)
+        .and_then(|r| r.iter().find(|p| p.name == col))
+}
+
+/// The text of each cell of row `i` (proved digits where enclosed).
+fn row_texts(a: &Answer, i: usize) -> Vec<String> {
+    let r = &a.rows[i];
+    let mut out: Vec<String> = r
+        .values
+        .iter()
+        .map(|v| match proved_cell(a, i, &v.name) {
+            Some(p) => p.shown.text.clone(),
+            None => v.text.clone(),
+        })
+        .collect();
+    out.push(r.phase.tag());
+    out
+}
+
+fn laws_line(a: &Answer) -> String {
+    let m = &a.model;
+    let mut s = format!("# contacts: floor {}, cylinders {}", m.floor(), m.contact());
+    if let Some(sm) = a.start_mode {
+        s.push_str(&format!("; start mode {}", sm.tag()));
+    }
+    s.push_str(&format!("; branch {}", a.branch.name()));
+    if let Some(e) = a.end {
+        s.push_str(&format!("; the motion ends at the {}", e.name()));
+    }
+    s.push('\n');
+    s
+}
+
+fn text(a: &Answer) -> String {
+    let mut out = String::new();
+    out.push_str(&format!(
+        "# cylroll {} — {}\n",
+        a.question.name(),
+        a.model.describe()
+    ));
+    out.push_str(&laws_line(a));
+    out.push_str(&format!(
+        "# {} significant digits requested; each value below is verified to the digits printed\n",
+        a.digits
+    ));
+    if !a.proved.is_empty() {
+        out.push_str("# --rigorous: each value shows the digits its interval enclosure proves (directed rounding)\n");
+    }
+    let w = a.values.iter().map(|v| v.name.len()).max().unwrap_or(0);
+    for (i, v) in a.values.iter().enumerate() {
+        if let Some(pr) = a.proved.get(i) {
+            let line = match pr {
+                Some(pv) => {
+                    let (mid, rad) = pv.texts(a.digits);
+                    format!(
+                        "{:w$} = {}  [proved: {} digits, in {} ± {}; verified: {} digits]\n",
+                        v.name,
+                        pv.shown.text,
+                        pv.shown.digits,
+                        mid,
+                        rad,
+                        v.digits,
+                        w = w
+                    )
+                }
+                None => format!(
+                    "{:w$} = {}  [verified: {} digits; not enclosed]\n",
+                    v.name,
+                    v.text,
+                    v.digits,
+                    w = w
+                ),
+            };
+            out.push_str(&line);
+            continue;
+        }
+        out.push_str(&format!(
+            "{:w$} = {}  {}\n",
+            v.name,
+            v.text,
+            value_note(v),
+            w = w
+        ));
+    }
+    if let Some(p) = a.phase {
+        out.push_str(&format!("mode at the angle: {p}\n"));
+    }
+    for (i, e) in a.events.iter().enumerate() {
+        out.push_str(&format!(
+            "event {}: {}{} at t = {} [{} digits], theta = {} [{} digits]{}\n",
+            i + 1,
+            e.kind.name(),
+            e.which
+                .map(|w| format!(" ({})", w.name()))
+                .unwrap_or_default(),
+            e.t.text,
+            e.t.digits,
+            e.theta.text,
+            e.theta.digits,
+            e.phase
+                .map(|m| format!(" -> {m}"))
+                .unwrap_or_else(|| " (end of the model)".into())
+        ));
+    }
+    if a.question == Question::Trajectory {
+        out.push_str(&columns().join("\t"));
+        out.push('\n');
+        for i in 0..a.rows.len() {
+            out.push_str(&row_texts(a, i).join("\t"));
+            out.push('\n');
+        }
+        if !a.proved_rows.is_empty() {
+            let least = a
+                .proved_rows
+                .iter()
+                .flatten()
+                .filter(|v| v.shown.text != "0")
+                .map(|v| v.shown.digits)
+                .min()
+                .unwrap_or(a.digits);
+            out.push_str(&format!(
+                "note: --rigorous: every enclosed cell shows the digits its interval enclosure proves (at least {least} significant digits)\n"
+            ));
+        }
+        for z in zero_cells(a) {
+            out.push_str(&format!("note: {z}\n"));
+        }
+    }
+    for n in &a.notes {
+        out.push_str(&format!("note: {n}\n"));
+    }
+    out
+}
+
+fn value_note(v: &Verified) -> String {
+    if v.text.starts_with(">=") {
+        "[a lower bound: the normal force is 0 to within its error bound]".to_string()
+    } else if v.digits == 0 {
+        format!("[indistinguishable from 0: |x| <= {}]", v.err_text())
+    } else {
+        format!("[{} digits; |err| <= {}]", v.digits, v.err_text())
+    }
+}
+
+/// `{"mid": …, "rad": …}` of an enclosure.
+fn enclosure_json(pv: &Proved, digits: u32) -> Value {
+    let (mid, rad) = pv.texts(digits);
+    json!({"mid": mid, "rad": rad})
+}
+
+fn json_text(a: &Answer) -> String {
+    let mut o = Map::new();
+    o.insert("command".into(), a.question.name().into());
+    let mut m = Map::new();
+    for (k, v) in a.model.echo() {
+        m.insert(k.into(), v.into());
+    }
+    o.insert("model".into(), m.into());
+    o.insert("branch".into(), a.branch.name().into());
+    o.insert("digits_requested".into(), a.digits.to_string().into());
+    o.insert("start_mode".into(), a.start_mode.map(|s| s.tag()).into());
+    if matches!(a.question, Question::Separation | Question::Trajectory) {
+        o.insert("end".into(), a.end.map(|e| e.name()).into());
+        let evs: Vec<Value> = a
+            .events
+            .iter()
+            .map(|e| {
+                json!({
+                    "kind": e.kind.name(),
+                    "contact": e.which.map(|w| w.name()),
+                    "mode": e.phase.map(|p| p.tag()),
+                    "t": e.t.text,
+                    "theta": e.theta.text,
+                    "digits_verified": {"t": e.t.digits.to_string(), "theta": e.theta.digits.to_string()},
+                    "error_bounds": {"t": e.t.err_text(), "theta": e.theta.err_text()},
+                })
+            })
+            .collect();
+        o.insert("events".into(), evs.into());
+    }
+    if let Some(p) = a.phase {
+        o.insert("mode".into(), p.tag().into());
+    }
+    let mut verified = Map::new();
+    let mut errs = Map::new();
+    let mut rig = Map::new();
+    let mut encl = Map::new();
+    let mut lower = Map::new();
+    for (i, v) in a.values.iter().enumerate() {
+        match a.proved.get(i) {
+            Some(Some(pv)) => {
+                o.insert(v.name.clone(), pv.shown.text.clone().into());
+                rig.insert(v.name.clone(), pv.shown.digits.to_string().into());
+                encl.insert(v.name.clone(), enclosure_json(pv, a.digits));
+            }
+            Some(None) => {
+                o.insert(v.name.clone(), v.text.clone().into());
+                rig.insert(v.name.clone(), Value::Null);
+            }
+            None => {
+                o.insert(v.name.clone(), v.text.clone().into());
+            }
+        }
+        verified.insert(v.name.clone(), v.digits.to_string().into());
+        errs.insert(v.name.clone(), v.err_text().into());
+        if let Some(b) = v.text.strip_prefix(">=") {
+            lower.insert(v.name.clone(), b.into());
+        }
+    }
+    if !lower.is_empty() {
+        o.insert("lower_bounds".into(), lower.into());
+    }
+    if a.question == Question::Trajectory {
+        let cols = columns();
+        o.insert(
+            "columns".into(),
+            cols.iter()
+                .map(|c| Value::from(*c))
+                .collect::<Vec<_>>()
+                .into(),
+        );
+        let n = cols.len() - 1;
+        let mut col_digits: Vec<Option<u32>> = vec![None; n];
+        let mut col_err: Vec<Option<rug::Float>> = vec![None; n];
+        let rows_json: Vec<Value> = a
+            .rows
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let mut row = Map::new();
+                let mut zeros = Map::new();
+                let mut enc = Map::new();
+                for (j, v) in r.values.iter().enumerate() {
+                    match proved_cell(a, i, &v.name) {
+                        Some(p) => {
+                            row.insert(v.name.clone(), p.shown.text.clone().into());
+                            enc.insert(v.name.clone(), enclosure_json(p, a.digits));
+                        }
+                        None => {
+                            row.insert(v.name.clone(), v.text.clone().into());
+                        }
+                    }
+                    if v.digits > 0 {
+                        col_digits[j] = Some(col_digits[j].map_or(v.digits, |d| d.min(v.digits)));
+                    } else if v.text == "0" && !v.err_bound.is_zero() {
+                        zeros.insert(v.name.clone(), v.err_text().into());
+                    }
+                    if col_err[j].as_ref().is_none_or(|e| v.err_bound > *e) {
+                        col_err[j] = Some(v.err_bound.clone());
+                    }
+                }
+                row.insert("mode".into(), r.phase.tag().into());
+                if !zeros.is_empty() {
+                    row.insert("zero_within".into(), zeros.into());
+                }
+                if !enc.is_empty() {
+                    row.insert("enclosures".into(), enc.into());
+                }
+                row.into()
+            })
+            .collect();
+        o.insert("rows".into(), rows_json.into());
+        for (j, c) in cols.iter().take(n).enumerate() {
+            verified.insert(
+                c.to_string(),
+                col_digits[j]
+                    .map_or("0".to_string(), |d| d.to_string())
+                    .into(),
+            );
+            if let Some(e) = &col_err[j] {
+                errs.insert(c.to_string(), cylroll::numeric::decimal::short(e).into());
+            }
+        }
+        if let Some(first) = a.proved_rows.iter().find(|r| !r.is_empty()) {
+            for v in first {
+                let d = a
+                    .proved_rows
+                    .iter()
+                    .filter_map(|r| r.iter().find(|p| p.name == v.name))
+                    .map(|p| p.shown.digits)
+                    .min()
+                    .unwrap_or(0);
+                rig.insert(v.name.clone(), d.to_string().into());
+            }
+        }
+    }
+    if !a.proved.is_empty() || !a.proved_rows.is_empty() {
+        o.insert("digits_rigorous".into(), rig.into());
+        if !encl.is_empty() {
+            o.insert("enclosures".into(), encl.into());
+        }
+    }
+    o.insert("digits_verified".into(), verified.into());
+    o.insert("error_bounds".into(), errs.into());
+    o.insert(
+        "notes".into(),
+        a.notes
+            .iter()
+            .map(|n| Value::from(n.as_str()))
+            .collect::<Vec<_>>()
+            .into(),
+    );
+    serde_json::to_string_pretty(&Value::Object(o)).unwrap_or_default() + "\n"
+}
+
+fn csv(a: &Answer) -> String {
+    let mut out = String::new();
+    if a.question == Question::Trajectory {
+        out.push_str(&columns().join(","));
+        out.push('\n');
+        for i in 0..a.rows.len() {
+            out.push_str(&row_texts(a, i).join(","));
+            out.push('\n');
+        }
+        return out;
+    }
+    let rigorous = !a.proved.is_empty();
+    out.push_str(if rigorous {
+        "key,value,digits_verified,error_bound,digits_rigorous,mid,rad\n"
+    } else {
+        "key,value,digits_verified,error_bound\n"
+    });
+    let tail = if rigorous { ",,," } else { "" };
+    let m = &a.model;
+    for (k, v) in [
+        ("mu_floor", m.floor().mu_text()),
+        ("mu_contact", m.contact().mu_text()),
+        ("branch", a.branch.name()),
+    ] {
+        out.push_str(&format!("{k},{v},,{tail}\n"));
+    }
+    if let Some(sm) = a.start_mode {
+        out.push_str(&format!("start_mode,{},,{tail}\n", sm.tag()));
+    }
+    if let Some(p) = a.phase {
+        out.push_str(&format!("mode,{},,{tail}\n", p.tag()));
+    }
+    if let Some(e) = a.end {
+        out.push_str(&format!("end,\"{}\",,{tail}\n", e.name()));
+    }
+    for (i, e) in a.events.iter().enumerate() {
+        let which = e
+            .which
+            .map(|w| format!("{}_", w.name()))
+            .unwrap_or_default();
+        for (what, v) in [("t", &e.t), ("theta", &e.theta)] {
+            out.push_str(&format!(
+                "event{}_{}_{}{},{},{},{}{tail}\n",
+                i + 1,
+                e.kind.name(),
+                which,
+                what,
+                v.text,
+                v.digits,
+                v.err_text()
+            ));
+        }
+        out.push_str(&format!(
+            "event{}_mode,{},,{tail}\n",
+            i + 1,
+            e.phase.map_or_else(|| "end".to_string(), |p| p.tag())
+        ));
+    }
+    for (i, v) in a.values.iter().enumerate() {
+        match a.proved.get(i).and_then(|p| p.as_ref()) {
+            Some(pv) => {
+                let (mid, rad) = pv.texts(a.digits);
+                out.push_str(&format!(
+                    "{},{},{},{},{},{},{}\n",
+                    v.name,
+                    pv.shown.text,
+                    v.digits,
+                    v.err_text(),
+                    pv.shown.digits,
+                    mid,
+                    rad
+                ));
+            }
+            None => out.push_str(&format!(
+                "{},{},{},{}{tail}\n",
+                v.name,
+                v.text,
+                v.digits,
+                v.err_text()
+            )),
+        }
+    }
+    // the notes are findings too: one row each, the text quoted as CSV requires
+    for n in &a.notes {
+        out.push_str(&format!("note,\"{}\",,{tail}\n", n.replace('"', "\"\"")));
+    }
+    out
+}
+
+/// Per column, the cells printed 0 that are 0 only to within an absolute
+/// bound: one sentence per such column, naming the largest bound.
+fn zero_cells(a: &Answer) -> Vec<String> {
+    let mut out = Vec::new();
+    for (j, c) in cylroll::motion::COLUMNS.iter().enumerate() {
+        let mut n = 0;
+        let mut worst: Option<&rug::Float> = None;
+        for r in &a.rows {
+            let v = &r.values[j];
+            if v.text == "0" && !v.err_bound.is_zero() {
+                n += 1;
+                if worst.is_none_or(|w| v.err_bound > *w) {
+                    worst = Some(&v.err_bound);
+                }
+            }
+        }
+        if let Some(w) = worst {
+            out.push(format!(
+                "{n} value(s) of {c} printed 0 are zero only to within an absolute bound, |{c}| <= {}",
+                cylroll::numeric::decimal::short(w)
+            ));
+        }
+    }
+    out
+}

@@ -1,0 +1,738 @@
+//! The energy route: a conservative phase (every contact rolling,
+//! sticking, frictionless or held) reduced to one degree of freedom, whose
+//! energy integral gives θ̇²(θ) in closed form and t(θ) as a quadrature.
+//!
+//! [`Route`] holds one [`Ideal`] model and, explicitly, what depends only on
+//! that model and a working precision ([`Caches`]): the quadrature engines
+//! with their node sets, the scan bracket of separation, δs = θs − θ0 and
+//! t_s per precision, and the exact polynomials in cos θ of N12 and of the
+//! forces. Each method computes at one working precision and returns a
+//! value with its error estimate; the precision ladder is the caller's
+//! ([`crate::oracle`]). Nothing here caches a requested answer.
+//!
+//! A model that falls to the left (θ0 < 0, or θ0 = 0 with θ̇0 < 0) is
+//! solved as its mirror image ([`Route::odd`] restores the odd quantities).
+
+pub mod engine;
+mod roots;
+
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use crate::mechanics::Reduced;
+use crate::model::{Contact, Floor, Ideal};
+use crate::numeric::taylor::{self, Conservative};
+use crate::numeric::verify::{Estimate, Run};
+pub use engine::Engine;
+use rug::{Assign, Float};
+use std::collections::HashMap;
+
+/// From this working precision on (about 170 digits) the trajectory's θ(t)
+/// comes from inverting t(θ) on a Chebyshev interpolant
+/// ([`engine::Inverse`]) rather than from a Taylor run of θ̈ = F(θ): the
+/// Taylor run's cost grows like the cube of the precision, an inversion's
+/// like its square times the interpolant's size.
+pub const TRAJECTORY_CHEB_MIN_BITS: u32 = 600;
+
+/// Below this |θ0| the trajectory takes the Chebyshev route at every
+/// precision: its pieces grade towards the start's singularity, where a
+/// Taylor run needs ever shorter steps (θ0 = 1e-100 failed after 26 s).
+pub const NEAR_TOP: f64 = 1e-6;
+
+/// Constants of the trajectory rows at one precision.
+pub struct RowContext {
+    p: u32,
+    /// Natural scales of the 12 columns after t.
+    scales: [Float; 12],
+    /// √(r/g).
+    ts: Float,
+    /// r = r1 + r2.
+    rr: Float,
+    /// r1.
+    r1: Float,
+}
+
+/// Whether `q` has a terminating decimal expansion (its reduced denominator
+/// has no prime factors but 2 and 5).
+pub fn terminating(q: &rug::Rational) -> bool {
+    let mut d = q.denom().clone();
+    d.remove_factor_mut(&rug::Integer::from(2));
+    d.remove_factor_mut(&rug::Integer::from(5));
+    d == 1
+}
+
+/// Precision of the scans that locate brackets (refined afterwards).
+pub const SCAN_PREC: u32 = 96;
+/// Scan steps over the motion.
+pub const SCAN_STEPS: u32 = 512;
+
+/// What the route keeps between calls: facts of the model at a working
+/// precision, computed once on first use.
+#[derive(Default)]
+pub struct Caches {
+    /// The quadrature engines (dynamics constants, tanh-sinh and
+    /// Gauss–Legendre node sets, Chebyshev fits), one per precision.
+    pub engines: HashMap<u32, Engine>,
+    /// The first sign change of N12 on the 96-bit scan.
+    pub scan_s: Option<Option<(Float, Float)>>,
+    /// δs = θs − θ0 and its error, per precision.
+    pub delta_s_at: HashMap<u32, (Float, Float)>,
+    /// t_s per precision (for the trajectory's time check).
+    pub t_s_at: HashMap<u32, Float>,
+    /// N12·K²/m2 as an exact polynomial in cos θ.
+    pub n12_poly: Option<crate::mechanics::dynamics::N12Poly>,
+    /// N1, F1, F21 as exact polynomials in cos θ.
+    pub force_polys: Option<crate::mechanics::dynamics::ForcePolys>,
+}
+
+/// The energy route of one conservative model.
+pub struct Route {
+    /// The model as given.
+    pub model: Ideal,
+    /// The model as solved: mirrored when it falls to the left.
+    pub work: Ideal,
+    /// +1, or −1 for a mirrored model.
+    pub sign: i32,
+    /// The exact reduction to one degree of freedom.
+    pub red: Reduced,
+    /// What depends only on the model and a precision.
+    pub caches: Caches,
+}
+
+impl Route {
+    /// The route of `model`.
+    ///
+    /// Errors: a start where the cylinders already part (N12 ≤ 0) or
+    /// cylinder 1 already lifts (N1 ≤ 0).
+    pub fn new(model: &Ideal) -> Result<Self> {
+        let sign = model.direction();
+        let work = if sign < 0 {
+            model.mirrored()
+        } else {
+            model.clone()
+        };
+        let red = Reduced::new(&work)?;
+        let mut r = Route {
+            model: model.clone(),
+            work,
+            sign,
+            red,
+            caches: Caches::default(),
+        };
+        let e = r.engine(SCAN_PREC)?;
+        let z = Float::new(SCAN_PREC);
+        let st = e.dynm.state(&z);
+        let f = e.dynm.forces(&st);
+        if !f.n12.is_sign_positive() || f.n12.is_zero() {
+            return Err(Error::not_physical(format!(
+                "the cylinders part at once: N12 = {:.3e} <= 0 at the start (thetadot0 too large for theta0)",
+                f.n12.to_f64()
+            )));
+        }
+        if !f.n1.is_sign_positive() || f.n1.is_zero() {
+            return Err(Error::not_physical(format!(
+                "cylinder 1 lifts off the floor at once: N1 = {:.3e} <= 0 at the start",
+                f.n1.to_f64()
+            )));
+        }
+        Ok(r)
+    }
+
+    pub fn engine(&mut self, prec: u32) -> Result<&mut Engine> {
+        if !self.caches.engines.contains_key(&prec) {
+            let e = Engine::new(&self.work, &self.red, prec)?;
+            self.caches.engines.insert(prec, e);
+        }
+        Ok(self.caches.engines.get_mut(&prec).expect("inserted"))
+    }
+
+    pub fn infinite_time_error(&self, what: &str) -> Error {
+        Error::not_physical(format!(
+            "{what} is infinite: the motion starts from rest exactly at the unstable top (theta0 = 0, thetadot0 = 0); \
+             give a small --theta0 or --thetadot0 (forces and the separation angle are defined as the limit theta0 -> 0+)"
+        ))
+    }
+
+    /// The coefficients (ascending in c = cos θ) of N12·K²/m2 at `prec` bits
+    /// ([`crate::mechanics::dynamics::N12Poly`], built once in exact
+    /// rationals; the start enters through A_H).
+    pub fn n12_coefficients(&mut self, prec: u32) -> Result<Vec<Float>> {
+        use crate::mechanics::dynamics::N12Poly;
+        let a_h = N12Poly::a_h(&self.engine(prec)?.dynm);
+        let poly = self
+            .caches
+            .n12_poly
+            .get_or_insert_with(|| N12Poly::new(&self.red, self.work.params()));
+        Ok(poly.at(&a_h, prec))
+    }
+
+    /// The 96-bit scan's bracket of the first sign change of N12 (cached).
+    ///
+    /// The scan evaluates N12·K²/m2, the polynomial in c = cos θ of
+    /// [`crate::mechanics::dynamics::N12Poly`] (one `cos` and a Horner sum per
+    /// point; K > 0, so it has N12's sign), rather than the full dynamics: the
+    /// same grid and the same signs at about a fifth of the cost, which is
+    /// most of a cold `time_at`.
+    pub fn scan_bracket(&mut self) -> Result<(Float, Float)> {
+        if self.caches.scan_s.is_none() {
+            let coef = self.n12_coefficients(SCAN_PREC)?;
+            let th0 = self.work.start().theta0.to_float(SCAN_PREC);
+            let hi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi) - &th0;
+            let zero = Float::new(SCAN_PREC);
+            let mut c = Float::new(SCAN_PREC);
+            let bracket = crate::numeric::root::first_sign_change(&zero, &hi, SCAN_STEPS, |d| {
+                c.assign(&th0 + d);
+                c.cos_mut();
+                let mut v = Float::new(SCAN_PREC);
+                crate::numeric::poly::horner(&coef, &c, &mut v);
+                v
+            });
+            self.caches.scan_s = Some(bracket);
+        }
+        match &self.caches.scan_s {
+            Some(Some(b)) => Ok(b.clone()),
+            _ => Err(Error::not_physical(
+                "N12 stays positive up to theta = pi: the cylinders never separate",
+            )),
+        }
+    }
+
+    /// δs = θs − θ0 at `prec`, as (value, error), with the bracket scanned at
+    /// low precision first. Both are deterministic and cached.
+    pub fn delta_s(&mut self, prec: u32) -> Result<(Float, Float)> {
+        if let Some(v) = self.caches.delta_s_at.get(&prec) {
+            return Ok(v.clone());
+        }
+        let (lo, hi) = self.scan_bracket()?;
+        let e = self.engine(prec)?;
+        let v = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
+        self.caches.delta_s_at.insert(prec, v.clone());
+        Ok(v)
+    }
+
+    /// θ in the working frame from a user angle.
+    pub fn to_work(&self, theta: &Exact) -> Exact {
+        if self.sign < 0 {
+            theta.neg()
+        } else {
+            theta.clone()
+        }
+    }
+
+    pub fn odd(&self, x: Float) -> Float {
+        if self.sign < 0 {
+            -x
+        } else {
+            x
+        }
+    }
+
+    pub fn scale_force(&self, p: u32) -> Float {
+        let pr = self.work.params();
+        Float::with_val(p, &rug::Rational::from(&pr.m1 + &pr.m2)) * &pr.g
+    }
+
+    pub fn scale_time(&self, p: u32) -> Float {
+        let pr = self.work.params();
+        Float::with_val(p, Float::with_val(p, &pr.r()) / &pr.g).sqrt()
+    }
+
+    /// N1, F1, F21 as polynomials in cos θ (built once).
+    pub fn force_polys(&mut self) -> crate::mechanics::dynamics::ForcePolys {
+        let (floor, contact) = (self.work.floor(), self.work.contact());
+        self.caches
+            .force_polys
+            .get_or_insert_with(|| {
+                crate::mechanics::dynamics::ForcePolys::new(
+                    &self.red,
+                    self.work.params(),
+                    floor,
+                    contact,
+                )
+            })
+            .clone()
+    }
+
+    /// δ = θ − θ0 (working frame) for a user angle, checked to lie in the motion.
+    pub fn delta_of(&mut self, param: &str, theta: &Exact, p: u32) -> Result<Float> {
+        let w = self.to_work(theta);
+        let th0 = self.work.start().theta0.clone();
+        let d = Float::with_val(p, w.to_float(p) - th0.to_float(p));
+        // Inside the motion by a clear margin below the scan's bracket of δs:
+        // no need to refine δs at this precision.
+        let (lo, _) = self.scan_bracket()?;
+        if !d.is_sign_negative() || d.is_zero() {
+            let margin = Float::with_val(p, lo.abs_ref()) >> (p.min(SCAN_PREC) as i32 - 4);
+            if Float::with_val(p.max(SCAN_PREC), &d + &margin) < lo {
+                return Ok(d);
+            }
+        }
+        let (ds, _) = self.delta_s(p)?;
+        let th_s = Float::with_val(p, th0.to_float(p) + &ds);
+        let range = format!(
+            "must lie in the motion, between theta0 = {} and the separation angle theta_s = {}",
+            self.model.start().theta0,
+            crate::numeric::decimal::to_sig(&self.odd(th_s), 12)
+        );
+        if d.is_sign_negative() && !d.is_zero() {
+            return Err(Error::invalid(
+                param,
+                theta,
+                format!("{range} (it is before the start)"),
+            ));
+        }
+        // Before or after separation, decided whatever the digits asked: θ is
+        // compared with the bracket [δs − ε, δs + ε] of the root of N12 (and
+        // the rounding of θ − θ0), at doubling precision until the bracket
+        // lies on one side. A θ that stays inside the bracket up to 8p bits
+        // (at least 1024) is θs itself to that accuracy, where the forces
+        // are defined (N12 = 0): it is answered, not refused.
+        let cap = (8 * p).clamp(1024, 1 << 15);
+        let mut q = p;
+        loop {
+            let (ds, err) = self.delta_s(q)?;
+            let dq = Float::with_val(q, w.to_float(q) - th0.to_float(q));
+            let ulp = Float::with_val(q, dq.abs_ref()) >> (q as i32 - 4);
+            let margin = Float::with_val(q, &err + &ulp);
+            if Float::with_val(q, &dq + &margin) < ds {
+                return Ok(d);
+            }
+            if Float::with_val(q, &dq - &margin) > ds {
+                return Err(Error::invalid(
+                    param,
+                    theta,
+                    format!("{range} (it is after separation)"),
+                ));
+            }
+            if q >= cap {
+                return Ok(d);
+            }
+            q = (2 * q).min(cap);
+        }
+    }
+
+    pub fn check_times(&self, times: &[Exact]) -> Result<()> {
+        if self.work.starts_at_equilibrium() {
+            return Err(self.infinite_time_error("every time along the motion"));
+        }
+        for t in times {
+            if t.signum() < 0 {
+                return Err(Error::invalid(
+                    "times",
+                    t,
+                    "must be >= 0 (the start is at t = 0)",
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// t_s at precision `p` (cached: a fact of the model).
+    pub fn t_s_at(&mut self, p: u32) -> Result<Float> {
+        if let Some(t) = self.caches.t_s_at.get(&p) {
+            return Ok(t.clone());
+        }
+        let (ds, _) = self.delta_s(p)?;
+        let (t_s, _, _) = self.engine(p)?.time_fast(&ds, false, false);
+        self.caches.t_s_at.insert(p, t_s.clone());
+        Ok(t_s)
+    }
+
+    /// The right-hand side θ̈ = sin θ·P(c)/K(c)² of the model at `p` bits:
+    /// with A_H = K(θ0)θ̇0² + 2(g/r) cos θ0, P = (g/r) q0 + q1 A_H/2 +
+    /// q2 A_H c − (g/r) q2 c² (θ̈ = sin θ (g/r + ½K'θ̇²)/K with θ̇² = H/K).
+    pub fn taylor_rhs(&mut self, p: u32) -> Result<Conservative> {
+        let d = &self.engine(p)?.dynm;
+        let a_h = crate::mechanics::dynamics::N12Poly::a_h(d);
+        let e0 = Float::with_val(p, &d.gr * &d.q[0]) + Float::with_val(p, &d.q[1] * &a_h) / 2u32;
+        let e1 = Float::with_val(p, &d.q[2] * &a_h);
+        let e2 = -Float::with_val(p, &d.gr * &d.q[2]);
+        Ok(Conservative {
+            e: [e0, e1, e2],
+            k: d.q.clone(),
+        })
+    }
+
+    /// δ = θ − θ0 and its error bound ε at each time, at precision `p`: the
+    /// separation-time check (each time ≤ t_s), one Taylor run to the last
+    /// time, and the quadrature check there. ε is twice the estimate (at
+    /// least |δ|·2^-(p−9)), as the Newton inversion used to report it.
+    /// `cache` holds the times as Floats (converted once per rung).
+    #[allow(clippy::too_many_arguments)]
+    pub fn deltas_at(
+        &mut self,
+        times: &[Exact],
+        p: u32,
+        run: Run,
+        rel_delta: bool,
+        cache: &mut (u32, Vec<Float>),
+        digits: u32,
+        t_end: Option<&Float>,
+    ) -> Result<Vec<(Float, Float)>> {
+        let t_s = match t_end {
+            Some(t) => Float::with_val(p, t),
+            None => self.t_s_at(p)?,
+        };
+        // fixed-point bits for the smallest positive time: δ ≈ θ̈0 t²/2 there
+        // (only the trajectory's rows need δ to full relative accuracy)
+        let t_min = times
+            .iter()
+            .filter(|t| !t.is_zero())
+            .map(|t| t.to_f64())
+            .fold(f64::INFINITY, f64::min);
+        let lt = t_min.max(1e-300).log2();
+        let extra = if rel_delta && lt < 0.0 {
+            ((-2.0 * lt).ceil() as u32 + 8).min(p)
+        } else {
+            0
+        };
+        let tq = taylor::time_prec_for(p, extra);
+        if cache.0 < tq {
+            // once for both runs of a rung: at the p2 run's precision
+            let hi = taylor::time_prec_for(p + p / 8 + 40, extra);
+            *cache = (hi, times.iter().map(|t| t.to_float(hi)).collect());
+        }
+        let tt_all = &cache.1;
+        // the separation-time check, and the last time
+        let mut i_max = None;
+        for (i, (t, tt)) in times.iter().zip(tt_all).enumerate() {
+            if *tt > t_s {
+                return Err(Error::invalid(
+                    "times",
+                    t,
+                    format!(
+                        "must be <= the separation time t_s = {}: the model ends when the cylinders part",
+                        crate::numeric::decimal::to_sig(&t_s, 12)
+                    ),
+                ));
+            }
+            if !tt.is_zero() && i_max.is_none_or(|m: usize| *tt >= tt_all[m]) {
+                i_max = Some(i);
+            }
+        }
+        let Some(i_max) = i_max else {
+            let zero = Float::new(p);
+            return Ok(vec![(zero.clone(), zero); times.len()]);
+        };
+        // the Chebyshev route at high precision, and from a start near the
+        // top at any (its pieces are graded towards the start; the Taylor
+        // run crawls there)
+        let near_top = self.work.start().theta0.to_f64().abs() < NEAR_TOP;
+        let by_cheb = p >= TRAJECTORY_CHEB_MIN_BITS || near_top;
+        let cheb = if by_cheb {
+            self.deltas_cheb(times, tt_all, p, extra)?
+        } else {
+            None
+        };
+        let mut out = match cheb {
+            Some(out) => out,
+            None => self.deltas_taylor(times, tt_all, i_max, p, extra, digits)?,
+        };
+        let t_last = Float::with_val(tq, &tt_all[i_max]);
+        let (d, eps) = out[i_max].clone();
+        // certify at the last time: t(δ − ε) ≤ t ≤ t(δ + ε) by the energy
+        // quadrature. One integral suffices when |t(δ) − t| + its error is
+        // below ε/θ̇(δ) = ε dt/dδ (less 2^-16: θ̇ varies by far less over [δ−ε, δ+ε]);
+        // otherwise both ends are integrated.
+        let high = run == Run::High;
+        let e = self.engine(p)?;
+        let (tm, tm_err) = e.time_check(&d, high, near_top);
+        let gap = Float::with_val(p, &tm - &t_last).abs() + &tm_err;
+        // t(δ ± ε) − t(δ) ≈ ±ε dt/dδ = ±ε/θ̇
+        let room = Float::with_val(p, &eps * e.inv_thetadot(&d));
+        let room = Float::with_val(p, &room - Float::with_val(p, &room >> 16));
+        let mut certified = gap <= room || {
+            let dlo = Float::with_val(p, &d - &eps);
+            let dhi = Float::with_val(p, &d + &eps);
+            let tlo = if dlo.is_sign_positive() {
+                e.time_check(&dlo, high, near_top).0
+            } else {
+                Float::new(p)
+            };
+            let thi = e.time_check(&dhi, high, near_top).0;
+            tlo <= t_last && t_last <= thi
+        };
+        if !certified {
+            // The bracket is too narrow for the quadrature at this precision
+            // to decide: widen every ε by the same factor until the one-integral
+            // test passes (a more conservative bound; the ladder then decides
+            // how many digits remain verified).
+            let mut widen = Float::with_val(p, 1u32);
+            for _ in 0..6 {
+                widen <<= 4;
+                if gap <= Float::with_val(p, &room * &widen) {
+                    certified = true;
+                    for (_, x) in out.iter_mut() {
+                        *x *= &widen;
+                    }
+                    break;
+                }
+            }
+        }
+        if !certified {
+            return Err(Error::NotConverged {
+                quantity: "theta(t)".into(),
+                requested: digits,
+                reached: format!("no certified bracket at {p} bits"),
+                detail: format!("t = {}", crate::numeric::decimal::to_sig(&t_last, 20)),
+            });
+        }
+        Ok(out)
+    }
+
+    /// δ and its error at each time by one Taylor run to the last time
+    /// ([`crate::numeric::taylor`], dense output), `extra` fixed-point bits.
+    pub fn deltas_taylor(
+        &mut self,
+        times: &[Exact],
+        tt_all: &[Float],
+        i_max: usize,
+        p: u32,
+        extra: u32,
+        digits: u32,
+    ) -> Result<Vec<(Float, Float)>> {
+        let rhs = self.taylor_rhs(p)?;
+        let th0 = self.work.start().theta0.to_float(p);
+        let td0 = Float::with_val(p, &self.work.start().thetadot0);
+        let t_end = tt_all[i_max].clone();
+        let mut traj = taylor::integrate(&rhs, &th0, &td0, &t_end, p, extra)?;
+        let mut out = Vec::with_capacity(times.len());
+        let mut floor = Float::new(p);
+        for (t, tt) in times.iter().zip(tt_all) {
+            if t.is_zero() {
+                out.push((Float::new(p), Float::new(p)));
+                continue;
+            }
+            let (d, mut e) = traj.delta_at(tt).ok_or_else(|| Error::NotConverged {
+                quantity: "theta(t)".into(),
+                requested: digits,
+                reached: format!("no Taylor output at {p} bits"),
+                detail: format!("t = {}", crate::numeric::decimal::to_sig(tt, 20)),
+            })?;
+            floor.assign(d.abs_ref());
+            floor >>= p as i32 - 8;
+            if e < floor {
+                e.assign(&floor);
+            }
+            e <<= 1;
+            out.push((d, e));
+        }
+        Ok(out)
+    }
+
+    /// δ and its error at each time by inverting t(θ) on one Chebyshev
+    /// interpolant over [θ0, θs] ([`engine::Inverse`]), at `p` + `extra`
+    /// bits (the extra bits keep δ's relative accuracy at small times, as
+    /// the Taylor route's fixed-point bits do), rounded to `p`. `None` where
+    /// the interpolant does not apply (θs beyond 2π/3, a start so near the
+    /// top that the integrand's singularity crowds the interval).
+    pub fn deltas_cheb(
+        &mut self,
+        times: &[Exact],
+        tt_all: &[Float],
+        p: u32,
+        extra: u32,
+    ) -> Result<Option<Vec<(Float, Float)>>> {
+        let pe = p + extra;
+        let (ds, _) = self.delta_s(pe)?;
+        let Some(inv) = self.engine(pe)?.inverse(&ds) else {
+            return Ok(None);
+        };
+        let mut out = Vec::with_capacity(times.len());
+        for (t, tt) in times.iter().zip(tt_all) {
+            if t.is_zero() {
+                out.push((Float::new(p), Float::new(p)));
+                continue;
+            }
+            let (d, e) = inv.delta_at(&Float::with_val(pe, tt));
+            let d = Float::with_val(p, d);
+            let mut e = Float::with_val(p, e);
+            e += Float::with_val(p, d.abs_ref()) >> (p as i32 - 2);
+            out.push((d, e));
+        }
+        Ok(Some(out))
+    }
+
+    /// The per-run constants of the trajectory rows at precision `p`.
+    pub fn row_context(&self, p: u32) -> RowContext {
+        let sf = self.scale_force(p);
+        let ts = self.scale_time(p);
+        let pr = self.work.params();
+        let rr = Float::with_val(p, &pr.r());
+        let r1 = Float::with_val(p, &pr.r1);
+        let one = Float::with_val(p, 1u32);
+        let inv_ts = Float::with_val(p, &one / &ts);
+        let inv_ts2 = Float::with_val(p, &inv_ts / &ts);
+        RowContext {
+            p,
+            scales: [
+                one.clone(),
+                inv_ts,
+                inv_ts2,
+                one.clone(),
+                one,
+                rr.clone(),
+                rr.clone(),
+                rr.clone(),
+                sf.clone(),
+                sf.clone(),
+                sf.clone(),
+                sf,
+            ],
+            ts,
+            rr,
+            r1,
+        }
+    }
+
+    /// The estimates of one trajectory row at time `t` from δ and its bound.
+    pub fn row_estimates(
+        &mut self,
+        t: &Exact,
+        d: &Float,
+        derr: &Float,
+        ctx: &RowContext,
+        floor: Floor,
+        contact: Contact,
+    ) -> Result<Vec<Estimate>> {
+        let p = ctx.p;
+        let tf = t.to_float(p);
+        let (rr, r1) = (&ctx.rr, &ctx.r1);
+        let e = self.engine(p)?;
+        let st = e.dynm.state(d);
+        let d2 = Float::with_val(p, d + derr);
+        let st2 = e.dynm.state(&d2);
+        let vals = |st: &crate::mechanics::dynamics::State, e: &Engine| -> Vec<Float> {
+            let pos = e.dynm.positions(st, &tf);
+            let f = e.dynm.forces(st);
+            let x2 = Float::with_val(p, rr * &st.s) + &pos[0];
+            let y2 = Float::with_val(p, rr * &st.c) + r1;
+            let phi2 = Float::with_val(p, &pos[2] + &st.theta);
+            vec![
+                st.theta.clone(),
+                st.thetadot.clone(),
+                st.thetaddot.clone(),
+                pos[1].clone(),
+                phi2,
+                pos[0].clone(),
+                x2,
+                y2,
+                f.f1,
+                f.n1,
+                f.f21,
+                f.n12,
+            ]
+        };
+        let a = vals(&st, e);
+        let b = vals(&st2, e);
+        let scales = &ctx.scales;
+        // odd columns change sign in the mirror
+        let odd = [
+            true, true, true, true, true, true, true, false, true, false, true, false,
+        ];
+        let mut out = vec![Estimate {
+            value: tf.clone(),
+            err: Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2),
+            exact_zero: t.is_zero(),
+            scale: ctx.ts.clone(),
+            exact_text: None,
+        }];
+        for i in 0..12 {
+            let prop = Float::with_val(p, &b[i] - &a[i]).abs();
+            let ulps = Float::with_val(p, a[i].abs_ref()) >> (p as i32 - 4);
+            let zero = (i == 8 && floor == Floor::Slip) || (i == 10 && contact == Contact::Slip);
+            let v = if odd[i] {
+                self.odd(a[i].clone())
+            } else {
+                a[i].clone()
+            };
+            out.push(Estimate {
+                value: v,
+                err: prop + ulps,
+                exact_zero: zero,
+                scale: scales[i].clone(),
+                exact_text: None,
+            });
+        }
+        Ok(out)
+    }
+}
+
+/// Which of the 21 columns of a motion row (`crate::motion::point::COLUMNS`)
+/// change sign in the mirror image: all but t, y2, ẏ2, N1, N12 and the work.
+const ODD: [bool; 21] = [
+    false, true, true, true, true, true, true, true, false, true, true, true, false, true, true,
+    false, true, false, true, true, false,
+];
+
+impl Route {
+    /// Every column of a motion row (t, θ, θ̇, θ̈, φ1, φ2, x1, x2, y2, ẋ1,
+    /// φ̇1, ẋ2, ẏ2, φ̇2, F1, N1, F21, N12, s1, s12, work) at δ = θ − θ0
+    /// reached at time `t`, in the user's frame (mirrored back), at `p`
+    /// bits; and the total energy. φ2 is 0 at t = 0; the slip speed of a
+    /// rolling or held contact is exactly 0, as is the work.
+    ///
+    /// Errors: none beyond building the engine at `p`.
+    pub fn columns_at(&mut self, delta: &Float, t: &Float, p: u32) -> Result<(Vec<Float>, Float)> {
+        let (floor, contact) = (self.work.floor(), self.work.contact());
+        let pr = self.work.params();
+        let r = Float::with_val(p, &pr.r());
+        let r1 = Float::with_val(p, &pr.r1);
+        let r2 = Float::with_val(p, &pr.r2);
+        let v0 = Float::with_val(p, &rug::Rational::from(&pr.m1 + &pr.m2))
+            * Float::with_val(p, &pr.g)
+            * &r1;
+        let e = self.engine(p)?;
+        let st = e.dynm.state(delta);
+        let pos = e.dynm.positions(&st, t);
+        let f = e.dynm.forces(&st);
+        // T + V with V = m1 g y1 + m2 g y2 (y1 = r1): the constrained
+        // system's zero of the potential
+        let energy = e.dynm.energy(&st) + v0;
+        let [xd, pd, sd] = &st.v;
+        let td = &st.thetadot;
+        let x2 = Float::with_val(p, &r * &st.s) + &pos[0];
+        let y2 = Float::with_val(p, &r * &st.c) + &r1;
+        let x2d = Float::with_val(p, &r * &st.c) * td + xd;
+        let y2d = -(Float::with_val(p, &r * &st.s) * td);
+        let s1 = if floor == Floor::Slip {
+            Float::with_val(p, xd - Float::with_val(p, &r1 * pd))
+        } else {
+            Float::new(p)
+        };
+        let s12 = if contact == Contact::Slip {
+            Float::with_val(p, &r * td) + Float::with_val(p, &r2 * sd)
+                - Float::with_val(p, &r1 * pd)
+        } else {
+            Float::new(p)
+        };
+        let vals = vec![
+            Float::with_val(p, t),
+            st.theta.clone(),
+            td.clone(),
+            st.thetaddot.clone(),
+            pos[1].clone(),
+            Float::with_val(p, &pos[2] + &st.theta),
+            pos[0].clone(),
+            x2,
+            y2,
+            xd.clone(),
+            pd.clone(),
+            x2d,
+            y2d,
+            Float::with_val(p, sd + td),
+            f.f1,
+            f.n1,
+            f.f21,
+            f.n12,
+            s1,
+            s12,
+            Float::new(p),
+        ];
+        let out = vals
+            .into_iter()
+            .zip(ODD)
+            .map(|(v, odd)| if odd { self.odd(v) } else { v })
+            .collect();
+        Ok((out, energy))
+    }
+}

@@ -1,0 +1,128 @@
+//! The events of a conservative phase as roots of polynomials in c = cos θ.
+//!
+//! Along a conservative motion θ̇² = H/K with H = A_H − 2(g/r)c and K(c) a
+//! quadratic, so every force is a rational function of c (and sin θ) with
+//! the positive denominator K²: each event that can end the phase — a
+//! Coulomb contact's cone |F| = μs N, N1 = 0, parting becoming lawful —
+//! is a root of a polynomial with exact rational coefficients (in A_H,
+//! which carries the start). Its real roots are isolated at 64 bits by the
+//! monotone pieces between the roots of its derivatives
+//! ([`crate::numeric::poly::sign_change_roots`]: no pair of close roots is
+//! missed, unlike a scan), the first in θ (the largest c) is refined by
+//! Newton's method at doubling precision, and θ = acos c.
+
+use super::Route;
+use crate::error::Result;
+use crate::mechanics::dynamics::{Dyn, HPoly, N12Poly};
+use crate::model::Which;
+use crate::numeric::poly;
+use rug::{Float, Rational};
+
+/// Precision at which roots are isolated.
+const ISO: u32 = 64;
+
+impl Route {
+    /// K²·(r θ̇² − g cos θ): the free relative normal acceleration of the
+    /// cylinders (cylinder 2 falling freely, cylinder 1 unaccelerated — so
+    /// on every floor of a conservative phase) times K², as a polynomial
+    /// in c: r (H K) − g c K². Its rise through 0 while N12 > 0 is where
+    /// parting becomes lawful (a branch point).
+    pub fn free_normal_poly(&mut self) -> HPoly {
+        let fp = self.force_polys();
+        let p = self.work.params();
+        let r = p.r();
+        let gr = Rational::from(&p.g / &r);
+        let k = HPoly::constant(&fp.k);
+        let c = HPoly::constant(&[Rational::new(), Rational::from(1)]);
+        // H K = −2(g/r) c K + A_H K
+        let hk = HPoly {
+            parts: vec![Vec::new(), fp.k.clone()],
+        }
+        .add_scaled(&c.mul(&k), &Rational::from(&gr * -2i32));
+        let gck2 = c.mul(&k).mul(&k);
+        HPoly::default()
+            .add_scaled(&hk, &r)
+            .add_scaled(&gck2, &Rational::from(-&p.g))
+    }
+
+    /// μ² (N K²)² − (1 − c²)(F K²/sin θ)² of a contact while it rolls: ≥ 0
+    /// exactly where |F| ≤ μ N (N > 0), so its fall through 0 is where
+    /// rolling would first need more friction than μ (a slip onset).
+    pub fn cone_poly(&mut self, which: Which, mu: &Rational) -> HPoly {
+        let fp = self.force_polys();
+        let (a, b) = match which {
+            Which::Floor => (HPoly::linear(&fp.f1), HPoly::linear(&fp.n1)),
+            Which::Contact => {
+                let np = self
+                    .caches
+                    .n12_poly
+                    .get_or_insert_with(|| N12Poly::new(&self.red, self.work.params()))
+                    .clone();
+                let m2 = self.work.params().m2.clone();
+                let b = HPoly::default().add_scaled(&HPoly::linear(&(np.base, np.per_h)), &m2);
+                (HPoly::linear(&fp.f21), b)
+            }
+        };
+        let one_m_c2 = HPoly::constant(&[Rational::from(1), Rational::new(), Rational::from(-1)]);
+        let mu2 = Rational::from(mu.square_ref());
+        HPoly::default()
+            .add_scaled(&b.mul(&b), &mu2)
+            .add_scaled(&one_m_c2.mul(&a).mul(&a), &Rational::from(-1))
+    }
+
+    /// N1·K² as a polynomial in c.
+    pub fn n1_poly(&mut self) -> HPoly {
+        HPoly::linear(&self.force_polys().n1)
+    }
+
+    /// The sign of `hp` at θ0 (working frame): +1, −1 or 0.
+    pub fn sign_at_start(&mut self, hp: &HPoly) -> Result<i32> {
+        let a_h = N12Poly::a_h(&self.engine(ISO)?.dynm);
+        let c0 = self.engine(ISO)?.dynm.c0.clone();
+        let mut v = Float::new(ISO);
+        poly::horner(&hp.at(&a_h, ISO), &c0, &mut v);
+        Ok(if v.is_zero() {
+            0
+        } else if v.is_sign_positive() {
+            1
+        } else {
+            -1
+        })
+    }
+
+    /// The first sign change of `hp` in θ on (θ0, θ_end) (working frame;
+    /// `delta_end` = θ_end − θ0, needed to a few bits): δ = θ − θ0 there and
+    /// its error bound at `p` bits, or None.
+    ///
+    /// Errors: a root the refinement cannot verify.
+    pub fn first_root(
+        &mut self,
+        name: &str,
+        hp: &HPoly,
+        delta_end: &Float,
+        p: u32,
+    ) -> Result<Option<(Float, Float)>> {
+        let (c0, a_h) = {
+            let d = &self.engine(ISO)?.dynm;
+            (d.c0.clone(), N12Poly::a_h(d))
+        };
+        let th0 = self.work.start().theta0.to_float(ISO);
+        let c_end = Float::with_val(ISO, &th0 + Float::with_val(ISO, delta_end)).cos();
+        let lo = Float::with_val(ISO, &c_end).max(&Float::with_val(ISO, -1));
+        let roots = poly::sign_change_roots(&hp.at(&a_h, ISO), &lo, &c0);
+        let Some(start) = roots.into_iter().rev().find(|c| *c < c0 && *c > lo) else {
+            return Ok(None);
+        };
+        let a_hp = N12Poly::a_h(&Dyn::new(&self.work, &self.red, p + 16)?);
+        let coef = hp.at(&a_hp, p + 16);
+        let (c, eps) = poly::refine_root(name, &coef, &start, p)?;
+        let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
+        // dθ = −dc / sin θ, sin θ = √(1 − c²) (> 0 on (0, π)); ×(1 + 2^-16)
+        let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
+        let mut err = Float::with_val(p, &eps / &sin);
+        err += Float::with_val(p, &err >> 16);
+        err += th_err;
+        let th0p = self.work.start().theta0.to_float(p);
+        Ok(Some((Float::with_val(p, th - th0p), err)))
+    }
+}

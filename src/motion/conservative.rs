@@ -1,0 +1,368 @@
+//! The fast path of a conservative first phase: while every contact rolls,
+//! sticks, is frictionless or held, the energy integral holds and the
+//! motion is the ideal model's ([`crate::integrate::energy`]): θ̇²(θ) in
+//! closed form, t(θ) a quadrature, and each event that can end the phase
+//! a root in the angle — N12 = 0, a Coulomb contact's cone, N1 = 0,
+//! cylinder 2 reaching the floor, a branch point where parting becomes
+//! lawful, or a requested angle. The phase ends at the first of them;
+//! the motion goes on from the state there.
+
+use super::ctx::Ctx;
+use super::mode::{Branch, Kind, Mode, Phase};
+use super::point::{Point, TwoState, COLUMNS};
+use super::EventRec;
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use crate::integrate::energy::Route;
+use crate::integrate::solve::Sample;
+use crate::mechanics::system::{self as sy, System};
+use crate::model::{Law, Which};
+use crate::numeric::verify::Run;
+use rug::{Float, Rational};
+
+/// What ended the conservative phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ending {
+    /// N12 = 0: the cylinders part (the closed branch's end).
+    Separation,
+    /// A Coulomb contact's needed |F|/N reached μs.
+    Cone(Which),
+    /// N1 = 0: cylinder 1 leaves the floor.
+    LiftOff,
+    /// Cylinder 2 reaches the floor while still on cylinder 1.
+    FloorImpact,
+    /// Parting became lawful and the `part` branch parts here.
+    BranchPart,
+    /// θ reached the requested angle of `--part-at`.
+    PartAt,
+    /// θ reached the requested target angle.
+    Target,
+}
+
+/// The first phase computed by the energy route at one precision.
+pub struct Fast {
+    /// The rows at the requested times inside the phase (full columns).
+    pub rows: Vec<Point>,
+    /// θ at the requested times inside the phase (θ only).
+    pub thetas: Vec<(Float, Phase, Option<Float>)>,
+    /// How many of the requested times the phase covered.
+    pub covered: usize,
+    /// Events inside the phase that do not end it (a branch point on the
+    /// `stay` branch).
+    pub events: Vec<EventRec>,
+    /// What ended the phase.
+    pub ending: Ending,
+    /// The state at the end, as a sample of the mode's constrained system
+    /// (at the integrators' working precision).
+    pub end_sample: Sample,
+    /// Its columns.
+    pub end_point: Point,
+    /// Error estimates of the end's time and angle.
+    pub end_err: (Float, Float),
+    /// Where parting is lawful on this branch: (θ where it becomes so, θ
+    /// where it stops — None: up to the phase's end).
+    pub window: Option<(Float, Option<Float>)>,
+}
+
+/// What the phase must also stop at or note.
+pub struct Wants<'a> {
+    /// The requested times (ascending).
+    pub times: &'a [Exact],
+    /// Which run of the ladder (the energy route certifies θ(t) differently).
+    pub run: Run,
+    /// Digits requested (for messages).
+    pub digits: u32,
+    /// θ only at the times.
+    pub theta_only: bool,
+    /// The branch to follow.
+    pub branch: &'a Branch,
+    /// An angle to stop at (user frame).
+    pub target: Option<&'a Exact>,
+}
+
+/// The first phase from the start, in the conservative mode `mode`, by
+/// the energy route of `model.sticking()`.
+///
+/// Errors: the energy route's (a time it cannot certify, an angle it
+/// cannot verify); an angle that is not reached in the phase is not an
+/// error (the phase ends first).
+pub fn first_phase(
+    ctx: &Ctx,
+    route: &mut Route,
+    mode: Mode,
+    wants: &Wants,
+    p: u32,
+) -> Result<Fast> {
+    let sign = route.sign;
+    let th0w = route.work.start().theta0.to_float(p);
+    // δs at p (cached): the closed branch's end
+    let (ds, ds_err) = route.delta_s(p)?;
+    let mut refined: Vec<(Ending, Float, Float)> = vec![(Ending::Separation, ds.clone(), ds_err)];
+    // the other events that can end the phase, as roots of polynomials in c
+    if !ctx.held {
+        let hp = route.n1_poly();
+        if let Some((d, e)) = route.first_root("lift-off", &hp, &ds, p)? {
+            refined.push((Ending::LiftOff, d, e));
+        }
+    }
+    for w in [Which::Floor, Which::Contact] {
+        if let Law::Coulomb { mu_s, .. } = ctx.law(w) {
+            let hp = route.cone_poly(w, mu_s);
+            if let Some((d, e)) = route.first_root("slip onset", &hp, &ds, p)? {
+                refined.push((Ending::Cone(w), d, e));
+            }
+        }
+    }
+    {
+        // cylinder 2 reaching the floor: y2 = r2, cos θ = (r2 − r1)/r
+        let pr = route.work.params();
+        let cf = Float::with_val(p, Rational::from(&pr.r2 - &pr.r1) / pr.r());
+        let thf = Float::with_val(p, cf.acos_ref());
+        let df = Float::with_val(p, &thf - &th0w);
+        if df.is_sign_positive() && df < ds {
+            let ulp = Float::with_val(p, thf.abs_ref()) >> (p as i32 - 4);
+            refined.push((Ending::FloorImpact, df, ulp));
+        }
+    }
+    // the branch point: parting becomes lawful while the contact holds
+    let mut starts_open = false;
+    let mut branch_found: Option<(Float, Float)> = None;
+    if !ctx.held {
+        let hp = route.free_normal_poly();
+        if route.sign_at_start(&hp)? > 0 {
+            starts_open = true;
+        } else if let Some(found) = route.first_root("branch point", &hp, &ds, p)? {
+            branch_found = Some(found);
+        }
+    }
+    // the requested angles (user frame → δ in the working frame)
+    let angle_at = |e: &Exact, kind: Ending| -> Option<(Ending, Float)> {
+        let th = if sign < 0 { e.neg() } else { e.clone() };
+        let d = Float::with_val(p, th.to_float(p + 16) - th0w.clone());
+        (d.is_sign_positive() || d.is_zero()).then_some((kind, d))
+    };
+    let mut exact_ends: Vec<(Ending, Float)> = Vec::new();
+    if let Some(t) = wants.target {
+        exact_ends.extend(angle_at(t, Ending::Target));
+    }
+    if let Branch::PartAt(a) = wants.branch {
+        exact_ends.extend(angle_at(a, Ending::PartAt));
+    }
+    for (kind, d) in exact_ends {
+        let ulp = Float::with_val(p, d.abs_ref()) >> (p as i32 - 2);
+        refined.push((kind, d, ulp));
+    }
+    // the branch point, where parting becomes lawful while the contact
+    // holds; it coincides with the separation for a held lower cylinder
+    // (N12 = −m2 ρ̈_free there), which is then no branch point
+    let mut branch_at: Option<(Float, Float)> = None;
+    if let Some((d, err)) = branch_found {
+        let gap = Float::with_val(p, &d - &ds).abs();
+        let tol = Float::with_val(p, &err + &refined[0].2) * 4u32;
+        if gap > tol && d < ds {
+            if *wants.branch == Branch::Part {
+                refined.push((Ending::BranchPart, d.clone(), err.clone()));
+            }
+            branch_at = Some((d, err));
+        }
+    }
+    if starts_open {
+        branch_at = Some((Float::new(p), Float::new(p)));
+        if *wants.branch == Branch::Part {
+            refined.push((Ending::BranchPart, Float::new(p), Float::new(p)));
+        }
+    }
+    // the earliest ending (a requested angle ties with nothing: an angle at
+    // an event is decided by the caller)
+    let (ending, d_end, d_err) = refined
+        .into_iter()
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .ok_or_else(|| Error::not_physical("internal: no end of the conservative phase"))?;
+    // the branch window on the `stay` branch (parting lawful from the branch
+    // point to the end of the closed branch)
+    let window = branch_at.as_ref().and_then(|(d, _)| {
+        (*d <= d_end).then(|| {
+            let th = Float::with_val(p, &th0w + d);
+            (route.odd(th), None)
+        })
+    });
+    let (t_end, t_err_q) = route.engine(p)?.time(&d_end);
+    let (cols_end, energy_end) = route.columns_at(&d_end, &t_end, p)?;
+    let thd_end = Float::with_val(p, cols_end[2].abs_ref());
+    let t_err = if thd_end.is_zero() {
+        t_err_q
+    } else {
+        t_err_q + Float::with_val(p, &d_err / &thd_end)
+    };
+    let end_point = point_of(cols_end, energy_end, mode, None, zero_bits(ctx, mode));
+    // the events inside the phase
+    let mut events = Vec::new();
+    if let (Some((d, err)), true) = (&branch_at, ending != Ending::BranchPart) {
+        if *d <= d_end {
+            let (t, terr) = route.engine(p)?.time(d);
+            let (cols, en) = route.columns_at(d, &t, p)?;
+            let thd = Float::with_val(p, cols[2].abs_ref());
+            let t_err = if thd.is_zero() {
+                terr
+            } else {
+                terr + Float::with_val(p, err / &thd)
+            };
+            let at = point_of(cols, en, mode, None, zero_bits(ctx, mode));
+            events.push(EventRec {
+                kind: Kind::Indeterminate,
+                which: Some(Which::Contact),
+                phase: Some(Phase::Contact(mode)),
+                at,
+                t_err,
+                theta_err: err.clone(),
+            });
+        }
+    }
+    // the rows inside the phase
+    let covered = wants
+        .times
+        .iter()
+        .take_while(|t| t.to_float(p + 16) <= t_end)
+        .count();
+    let times = &wants.times[..covered];
+    let mut rows = Vec::new();
+    let mut thetas = Vec::new();
+    if !times.is_empty() {
+        let mut cache = (0, Vec::new());
+        let deltas = route.deltas_at(
+            times,
+            p,
+            wants.run,
+            !wants.theta_only,
+            &mut cache,
+            wants.digits,
+            Some(&t_end),
+        )?;
+        for (t, (d, derr)) in times.iter().zip(deltas) {
+            let tf = t.to_float(p);
+            if wants.theta_only {
+                let th = Float::with_val(p, &th0w + &d);
+                let ulps = Float::with_val(p, th.abs_ref()) >> (p as i32 - 4);
+                thetas.push((route.odd(th), Phase::Contact(mode), Some(derr + ulps)));
+                continue;
+            }
+            let (a, energy) = route.columns_at(&d, &tf, p)?;
+            let d2 = Float::with_val(p, &d + &derr);
+            let (b, _) = route.columns_at(&d2, &tf, p)?;
+            let mut err: Vec<Float> = a
+                .iter()
+                .zip(&b)
+                .map(|(x, y)| {
+                    Float::with_val(p, x - y).abs()
+                        + (Float::with_val(p, x.abs_ref()) >> (p as i32 - 4))
+                })
+                .collect();
+            err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
+            rows.push(point_of(a, energy, mode, Some(err), zero_bits(ctx, mode)));
+        }
+    }
+    // the state at the end as a sample of the mode's system
+    let end_sample = sample_at(ctx, mode, &end_point)?;
+    let theta_err = d_err;
+    Ok(Fast {
+        rows,
+        thetas,
+        covered,
+        events,
+        ending,
+        end_sample,
+        end_point,
+        end_err: (t_err, theta_err),
+        window,
+    })
+}
+
+/// The columns that are exactly 0 in a conservative mode.
+fn zero_bits(ctx: &Ctx, mode: Mode) -> u32 {
+    let _ = ctx;
+    let bit = Point::zero_bit;
+    let mut z = bit("work");
+    use super::mode::State;
+    match mode.floor {
+        State::Stick | State::Held => z |= bit("s1"),
+        State::Slip(_) => z |= bit("F1"),
+    }
+    match mode.contact {
+        State::Stick | State::Held => z |= bit("s12"),
+        State::Slip(_) => z |= bit("F21"),
+    }
+    z
+}
+
+/// A point from the 21 columns of [`Route::columns_at`].
+fn point_of(c: Vec<Float>, energy: Float, mode: Mode, err: Option<Vec<Float>>, zero: u32) -> Point {
+    debug_assert_eq!(c.len(), COLUMNS.len());
+    let mut it = c.into_iter();
+    let mut n = || it.next().unwrap_or_else(|| Float::new(2));
+    let state = TwoState {
+        t: n(),
+        theta: n(),
+        theta_dot: n(),
+        theta_ddot: n(),
+        phi1: n(),
+        phi2: n(),
+        x1: n(),
+        x2: n(),
+        y2: n(),
+        x1_dot: n(),
+        phi1_dot: n(),
+        x2_dot: n(),
+        y2_dot: n(),
+        phi2_dot: n(),
+        f1: n(),
+        n1: n(),
+        f21: n(),
+        n12: n(),
+    };
+    let (s1, s12, work) = (n(), n(), n());
+    Point {
+        state,
+        s1,
+        s12,
+        work,
+        energy,
+        phase: Phase::Contact(mode),
+        err,
+        exact_zero: zero,
+    }
+}
+
+/// The state of a point as a sample of the mode's constrained system at
+/// the integrators' precision (accelerations and multipliers by one KKT
+/// solve).
+///
+/// Errors: a singular constraint system.
+pub fn sample_at(ctx: &Ctx, mode: Mode, pt: &Point) -> Result<Sample> {
+    let wp = ctx.wp;
+    let mut sys: System = ctx.system(mode)?;
+    let f = |x: &Float| Float::with_val(wp, x);
+    let nq = sys.nq();
+    let mut q = vec![Float::new(wp); nq];
+    let mut v = vec![Float::new(wp); nq];
+    let p = ctx.model.params();
+    q[sy::X1] = f(&pt.x1);
+    q[sy::Y1] = Float::with_val(wp, &p.r1);
+    q[sy::PHI1] = f(&pt.phi1);
+    q[sy::psi(0)] = Float::with_val(wp, &pt.phi2 - &pt.theta);
+    q[sy::th(0)] = f(&pt.theta);
+    q[sy::rr(0)] = Float::with_val(wp, &p.r());
+    v[sy::X1] = f(&pt.x1_dot);
+    v[sy::PHI1] = f(&pt.phi1_dot);
+    v[sy::psi(0)] = Float::with_val(wp, &pt.phi2_dot - &pt.theta_dot);
+    v[sy::th(0)] = f(&pt.theta_dot);
+    let acc = sys.accel(&q, &v)?;
+    Ok(Sample {
+        t: f(&pt.t),
+        q,
+        v,
+        qdd: acc.qdd,
+        lambda: acc.lambda,
+        work: Float::new(wp),
+        power: Float::new(wp),
+    })
+}

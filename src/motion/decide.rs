@@ -1,0 +1,219 @@
+//! The mode decision: at the start and at every event, which continuations
+//! of the motion are consistent with the contact laws.
+
+use super::ctx::{lam, normal_row, tangent, Ctx};
+use super::mode::{Branch, Mode, State};
+use crate::error::{Error, Result};
+use crate::integrate::solve::Sample;
+use crate::mechanics::system::{self as sy, Row, System, Tangent};
+use crate::model::{Law, Which};
+use rug::Float;
+
+/// Why a candidate mode is not consistent (None: it is).
+pub fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Option<String>> {
+    let mut sys = ctx.system(mode)?;
+    let p = sys.prec;
+    let acc = match sys.accel(q, v) {
+        Ok(a) => a,
+        Err(_) => return Ok(Some("its constraint system is singular".into())),
+    };
+    // just after: one Euler step of ε = 2^−(p/3)·T along the mode's flow
+    let eps = Float::with_val(p, &ctx.ts) >> (p as i32 / 3);
+    let q1: Vec<Float> = q
+        .iter()
+        .zip(v)
+        .map(|(x, d)| Float::with_val(p, x + Float::with_val(p, d * &eps)))
+        .collect();
+    let v1: Vec<Float> = v
+        .iter()
+        .zip(&acc.qdd)
+        .map(|(x, d)| Float::with_val(p, x + Float::with_val(p, d * &eps)))
+        .collect();
+    let a1 = match sys.accel(&q1, &v1) {
+        Ok(a) => a,
+        Err(_) => return Ok(Some("its constraint system is singular".into())),
+    };
+    // a second step, for slip speeds that leave 0 only at second order (at
+    // a slip onset with μs = μk the sliding force equals the sticking one,
+    // so ṡ = 0 there and the sign of s̈ decides): s(2ε) ≈ s + 2ε ṡ + ε² s̈
+    let v2: Vec<Float> = v1
+        .iter()
+        .zip(&a1.qdd)
+        .map(|(x, d)| Float::with_val(p, x + Float::with_val(p, d * &eps)))
+        .collect();
+    let s1 = Sample {
+        t: Float::new(p),
+        q: q1.clone(),
+        v: v1.clone(),
+        qdd: a1.qdd,
+        lambda: a1.lambda,
+        work: Float::new(p),
+        power: Float::new(p),
+    };
+    let n12 = lam(&sys, &s1, Row::Normal(0));
+    if !n12.is_sign_positive() || n12.is_zero() {
+        return Ok(Some(format!("N12 would be {:.3e} <= 0", n12.to_f64())));
+    }
+    if !ctx.held {
+        let n1 = lam(&sys, &s1, Row::FloorNormal);
+        if !n1.is_sign_positive() || n1.is_zero() {
+            return Ok(Some(format!("N1 would be {:.3e} <= 0", n1.to_f64())));
+        }
+    }
+    for (w, st) in [(Which::Floor, mode.floor), (Which::Contact, mode.contact)] {
+        match (st, ctx.law(w)) {
+            (State::Stick, Law::Coulomb { .. }) => {
+                // a contact can stick only where it does not slide
+                let s0 = sys.slip_speed(tangent(w), q, v);
+                let vscale = Float::with_val(p, &ctx.base_r / &ctx.ts);
+                if Float::with_val(p, s0.abs_ref()) > vscale * &ctx.rel_tiny {
+                    return Ok(Some(format!(
+                        "the {} slides (slip speed {:.3e}): it cannot stick",
+                        w.name(),
+                        s0.to_f64()
+                    )));
+                }
+                let n = lam(&sys, &s1, normal_row(w));
+                let f = ctx.tangential(&sys, mode, w, &s1);
+                let mu = ctx.mu_s[w as usize]
+                    .clone()
+                    .unwrap_or_else(|| Float::new(p));
+                let room = Float::with_val(p, &mu * &n) - Float::with_val(p, f.abs_ref());
+                if room.is_sign_negative() {
+                    return Ok(Some(format!(
+                        "sticking at the {} would need |F|/N = {:.6e} > mu_s",
+                        w.name(),
+                        (Float::with_val(p, f.abs_ref()) / &n).to_f64()
+                    )));
+                }
+            }
+            (State::Slip(sg), Law::Coulomb { .. }) if sg != 0 => {
+                let s = sys.slip_speed(tangent(w), &q1, &v2);
+                if s.is_zero() || s.is_sign_negative() != (sg < 0) {
+                    return Ok(Some(format!(
+                        "slipping {} at the {} would need a slip speed of that sign (it would be {:.3e})",
+                        if sg > 0 { "forwards" } else { "backwards" },
+                        w.name(),
+                        s.to_f64()
+                    )));
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(None)
+}
+
+/// The relative normal acceleration r̈ of the centres if the contact
+/// between the cylinders were open at (q, q̇): cylinder 2 falls freely,
+/// cylinder 1 moves under its floor law alone.
+pub fn free_normal_accel(ctx: &Ctx, sys: &System, q: &[Float], v: &[Float]) -> Float {
+    let p = sys.prec;
+    let th = &q[sy::th(0)];
+    let (sn, cs) = th.clone().sin_cos(Float::new(p));
+    let r = &q[sy::rr(0)];
+    let thd = &v[sy::th(0)];
+    let s1 = sys.slip_speed(Tangent::Floor, q, v);
+    let snap = Float::with_val(p, ctx.ts.recip_ref()) * &ctx.base_r * &ctx.rel_tiny;
+    let sticking = Float::with_val(p, s1.abs_ref()) <= snap;
+    let a1x = ctx.floor_accel(sys, q, v, sticking);
+    // r̈ = n·(a2 − a1) + r θ̇², a2 = (0, −g)
+    let mut rdd = Float::with_val(p, thd.square_ref()) * r;
+    rdd -= Float::with_val(p, &sys.g * &cs);
+    rdd -= Float::with_val(p, &sn * &a1x);
+    rdd
+}
+
+/// The continuation chosen at (q, q̇).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Choice {
+    /// The mode with the contact closed, or None: the contact opens.
+    pub mode: Option<Mode>,
+    /// Both a closed mode and the contact opening are consistent here: a
+    /// branch point of the rigid-body model (the chosen continuation
+    /// follows the requested branch).
+    pub branch_point: bool,
+}
+
+/// The consistent continuation at (q, q̇): every combination of the
+/// contacts' states is tested just after the present state, and the
+/// contact between the cylinders opening. A contact at rest on its
+/// partner sticks if it can (Coulomb's law); where both a closed mode and
+/// opening are consistent (a branch point), `branch` decides.
+///
+/// Errors: none consistent (a Painlevé-type inconsistency), or more than
+/// one closed mode (Painlevé-type non-uniqueness), with the reasons.
+pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -> Result<Choice> {
+    let mut ok = Vec::new();
+    let mut why = Vec::new();
+    for f in ctx.candidates(Which::Floor) {
+        for c in ctx.candidates(Which::Contact) {
+            let m = Mode {
+                floor: f,
+                contact: c,
+            };
+            match inconsistency(ctx, m, q, v)? {
+                None => ok.push(m),
+                Some(r) => why.push(format!("{}: {r}", m.tag())),
+            }
+        }
+    }
+    // the contact opening: consistent when the free motion separates
+    let sys = ctx.system(ok.first().copied().unwrap_or(Mode {
+        floor: ctx.candidates(Which::Floor)[0],
+        contact: State::Stick,
+    }))?;
+    let rdd = free_normal_accel(ctx, &sys, q, v);
+    let opens = rdd.is_sign_positive() && !rdd.is_zero();
+    let theta = q[sy::th(0)].to_f64();
+    let at = format!("t = {:.12}, theta = {:.12}", t.to_f64(), theta);
+    // Coulomb's law: a contact at rest relative to its partner sticks if the
+    // force that holds it is within μs N; sliding from rest is the
+    // continuation only where sticking is not (this settles the choice
+    // between sticking and kinetic sliding when μk < μs)
+    if ok.len() > 1 {
+        for w in [Which::Floor, Which::Contact] {
+            if ok.iter().any(|m| m.of(w) == State::Stick) {
+                ok.retain(|m| m.of(w) == State::Stick);
+            }
+        }
+    }
+    match (ok.len(), opens) {
+        (1, false) => Ok(Choice {
+            mode: Some(ok[0]),
+            branch_point: false,
+        }),
+        (0, true) => Ok(Choice {
+            mode: None,
+            branch_point: false,
+        }),
+        (1, true) => Ok(Choice {
+            mode: match branch {
+                Branch::Part => None,
+                Branch::Stay | Branch::PartAt(_) => Some(ok[0]),
+            },
+            branch_point: true,
+        }),
+        (0, false) => Err(Error::NotConverged {
+            quantity: "mode".into(),
+            requested: 0,
+            reached: format!("no consistent continuation at {at}"),
+            detail: format!(
+                "every candidate fails ({}; the contact cannot open: free relative normal \
+                 acceleration {:.3e}): a Painlevé-type inconsistency of the rigid-body model",
+                why.join("; "),
+                rdd.to_f64()
+            ),
+        }),
+        (n, o) => Err(Error::NotConverged {
+            quantity: "mode".into(),
+            requested: 0,
+            reached: format!("{} consistent continuations at {at}", n + usize::from(o)),
+            detail: format!(
+                "{}{}: the rigid-body model does not decide (Painlevé-type non-uniqueness)",
+                ok.iter().map(|m| m.tag()).collect::<Vec<_>>().join(", "),
+                if o { ", contact opening" } else { "" }
+            ),
+        }),
+    }
+}

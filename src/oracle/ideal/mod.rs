@@ -1,0 +1,964 @@
+//! The questions users ask, answered with verified digits.
+//!
+//! An [`Oracle`] holds a model and a requested number of significant digits.
+//! Each method runs its computation through the precision ladder
+//! ([`crate::numeric::verify::ladder`]) and returns [`Verified`] numbers.
+//!
+//! Routes: `separation()` scans N12 and refines with Illinois regula falsi
+//! (its output is part of the golden data and does not change);
+//! `separation_angle()` roots an exact polynomial in cos θ; `time_at()` uses
+//! the half-angle quadrature (tanh-sinh, then Gauss–Legendre once it pays);
+//! `trajectory()` and `theta_at_times()` one Taylor-series run per precision
+//! for all times. The oracle caches what depends only on the model and the
+//! precision (engines with their node sets, the scan bracket, θs and t_s per
+//! precision), never a requested answer.
+//!
+//! A model that falls to the left (θ0 < 0, or θ0 = 0 with θ̇0 < 0) is solved as
+//! its mirror image and the odd quantities (θ, θ̇, θ̈, φ1, φ2, x1, x2, F1, F21)
+//! change sign on the way out.
+
+pub mod rigorous;
+
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use crate::integrate::energy::engine::Engine;
+use crate::integrate::energy::{terminating, Route, SCAN_PREC, SCAN_STEPS};
+use crate::model::{Contact, Floor, Ideal};
+use crate::numeric::verify::{ladder, ladder_runs, ladder_table, Estimate, Run, Verified};
+use rug::{Assign, Float};
+
+/// Largest number of significant digits accepted.
+pub const MAX_DIGITS: u32 = 2000;
+
+/// Names of the columns of a trajectory row, in order.
+pub const TRAJECTORY_COLUMNS: [&str; 13] = [
+    "t",
+    "theta",
+    "theta_dot",
+    "theta_ddot",
+    "phi1",
+    "phi2",
+    "x1",
+    "x2",
+    "y2",
+    "F1",
+    "N1",
+    "F21",
+    "N12",
+];
+
+/// Names of the quantities of [`Oracle::forces_at`], in order.
+pub const FORCE_KEYS: [&str; 8] = [
+    "F1",
+    "N1",
+    "F21",
+    "N12",
+    "theta_dot",
+    "theta_ddot",
+    "mu_floor",
+    "mu_contact",
+];
+
+/// What `separation` reports.
+#[derive(Debug, Clone)]
+pub struct Separation {
+    /// θs: the angle where N12 = 0.
+    pub theta_s: Verified,
+    /// The time from the start to separation (`None`: infinite, start from rest
+    /// at the top).
+    pub t_s: Option<Verified>,
+    /// Further verified quantities (sign-change angles, F21 at separation, the
+    /// angles where rolling would first fail for `--mu`, where N1 vanishes).
+    pub extra: Vec<Verified>,
+    /// Plain-language findings (what does not exist, what coincides).
+    pub notes: Vec<String>,
+}
+
+/// The oracle for one model at one requested accuracy.
+pub struct Oracle {
+    model: Ideal,
+    digits: u32,
+    mu: Option<Exact>,
+    /// The energy route with its caches.
+    pub route: Route,
+}
+
+/// Where an extremum along [θ0, θs] lies.
+#[derive(Debug, Clone)]
+enum At {
+    /// θ0.
+    Start,
+    /// θs.
+    Separation,
+    /// A given angle inside the motion.
+    Angle(Exact),
+    /// An interior root c of a polynomial in c = cos θ (found at
+    /// `SCAN_PREC` bits), refined at each precision.
+    Root(Float, crate::mechanics::dynamics::HPoly),
+}
+
+/// The one value of a one-name ladder.
+fn single(v: Vec<Verified>) -> Result<Verified> {
+    v.into_iter()
+        .next()
+        .ok_or_else(|| Error::not_physical("internal: the ladder returned no value"))
+}
+
+impl Oracle {
+    /// An oracle for `model` answering with `digits` significant digits.
+    ///
+    /// Errors: digits outside 1..=[`MAX_DIGITS`]; a start where the cylinders
+    /// already part (N12 ≤ 0) or cylinder 1 already lifts (N1 ≤ 0).
+    pub fn new(model: &Ideal, digits: u32) -> Result<Self> {
+        if digits == 0 || digits > MAX_DIGITS {
+            return Err(Error::invalid(
+                "digits",
+                digits,
+                format!("must be between 1 and {MAX_DIGITS}"),
+            ));
+        }
+        Ok(Oracle {
+            model: model.clone(),
+            digits,
+            mu: None,
+            route: Route::new(model)?,
+        })
+    }
+
+    /// An oracle for `model` that uses (and keeps) an energy route already
+    /// built for it, with its caches.
+    ///
+    /// Errors: digits outside 1..=[`MAX_DIGITS`].
+    pub fn with_route(model: &Ideal, digits: u32, route: Route) -> Result<Self> {
+        if digits == 0 || digits > MAX_DIGITS {
+            return Err(Error::invalid(
+                "digits",
+                digits,
+                format!("must be between 1 and {MAX_DIGITS}"),
+            ));
+        }
+        Ok(Oracle {
+            model: model.clone(),
+            digits,
+            mu: None,
+            route,
+        })
+    }
+
+    /// The energy route, with its caches.
+    pub fn into_route(self) -> Route {
+        self.route
+    }
+
+    /// Sets the friction coefficient μ for which `separation` reports where
+    /// rolling without slipping would first fail (μ ≥ 0).
+    pub fn with_mu(mut self, mu: Option<Exact>) -> Result<Self> {
+        if let Some(m) = &mu {
+            if m.signum() < 0 {
+                return Err(Error::invalid("mu", m, "must be >= 0"));
+            }
+        }
+        self.mu = mu;
+        Ok(self)
+    }
+
+    /// The model as given.
+    pub fn model(&self) -> &Ideal {
+        &self.model
+    }
+
+    /// The requested significant digits.
+    pub fn digits(&self) -> u32 {
+        self.digits
+    }
+
+    /// The separation angle θs (where N12 = 0), the separation time, and the
+    /// findings listed in [`Separation`].
+    pub fn separation(&mut self) -> Result<Separation> {
+        let digits = self.digits;
+        let finite = !self.route.work.starts_at_equilibrium();
+        let mut names = vec!["theta_s"];
+        if finite {
+            names.push("t_s");
+        }
+        let main = ladder(digits, &names, |p| {
+            let (ds, err) = self.route.delta_s(p)?;
+            let th0 = self.route.work.start().theta0.to_float(p);
+            let one = Float::with_val(p, 1u32);
+            let th = Float::with_val(p, &th0 + &ds);
+            let mut out = vec![Estimate::new(self.route.odd(th), err.clone(), one)];
+            if finite {
+                let ts = self.route.scale_time(p);
+                let e = self.route.engine(p)?;
+                let (t, terr) = e.time(&ds);
+                let st = e.dynm.state(&ds);
+                let prop = Float::with_val(p, &err / &st.thetadot);
+                out.push(Estimate::new(t, terr + prop, ts));
+            }
+            Ok(out)
+        })?;
+        let mut it = main.into_iter();
+        let theta_s = it.next().expect("theta_s");
+        let t_s = it.next();
+        let mut extra = Vec::new();
+        let mut notes = Vec::new();
+        if !finite {
+            notes.push(
+                "t_s is infinite: the start is rest exactly at the unstable top; theta_s is the limit theta0 -> 0+"
+                    .to_string(),
+            );
+        }
+        self.separation_findings(&theta_s, &mut extra, &mut notes)?;
+        Ok(Separation {
+            theta_s,
+            t_s,
+            extra,
+            notes,
+        })
+    }
+
+    /// θs alone: the first angle past θ0 where N12 = 0, with verified digits
+    /// (the same quantity as [`Separation::theta_s`], without the other
+    /// findings of [`Oracle::separation`]).
+    ///
+    /// Method: N12·K²/m2 is a polynomial of degree ≤ 5 in c = cos θ
+    /// ([`crate::mechanics::dynamics::Dyn::n12_polynomial`]); its sign changes
+    /// on [−1, cos θ0] are isolated at 64 bits by the monotone pieces between
+    /// the roots of its derivatives (so, unlike a scan, no pair of close roots
+    /// is missed), the largest one (the first in θ) is refined by Newton steps
+    /// at doubling precision to a bracket [c − ε, c + ε] across which the
+    /// polynomial changes sign, and θs = acos c with error ε/sin θs. Each call
+    /// computes from scratch (nothing is memoised between calls).
+    ///
+    /// Errors: no sign change before θ = π.
+    pub fn separation_angle(&mut self) -> Result<Verified> {
+        use crate::numeric::poly;
+        const ISO: u32 = 64;
+        let c0 = self.route.engine(ISO)?.dynm.c0.clone();
+        let coef = self.route.n12_coefficients(ISO)?;
+        let roots = poly::sign_change_roots(&coef, &Float::with_val(ISO, -1), &c0);
+        let start = roots.into_iter().rev().find(|c| *c < c0).ok_or_else(|| {
+            Error::not_physical("N12 stays positive up to theta = pi: the cylinders never separate")
+        })?;
+        let v = ladder(self.digits, &["theta_s"], |p| {
+            let coef = self.route.n12_coefficients(p + 16)?;
+            let (c, eps) = poly::refine_root("theta_s", &coef, &start, p)?;
+            let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
+            // dθ = −dc / sin θ, sin θ = √(1 − c²) (> 0 on (0, π)); ×(1 + 2^-16)
+            let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
+            let mut err = Float::with_val(p, &eps / &sin);
+            err += Float::with_val(p, &err >> 16);
+            err += th_err;
+            Ok(vec![Estimate::new(
+                self.route.odd(th),
+                err,
+                Float::with_val(p, 1u32),
+            )])
+        })?;
+        single(v)
+    }
+
+    /// N1 on [θ0, θs] from N1·K², a polynomial in c = cos θ (K > 0): its
+    /// real roots on [cos θs, cos θ0] are isolated (by the monotone pieces
+    /// between the roots of its derivatives, [`crate::numeric::poly`]), so
+    /// "N1 > 0 up to separation" is a statement about every angle, not about
+    /// scan points. Its minimum is at an end or at a root of
+    /// D = B'K − 2BK' (B = N1·K²); the largest friction the floor needs,
+    /// |F1|/N1 = sin θ·|A|/B (A = F1·K²/sin θ), at an end or a root of
+    /// E = cAB − (1 − c²)(A'B − AB'). Each is verified like θs: the root
+    /// refined at both precisions, θ = acos c, the value at θ.
+    fn n1_findings(
+        &mut self,
+        ds_scan: &Float,
+        extra: &mut Vec<Verified>,
+        notes: &mut Vec<String>,
+    ) -> Result<()> {
+        use crate::mechanics::dynamics::{HPoly, N12Poly};
+        use crate::numeric::poly;
+        let fp = self.route.force_polys();
+        let q = |v: i64| rug::Rational::from(v);
+        let k = HPoly::constant(&fp.k);
+        let b = HPoly::linear(&fp.n1);
+        let d = b.deriv().mul(&k).add_scaled(&b.mul(&k.deriv()), &q(-2));
+
+        let p = SCAN_PREC;
+        let (c0, a_h) = {
+            let eng = self.route.engine(p)?;
+            (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
+        };
+        let th_s = Float::with_val(p, self.route.work.start().theta0.to_float(p) + ds_scan);
+        let cs = Float::with_val(p, th_s.cos_ref());
+        if cs >= c0 {
+            return Ok(());
+        }
+        let roots_in = |hp: &HPoly| -> Vec<Float> {
+            poly::sign_change_roots(&hp.at(&a_h, p), &cs, &c0)
+                .into_iter()
+                .filter(|c| *c > cs && *c < c0)
+                .collect()
+        };
+        let eval = |hp: &HPoly, c: &Float| -> Float {
+            let mut v = Float::new(p);
+            poly::horner(&hp.at(&a_h, p), c, &mut v);
+            v
+        };
+        // the first root of N1 in θ: the largest c
+        if let Some(cz) = roots_in(&b).into_iter().next_back() {
+            let v = self.verify_at("theta_N1_zero", None, &At::Root(cz, b.clone()))?;
+            notes.push(format!(
+                "N1 vanishes at theta = {} before separation: cylinder 1 would leave the floor there, \
+                 and the motion after that angle (including theta_s) is not the model's",
+                v[0].text
+            ));
+            extra.extend(v);
+            return Ok(());
+        }
+        notes.push(
+            "N1 > 0 at every angle from theta0 to theta_s (N1 K^2, a polynomial in cos theta, \
+             has no root there): cylinder 1 stays on the floor"
+                .to_string(),
+        );
+        // candidates: the ends and the interior extrema
+        let pick = |cands: Vec<At>, f: &dyn Fn(&Float) -> Float, max: bool| -> At {
+            let mut best: Option<(Float, At)> = None;
+            for at in cands {
+                let c = match &at {
+                    At::Start => c0.clone(),
+                    At::Separation | At::Angle(_) => cs.clone(),
+                    At::Root(c, _) => c.clone(),
+                };
+                let v = f(&c);
+                let better = match &best {
+                    None => true,
+                    Some((bv, _)) => {
+                        if max {
+                            v > *bv
+                        } else {
+                            v < *bv
+                        }
+                    }
+                };
+                if better {
+                    best = Some((v, at));
+                }
+            }
+            best.map(|b| b.1).unwrap_or(At::Start)
+        };
+        let kq = |c: &Float| eval(&k, c);
+        let n1_of = |c: &Float| -> Float {
+            let kk = kq(c);
+            Float::with_val(p, eval(&b, c) / Float::with_val(p, kk.square_ref()))
+        };
+        let mut cands = vec![At::Start, At::Separation];
+        cands.extend(roots_in(&d).into_iter().map(|c| At::Root(c, d.clone())));
+        let at_min = pick(cands, &n1_of, false);
+        let v = self.verify_at("theta_N1_min", Some("N1_min"), &at_min)?;
+        extra.extend(v);
+        if self.route.work.floor() != Floor::Slip {
+            extra.extend(self.needed_max(false, At::Separation, &cs)?);
+        }
+        Ok(())
+    }
+
+    /// The largest friction a rolling contact needs over [θ0, end] — the
+    /// floor (|F1|/N1) or, with `contact_side`, the contact between the
+    /// cylinders (|F21|/N12) — and where: the ratio is sin θ·|A|/B with A, B
+    /// polynomials in c = cos θ ([`crate::mechanics::dynamics::ForcePolys`],
+    /// B > 0 inside the motion), so its maximum is at an end or at a root of
+    /// E = cAB − (1 − c²)(A'B − AB') on [c_end, cos θ0]; the candidates are
+    /// compared at 96 bits and the winner verified ([`Oracle::verify_at`]).
+    /// `c_end` is cos of the end angle at 96 bits.
+    fn needed_max(&mut self, contact_side: bool, end: At, c_end: &Float) -> Result<Vec<Verified>> {
+        use crate::mechanics::dynamics::{HPoly, N12Poly};
+        use crate::numeric::poly;
+        let fp = self.route.force_polys();
+        let q = |v: i64| rug::Rational::from(v);
+        let (a, b) = if contact_side {
+            let np = self
+                .route
+                .caches
+                .n12_poly
+                .get_or_insert_with(|| N12Poly::new(&self.route.red, self.route.work.params()))
+                .clone();
+            let m2 = self.route.work.params().m2.clone();
+            // N12·K² = m2 · (N12·K²/m2)
+            let b = HPoly::default().add_scaled(&HPoly::linear(&(np.base, np.per_h)), &m2);
+            (HPoly::linear(&fp.f21), b)
+        } else {
+            (HPoly::linear(&fp.f1), HPoly::linear(&fp.n1))
+        };
+        let cpoly = HPoly::constant(&[q(0), q(1)]);
+        let one_m_c2 = HPoly::constant(&[q(1), q(0), q(-1)]);
+        let apb = a.deriv().mul(&b).add_scaled(&a.mul(&b.deriv()), &q(-1));
+        let e = cpoly
+            .mul(&a)
+            .mul(&b)
+            .add_scaled(&one_m_c2.mul(&apb), &q(-1));
+        let p = SCAN_PREC;
+        let (c0, a_h) = {
+            let eng = self.route.engine(p)?;
+            (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
+        };
+        let (theta_name, value_name) = if contact_side {
+            ("theta_mu_contact_max", "mu_contact_max")
+        } else {
+            ("theta_mu_floor_max", "mu_floor_max")
+        };
+        let eval = |hp: &HPoly, c: &Float| -> Float {
+            let mut v = Float::new(p);
+            poly::horner(&hp.at(&a_h, p), c, &mut v);
+            v
+        };
+        let ratio = |c: &Float| -> Float {
+            let s = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
+            Float::with_val(p, s * eval(&a, c) / eval(&b, c)).abs()
+        };
+        let mut best = (ratio(&c0), At::Start);
+        if *c_end < c0 {
+            let v = ratio(c_end);
+            if v > best.0 {
+                best = (v, end);
+            }
+            for c in poly::sign_change_roots(&e.at(&a_h, p), c_end, &c0) {
+                if c > *c_end && c < c0 {
+                    let v = ratio(&c);
+                    if v > best.0 {
+                        best = (v, At::Root(c, e.clone()));
+                    }
+                }
+            }
+        }
+        self.verify_at(theta_name, Some(value_name), &best.1)
+    }
+
+    /// The angle `at` (named `theta_name`) and, with `value`, the quantity
+    /// there (`N1_min`: N1; `mu_floor_max`: |F1|/N1), verified at two
+    /// precisions. The value's error includes its change across the angle's
+    /// error bound.
+    fn verify_at(
+        &mut self,
+        theta_name: &str,
+        value: Option<&str>,
+        at: &At,
+    ) -> Result<Vec<Verified>> {
+        use crate::mechanics::dynamics::N12Poly;
+        let mut names = vec![theta_name];
+        if let Some(v) = value {
+            names.push(v);
+        }
+        ladder(self.digits, &names, |p| {
+            let th0 = self.route.work.start().theta0.to_float(p);
+            let (delta, derr) = match at {
+                At::Start => (Float::new(p), Float::new(p)),
+                At::Separation => self.route.delta_s(p)?,
+                At::Angle(th) => (self.route.delta_of("theta", th, p)?, Float::new(p)),
+                At::Root(c_iso, hp) => {
+                    let a_h = N12Poly::a_h(&self.route.engine(p)?.dynm);
+                    let coef = hp.at(&a_h, p + 16);
+                    let (c, eps) = crate::numeric::poly::refine_root(theta_name, &coef, c_iso, p)?;
+                    let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
+                    let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
+                    let mut err = Float::with_val(p, &eps / &sin);
+                    err += Float::with_val(p, &err >> 16);
+                    err += th_err;
+                    (Float::with_val(p, th - &th0), err)
+                }
+            };
+            let th = Float::with_val(p, &th0 + &delta);
+            let one = Float::with_val(p, 1u32);
+            let mut out = vec![if derr.is_zero() {
+                Estimate::rounded(self.route.odd(th), one.clone())
+            } else {
+                Estimate::new(self.route.odd(th), derr.clone(), one.clone())
+            }];
+            if let Some(name) = value {
+                let sf = self.route.scale_force(p);
+                let e = self.route.engine(p)?;
+                let q = |d: &Float| -> Float {
+                    let f = e.dynm.forces(&e.dynm.state(d));
+                    match name {
+                        "N1_min" => f.n1,
+                        "mu_contact_max" => Float::with_val(p, f.f21.abs_ref()) / &f.n12,
+                        _ => Float::with_val(p, f.f1.abs_ref()) / &f.n1,
+                    }
+                };
+                let v = q(&delta);
+                let mut err = Float::new(p);
+                if !derr.is_zero() {
+                    for sg in [1i32, -1] {
+                        let d2 = Float::with_val(p, &delta + Float::with_val(p, &derr * sg));
+                        if d2.is_sign_negative() {
+                            continue;
+                        }
+                        let dv = Float::with_val(p, &q(&d2) - &v).abs();
+                        if dv > err {
+                            err = dv;
+                        }
+                    }
+                }
+                let ulps = Float::with_val(p, v.abs_ref()) >> (p as i32 - 4);
+                err += ulps;
+                let scale = if name == "N1_min" { sf } else { one };
+                out.push(Estimate::new(v, err, scale));
+            }
+            Ok(out)
+        })
+    }
+
+    /// Sign-change angles, N1 > 0, friction needed, slip angles for μ.
+    pub fn separation_findings(
+        &mut self,
+        theta_s: &Verified,
+        extra: &mut Vec<Verified>,
+        notes: &mut Vec<String>,
+    ) -> Result<()> {
+        let digits = self.digits;
+        let th0 = self.route.work.start().theta0.to_float(SCAN_PREC);
+        let ds_scan = Float::with_val(SCAN_PREC, self.route.odd(theta_s.value.clone())) - &th0;
+        let floor = self.route.work.floor();
+        let contact = self.route.work.contact();
+        let finite = !self.route.work.starts_at_equilibrium();
+        let sign = self.route.sign;
+
+        // --- N1 along the motion: its sign, its minimum, the friction the
+        // floor needs (from the polynomials in cos θ: certified, not a scan)
+        self.n1_findings(&ds_scan, extra, notes)?;
+
+        // --- where φ̇1 and φ1 change sign
+        let phi_moves = floor != Floor::Fixed
+            && (self.route.red.alpha[1] != 0
+                || self.route.red.beta[1] != 0
+                || self.route.red.gamma[1] != 0);
+        if phi_moves {
+            let gamma0 = self.route.red.gamma[1] == 0;
+            for (name, label) in [
+                ("theta_phi1dot_zero", "phi1_dot"),
+                ("theta_phi1_zero", "phi1"),
+            ] {
+                let needs_time = name == "theta_phi1_zero" && !gamma0;
+                if needs_time && !finite {
+                    notes.push(format!(
+                        "{label} sign change not computed: it depends on the (infinite) time"
+                    ));
+                    continue;
+                }
+                let f = |e: &mut Engine, d: &Float| -> Float {
+                    if name == "theta_phi1dot_zero" {
+                        e.phi1_dot(d)
+                    } else {
+                        e.phi1(d)
+                    }
+                };
+                let step = Float::with_val(SCAN_PREC, &ds_scan / SCAN_STEPS);
+                let found = {
+                    let scan = self.route.engine(SCAN_PREC)?;
+                    let lo0 = Float::with_val(SCAN_PREC, &step / 4u32);
+                    // include a sliver past θs so a root at separation is seen
+                    let hi0 = Float::with_val(SCAN_PREC, &ds_scan + &step);
+                    crate::numeric::root::first_sign_change(&lo0, &hi0, SCAN_STEPS + 1, |d| {
+                        f(scan, d)
+                    })
+                };
+                // none up to θs: the formulas continued past θs (while θ̇ > 0,
+                // up to θ = π) may still change sign there; a property of
+                // the formulas the paper discusses, reported as such
+                let (found, after) = match found {
+                    Some(b) => (Some(b), false),
+                    None => {
+                        let scan = self.route.engine(SCAN_PREC)?;
+                        let lo0 = Float::with_val(SCAN_PREC, &ds_scan + &step);
+                        let pi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi);
+                        let hi0 = Float::with_val(SCAN_PREC, &pi - &th0);
+                        let hi0 = Float::with_val(
+                            SCAN_PREC,
+                            &hi0 - (Float::with_val(SCAN_PREC, &hi0 >> 10)),
+                        );
+                        let b = if hi0 > lo0 {
+                            crate::numeric::root::first_sign_change(&lo0, &hi0, SCAN_STEPS, |d| {
+                                f(scan, d)
+                            })
+                        } else {
+                            None
+                        };
+                        (b, true)
+                    }
+                };
+                match found {
+                    None => notes.push(format!(
+                        "{label} keeps its sign from the start to separation (and on the formulas \
+                         continued up to theta = pi)"
+                    )),
+                    Some((lo, hi)) => {
+                        let v = ladder(digits, &[name], |p| {
+                            let (d, err) =
+                                self.route
+                                    .engine(p)?
+                                    .refine_root(name, &lo, &hi, |e, d| f(e, d))?;
+                            let th =
+                                Float::with_val(p, self.route.work.start().theta0.to_float(p) + d);
+                            Ok(vec![Estimate::new(
+                                self.route.odd(th),
+                                err,
+                                Float::with_val(p, 1u32),
+                            )])
+                        })?;
+                        let v = v.into_iter().next().expect("one");
+                        let bound =
+                            Float::with_val(v.value.prec(), &v.err_bound + &theta_s.err_bound);
+                        let gap = Float::with_val(v.value.prec(), &v.value - &theta_s.value).abs();
+                        if gap <= bound {
+                            notes.push(format!(
+                                "{label} changes sign at separation (equal to all digits verified)"
+                            ));
+                        } else if after || (v.value.clone() * sign) > (theta_s.value.clone() * sign)
+                        {
+                            // past θs: marked in its name and in a note
+                            let mut v = v;
+                            v.name = format!("{name}_after_separation");
+                            notes.push(format!(
+                                "{label} keeps its sign from the start to separation; the formulas \
+                                 continued past theta_s change its sign at theta = {} \
+                                 ({}: a property of the formulas, not of the motion)",
+                                v.text, v.name
+                            ));
+                            extra.push(v);
+                            continue;
+                        }
+                        extra.push(v);
+                    }
+                }
+            }
+        }
+
+        // --- friction: F21 at separation (μ needed at the contact diverges if ≠ 0)
+        if contact == Contact::Roll {
+            let v = ladder(digits, &["F21_at_s"], |p| {
+                let (ds, err) = self.route.delta_s(p)?;
+                let sf = self.route.scale_force(p);
+                let e = self.route.engine(p)?;
+                let st = e.dynm.state(&ds);
+                let f = e.dynm.forces(&st);
+                let d2 = Float::with_val(p, &ds + &err);
+                let f2 = e.dynm.forces(&e.dynm.state(&d2));
+                let prop = Float::with_val(p, &f2.f21 - &f.f21).abs();
+                Ok(vec![Estimate::new(self.route.odd(f.f21), prop, sf)])
+            })?;
+            if v[0].text != "0" {
+                notes.push(
+                    "F21 != 0 at separation while N12 -> 0: the friction coefficient the contact needs, |F21|/N12, grows without bound as theta -> theta_s, so the upper cylinder slips before it separates for any finite mu"
+                        .to_string(),
+                );
+            }
+            extra.extend(v);
+        }
+        if let Some(mu) = self.mu.clone() {
+            let checks: Vec<(&str, bool)> = vec![
+                ("theta_slip_floor", floor == Floor::Roll),
+                ("theta_slip_contact", contact == Contact::Roll),
+            ];
+            for (name, applies) in checks {
+                if !applies {
+                    continue;
+                }
+                let floor_side = name == "theta_slip_floor";
+                let g = move |e: &mut Engine, d: &Float, mu: &Float| -> Float {
+                    let st = e.dynm.state(d);
+                    let f = e.dynm.forces(&st);
+                    let (fr, n) = if floor_side {
+                        (f.f1, f.n1)
+                    } else {
+                        (f.f21, f.n12)
+                    };
+                    Float::with_val(d.prec(), mu * n) - fr.abs()
+                };
+                let found = {
+                    let mu_s = mu.to_float(SCAN_PREC);
+                    let scan = self.route.engine(SCAN_PREC)?;
+                    let z = Float::new(SCAN_PREC);
+                    crate::numeric::root::first_sign_change(&z, &ds_scan, SCAN_STEPS, |d| {
+                        g(scan, d, &mu_s)
+                    })
+                };
+                match found {
+                    None => notes.push(format!(
+                        "{name}: rolling holds up to separation with mu = {mu}"
+                    )),
+                    Some((lo, hi)) => {
+                        let v = ladder(digits, &[name], |p| {
+                            let mu_p = mu.to_float(p);
+                            let (d, err) =
+                                self.route
+                                    .engine(p)?
+                                    .refine_root(name, &lo, &hi, |e, d| g(e, d, &mu_p))?;
+                            let th =
+                                Float::with_val(p, self.route.work.start().theta0.to_float(p) + d);
+                            Ok(vec![Estimate::new(
+                                self.route.odd(th),
+                                err,
+                                Float::with_val(p, 1u32),
+                            )])
+                        })?;
+                        extra.extend(v);
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// t(θ): the time from the start to the angle θ (energy quadrature).
+    ///
+    /// Method: for θ ≤ 2π/3 the integral in s = sin(θ/2), an algebraic
+    /// integrand ([`crate::mechanics::dynamics::HalfAngleTime`]); the ladder's
+    /// first run by tanh-sinh, its second by tanh-sinh too — or, once this
+    /// oracle has spent more on tanh-sinh integrals at that precision than a
+    /// Gauss–Legendre rule costs to build, by Gauss–Legendre with its a-priori
+    /// error model (two methods at two precisions). Beyond 2π/3 the θ form.
+    ///
+    /// Errors: θ outside [θ0, θs]; a start from rest at the top (infinite).
+    pub fn time_at(&mut self, theta: &Exact) -> Result<Verified> {
+        if self.route.work.starts_at_equilibrium() {
+            return Err(self.route.infinite_time_error("the time to any angle"));
+        }
+        let v = ladder_runs(self.digits, &["t"], |p, run| {
+            let d = self.route.delta_of("to", theta, p)?;
+            let ts = self.route.scale_time(p);
+            let (t, err, _) = self.route.engine(p)?.time_fast(&d, run == Run::High, true);
+            Ok(vec![Estimate::new(t, err, ts)])
+        })?;
+        Ok(v.into_iter().next().expect("one"))
+    }
+
+    /// F1, N1, F21, N12, θ̇, θ̈ and the friction coefficients needed
+    /// (|F1|/N1 at a rolling floor, |F21|/N12 at a rolling contact; 0 where the
+    /// contact slips or the floor is fixed) at angle θ, in [`FORCE_KEYS`] order.
+    pub fn forces_at(&mut self, theta: &Exact) -> Result<Vec<Verified>> {
+        let floor = self.route.work.floor();
+        let contact = self.route.work.contact();
+        let mut out = ladder(self.digits, &FORCE_KEYS[..6], |p| {
+            let d = self.route.delta_of("theta", theta, p)?;
+            let sf = self.route.scale_force(p);
+            let ts = self.route.scale_time(p);
+            let e = self.route.engine(p)?;
+            let st = e.dynm.state(&d);
+            let f = e.dynm.forces(&st);
+            let one = Float::with_val(p, 1u32);
+            Ok(vec![
+                self.force_est(f.f1.clone(), &sf, floor == Floor::Slip, true),
+                Estimate::rounded(f.n1.clone(), sf.clone()),
+                self.force_est(f.f21.clone(), &sf, contact == Contact::Slip, true),
+                Estimate::rounded(f.n12.clone(), sf.clone()),
+                Estimate::rounded(
+                    self.route.odd(st.thetadot.clone()),
+                    Float::with_val(p, one.clone() / &ts),
+                ),
+                Estimate::rounded(
+                    self.route.odd(st.thetaddot.clone()),
+                    Float::with_val(p, one.clone() / &ts) / &ts,
+                ),
+            ])
+        })?;
+        // The friction each contact needs, |F|/N, wherever F is a reaction
+        // (a rolling floor, a held cylinder 1: the coefficient a floor would
+        // need to hold it by friction; a rolling contact); 0 where the contact
+        // is frictionless (F = 0). Where N is 0 to within its bound (at θs,
+        // N12 = 0) the ratio has no finite verified value: it is given as the
+        // lower bound |F|/bound(N), marked ">=".
+        for (key, fi, ni, applies) in [
+            ("mu_floor", 0usize, 1usize, floor != Floor::Slip),
+            ("mu_contact", 2, 3, contact == Contact::Roll),
+        ] {
+            let v = friction_ratio(key, &out[fi], &out[ni], applies, self.digits)?;
+            out.push(v);
+        }
+        Ok(out)
+    }
+
+    /// The largest friction each rolling contact needs over [θ0, θ], and
+    /// where: `theta_mu_floor_max`, `mu_floor_max` (a rolling or held floor)
+    /// and `theta_mu_contact_max`, `mu_contact_max` (a rolling contact),
+    /// verified like [`Oracle::separation`]'s extrema. Where N12 is 0 at θ to
+    /// within its bound (θ = θs), the contact's maximum is only bounded below
+    /// (text `>=…`), as in [`Oracle::forces_at`].
+    ///
+    /// Errors: θ outside the motion (as [`Oracle::forces_at`]).
+    pub fn friction_needed(&mut self, theta: &Exact) -> Result<Vec<Verified>> {
+        let forces = self.forces_at(theta)?;
+        let w = self.route.to_work(theta).to_float(SCAN_PREC);
+        let c_end = Float::with_val(SCAN_PREC, w.cos_ref());
+        let mut out = Vec::new();
+        if self.route.work.floor() != Floor::Slip {
+            out.extend(self.needed_max(false, At::Angle(theta.clone()), &c_end)?);
+        }
+        if self.route.work.contact() == Contact::Roll {
+            let mu = forces.iter().find(|v| v.name == "mu_contact");
+            match mu {
+                Some(m) if m.text.starts_with(">=") => {
+                    let th = ladder(self.digits, &["theta_mu_contact_max"], |p| {
+                        let d = self.route.delta_of("theta", theta, p)?;
+                        let th0 = self.route.work.start().theta0.to_float(p);
+                        let th = Float::with_val(p, th0 + d);
+                        Ok(vec![Estimate::rounded(
+                            self.route.odd(th),
+                            Float::with_val(p, 1u32),
+                        )])
+                    })?;
+                    out.extend(th);
+                    let mut m = m.clone();
+                    m.name = "mu_contact_max".into();
+                    out.push(m);
+                }
+                _ => out.extend(self.needed_max(true, At::Angle(theta.clone()), &c_end)?),
+            }
+        }
+        Ok(out)
+    }
+
+    fn force_est(&self, v: Float, scale: &Float, exact_zero: bool, odd: bool) -> Estimate {
+        if exact_zero {
+            Estimate::zero(v.prec(), scale.clone())
+        } else {
+            let v = if odd { self.route.odd(v) } else { v };
+            Estimate::rounded(v, scale.clone())
+        }
+    }
+
+    /// The trajectory at the given times: one row per time with the columns of
+    /// [`TRAJECTORY_COLUMNS`] (t first, as given).
+    ///
+    /// Method: one Taylor-series run of θ̈ = F(θ) per working precision
+    /// ([`crate::numeric::taylor`]) serves every time (dense output); each row
+    /// then follows from δ = θ − θ0 as before. Verified by the precision
+    /// ladder row by row ([`crate::numeric::verify::ladder_table`]), with the
+    /// integrator's error estimate, and checked at the last time against the
+    /// energy quadrature: t(θ ∓ ε) must bracket it.
+    ///
+    /// Errors: a start from rest at the top; a negative time; a time after
+    /// separation.
+    pub fn trajectory(&mut self, times: &[Exact]) -> Result<Vec<Vec<Verified>>> {
+        self.route.check_times(times)?;
+        let floor = self.route.work.floor();
+        let contact = self.route.work.contact();
+        let mut cache = (0, Vec::new());
+        // the time is an input: printed exactly when it is a terminating
+        // decimal (a denominator of 2s and 5s only; checked first, as writing
+        // out a long fraction costs more than the whole row), so that a time
+        // such as 0.125 at two digits is not a rounding tie to decide
+        let exact_t: Vec<Option<String>> = times
+            .iter()
+            .map(|t| {
+                (!t.times_pi && terminating(&t.coef)).then(|| crate::exact::rational_text(&t.coef))
+            })
+            .collect();
+        let rows = ladder_table(self.digits, &TRAJECTORY_COLUMNS, times.len(), |p, run| {
+            let deltas =
+                self.route
+                    .deltas_at(times, p, run, true, &mut cache, self.digits, None)?;
+            let ctx = self.route.row_context(p);
+            let mut out = Vec::with_capacity(times.len() * TRAJECTORY_COLUMNS.len());
+            for ((t, (d, derr)), text) in times.iter().zip(deltas).zip(&exact_t) {
+                let mut row = self
+                    .route
+                    .row_estimates(t, &d, &derr, &ctx, floor, contact)?;
+                row[0].exact_text = text.clone();
+                out.extend(row);
+            }
+            Ok(out)
+        })?;
+        Ok(rows)
+    }
+
+    /// θ alone at the given times (the `theta` column of
+    /// [`Oracle::trajectory`], with the same digits), without the other
+    /// columns: one Taylor run per working precision and one Horner
+    /// evaluation per time.
+    ///
+    /// Errors: as [`Oracle::trajectory`].
+    pub fn theta_at_times(&mut self, times: &[Exact]) -> Result<Vec<Verified>> {
+        self.route.check_times(times)?;
+        let mut cache = (0, Vec::new());
+        let rows = ladder_table(self.digits, &["theta"], times.len(), |p, run| {
+            let deltas =
+                self.route
+                    .deltas_at(times, p, run, false, &mut cache, self.digits, None)?;
+            let th0 = self.route.work.start().theta0.to_float(p);
+            let one = Float::with_val(p, 1u32);
+            let mut ulps = Float::new(p);
+            Ok(deltas
+                .into_iter()
+                .map(|(d, mut err)| {
+                    let th = Float::with_val(p, &th0 + &d);
+                    ulps.assign(th.abs_ref());
+                    ulps >>= p as i32 - 4;
+                    err += &ulps;
+                    Estimate::new(self.route.odd(th), err, one.clone())
+                })
+                .collect())
+        })?;
+        Ok(rows
+            .into_iter()
+            .filter_map(|r| r.into_iter().next())
+            .collect())
+    }
+}
+
+/// The friction a contact needs, |F|/N, from the verified F and N (`key`:
+/// `mu_floor` or `mu_contact`): 0 where the contact is frictionless (not
+/// `applies`); where N is 0 to within its bound (N12 at θs) no finite
+/// value is verified and the lower bound |F|/bound(N) is given, marked
+/// `>=`; otherwise the relative bounds of F and N add and the ratio keeps
+/// the digits they support.
+///
+/// Errors: a ratio without one verified digit.
+pub fn friction_ratio(
+    key: &str,
+    fv: &Verified,
+    nv: &Verified,
+    applies: bool,
+    digits: u32,
+) -> Result<Verified> {
+    let v = if !applies {
+        ladder(digits, &[key], |p| {
+            Ok(vec![Estimate::zero(p, Float::with_val(p, 1u32))])
+        })?
+        .remove(0)
+    } else if nv.digits == 0 && fv.digits > 0 {
+        let p = fv.value.prec();
+        let lower = Float::with_val(p, fv.value.abs_ref()) / &nv.err_bound;
+        Verified {
+            name: key.to_string(),
+            text: format!(">={}", crate::numeric::decimal::short(&lower)),
+            value: lower,
+            digits: 0,
+            err_bound: Float::with_val(p, f64::INFINITY),
+            precs: fv.precs,
+        }
+    } else {
+        // |F|/N from the verified F and N: relative bounds add, and
+        // the ratio keeps the digits they support (no more than N12
+        // keeps just before θs)
+        let p = fv.value.prec().max(nv.value.prec());
+        let ratio = Float::with_val(p, fv.value.abs_ref()) / &nv.value;
+        let fa = Float::with_val(p, fv.value.abs_ref());
+        let na = Float::with_val(p, nv.value.abs_ref());
+        let rel = Float::with_val(p, &fv.err_bound / &fa) + Float::with_val(p, &nv.err_bound / &na);
+        let ra = Float::with_val(p, ratio.abs_ref());
+        let ulps = Float::with_val(p, &ra >> (p as i32 - 4));
+        let err = Float::with_val(p, &rel * &ra) + ulps;
+        let dg = if fv.digits == 0 { 0 } else { digits };
+        if dg == 0 {
+            // F is 0 to within its bound: so is the ratio
+            Verified {
+                name: key.to_string(),
+                text: "0".into(),
+                value: Float::new(p),
+                digits: 0,
+                err_bound: Float::with_val(p, &fv.err_bound / &nv.value),
+                precs: fv.precs,
+            }
+        } else {
+            crate::numeric::verify::verified_from(key, ratio, err, dg)?
+        }
+    };
+    Ok(v)
+}

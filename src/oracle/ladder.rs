@@ -1,0 +1,271 @@
+//! The motion verified: computed at the two working precisions of the
+//! precision ladder ([`crate::numeric::verify`]), each integrating with its
+//! own tolerance; the two must agree on the sequence of phases and events,
+//! keep the energy balance E(0) − E(t) = W(t), and every number is printed
+//! only to the digits that every value within |v(p1) − v(p2)| + err(p2)
+//! shares.
+
+use super::answer::{EventAnswer, Row};
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use crate::model::Model;
+use crate::motion::{self, Caches, Motion, Phase, Point, Request};
+use crate::numeric::verify::{ladder_runs, ladder_table, precisions, Estimate, Run, Verified};
+use rug::Float;
+use std::cell::RefCell;
+
+/// The skeleton of a motion: what the two precisions must agree on.
+pub fn signature(m: &Motion) -> Vec<String> {
+    let mut s: Vec<String> = m
+        .events
+        .iter()
+        .map(|e| {
+            format!(
+                "{} {} -> {}",
+                e.kind.name(),
+                e.which.map_or("", |w| w.name()),
+                e.phase.map_or_else(|| "-".to_string(), |p| p.tag())
+            )
+        })
+        .collect();
+    s.push(m.start_mode.tag());
+    s.push(format!("{:?}", m.end));
+    s.extend(m.rows.iter().map(|p| p.phase.tag()));
+    s.extend(m.thetas.iter().map(|(_, p, _)| p.tag()));
+    s
+}
+
+/// An integrated value: its own error estimate is a few units of the
+/// integrator's tolerance (the comparison of the two precisions carries
+/// the real weight).
+pub fn integrated(v: &Float, scale: Float) -> Estimate {
+    let p = v.prec();
+    let one = Float::with_val(p, 1u32);
+    let err = (Float::with_val(p, v.abs_ref()) + &one) >> (p as i32 - 24);
+    Estimate::new(v.clone(), err, scale)
+}
+
+fn one(p: u32) -> Float {
+    Float::with_val(p, 1u32)
+}
+
+/// The natural scale of each column of [`crate::motion::COLUMNS`]: time
+/// sqrt(r/g), angle 1, lengths r, forces (m1 + m2) g, energy m2 g r.
+pub fn column_scales(model: &Model, p: u32) -> Vec<Float> {
+    let pr = model.params();
+    let r = Float::with_val(p, &pr.r());
+    let g = Float::with_val(p, &pr.g);
+    let ts = Float::with_val(p, &r / &g).sqrt();
+    let inv_ts = Float::with_val(p, 1u32) / &ts;
+    let inv_ts2 = Float::with_val(p, &inv_ts / &ts);
+    let v = Float::with_val(p, &r / &ts);
+    let f = Float::with_val(p, &rug::Rational::from(&pr.m1 + &pr.m2)) * &g;
+    let e = Float::with_val(p, &pr.m2) * &g * &r;
+    let o = one(p);
+    vec![
+        ts,
+        o.clone(),
+        inv_ts.clone(),
+        inv_ts2,
+        o.clone(),
+        o,
+        r.clone(),
+        r.clone(),
+        r,
+        v.clone(),
+        inv_ts.clone(),
+        v.clone(),
+        v.clone(),
+        inv_ts,
+        f.clone(),
+        f.clone(),
+        f.clone(),
+        f,
+        v.clone(),
+        v,
+        e,
+    ]
+}
+
+/// The estimates of a point's columns.
+pub fn point_estimates(pt: &Point, scales: &[Float], t_text: Option<&String>) -> Vec<Estimate> {
+    let vals = pt.columns();
+    vals.into_iter()
+        .enumerate()
+        .map(|(i, v)| {
+            let p = v.prec();
+            let sc = Float::with_val(p, &scales[i]);
+            if pt.is_exact_zero(i) {
+                return Estimate::zero(p, sc);
+            }
+            let mut e = match &pt.err {
+                Some(errs) => Estimate::new(v.clone(), Float::with_val(p, &errs[i]), sc),
+                None => {
+                    let mut e = integrated(&v, one(p));
+                    e.scale = sc;
+                    e
+                }
+            };
+            if i == 0 {
+                e.exact_text = t_text.cloned();
+            }
+            e
+        })
+        .collect()
+}
+
+/// The estimates of each event's time and angle.
+pub fn event_estimates(m: &Motion, out: &mut Vec<Estimate>) {
+    for e in &m.events {
+        let p = e.at.t.prec();
+        let mut te = integrated(&e.at.t, one(p));
+        te.err += Float::with_val(p, &e.t_err);
+        out.push(te);
+        let mut th = integrated(&e.at.theta, one(p));
+        th.err += Float::with_val(p, &e.theta_err);
+        out.push(th);
+    }
+}
+
+/// The energy balance E(0) − E(t) = W(t) to well below the printed digits.
+fn check_balance(m: &Motion, digits: u32) -> Result<()> {
+    let p = m.energy_drift.prec();
+    let lim = Float::with_val(p, Float::u_pow_u(10, digits + 2)).recip();
+    if m.energy_drift > lim {
+        return Err(Error::NotConverged {
+            quantity: "energy balance".into(),
+            requested: digits,
+            reached: format!(
+                "|E(0) - E(t) - W(t)| reached {} of m2 g r",
+                crate::numeric::decimal::short(&m.energy_drift)
+            ),
+            detail: "the integration did not keep the energy balance".into(),
+        });
+    }
+    Ok(())
+}
+
+/// The motion of a model at the precisions of a ladder, with the caches
+/// the runs share.
+pub struct Runs<'a> {
+    /// The model.
+    pub model: &'a Model,
+    /// The request (its `run` is set per call).
+    pub req: Request,
+    /// Shared caches.
+    pub caches: Caches,
+}
+
+impl Runs<'_> {
+    /// The motion at precision `p`.
+    pub fn at(&mut self, p: u32, run: Run) -> Result<Motion> {
+        self.req.run = run;
+        motion::run(self.model, &self.req, p, &mut self.caches)
+    }
+}
+
+/// Runs the motion at both precisions of each rung, the first run (at
+/// p1 of the first rung) fixing the skeleton; every other run must match
+/// it. `est` gives the estimates of one run (`rows` rows of `names`).
+pub fn laddered(
+    runs: &mut Runs,
+    first: Motion,
+    names: &[String],
+    rows: usize,
+    est: impl Fn(&Motion) -> Result<Vec<Estimate>>,
+) -> Result<Vec<Vec<Verified>>> {
+    let digits = runs.req.digits;
+    let sig = signature(&first);
+    let (p1, _) = precisions(digits, 0);
+    let cache = RefCell::new(Some(first));
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let f = |p: u32, run: Run| -> Result<Vec<Estimate>> {
+        let m = match (p == p1, cache.borrow_mut().take()) {
+            (true, Some(m)) => m,
+            _ => runs.at(p, run)?,
+        };
+        if signature(&m) != sig {
+            return Err(Error::NotConverged {
+                quantity: "event sequence".into(),
+                requested: digits,
+                reached: "the two working precisions disagree on the sequence of phases".into(),
+                detail: format!(
+                    "{} bits: {}; {} bits: {}",
+                    p1,
+                    sig.join(", "),
+                    p,
+                    signature(&m).join(", ")
+                ),
+            });
+        }
+        check_balance(&m, digits)?;
+        est(&m)
+    };
+    if rows == 1 {
+        ladder_runs(digits, &refs, f).map(|r| vec![r])
+    } else {
+        ladder_table(digits, &refs, rows, f)
+    }
+}
+
+/// The names of the event values: `event1_t`, `event1_theta`, …
+pub fn event_names(n: usize) -> Vec<String> {
+    (1..=n)
+        .flat_map(|i| [format!("event{i}_t"), format!("event{i}_theta")])
+        .collect()
+}
+
+/// The verified events from their values (t, θ per event, in order).
+pub fn events_of(m: &Motion, vals: &[Verified]) -> Vec<EventAnswer> {
+    m.events
+        .iter()
+        .enumerate()
+        .map(|(i, e)| EventAnswer {
+            kind: e.kind,
+            which: e.which,
+            phase: e.phase,
+            t: vals[2 * i].clone(),
+            theta: vals[2 * i + 1].clone(),
+        })
+        .collect()
+}
+
+/// A trajectory's rows from the verified table and the first run's phases.
+pub fn rows_of(m: &Motion, table: Vec<Vec<Verified>>) -> Vec<Row> {
+    table
+        .into_iter()
+        .zip(&m.rows)
+        .map(|(values, pt)| Row {
+            values,
+            phase: pt.phase,
+            at_event: None,
+        })
+        .collect()
+}
+
+/// The time of a row printed exactly when it is a terminating decimal.
+pub fn exact_times(times: &[Exact]) -> Vec<Option<String>> {
+    times
+        .iter()
+        .map(|t| {
+            (!t.times_pi && crate::integrate::energy::terminating(&t.coef))
+                .then(|| crate::exact::rational_text(&t.coef))
+        })
+        .collect()
+}
+
+/// θ and its phase at the times of a θ-only motion.
+pub fn theta_estimates(m: &Motion) -> Vec<Estimate> {
+    m.thetas
+        .iter()
+        .map(|(th, _, err)| match err {
+            Some(e) => Estimate::new(th.clone(), e.clone(), one(th.prec())),
+            None => integrated(th, one(th.prec())),
+        })
+        .collect()
+}
+
+/// The phases of a θ-only motion.
+pub fn theta_phases(m: &Motion) -> Vec<Phase> {
+    m.thetas.iter().map(|(_, p, _)| *p).collect()
+}
