@@ -85,7 +85,10 @@ fn every_schema_1_value_is_unchanged_in_schema_2() {
                 let mode = a["mode"].as_str().map(v1_mode_tag);
                 assert_eq!(mode.as_deref(), b["mode"].as_str(), "{name}: event mode");
             }
-            assert_eq!(old["start_mode"].as_str().map(v1_mode_tag), new["start_mode"].as_str().map(String::from));
+            assert_eq!(
+                old["start_mode"].as_str().map(v1_mode_tag),
+                new["start_mode"].as_str().map(String::from)
+            );
         }
         // the rows, recomputed at the schema-1 times
         let case = find_case(&root().join("golden"), name).unwrap();

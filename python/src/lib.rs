@@ -415,7 +415,11 @@ fn trajectory<'py>(
         if times.is_empty() {
             return Err(Error::invalid("times", "", "give at least one time"));
         }
-        oracle::trajectory(&model, &times, &options(digits, &branch, part_at.as_deref())?)
+        oracle::trajectory(
+            &model,
+            &times,
+            &options(digits, &branch, part_at.as_deref())?,
+        )
     })?;
     let d = answer_dict(py, &a)?;
     d.set_item("columns", motion::COLUMNS.to_vec())?;
@@ -479,10 +483,9 @@ fn enclose(
                 return Err(cylroll::oracle::rigorous::unsupported("with friction"));
             }
             let ans = oracle::separation(&model, &Options::digits(digits))?;
-            let slots = cylroll::oracle::rigorous::stick_end_proved(&model, &ans, digits)
-                .map_err(|why| {
-                    Error::not_physical(format!("with friction nothing is enclosed: {why}"))
-                })?;
+            let slots = cylroll::oracle::rigorous::stick_end_proved(&model, &ans, digits).map_err(
+                |why| Error::not_physical(format!("with friction nothing is enclosed: {why}")),
+            )?;
             return Ok(slots
                 .into_iter()
                 .filter_map(|(_, _, pv)| pv)

@@ -40,6 +40,8 @@ pub fn motion_by(model: &Model, method: Method, prec: u32, horizon: &Float) -> R
         horizon: horizon.clone(),
         run: Run::High,
         digits: 0,
+        sides: Vec::new(),
+        target_side: None,
     };
     motion::run(model, &req, prec, &mut Caches::default())
 }

@@ -270,7 +270,9 @@ pub fn watch_values<'a>(watches: impl Iterator<Item = &'a Watch>, s: &Sample) ->
                 let p = s.q[*th].prec();
                 let (sn, cs) = sc(*th);
                 let td2 = Float::with_val(p, s.v[*th].square_ref());
-                Float::with_val(p, r * &td2) - Float::with_val(p, g * &cs) - Float::with_val(p, a * &sn)
+                Float::with_val(p, r * &td2)
+                    - Float::with_val(p, g * &cs)
+                    - Float::with_val(p, a * &sn)
             }
             other => watch_value(other, s),
         })

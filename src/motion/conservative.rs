@@ -52,6 +52,9 @@ pub struct Fast {
     pub events: Vec<EventRec>,
     /// What ended the phase.
     pub ending: Ending,
+    /// The state at the target angle when the phase went on past it (to
+    /// an event just beyond).
+    pub target_point: Option<Point>,
     /// The state at the end, as a sample of the mode's constrained system
     /// (at the integrators' working precision).
     pub end_sample: Sample,
@@ -78,6 +81,9 @@ pub struct Wants<'a> {
     pub branch: &'a Branch,
     /// An angle to stop at (user frame).
     pub target: Option<&'a Exact>,
+    /// How far past the target to look for events (in θ, > 0): an event
+    /// the target cannot be told from is located too.
+    pub beyond: Option<Float>,
 }
 
 /// The first phase from the start, in the conservative mode `mode`, by
@@ -175,9 +181,24 @@ pub fn first_phase(
     }
     // the earliest ending (a requested angle ties with nothing: an angle at
     // an event is decided by the caller)
+    refined.sort_by(|a, b| a.1.total_cmp(&b.1));
+    // the target reached first, with another ending just beyond it: the
+    // target's state is kept, and the phase goes on to that ending
+    let mut target_point = None;
+    if refined.len() > 1 && refined[0].0 == Ending::Target {
+        if let Some(b) = &wants.beyond {
+            let reach = Float::with_val(p, &refined[0].1 + b);
+            if refined[1].1 <= reach {
+                let (_, d, _) = refined.remove(0);
+                let (t, _) = route.engine(p)?.time(&d);
+                let (cols, en) = route.columns_at(&d, &t, p)?;
+                target_point = Some(point_of(cols, en, mode, None, zero_bits(ctx, mode)));
+            }
+        }
+    }
     let (ending, d_end, d_err) = refined
         .into_iter()
-        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .next()
         .ok_or_else(|| Error::not_physical("internal: no end of the conservative phase"))?;
     // the branch window on the `stay` branch (parting lawful from the branch
     // point to the end of the closed branch)
@@ -215,6 +236,7 @@ pub fn first_phase(
                 kind: Kind::Indeterminate,
                 which: Some(Which::Contact),
                 phase: Some(Phase::Contact(mode)),
+                after: Some(at.clone()),
                 at,
                 t_err,
                 theta_err: err.clone(),
@@ -307,6 +329,7 @@ pub fn first_phase(
         covered,
         events,
         ending,
+        target_point,
         end_sample,
         end_point,
         end_err: (t_err, theta_err),

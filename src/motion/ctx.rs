@@ -20,6 +20,8 @@ pub struct Ctx {
     pub base: StackModel,
     /// Cylinder 1 is held by the floor.
     pub held: bool,
+    /// The ladder's precision (the integrators' tolerance is 2^−(p−8)).
+    pub p: u32,
     /// Working precision of the integrators.
     pub wp: u32,
     /// Integrator settings.
@@ -96,6 +98,7 @@ impl Ctx {
             model: model.clone(),
             base,
             held: *model.floor() == Law::Held,
+            p: prec,
             wp,
             opts,
             ts: Float::with_val(wp, &ts),

@@ -379,6 +379,7 @@ impl Flight {
                     at: self.point(&t),
                     t_err: Float::new(p),
                     theta_err: Float::new(p),
+                    after: Some(self.point(&t)),
                 });
             }
         }

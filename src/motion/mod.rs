@@ -38,10 +38,12 @@ pub mod decide;
 pub mod flight;
 pub mod mode;
 pub mod point;
+pub mod sides;
 pub mod watch;
 
 pub use mode::{Branch, End, Kind, Mode, Phase, State, Surface};
 pub use point::{Point, TwoState, COLUMNS};
+pub use sides::Side;
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
@@ -69,6 +71,10 @@ pub struct EventRec {
     pub t_err: Float,
     /// The estimated error of the event angle.
     pub theta_err: Float,
+    /// The state just after the event, in the phase entered (the limit of
+    /// its forces and accelerations at the event; None at the end of the
+    /// model).
+    pub after: Option<Point>,
 }
 
 /// The route that computed a phase.
@@ -152,6 +158,11 @@ pub struct Request {
     pub run: Run,
     /// Digits requested (for messages).
     pub digits: u32,
+    /// Decided sides of requested times at events: (row, event index,
+    /// side), applied to every run ([`sides::apply_sides`]).
+    pub sides: Vec<(usize, usize, Side)>,
+    /// The decided side of the target angle at an event.
+    pub target_side: Option<(usize, Side)>,
 }
 
 /// The motion at one working precision.
@@ -186,6 +197,11 @@ pub struct Motion {
     /// where it became so, θ where it stopped — None: up to the end of the
     /// closed branch). Empty where the motion is unique.
     pub windows: Vec<(Float, Option<Float>)>,
+    /// Per row: the event whose time it cannot be told apart from at this
+    /// precision ([`sides::mark_near`]).
+    pub near: Vec<Option<usize>>,
+    /// The event whose angle the target cannot be told apart from.
+    pub target_near: Option<usize>,
 }
 
 impl Motion {
@@ -298,26 +314,67 @@ impl Walk<'_> {
 
     /// The motion ends at `at` (`what` for messages): every time still
     /// requested lies after the end.
-    fn end_here(&mut self, end: End, at: &Float, what: &str) -> Result<()> {
-        if self.next < self.req.times.len() {
-            return Err(after_end(&self.req.times[self.next], at, what));
+    /// The motion ends at the last event (`what` for messages): every time
+    /// still requested must lie there to within the event time's margin
+    /// (then its row is the state at the end), else it is after the end.
+    fn end_here(&mut self, end: End, what: &str) -> Result<()> {
+        let ev = self
+            .out
+            .events
+            .last()
+            .cloned()
+            .ok_or_else(|| Error::not_physical("internal: an end without an event"))?;
+        while self.next < self.req.times.len() {
+            let tt = self.tf[self.next].clone();
+            let at_end = self
+                .req
+                .sides
+                .iter()
+                .any(|(i, _, s)| *i == self.next && *s == Side::At);
+            if !at_end && sides::side_of(&tt, &ev.at.t, &ev.t_err, self.ctx.p).is_some() {
+                return Err(after_end(&self.req.times[self.next], &ev.at.t, what));
+            }
+            let mut pt = ev.at.clone();
+            pt.state.t = tt;
+            pt.err = None;
+            self.push_row(pt);
+            self.next += 1;
         }
         self.out.end = Some(end);
         Ok(())
     }
 
-    fn target_error(&self, what: &str, theta: &Float) -> Result<()> {
-        if let Until::Angle { theta: th, name } = &self.req.until {
-            return Err(Error::invalid(
-                name,
-                th,
-                format!(
-                    "must be reached while the cylinders touch: {what} at theta = {}",
-                    crate::numeric::decimal::to_sig(theta, 17)
-                ),
-            ));
+    /// The angle to stop at is not reached while the cylinders touch: `what`
+    /// (the last event) comes first. A target within the event angle's
+    /// margin is the state there (Ok(true): stop); otherwise an error.
+    fn target_at_event(&mut self, what: &str) -> Result<bool> {
+        let Until::Angle { theta: th, name } = &self.req.until else {
+            return Ok(false);
+        };
+        if self.out.target.is_some() {
+            // reached already: this event lies just past it
+            return Ok(true);
         }
-        Ok(())
+        let ev = self
+            .out
+            .events
+            .last()
+            .cloned()
+            .ok_or_else(|| Error::not_physical("internal: no event"))?;
+        let thf = th.to_float(self.ctx.wp);
+        let decided_at = matches!(self.req.target_side, Some((_, Side::At)));
+        if decided_at || sides::side_of(&thf, &ev.at.theta, &ev.theta_err, self.ctx.p).is_none() {
+            self.out.target = Some(ev.at.clone());
+            return Ok(true);
+        }
+        Err(Error::invalid(
+            name,
+            th,
+            format!(
+                "must be reached while the cylinders touch: {what} at theta = {}",
+                crate::numeric::decimal::to_sig(&ev.at.theta, 12)
+            ),
+        ))
     }
 
     /// The flight from a separation state (of `mode` in its system) to the
@@ -326,31 +383,57 @@ impl Walk<'_> {
         let sys = self.ctx.system(mode)?;
         let fli = flight::Flight::new(self.ctx, &sys, mode, s, at)?;
         self.out.routes.push(Route::Flight);
+        // the state just after separation: the flight's first; the
+        // impact's time inherits the separation's error (its closed form
+        // starts from the separation state)
+        let mut imp_err = Float::new(self.ctx.wp);
+        if let Some(ev) = self.out.events.last_mut() {
+            if ev.kind == Kind::Separation {
+                ev.after = Some(fli.point(&s.t));
+                imp_err = Float::with_val(self.ctx.wp, &ev.t_err) * 16u32;
+            }
+        }
         for e in fli.events() {
             self.out.events.push(e);
         }
         while self.next < self.tf.len() {
             let tt = self.tf[self.next].clone();
-            if tt > fli.impact.t {
-                return Err(after_end(
-                    &self.req.times[self.next],
-                    &fli.impact.t,
-                    "the first impact",
-                ));
-            }
-            let pt = fli.point(&tt);
+            let pt = if tt > fli.impact.t {
+                // after the impact: only within its time's margin (the
+                // state at the impact), else outside the model
+                let err = imp_err.clone();
+                let at_end = self
+                    .req
+                    .sides
+                    .iter()
+                    .any(|(i, _, s)| *i == self.next && *s == Side::At);
+                if !at_end && sides::side_of(&tt, &fli.impact.t, &err, self.ctx.p).is_some() {
+                    return Err(after_end(
+                        &self.req.times[self.next],
+                        &fli.impact.t,
+                        "the first impact",
+                    ));
+                }
+                let mut pt = fli.point(&fli.impact.t);
+                pt.state.t = tt;
+                pt
+            } else {
+                fli.point(&tt)
+            };
             self.push_row(pt);
             self.next += 1;
         }
         let imp_pt = fli.point(&fli.impact.t);
         self.note(&imp_pt);
+        let theta_err = Float::with_val(self.ctx.wp, imp_pt.theta_dot.abs_ref()) * &imp_err;
         self.out.events.push(EventRec {
             kind: Kind::Impact,
             which: None,
             phase: None,
             at: imp_pt,
-            t_err: Float::new(self.ctx.wp),
-            theta_err: Float::new(self.ctx.wp),
+            t_err: imp_err,
+            theta_err,
+            after: None,
         });
         self.out.separation = Some(at.clone());
         self.out.end = Some(End::Impact(fli.impact.surface));
@@ -367,6 +450,15 @@ impl Walk<'_> {
 /// mode change (Painlevé-type situations) or a grazing event
 /// ([`Error::NotConverged`]); an integrator's failure.
 pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<Motion> {
+    let mut m = walk(model, req, prec, caches)?;
+    sides::mark_near(&mut m, req, prec);
+    sides::apply_sides(&mut m, req)?;
+    sides::trim_events(&mut m, req, prec);
+    Ok(m)
+}
+
+/// [`run`] before the sides of times at events are marked and applied.
+fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<Motion> {
     if model.starts_at_equilibrium() {
         return Err(Error::not_physical(
             "the motion starts from rest exactly at the unstable top: every time is infinite",
@@ -404,6 +496,8 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
             work_done: (0, 0),
             routes: Vec::new(),
             windows: Vec::new(),
+            near: Vec::new(),
+            target_near: None,
         },
         next: 0,
         tf: req.times.iter().map(|t| t.to_float(wp)).collect(),
@@ -415,13 +509,32 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
     let mut v = v0;
     let mut work = Float::new(wp);
     let mut window_open = false;
-    // the angle to stop at, in the user frame
-    let target_theta = match &req.until {
+    // the angle to stop at, in the user frame, and how far past it events
+    // are still looked for (an event the target cannot be told from)
+    let mut target_theta = match &req.until {
         Until::Angle { theta, .. } => Some(theta.clone()),
         _ => None,
     };
+    let beyond = target_theta.as_ref().map(|th| {
+        let bits = crate::numeric::bits_for_digits(req.digits.max(1)) as i32;
+        (Float::with_val(wp, th.to_float(wp).abs_ref()) + 1u32) >> (bits / 4 + 4)
+    });
+    let beyond_theta = target_theta.as_ref().zip(beyond.as_ref()).map(|(th, b)| {
+        Float::with_val(
+            wp,
+            th.to_float(wp) + Float::with_val(wp, b * model.direction()),
+        )
+    });
     let t_end = match req.until {
-        Until::LastTime => w.tf.last().cloned().unwrap_or_else(|| Float::new(wp)),
+        // a little past the last time (2^−p/4 of the time scale, far beyond
+        // an event's margin): an event that the last time cannot be told
+        // apart from is located too
+        Until::LastTime => {
+            let last = w.tf.last().cloned().unwrap_or_else(|| Float::new(wp));
+            let bits = crate::numeric::bits_for_digits(req.digits.max(1)) as i32;
+            let beyond = (Float::with_val(wp, last.abs_ref()) + &ctx.ts) >> (bits / 4 + 4);
+            last + beyond
+        }
         _ => Float::with_val(wp, &req.horizon),
     };
     // --- a conservative first phase: the energy route
@@ -435,6 +548,7 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
             theta_only: req.theta_only,
             branch: &req.branch,
             target: target_theta.as_ref(),
+            beyond: beyond.clone(),
         };
         let fast = conservative::first_phase(&ctx, route, mode, &wants, prec)?;
         crate::cancel::check()?;
@@ -453,6 +567,10 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
         for th in fast.thetas {
             w.out.thetas.push(th);
         }
+        if let Some(tp) = fast.target_point {
+            w.out.target = Some(tp);
+            target_theta = None;
+        }
         w.next = fast.covered;
         let at = fast.end_point;
         w.note(&at);
@@ -464,6 +582,7 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
             at: at.clone(),
             t_err: t_err.clone(),
             theta_err: theta_err.clone(),
+            after: None,
         };
         use conservative::Ending;
         match fast.ending {
@@ -472,19 +591,22 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                 return Ok(w.out);
             }
             Ending::LiftOff => {
-                w.target_error("cylinder 1 lifts off", &at.theta)?;
                 w.out
                     .events
                     .push(ev(Kind::LiftOff, Some(Which::Floor), None));
-                w.end_here(End::LiftOff, &at.t, "the lift-off of cylinder 1")?;
+                if w.target_at_event("cylinder 1 lifts off")? {
+                    return Ok(w.out);
+                }
+                w.end_here(End::LiftOff, "the lift-off of cylinder 1")?;
                 return Ok(w.out);
             }
             Ending::FloorImpact => {
-                w.target_error("cylinder 2 lands on the floor", &at.theta)?;
                 w.out.events.push(ev(Kind::Impact, None, None));
+                if w.target_at_event("cylinder 2 lands on the floor")? {
+                    return Ok(w.out);
+                }
                 w.end_here(
                     End::Impact(Surface::FloorInContact),
-                    &at.t,
                     "the first impact (cylinder 2 reaches the floor while still on cylinder 1)",
                 )?;
                 let sys = ctx.system(mode)?;
@@ -492,7 +614,6 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                 return Ok(w.out);
             }
             Ending::Separation | Ending::BranchPart | Ending::PartAt => {
-                w.target_error("the cylinders part", &at.theta)?;
                 if fast.ending != Ending::Separation && !window_open {
                     w.out.events.push(ev(
                         Kind::Indeterminate,
@@ -505,6 +626,9 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                     Some(Which::Contact),
                     Some(Phase::Flight { floor: mode.floor }),
                 ));
+                if w.target_at_event("the cylinders part")? {
+                    return Ok(w.out);
+                }
                 w.fly(mode, &fast.end_sample, &at)?;
                 return Ok(w.out);
             }
@@ -515,12 +639,14 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                     Some(m) => m,
                     None => {
                         // no closed mode is consistent: the contact opens
-                        w.target_error("the cylinders part", &at.theta)?;
                         w.out.events.push(ev(
                             Kind::Separation,
                             Some(Which::Contact),
                             Some(Phase::Flight { floor: mode.floor }),
                         ));
+                        if w.target_at_event("the cylinders part")? {
+                            return Ok(w.out);
+                        }
                         w.fly(mode, &s, &at)?;
                         return Ok(w.out);
                     }
@@ -528,7 +654,8 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                 if new == mode {
                     return Err(grazing(&format!("cone:{}", which.name()), &at.t, mode));
                 }
-                push_changes(&mut w.out, mode, new, &at, &t_err, &theta_err);
+                let after = just_after(&ctx, new, &s, w.conservative)?;
+                push_changes(&mut w.out, mode, new, &at, &t_err, &theta_err, after);
                 t = s.t.clone();
                 q = s.q.clone();
                 v = s.v.clone();
@@ -554,6 +681,17 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                 terminal: true,
             });
             ws.what.push(What::Target);
+        } else if let (Some(b), true) = (&beyond_theta, w.out.target.is_some()) {
+            // the target is behind: look a little past it, then stop
+            ws.events.push(Event {
+                name: "beyond".into(),
+                watch: Watch::Reach {
+                    i: sy::th(0),
+                    value: b.clone(),
+                },
+                terminal: true,
+            });
+            ws.what.push(What::Beyond);
         }
         if let Branch::PartAt(th) = &req.branch {
             ws.events.push(Event {
@@ -566,9 +704,18 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
             });
             ws.what.push(What::PartAt);
         }
-        // a target at the present angle
+        // a target at the present angle (to within the last event's margin,
+        // or already passed at this precision)
         if let Some(th) = &target_theta {
-            if Float::with_val(wp, &q[sy::th(0)] - th.to_float(wp)).is_zero() {
+            let ahead = Float::with_val(wp, th.to_float(wp) - &q[sy::th(0)]) * model.direction();
+            let err = w
+                .out
+                .events
+                .last()
+                .map_or_else(|| Float::new(wp), |e| Float::with_val(wp, &e.theta_err));
+            let passed = !ahead.is_sign_positive()
+                || sides::side_of(&th.to_float(wp), &q[sy::th(0)], &err, prec).is_none();
+            if passed {
                 let acc = sys.accel(&q, &v)?;
                 let smp = sample(&t, &q, &v, acc, &work);
                 w.out.target = Some(ctx.point(&mut sys, mode, &smp, w.conservative));
@@ -687,39 +834,71 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
             at: at.clone(),
             t_err: hit.t_err.clone(),
             theta_err: theta_err.clone(),
+            after: None,
         };
         let flight_phase = Phase::Flight { floor: mode.floor };
         match what {
             What::Target => {
-                w.out.target = Some(at);
-                return Ok(w.out);
+                // keep the state at the angle, and look a little past it;
+                // an event whose watch is already 0 at the angle (to the
+                // integration's accuracy) lies at the angle itself
+                let vals = solve::watch_values(ws.events.iter().map(|e| &e.watch), &hit.at);
+                let snap = Float::with_val(wp, &ctx.escale / &ctx.ts) * &ctx.rel_tiny;
+                let at_zero = ws.what.iter().zip(&vals).find_map(|(wt, g)| {
+                    let kind = match wt {
+                        What::Separation => (Kind::Separation, Some(Which::Contact)),
+                        What::LiftOff => (Kind::LiftOff, Some(Which::Floor)),
+                        What::FloorImpact => (Kind::Impact, None),
+                        What::Cone(c) => (Kind::SlipOnset, Some(*c)),
+                        What::SlipZero(c) => (Kind::Stick, Some(*c)),
+                        _ => return None,
+                    };
+                    (Float::with_val(wp, g.abs_ref()) <= snap).then_some(kind)
+                });
+                w.out.target = Some(at.clone());
+                if let Some((kind, which)) = at_zero {
+                    w.out.events.push(ev(kind, which, None));
+                    return Ok(w.out);
+                }
+                target_theta = None;
+                t = hit.at.t.clone();
+                q = hit.at.q.clone();
+                v = hit.at.v.clone();
+                work = hit.at.work.clone();
+                continue;
             }
+            What::Beyond => return Ok(w.out),
             What::FloorImpact => {
-                w.target_error("cylinder 2 lands on the floor", &at.theta)?;
                 w.out.events.push(ev(Kind::Impact, None, None));
+                if w.target_at_event("cylinder 2 lands on the floor")? {
+                    return Ok(w.out);
+                }
                 w.end_here(
                     End::Impact(Surface::FloorInContact),
-                    &at.t,
                     "the first impact (cylinder 2 reaches the floor while still on cylinder 1)",
                 )?;
                 w.out.impact = Some(flight::Impact::in_contact(&sys, &hit.at, &at));
                 return Ok(w.out);
             }
             What::LiftOff => {
-                w.target_error("cylinder 1 lifts off", &at.theta)?;
                 w.out
                     .events
                     .push(ev(Kind::LiftOff, Some(Which::Floor), None));
-                w.end_here(End::LiftOff, &at.t, "the lift-off of cylinder 1")?;
+                if w.target_at_event("cylinder 1 lifts off")? {
+                    return Ok(w.out);
+                }
+                w.end_here(End::LiftOff, "the lift-off of cylinder 1")?;
                 return Ok(w.out);
             }
             What::Separation => {
-                w.target_error("the cylinders part", &at.theta)?;
                 w.out.events.push(ev(
                     Kind::Separation,
                     Some(Which::Contact),
                     Some(flight_phase),
                 ));
+                if w.target_at_event("the cylinders part")? {
+                    return Ok(w.out);
+                }
                 w.fly(mode, &hit.at, &at)?;
                 return Ok(w.out);
             }
@@ -731,7 +910,7 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                     if rising {
                         window_open = true;
                         w.out.windows.push((at.theta.clone(), None));
-                        w.out.events.push(ev(
+                        let mut e = ev(
                             Kind::Indeterminate,
                             Some(Which::Contact),
                             Some(if req.branch == Branch::Part {
@@ -739,7 +918,9 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                             } else {
                                 Phase::Contact(mode)
                             }),
-                        ));
+                        );
+                        e.after = Some(at.clone());
+                        w.out.events.push(e);
                     } else {
                         window_open = false;
                         if let Some(last) = w.out.windows.last_mut() {
@@ -768,12 +949,14 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
                     _ => false,
                 };
                 if part_now {
-                    w.target_error("the cylinders part", &at.theta)?;
                     w.out.events.push(ev(
                         Kind::Separation,
                         Some(Which::Contact),
                         Some(flight_phase),
                     ));
+                    if w.target_at_event("the cylinders part")? {
+                        return Ok(w.out);
+                    }
                     w.fly(mode, &hit.at, &at)?;
                     return Ok(w.out);
                 }
@@ -791,26 +974,31 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
         if choice.branch_point && !window_open {
             window_open = true;
             w.out.windows.push((at.theta.clone(), None));
-            w.out.events.push(ev(
+            let mut e = ev(
                 Kind::Indeterminate,
                 Some(Which::Contact),
                 Some(choice.mode.map_or(flight_phase, Phase::Contact)),
-            ));
+            );
+            e.after = Some(at.clone());
+            w.out.events.push(e);
         }
         let Some(new) = choice.mode else {
-            w.target_error("the cylinders part", &at.theta)?;
             w.out.events.push(ev(
                 Kind::Separation,
                 Some(Which::Contact),
                 Some(flight_phase),
             ));
+            if w.target_at_event("the cylinders part")? {
+                return Ok(w.out);
+            }
             w.fly(mode, &hit.at, &at)?;
             return Ok(w.out);
         };
         if new == mode {
             return Err(grazing(&ws.events[hit.event].name, &at.t, mode));
         }
-        push_changes(&mut w.out, mode, new, &at, &hit.t_err, &theta_err);
+        let after = just_after(&ctx, new, &hit.at, w.conservative && new.is_conservative())?;
+        push_changes(&mut w.out, mode, new, &at, &hit.t_err, &theta_err, after);
         t = hit.at.t.clone();
         q = hit.at.q.clone();
         v = hit.at.v.clone();
@@ -859,8 +1047,28 @@ fn grazing(name: &str, t: &Float, mode: Mode) -> Error {
     }
 }
 
+/// The state just after an event at sample `s`, in the mode entered (its
+/// forces and accelerations; positions and velocities are continuous).
+///
+/// Errors: a singular constraint system.
+fn just_after(ctx: &Ctx, mode: Mode, s: &Sample, conservative: bool) -> Result<Point> {
+    let mut sys = ctx.system(mode)?;
+    let acc = sys.accel(&s.q, &s.v)?;
+    let smp = sample(&s.t, &s.q, &s.v, acc, &s.work);
+    Ok(ctx.point(&mut sys, mode, &smp, conservative))
+}
+
 /// The events of a change of contact states from `old` to `new` at `at`.
-fn push_changes(out: &mut Motion, old: Mode, new: Mode, at: &Point, t_err: &Float, th_err: &Float) {
+#[allow(clippy::too_many_arguments)]
+fn push_changes(
+    out: &mut Motion,
+    old: Mode,
+    new: Mode,
+    at: &Point,
+    t_err: &Float,
+    th_err: &Float,
+    after: Point,
+) {
     for w in [Which::Floor, Which::Contact] {
         let (o, n) = (old.of(w), new.of(w));
         if o == n {
@@ -878,6 +1086,7 @@ fn push_changes(out: &mut Motion, old: Mode, new: Mode, at: &Point, t_err: &Floa
             at: at.clone(),
             t_err: t_err.clone(),
             theta_err: th_err.clone(),
+            after: Some(after.clone()),
         });
     }
 }

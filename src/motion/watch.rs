@@ -25,6 +25,9 @@ pub enum What {
     FreeNormal,
     /// θ reaches a requested angle (the end of `time --to`, `forces`).
     Target,
+    /// θ is a little past the requested angle (where events near it are
+    /// no longer looked for).
+    Beyond,
     /// θ reaches the angle at which the cylinders are asked to part.
     PartAt,
 }

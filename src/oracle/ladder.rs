@@ -9,7 +9,7 @@ use super::answer::{EventAnswer, Row};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::model::Model;
-use crate::motion::{self, Caches, Motion, Phase, Point, Request};
+use crate::motion::{self, Caches, Motion, Phase, Point, Request, Side, Until};
 use crate::numeric::verify::{ladder_runs, ladder_table, precisions, Estimate, Run, Verified};
 use rug::Float;
 use std::cell::RefCell;
@@ -154,6 +154,15 @@ pub struct Runs<'a> {
     pub req: Request,
     /// Shared caches.
     pub caches: Caches,
+    /// Rows whose time no reachable precision separated from an event:
+    /// (row, event); their values are the state at the event.
+    pub at_events: Vec<(usize, usize)>,
+    /// The event whose angle the target could not be separated from.
+    pub target_at: Option<usize>,
+    /// The highest precision tried to decide a side.
+    pub side_bits: u32,
+    /// The kind of the event of `target_at`.
+    pub target_kind: Option<motion::Kind>,
 }
 
 impl Runs<'_> {
@@ -162,6 +171,121 @@ impl Runs<'_> {
         self.req.run = run;
         motion::run(self.model, &self.req, p, &mut self.caches)
     }
+
+    /// Decides the side of every row (and the target) that the first run
+    /// cannot tell from an event: the motion is computed at doubling
+    /// precision (from twice the ladder's higher one, at most two
+    /// doublings) until the event time (angle) is known well enough; a row
+    /// still inseparable is the state at the event. The sides go into the
+    /// request, for every run of the ladder, and are applied to `first`.
+    ///
+    /// Errors: a run's; a precision at which the events differ.
+    pub fn resolve_sides(&mut self, first: &mut Motion) -> Result<()> {
+        let mut rows: Vec<(usize, usize)> = first
+            .near
+            .iter()
+            .enumerate()
+            .filter_map(|(i, k)| k.map(|k| (i, k)))
+            .collect();
+        let mut target = first.target_near;
+        if rows.is_empty() && target.is_none() {
+            return Ok(());
+        }
+        let digits = self.req.digits;
+        let (_, p2) = precisions(self.req.digits, 0);
+        let mut decided: Vec<(usize, usize, Side)> = Vec::new();
+        let mut target_side = None;
+        let mut q = 2 * p2;
+        // the motion to its end, without a target (the events past the last
+        // time, or beyond the target, are kept)
+        let until = self.req.until.clone();
+        self.req.until = Until::End;
+        while q <= 8 * p2 && (!rows.is_empty() || target.is_some()) {
+            self.side_bits = q;
+            let m = match self.at(q, Run::High) {
+                Ok(m) => m,
+                Err(e) => {
+                    self.req.until = until;
+                    return Err(e);
+                }
+            };
+            let same = |k: usize| {
+                m.events
+                    .get(k)
+                    .zip(first.events.get(k))
+                    .is_some_and(|(a, b)| {
+                        a.kind == b.kind && a.which == b.which && a.phase == b.phase
+                    })
+            };
+            rows.retain(|&(i, k)| {
+                if !same(k) {
+                    return true;
+                }
+                let ev = &m.events[k];
+                let t = self.req.times[i].to_float(q);
+                match motion::sides::side_of(&t, &ev.at.t, &ev.t_err, q) {
+                    // past the end of the model by less than the digits
+                    // asked resolve (the end's time printed to more digits
+                    // and read back): the state at the end
+                    Some(Side::After) if ev.kind.ends() && within_digits(&t, &ev.at.t, digits) => {
+                        decided.push((i, k, Side::At));
+                        false
+                    }
+                    Some(side) => {
+                        decided.push((i, k, side));
+                        false
+                    }
+                    None => true,
+                }
+            });
+            if let (Some(k), Until::Angle { theta, .. }) = (target, &until) {
+                if same(k) {
+                    let ev = &m.events[k];
+                    let th = theta.to_float(q);
+                    if let Some(side) = motion::sides::side_of(&th, &ev.at.theta, &ev.theta_err, q)
+                    {
+                        // past the separation (or the end) by less than the
+                        // digits asked resolve: the state at it
+                        let at_end = (ev.kind == motion::Kind::Separation || ev.kind.ends())
+                            && side == Side::After
+                            && within_digits(&th, &ev.at.theta, digits);
+                        target_side = Some((k, if at_end { Side::At } else { side }));
+                        if at_end {
+                            self.target_at = Some(k);
+                            self.target_kind = Some(ev.kind);
+                        }
+                        target = None;
+                    }
+                }
+            }
+            q *= 2;
+        }
+        self.req.until = until;
+        for &(i, k) in &rows {
+            decided.push((i, k, Side::At));
+        }
+        self.at_events = rows;
+        if let Some(k) = target {
+            target_side = Some((k, Side::At));
+            self.target_at = Some(k);
+            self.target_kind = first.events.get(k).map(|e| e.kind);
+        }
+        self.req.sides = decided;
+        self.req.target_side = target_side;
+        motion::sides::apply_sides(first, &self.req)?;
+        let (p1, _) = precisions(self.req.digits, 0);
+        motion::sides::trim_events(first, &self.req, p1);
+        Ok(())
+    }
+}
+
+/// Whether `t` and `end` agree to more than `digits` significant digits
+/// (|t − end| ≤ (|end| + 1)·10^−(digits+3)).
+fn within_digits(t: &Float, end: &Float, digits: u32) -> bool {
+    let p = t.prec();
+    let tol = (Float::with_val(p, end.abs_ref()) + 1u32)
+        / Float::with_val(p, Float::u_pow_u(10, digits + 3));
+    Float::with_val(p, t - end).abs() <= tol
 }
 
 /// Runs the motion at both precisions of each rung, the first run (at

@@ -132,8 +132,14 @@ fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -
             horizon: motion::default_horizon(model),
             run: Run::Low,
             digits: opts.digits,
+            sides: Vec::new(),
+            target_side: None,
         },
         caches: Caches::default(),
+        at_events: Vec::new(),
+        target_at: None,
+        side_bits: 0,
+        target_kind: None,
     }
 }
 
@@ -226,7 +232,8 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     }
     let mut runs = runs(model, opts, Vec::new(), Until::End);
     let (p1, _) = precisions(digits, 0);
-    let first = runs.at(p1, Run::Low)?;
+    let mut first = runs.at(p1, Run::Low)?;
+    runs.resolve_sides(&mut first)?;
     let n_ev = first.events.len();
     let mut names = event_names(n_ev);
     let sep_ev = first.events.iter().position(|e| e.kind == Kind::Separation);
@@ -387,7 +394,7 @@ fn at_angle(
     name: &str,
     keys: &[&str],
     est: impl Fn(&motion::Point) -> Vec<Estimate>,
-) -> Result<(Vec<Verified>, Phase)> {
+) -> Result<(Vec<Verified>, Phase, Option<String>)> {
     check_digits(opts.digits)?;
     if model.starts_at_equilibrium() {
         return Err(infinite(model, "the time to any angle"));
@@ -412,20 +419,33 @@ fn at_angle(
         },
     );
     let (p1, _) = precisions(opts.digits, 0);
-    let first = runs.at(p1, Run::Low)?;
+    let mut first = runs.at(p1, Run::Low)?;
+    runs.resolve_sides(&mut first)?;
     let phase = first
         .target
         .as_ref()
         .map(|t| t.phase)
         .ok_or_else(|| Error::not_physical("internal: the angle was not reached"))?;
     let names: Vec<String> = keys.iter().map(|k| k.to_string()).collect();
+    let at_event = runs.target_at.map(|k| {
+        format!(
+            "theta = {theta} cannot be told apart from the angle of the {} (not even at {} \
+             bits, or past it by less than the digits asked resolve): the values are the state \
+             at the event (the forces and accelerations those of the phase before)",
+            runs.target_kind
+                .or_else(|| first.events.get(k).map(|e| e.kind))
+                .map_or("event", |k| k.name())
+                .replace('_', " "),
+            runs.side_bits
+        )
+    });
     let rows = laddered(&mut runs, first, &names, 1, |m| {
         m.target
             .as_ref()
             .map(&est)
             .ok_or_else(|| Error::not_physical("internal: the angle was not reached"))
     })?;
-    Ok((rows.into_iter().next().unwrap_or_default(), phase))
+    Ok((rows.into_iter().next().unwrap_or_default(), phase, at_event))
 }
 
 /// The time at which θ first reaches `theta`.
@@ -442,11 +462,12 @@ pub fn time(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         ans.routes.push(motion::Route::Energy);
         return Ok(ans);
     }
-    let (v, phase) = at_angle(model, opts, theta, "to", &["t"], |pt| {
+    let (v, phase, note) = at_angle(model, opts, theta, "to", &["t"], |pt| {
         vec![integrated(&pt.t, Float::with_val(pt.t.prec(), 1u32))]
     })?;
     ans.values = v;
     ans.phase = Some(phase);
+    ans.notes.extend(note);
     Ok(ans)
 }
 
@@ -515,7 +536,7 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         "s12",
         "work",
     ];
-    let (v, phase) = at_angle(model, opts, theta, "theta", &keys, |pt| {
+    let (v, phase, note) = at_angle(model, opts, theta, "theta", &keys, |pt| {
         let p = pt.t.prec();
         let all = ladder::point_estimates(pt, &scales_of(model, p), None);
         keys.iter().map(|k| all[idx(k)].clone()).collect()
@@ -533,6 +554,7 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
     values.extend(v[6..].iter().cloned());
     ans.values = values;
     ans.phase = Some(phase);
+    ans.notes.extend(note);
     Ok(ans)
 }
 
@@ -552,7 +574,8 @@ pub fn trajectory(model: &Model, times: &[Exact], opts: &Options) -> Result<Answ
     let exact_t = ladder::exact_times(times);
     let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
     let (p1, _) = precisions(opts.digits, 0);
-    let first = runs.at(p1, Run::Low)?;
+    let mut first = runs.at(p1, Run::Low)?;
+    runs.resolve_sides(&mut first)?;
     let n_ev = first.events.len();
     let names: Vec<String> = motion::COLUMNS.iter().map(|s| s.to_string()).collect();
     let n_rows = times.len();
@@ -582,6 +605,19 @@ pub fn trajectory(model: &Model, times: &[Exact], opts: &Options) -> Result<Answ
         .collect();
     ans.events = events_of(&first, &ev_vals);
     ans.rows = ladder::rows_of(&first, table);
+    for &(i, k) in &runs.at_events {
+        ans.rows[i].at_event = Some(k);
+        let e = &first.events[k];
+        ans.notes.push(format!(
+            "t = {} cannot be told apart from the {} at t = {} (not even at {} bits): its row is \
+             the state at the event (positions and velocities are continuous there; the \
+             forces and accelerations are those of the phase before)",
+            times[i],
+            e.kind.name().replace('_', " "),
+            ans.events[k].t.text,
+            runs.side_bits
+        ));
+    }
     ans.start_mode = Some(first.start_mode);
     ans.end = first.end;
     ans.routes = first.routes.clone();
@@ -606,7 +642,8 @@ pub fn theta_at_times(
     let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
     runs.req.theta_only = true;
     let (p1, _) = precisions(opts.digits, 0);
-    let first = runs.at(p1, Run::Low)?;
+    let mut first = runs.at(p1, Run::Low)?;
+    runs.resolve_sides(&mut first)?;
     let phases = ladder::theta_phases(&first);
     let rows = laddered(&mut runs, first, &["theta".to_string()], times.len(), |m| {
         Ok(ladder::theta_estimates(m))

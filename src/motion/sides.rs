@@ -1,0 +1,222 @@
+//! Times and angles at events: on which side of an event a requested time
+//! (or the target angle) lies.
+//!
+//! At one working precision an event's time is known to within its error
+//! estimate; a requested time closer to it than that cannot be placed in
+//! the phase before or after by this run alone, and two precisions may
+//! place it differently. [`mark_near`] flags such rows; the caller decides
+//! their side at a precision where it is certain (or, where no reachable
+//! precision separates them, takes the state at the event, continuous
+//! there), and every run of the ladder then applies that decision
+//! ([`apply_sides`]): the row is the state of the phase it belongs to, or
+//! the one-sided limit at the event where this precision places the event
+//! on the other side of it.
+
+use super::point::Point;
+use super::{EventRec, Motion, Request};
+use crate::error::{Error, Result};
+use rug::Float;
+
+/// Where a requested time (or angle) lies relative to an event.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// In the phase before the event.
+    Before,
+    /// In the phase after it.
+    After,
+    /// Not separable from it at the precision reachable: the state at the
+    /// event (the phase before's limit).
+    At,
+}
+
+/// The margin within which a value cannot be told from an event's at the
+/// ladder's precision `p` (the integrators' tolerance is 2^−(p−8), their
+/// working precision higher): four times the event's error estimate and
+/// the integration's.
+fn margin(v: &Float, err: &Float, p: u32) -> Float {
+    let wp = v.prec();
+    let one = Float::with_val(wp, 1u32);
+    let floor = (Float::with_val(wp, v.abs_ref()) + &one) >> (p as i32 - 24);
+    (Float::with_val(wp, err) + floor) * 4u32
+}
+
+/// The event nearest `t` in time, if `t` is within its margin.
+pub fn near_in_time(events: &[EventRec], t: &Float, p: u32) -> Option<usize> {
+    events
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| {
+            Float::with_val(t.prec(), t - &e.at.t).abs() <= margin(&e.at.t, &e.t_err, p)
+        })
+        .min_by(|(_, a), (_, b)| {
+            let da = Float::with_val(t.prec(), t - &a.at.t).abs();
+            let db = Float::with_val(t.prec(), t - &b.at.t).abs();
+            da.total_cmp(&db)
+        })
+        .map(|(k, _)| k)
+}
+
+/// The event nearest the angle `theta`, if within its margin.
+pub fn near_in_angle(events: &[EventRec], theta: &Float, p: u32) -> Option<usize> {
+    events
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| {
+            Float::with_val(theta.prec(), theta - &e.at.theta).abs()
+                <= margin(&e.at.theta, &e.theta_err, p)
+        })
+        .min_by(|(_, a), (_, b)| {
+            let da = Float::with_val(theta.prec(), theta - &a.at.theta).abs();
+            let db = Float::with_val(theta.prec(), theta - &b.at.theta).abs();
+            da.total_cmp(&db)
+        })
+        .map(|(k, _)| k)
+}
+
+/// The side of `x` (a time or an angle) relative to an event at `ev`
+/// (its value and error) at the ladder's precision `p`, or None within the
+/// margin.
+pub fn side_of(x: &Float, ev: &Float, err: &Float, p: u32) -> Option<Side> {
+    let d = Float::with_val(x.prec(), x - ev);
+    if d.clone().abs() <= margin(ev, err, p) {
+        None
+    } else if d.is_sign_negative() {
+        Some(Side::Before)
+    } else {
+        Some(Side::After)
+    }
+}
+
+/// Flags the rows (and the target) that cannot be told from an event at
+/// this precision.
+pub fn mark_near(m: &mut Motion, req: &Request, p: u32) {
+    let n = m.rows.len().max(m.thetas.len());
+    m.near = req
+        .times
+        .iter()
+        .take(n)
+        .map(|t| near_in_time(&m.events, &t.to_float(m.prec()), p))
+        .collect();
+    m.target_near = m
+        .target
+        .as_ref()
+        .and_then(|pt| near_in_angle(&m.events, &pt.theta, p));
+}
+
+/// Whether a row in `phase` is already on `side` of the event (its phase
+/// before, or the one it enters; at the event itself never).
+fn on_side(ev: &EventRec, side: Side, phase: super::mode::Phase) -> bool {
+    match side {
+        Side::At => false,
+        Side::Before => phase.same_tag(&ev.at.phase),
+        Side::After => ev
+            .after
+            .as_ref()
+            .is_some_and(|a| phase.same_tag(&a.phase) && !ev.at.phase.same_tag(&a.phase)),
+    }
+}
+
+/// The state of event `k` on `side`, at time `t`.
+fn state_on(ev: &EventRec, side: Side, t: &Float) -> Point {
+    let mut pt = match side {
+        Side::After => ev.after.clone().unwrap_or_else(|| ev.at.clone()),
+        Side::Before | Side::At => ev.at.clone(),
+    };
+    pt.state.t = Float::with_val(t.prec(), t);
+    pt.err = None;
+    pt
+}
+
+/// Applies the decided sides: a row (or the target) this precision placed
+/// on the other side of its event becomes the one-sided limit at the event;
+/// a row at an event becomes the state there.
+///
+/// Errors: a side that names a row or an event this motion does not have
+/// (the precisions disagree on the events).
+pub fn apply_sides(m: &mut Motion, req: &Request) -> Result<()> {
+    let p = m.prec();
+    let missing = || Error::NotConverged {
+        quantity: "event sequence".into(),
+        requested: req.digits,
+        reached: "the working precisions disagree on the events".into(),
+        detail: "a time decided at one precision has no event at another".into(),
+    };
+    for &(i, k, side) in &req.sides {
+        let ev = m.events.get(k).ok_or_else(missing)?.clone();
+        let t = req.times.get(i).ok_or_else(missing)?.to_float(p);
+        let phase = if m.rows.len() > i {
+            m.rows[i].phase
+        } else if m.thetas.len() > i {
+            m.thetas[i].1
+        } else {
+            return Err(missing());
+        };
+        let replace = !on_side(&ev, side, phase);
+        if !replace {
+            continue;
+        }
+        let pt = state_on(&ev, side, &t);
+        if m.rows.len() > i {
+            m.rows[i] = pt;
+        } else if m.thetas.len() > i {
+            m.thetas[i] = (pt.theta.clone(), pt.phase, None);
+        }
+    }
+    if let (Some((k, side)), Some(target)) = (req.target_side, m.target.as_ref()) {
+        // this precision reached the angle before the event: so is it
+        // before or at the event (the phase before's state at the angle)
+        if m.events.len() <= k && side != Side::After {
+            return Ok(());
+        }
+        let ev = m.events.get(k).ok_or_else(missing)?.clone();
+        let replace = !on_side(&ev, side, target.phase);
+        if replace {
+            let t = ev.at.t.clone();
+            m.target = Some(state_on(&ev, side, &t));
+        }
+    }
+    Ok(())
+}
+
+/// Drops the events found just past the last requested time (located to
+/// place the times near them; not the answer's): only those up to the last
+/// time stay — by the side decided for the last time where there is one,
+/// the same at every precision.
+pub fn trim_events(m: &mut Motion, req: &Request, p: u32) {
+    // an angle decided before (or at) event k: the events from k on are
+    // not the answer's (some precisions reach the angle first, some the
+    // event)
+    if let Some((k, Side::Before | Side::At)) = req.target_side {
+        m.events.truncate(k);
+    } else if let (None, Some(target)) = (req.target_side, m.target.as_ref()) {
+        // the events found just past the angle are not the answer's
+        let th = target.theta.clone();
+        m.events
+            .retain(|e| side_of(&th, &e.at.theta, &e.theta_err, p) != Some(Side::Before));
+    }
+    if req.until == super::Until::LastTime {
+        if let Some(last) = req.times.last() {
+            let tl = last.to_float(m.prec());
+            let i_last = req.times.len() - 1;
+            let mut k = 0usize;
+            m.events.retain(|e| {
+                // a side decided for the last time rules (the same at every
+                // precision); otherwise the event is clearly before or after
+                let decided = req
+                    .sides
+                    .iter()
+                    .find(|(i, kk, _)| *i == i_last && *kk == k)
+                    .map(|(_, _, s)| *s);
+                k += 1;
+                match decided {
+                    Some(s) => s != Side::Before,
+                    None => side_of(&tl, &e.at.t, &e.t_err, p) != Some(Side::Before),
+                }
+            });
+            if m.end.is_some() && m.events.last().is_none_or(|e| !e.kind.ends()) {
+                m.end = None;
+                m.impact = None;
+            }
+        }
+    }
+}
