@@ -23,6 +23,12 @@ pub fn install(flag: Arc<AtomicBool>) {
     FLAG.with(|f| *f.borrow_mut() = Some(flag));
 }
 
+/// Whether this thread's flag is set (for loops that cannot return an
+/// error: they end early, and their caller's next [`check`] reports it).
+pub fn cancelled() -> bool {
+    FLAG.with(|f| matches!(&*f.borrow(), Some(flag) if flag.load(Ordering::Relaxed)))
+}
+
 /// `Err(Error::Cancelled)` if this thread's flag is set.
 pub fn check() -> Result<()> {
     FLAG.with(|f| match &*f.borrow() {

@@ -12,6 +12,8 @@ what is verified").
 >>> m = cylroll.Model(theta0="1/10", mu_floor="0.3", mu_contact="0.3")
 >>> [e.kind for e in m.separation(digits=12).events]
 ['slip_onset', 'separation', 'impact']
+>>> [e.kind for e in cylroll.Model(theta0="1/10").separation(digits=12).events]
+['indeterminate', 'separation', 'impact']
 
 The pieces:
 
@@ -41,10 +43,11 @@ from . import golden, testing
 
 __version__ = "0.1.0"
 
-#: The columns of a trajectory of the ideal models, in order.
-TRAJECTORY_COLUMNS = tuple(_cylroll.TRAJECTORY_COLUMNS)
-#: The columns of a trajectory with friction (the ideal ones, then s1, s12, work).
-FRICTION_COLUMNS = tuple(_cylroll.FRICTION_COLUMNS)
+#: The columns of a trajectory, in order, for every contact law (the
+#: ``mode`` of each row is apart: :attr:`Trajectory.modes`).
+COLUMNS = tuple(_cylroll.COLUMNS)
+#: The keys of :meth:`Model.forces` for every contact law.
+FORCE_KEYS = tuple(_cylroll.FORCE_KEYS)
 
 __all__ = [
     "Model", "Value", "Separation", "Event", "Forces", "Trajectory", "Enclosure",
@@ -52,5 +55,5 @@ __all__ = [
     "CylrollError", "InvalidParameterError", "NotPhysicalError", "VerificationError",
     "InputFileError", "InternalError",
     "golden", "testing",
-    "MODEL_KEYS", "FRICTION_KEYS", "TRAJECTORY_COLUMNS", "FRICTION_COLUMNS", "MAX_DIGITS",
+    "MODEL_KEYS", "FRICTION_KEYS", "COLUMNS", "FORCE_KEYS", "MAX_DIGITS",
 ]

@@ -14,8 +14,8 @@ from ._model import Model, _digits
 
 __all__ = ["check", "CheckReport", "ColumnStats", "FirstFailure"]
 
-#: Columns that are not numbers and are not judged (the friction tables' mode).
-_SKIPPED = ("mode",)
+#: Columns that are not numbers: compared as text (the phase of each row).
+_TEXT = ("mode",)
 
 
 class ColumnStats(NamedTuple):
@@ -113,8 +113,6 @@ def _from_mapping(cand: Any) -> Tuple[List[str], List[List[str]]]:
     cols = []
     keep = []
     for k, name in zip(cand.keys(), names):
-        if name in _SKIPPED:
-            continue
         col = cand[k]
         arr = col.to_numpy() if hasattr(col, "to_numpy") else np.asarray(col)
         if arr.ndim == 0:
@@ -122,7 +120,10 @@ def _from_mapping(cand: Any) -> Tuple[List[str], List[List[str]]]:
         if arr.ndim != 1:
             raise ValueError(f"column {name}: expected a 1-d array, got shape {arr.shape}")
         keep.append(name)
-        cols.append([_cell(name, x) for x in arr.tolist()])
+        if name in _TEXT:
+            cols.append([str(x).strip() for x in arr.tolist()])
+        else:
+            cols.append([_cell(name, x) for x in arr.tolist()])
     n = {len(c) for c in cols}
     if len(n) > 1:
         lens = ", ".join(f"{k}: {len(c)}" for k, c in zip(keep, cols))
@@ -137,9 +138,7 @@ def _from_csv(path: str) -> Tuple[List[str], List[List[str]]]:
     if not rows:
         return [], []
     head = [c.strip() for c in rows[0]]
-    keep = [i for i, c in enumerate(head) if c not in _SKIPPED]
-    return [head[i] for i in keep], [[r[i] if i < len(r) else "" for i in keep]
-                                     for r in rows[1:]]
+    return head, [[r[i] if i < len(r) else "" for i in range(len(head))] for r in rows[1:]]
 
 
 def check(
@@ -155,9 +154,10 @@ def check(
     ``candidate``: a mapping of column name -> 1-d array (a ``dict`` of
     NumPy arrays, a pandas ``DataFrame``) or the path of a CSV file with a
     header row. Columns are matched by name: any subset of the oracle's
-    (``t, theta, theta_dot, theta_ddot, phi1, phi2, x1, x2, y2, F1, N1, F21,
-    N12``, with friction also ``s1, s12, work``); ``t`` is required; a
-    ``mode`` column is ignored. The oracle is evaluated at the candidate's
+    (``t, theta, theta_dot, theta_ddot, phi1, phi2, x1, x2, y2, x1_dot,
+    phi1_dot, x2_dot, y2_dot, phi2_dot, F1, N1, F21, N12, s1, s12, work``);
+    ``t`` is required; a ``mode`` column (``"stick/stick"``, ``"flight"``,
+    …) is compared with the oracle's phase of each row. The oracle is evaluated at the candidate's
     own times (no interpolation); a float time is read as the decimal it
     prints as.
 

@@ -2,7 +2,7 @@
 ``cylroll`` instead: these functions take the model as key/value text and return plain
 tuples; the Python modules turn them into classes."""
 
-from typing import Dict, List, Optional, Tuple, Union
+from typing import Dict, List, Optional, Tuple
 
 #: (name, text, digits, err, err_text)
 _Value = Tuple[str, str, int, float, str]
@@ -11,29 +11,35 @@ _Event = Tuple[str, Optional[str], Optional[str], _Value, _Value]
 
 MODEL_KEYS: List[str]
 FRICTION_KEYS: List[str]
-TRAJECTORY_COLUMNS: List[str]
-FRICTION_COLUMNS: List[str]
+COLUMNS: List[str]
 FORCE_KEYS: List[str]
-FRICTION_FORCE_KEYS: List[str]
 MAX_DIGITS: int
 LIBRARY_VERSION: str
 
-def validate(
-    pairs: Dict[str, str],
-) -> Tuple[List[Tuple[str, str]], Optional[Tuple[str, str]]]: ...
+#: an answer: values, notes, events, start_mode, end, impact_surface, branch, mode,
+#: routes (trajectory also columns, rows, modes)
+_Answer = Dict[str, object]
+
+def validate(pairs: Dict[str, str]) -> List[Tuple[str, str]]: ...
 def read_toml(path: str) -> Dict[str, str]: ...
 def golden_names() -> List[str]: ...
 def golden_case(name: str) -> Tuple[str, Dict[str, str], str, int]: ...
 def separation(
-    pairs: Dict[str, str], digits: int, mu: Optional[str] = None
-) -> Dict[str, Union[List[_Value], List[str], str, List[_Event]]]: ...
-def time(pairs: Dict[str, str], digits: int, theta: str) -> Tuple[_Value, Optional[str]]: ...
+    pairs: Dict[str, str], digits: int, branch: str = ..., part_at: Optional[str] = ...
+) -> _Answer: ...
+def time(
+    pairs: Dict[str, str], digits: int, theta: str, branch: str = ..., part_at: Optional[str] = ...
+) -> _Answer: ...
 def forces(
-    pairs: Dict[str, str], digits: int, theta: str
-) -> Tuple[List[_Value], Optional[str]]: ...
+    pairs: Dict[str, str], digits: int, theta: str, branch: str = ..., part_at: Optional[str] = ...
+) -> _Answer: ...
 def trajectory(
-    pairs: Dict[str, str], digits: int, times: List[str]
-) -> Tuple[List[str], List[List[_Value]], Optional[List[str]]]: ...
+    pairs: Dict[str, str],
+    digits: int,
+    times: List[str],
+    branch: str = ...,
+    part_at: Optional[str] = ...,
+) -> _Answer: ...
 def check(
     csv: str,
     source: str,

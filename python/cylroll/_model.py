@@ -48,8 +48,8 @@ class Model:
     the top, θ0 = 0):
 
     floor
-        ``"roll"`` (no slip), ``"slip"`` (frictionless) or ``"fixed"``
-        (cylinder 1 held still).
+        ``"roll"`` (no slip: μ = ∞), ``"slip"`` (frictionless: μ = 0) or
+        ``"fixed"`` (cylinder 1 held still).
     contact
         between the cylinders: ``"roll"`` or ``"slip"``.
     m1, m2, r1, r2
@@ -66,11 +66,15 @@ class Model:
         the common rolling rate fixing the conserved momenta: the value φ̇1
         takes whenever θ̇ = 0 (0 for a fixed floor).
     mu_floor, mu_contact
-        finite Coulomb friction at the floor and between the cylinders:
-        a number >= 0 (static = kinetic), ``"S,K"`` or a pair ``(S, K)``
-        (static S >= kinetic K), ``"inf"`` (exactly ``roll``) or 0 (exactly
-        ``slip``). ``None`` (the default): the ideal contact of ``floor`` /
-        ``contact``. A coefficient applies to a rolling base.
+        Coulomb friction at the floor and between the cylinders: a number
+        >= 0 (static = kinetic), ``"S,K"`` or a pair ``(S, K)`` (static S >=
+        kinetic K), ``"inf"`` (exactly ``roll``) or 0 (exactly ``slip``).
+        ``None`` (the default): the contact of ``floor`` / ``contact``. The
+        ideal contacts are the limits of Coulomb friction: every model has
+        the same answers (events, free flight, the first impact, columns).
+    mu
+        Coulomb friction at both contacts (the floor's unless it is
+        ``"fixed"``); not together with ``mu_floor`` / ``mu_contact``.
     allow_float
         accept ``float`` parameters as their exact binary values.
 
@@ -83,7 +87,7 @@ class Model:
     '1.04719755119659774615421446109'
     """
 
-    __slots__ = ("_pairs", "_echo", "_friction")
+    __slots__ = ("_pairs", "_echo")
 
     def __init__(
         self,
@@ -102,6 +106,7 @@ class Model:
         omega0: Number = 0,
         mu_floor: Mu = None,
         mu_contact: Mu = None,
+        mu: Mu = None,
         allow_float: bool = False,
     ) -> None:
         if not isinstance(floor, str):
@@ -113,6 +118,12 @@ class Model:
         pairs: Dict[str, str] = {"floor": floor, "contact": contact}
         for k, v in nums.items():
             pairs[k] = exact_text(k, v, allow_float)
+        if mu is not None:
+            if mu_floor is not None or mu_contact is not None:
+                raise TypeError("give mu, or mu_floor and mu_contact, not both")
+            if floor.strip().lower() != "fixed":
+                mu_floor = mu
+            mu_contact = mu
         if mu_floor is not None:
             pairs["mu_floor"] = mu_text("mu_floor", mu_floor, allow_float)
         if mu_contact is not None:
@@ -120,10 +131,9 @@ class Model:
         self._init(pairs)
 
     def _init(self, pairs: Dict[str, str]) -> None:
-        echo, friction = _cylroll.validate(pairs)
+        echo = _cylroll.validate(pairs)
         object.__setattr__(self, "_pairs", dict(pairs))
         object.__setattr__(self, "_echo", dict(echo))
-        object.__setattr__(self, "_friction", friction)
 
     @classmethod
     def _from_pairs(cls, pairs: Dict[str, str]) -> "Model":
@@ -144,8 +154,16 @@ class Model:
 
     def replace(self, *, allow_float: bool = False, **changes: Any) -> "Model":
         """A copy with some parameters changed (the constructor's keywords;
-        ``mu_floor=None`` removes a coefficient)."""
+        ``mu_floor=None`` removes a coefficient; ``mu`` sets both)."""
         pairs = dict(self._pairs)
+        if "mu" in changes:
+            mu = changes.pop("mu")
+            if "mu_floor" in changes or "mu_contact" in changes:
+                raise TypeError("give mu, or mu_floor and mu_contact, not both")
+            held = str(changes.get("floor", pairs.get("floor", "roll"))).strip().lower() == "fixed"
+            if not held:
+                changes["mu_floor"] = mu
+            changes["mu_contact"] = mu
         for k, v in changes.items():
             if k in ("floor", "contact"):
                 pairs[k] = v
@@ -164,19 +182,27 @@ class Model:
 
     @property
     def params(self) -> Dict[str, str]:
-        """The model as exact text, in the library's order (``floor``,
-        ``contact``, ``m1`` … ``omega0``): rationals in lowest terms,
-        angles as multiples of π where given so."""
+        """The model as exact text, in the library's order: the laws
+        (``floor``, ``contact``: ``roll``, ``slip``, ``fixed`` or ``coulomb``;
+        ``mu_floor``, ``mu_contact``: ``inf``, ``0``, μ or ``S,K``, ``none``
+        for a held cylinder), then ``m1`` … ``omega0``: rationals in lowest
+        terms, angles as multiples of π where given so."""
         return dict(self._echo)
 
     @property
+    def laws(self) -> Dict[str, str]:
+        """The law of each contact: ``{"floor": …, "contact": …, "mu_floor":
+        …, "mu_contact": …}`` (the first four keys of :attr:`params`)."""
+        return {k: self._echo[k] for k in ("floor", "contact", "mu_floor", "mu_contact")}
+
+    @property
     def friction(self) -> Optional[Dict[str, str]]:
-        """The Coulomb laws ``{"mu_floor": …, "mu_contact": …}`` (``"inf"``
-        for a rolling contact, ``"S,K"`` for static ≠ kinetic), or ``None``
-        when no contact has finite friction (the ideal models)."""
-        if self._friction is None:
+        """The coefficients ``{"mu_floor": …, "mu_contact": …}`` when some
+        contact has Coulomb friction, else ``None`` (the ideal models, the
+        limits μ = ∞ and μ = 0)."""
+        if "coulomb" not in (self._echo["floor"], self._echo["contact"]):
             return None
-        return {"mu_floor": self._friction[0], "mu_contact": self._friction[1]}
+        return {"mu_floor": self._echo["mu_floor"], "mu_contact": self._echo["mu_contact"]}
 
     def to_dict(self) -> Dict[str, str]:
         """The keys this model was built from (a ``--params`` file's keys)."""
@@ -184,12 +210,10 @@ class Model:
 
     def __repr__(self) -> str:
         items = [f"{k}={v!r}" for k, v in self._echo.items()]
-        if self._friction is not None:
-            items += [f"mu_floor={self._friction[0]!r}", f"mu_contact={self._friction[1]!r}"]
         return "Model(" + ", ".join(items) + ")"
 
     def _key(self) -> Tuple[Any, ...]:
-        return (tuple(self._echo.items()), self._friction)
+        return tuple(self._echo.items())
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Model) and self._key() == other._key()
@@ -202,27 +226,31 @@ class Model:
 
     # --- the questions
 
-    def separation(self, digits: int = 30, *, mu: Optional[Number] = None) -> Separation:
-        """Where and when the cylinders part.
+    def separation(self, digits: int = 30, *, branch: str = "stay",
+                   part_at: Optional[Number] = None) -> Separation:
+        """The motion to its end, for every contact law: the events
+        (:attr:`Separation.events`: slip onsets, sticks, reversals, the
+        branch point ``indeterminate``, ``separation``, the ``impact``), and
+        ``theta_s``, ``t_s`` (None for a start from rest exactly at the top,
+        where every time is infinite and θs is the limit θ0 → 0+),
+        ``work_s`` (energy dissipated by friction up to separation),
+        ``theta_indeterminate``, ``t_indeterminate`` (where parting becomes
+        lawful while the cylinders still press on each other: from there the
+        rigid-body motion is not unique), the first impact (``t_impact``,
+        ``x1_impact``, … ``psi2_dot_impact``); for the ideal models on the
+        ``stay`` branch also the closed forms' findings (``N1_min``,
+        ``mu_floor_max``, ``theta_phi1dot_zero``, ``F21_at_s``, …).
 
-        Ideal contacts: ``theta_s`` (where N12 first vanishes), ``t_s`` (None
-        for a start from rest exactly at the top, where every time is
-        infinite; θs is then the limit θ0 → 0+), and the findings of the
-        command line (``theta_phi1dot_zero``, ``theta_phi1_zero``,
-        ``F21_at_s``, ``theta_N1_zero``; with ``mu``, the ideal-rolling
-        diagnostic, ``theta_slip_floor`` / ``theta_slip_contact``: where
-        rolling would first need more friction than μ).
+        ``branch``: ``"stay"`` (the contact persists while it can; the limit
+        of stiff compliant contact) or ``"part"`` (the cylinders part at the
+        first instant they may, as velocity-level complementarity engines
+        do); ``part_at``: part where θ reaches this angle (inside the window
+        where parting is lawful).
 
-        With finite friction (``mu_floor`` / ``mu_contact``): ``theta_s``,
-        ``t_s``, ``work_s`` (energy dissipated up to separation), the first
-        impact (``t_impact``, ``x1_impact``, … ``psi2_dot_impact``), the
-        start mode and the event list (:attr:`Separation.events`).
-
-        Raises :class:`InvalidParameterError`, :class:`NotPhysicalError`
-        (e.g. cylinders that never part), :class:`VerificationError`.
+        Raises :class:`InvalidParameterError`, :class:`NotPhysicalError`,
+        :class:`VerificationError`.
         """
-        mu_t = None if mu is None else exact_text("mu", mu)
-        d = _cylroll.separation(self._pairs, _digits(digits), mu_t)
+        d = _cylroll.separation(self._pairs, _digits(digits), *_branch(branch, part_at))
         return Separation._build(self, digits, d)
 
     def enclose(self, what: str = "separation", theta: Optional[Number] = None,
@@ -249,7 +277,8 @@ class Model:
         rows = _cylroll.enclose(self._pairs, _digits(digits), what, th)
         return [Enclosure(*r) for r in rows]
 
-    def time(self, theta: Number, digits: int = 30) -> Value:
+    def time(self, theta: Number, digits: int = 30, *, branch: str = "stay",
+             part_at: Optional[Number] = None) -> Value:
         """t(θ): the time from the start until θ first reaches ``theta``
         (an exact angle: ``"pi/4"``, ``"0.9"``, a Fraction, …; a float is read
         as the decimal it prints as). The angle must lie between θ0 and the
@@ -259,17 +288,21 @@ class Model:
         :class:`NotPhysicalError` (a start from rest exactly at the top:
         infinite), :class:`VerificationError`.
         """
-        v, mode = _cylroll.time(self._pairs, _digits(digits), time_text("theta", theta))
-        return Value._from(v, mode)
+        d = _cylroll.time(self._pairs, _digits(digits), time_text("theta", theta),
+                          *_branch(branch, part_at))
+        return Value._from(d["values"][0], d["mode"])
 
-    def forces(self, theta: Number, digits: int = 30) -> Forces:
+    def forces(self, theta: Number, digits: int = 30, *, branch: str = "stay",
+               part_at: Optional[Number] = None) -> Forces:
         """The state where θ first reaches ``theta``: ``F1``, ``N1``, ``F21``,
         ``N12``, ``theta_dot``, ``theta_ddot``, ``mu_floor`` = \\|F1\\|/N1,
-        ``mu_contact`` = \\|F21\\|/N12, and with friction ``s1``, ``s12``
-        (slip speeds) and ``work`` (energy dissipated), with the mode there
-        (:attr:`Forces.mode`)."""
-        vals, mode = _cylroll.forces(self._pairs, _digits(digits), time_text("theta", theta))
-        return Forces._build(self, digits, vals, mode)
+        ``mu_contact`` = \\|F21\\|/N12, ``s1``, ``s12`` (slip speeds) and
+        ``work`` (energy dissipated), with the mode there
+        (:attr:`Forces.mode`); for the ideal models also the most friction
+        each rolling contact needs over [θ0, θ]."""
+        d = _cylroll.forces(self._pairs, _digits(digits), time_text("theta", theta),
+                            *_branch(branch, part_at))
+        return Forces._build(self, digits, d["values"], d["mode"])
 
     def trajectory(
         self,
@@ -278,19 +311,23 @@ class Model:
         *,
         t_end: Optional[Number] = None,
         steps: Optional[int] = None,
+        branch: str = "stay",
+        part_at: Optional[Number] = None,
     ) -> Trajectory:
-        """The motion at the given times (ascending, >= 0): one row per time
-        with the columns ``t, theta, theta_dot, theta_ddot, phi1, phi2, x1,
-        x2, y2, F1, N1, F21, N12`` (with friction also ``s1, s12, work`` and a
-        mode per row; through every phase up to the first impact).
+        """The motion at the given times (ascending, >= 0), through every
+        phase up to the first impact, for every contact law: one row per
+        time with the columns ``t, theta, theta_dot, theta_ddot, phi1, phi2,
+        x1, x2, y2, x1_dot, phi1_dot, x2_dot, y2_dot, phi2_dot, F1, N1, F21,
+        N12, s1, s12, work`` and a mode per row (``"stick/slip+"``,
+        ``"flight"``), and the events up to the last time.
 
         ``times`` may be exact numbers or floats (a float is read as the
         decimal it prints as: ``np.linspace(0, 5, 101)`` gives 0.05, 0.1, …
         exactly), or give ``t_end`` and ``steps`` for the exact grid
         t_i = i·t_end/steps, i = 0 … steps.
 
-        Raises :class:`InvalidParameterError` (a time after separation — with
-        friction after the impact —, a negative time),
+        Raises :class:`InvalidParameterError` (a time after the first impact,
+        a negative time),
         :class:`NotPhysicalError` (a start from rest exactly at the top),
         :class:`VerificationError`.
         """
@@ -309,8 +346,14 @@ class Model:
             if isinstance(times, (str, bytes)):
                 raise TypeError("times: expected a sequence of numbers, got a string")
             texts = [time_text("times", t) for t in times]
-        cols, rows, modes = _cylroll.trajectory(self._pairs, _digits(digits), texts)
-        return Trajectory._build(self, digits, cols, rows, modes)
+        d = _cylroll.trajectory(self._pairs, _digits(digits), texts, *_branch(branch, part_at))
+        return Trajectory._build(self, digits, d)
+
+
+def _branch(branch: str, part_at: Optional[Number]) -> Tuple[str, Optional[str]]:
+    if not isinstance(branch, str):
+        raise TypeError("branch: expected 'stay' or 'part'")
+    return branch, None if part_at is None else time_text("part_at", part_at)
 
 
 def _grid_point(t_end: str, i: int, steps: int) -> str:

@@ -153,13 +153,15 @@ class _Values(Mapping[str, Value]):
 
 
 class Event:
-    """One event of a motion with friction.
+    """One event of a motion (every contact law).
 
-    ``kind``: ``slip_onset``, ``stick``, ``slip_reversal``, ``separation``,
-    ``lift_off`` or ``impact``; ``contact``: ``"floor"``, ``"contact"`` or
-    ``None``; ``mode``: the mode entered (``"floor stick, contact slip+"``,
-    ``"flight"`` after separation, ``None`` at the end); ``t`` and ``theta``:
-    verified :class:`Value` s.
+    ``kind``: ``slip_onset``, ``stick``, ``slip_reversal``,
+    ``indeterminate`` (a branch point: from here the cylinders may lawfully
+    stay together or part), ``separation``, ``lift_off`` or ``impact``;
+    ``contact``: ``"floor"``, ``"contact"`` or ``None``; ``mode``: the mode
+    entered (``"stick/slip+"`` = floor sticking, contact slipping forwards;
+    ``"flight"`` after separation; ``None`` at the end of the model); ``t``
+    and ``theta``: verified :class:`Value` s.
     """
 
     __slots__ = ("kind", "contact", "mode", "t", "theta")
@@ -178,21 +180,42 @@ class Event:
         return f"<Event {self.kind}{where} at t = {self.t.text}, theta = {self.theta.text}{into}>"
 
 
-class Separation(_Values):
-    """The answer of :meth:`Model.separation`.
+class _Motion:
+    """What every answer about the motion carries: the events, the start
+    mode, how the motion ended, the branch followed and the notes."""
 
-    A mapping name -> :class:`Value` (``theta_s``, ``t_s``, …, in the
-    command line's order) with the values also as attributes; ``t_s`` is
-    ``None`` for a start from rest exactly at the top. ``notes``: findings in
-    words. With friction also ``events`` (a list of :class:`Event`, the
-    impact last), ``start_mode`` and ``impact_surface``; without friction
-    ``events`` is empty and the other two are ``None``.
-    """
-
-    notes: List[str]
     events: List[Event]
     start_mode: Optional[str]
+    end: Optional[str]
     impact_surface: Optional[str]
+    branch: str
+    notes: List[str]
+
+    def _motion(self, d: Dict[str, Any]) -> None:
+        self.events = [Event(k, c, m, Value._from(t), Value._from(th))
+                       for (k, c, m, t, th) in d.get("events", [])]
+        self.start_mode = d.get("start_mode")
+        self.end = d.get("end")
+        self.impact_surface = d.get("impact_surface")
+        self.branch = d.get("branch", "stay")
+        self.notes = list(d.get("notes", []))
+
+    def event(self, kind: str) -> Optional[Event]:
+        """The first event of a kind (``"separation"``, ``"indeterminate"``,
+        …), or ``None``."""
+        return next((e for e in self.events if e.kind == kind), None)
+
+
+class Separation(_Values, _Motion):
+    """The answer of :meth:`Model.separation`.
+
+    A mapping name -> :class:`Value` (``theta_s``, ``t_s``, ``work_s``,
+    ``theta_indeterminate``, …, in the command line's order) with the values
+    also as attributes; ``t_s`` is ``None`` for a start from rest exactly at
+    the top. ``events`` (a list of :class:`Event`, the impact last),
+    ``start_mode``, ``end`` (what ended the motion), ``impact_surface``,
+    ``branch`` and ``notes``, for every contact law.
+    """
 
     @classmethod
     def _build(cls, model: "Model", digits: int, d: Dict[str, Any]) -> "Separation":
@@ -200,16 +223,12 @@ class Separation(_Values):
         s.model = model
         s.digits = digits
         s._values = {raw[0]: Value._from(raw) for raw in d["values"]}
-        s.notes = list(d["notes"])
-        s.start_mode = d.get("start_mode")
-        s.impact_surface = d.get("impact_surface")
-        s.events = [Event(k, c, m, Value._from(t), Value._from(th))
-                    for (k, c, m, t, th) in d.get("events", [])]
+        s._motion(d)
         return s
 
     @property
     def theta_s(self) -> Value:
-        """θs: where N12 first vanishes."""
+        """θs: where the cylinders part."""
         return self._values["theta_s"]
 
     @property
@@ -218,20 +237,26 @@ class Separation(_Values):
         return self._values.get("t_s")
 
     @property
+    def theta_indeterminate(self) -> Optional[Value]:
+        """Where parting becomes lawful while the cylinders still press on
+        each other (``None``: the motion is unique)."""
+        return self._values.get("theta_indeterminate")
+
+    @property
     def friction(self) -> bool:
-        """Whether the motion has finite friction (and so events)."""
-        return self.start_mode is not None
+        """Whether some contact has Coulomb friction."""
+        return self.model.friction is not None
 
     def __str__(self) -> str:
         lines = [f"Separation ({self.digits} digits requested; every digit shown is verified)"]
         lines += _table(list(self._values.values()))
         if self.start_mode is not None:
-            lines.append(f"  start mode: {self.start_mode}")
-            for i, e in enumerate(self.events, 1):
-                where = f" ({e.contact})" if e.contact else ""
-                into = f" -> {e.mode}" if e.mode else ""
-                lines.append(f"  event {i}: {e.kind}{where} at t = {e.t.text}, "
-                             f"theta = {e.theta.text}{into}")
+            lines.append(f"  start mode: {self.start_mode}; branch: {self.branch}")
+        for i, e in enumerate(self.events, 1):
+            where = f" ({e.contact})" if e.contact else ""
+            into = f" -> {e.mode}" if e.mode else ""
+            lines.append(f"  event {i}: {e.kind}{where} at t = {e.t.text}, "
+                         f"theta = {e.theta.text}{into}")
         lines += [f"  note: {n}" for n in self.notes]
         return "\n".join(lines)
 
@@ -241,11 +266,10 @@ class Separation(_Values):
 class Forces(_Values):
     """The answer of :meth:`Model.forces`: a mapping name -> :class:`Value`
     (``F1``, ``N1``, ``F21``, ``N12``, ``theta_dot``, ``theta_ddot``,
-    ``mu_floor``, ``mu_contact``; for the ideal models also the most friction
-    each rolling contact needs over [θ0, θ] and where: ``mu_floor_max``,
-    ``theta_mu_floor_max``, ``mu_contact_max``, ``theta_mu_contact_max``;
-    with friction ``s1``, ``s12``, ``work``) and, with friction, the mode
-    there (``mode``, else ``None``)."""
+    ``mu_floor``, ``mu_contact``, ``s1``, ``s12``, ``work``; for the ideal
+    models also the most friction each rolling contact needs over [θ0, θ]
+    and where: ``mu_floor_max``, ``theta_mu_floor_max``, ``mu_contact_max``,
+    ``theta_mu_contact_max``) and the mode there (``mode``)."""
 
     mode: Optional[str]
 
@@ -269,14 +293,15 @@ class Forces(_Values):
     __repr__ = __str__
 
 
-class Trajectory:
-    """The answer of :meth:`Model.trajectory`: a table, one row per time.
+class Trajectory(_Motion):
+    """The answer of :meth:`Model.trajectory`: a table, one row per time,
+    the same for every contact law.
 
     ``columns``: the names (``t, theta, theta_dot, theta_ddot, phi1, phi2,
-    x1, x2, y2, F1, N1, F21, N12``; with friction also ``s1, s12, work``);
-    ``rows``: lists of :class:`Value`; ``modes``: with friction the mode of
-    each row (``"stick/slip+"`` = floor sticking, contact slipping forwards;
-    ``"flight"``), else ``None``.
+    x1, x2, y2, x1_dot, phi1_dot, x2_dot, y2_dot, phi2_dot, F1, N1, F21, N12,
+    s1, s12, work``); ``rows``: lists of :class:`Value`; ``modes``: the mode
+    of each row (``"stick/slip+"`` = floor sticking, contact slipping
+    forwards; ``"flight"``); ``events`` up to the last time.
 
     ``traj.column("theta")`` (or ``traj["theta"]``) is a float64 NumPy array;
     ``traj.values("theta")`` the :class:`Value` s; ``traj.errors("theta")``
@@ -287,19 +312,19 @@ class Trajectory:
 
     columns: List[str]
     rows: List[List[Value]]
-    modes: Optional[List[str]]
+    modes: List[str]
     model: "Model"
     digits: int
 
     @classmethod
-    def _build(cls, model: "Model", digits: int, cols: Sequence[str],
-               rows: Sequence[Sequence[_Raw]], modes: Optional[Sequence[str]]) -> "Trajectory":
+    def _build(cls, model: "Model", digits: int, d: Dict[str, Any]) -> "Trajectory":
         t = cls.__new__(cls)
         t.model = model
         t.digits = digits
-        t.columns = list(cols)
-        t.rows = [[Value._from(raw) for raw in r] for r in rows]
-        t.modes = None if modes is None else list(modes)
+        t.columns = list(d["columns"])
+        t.rows = [[Value._from(raw) for raw in r] for r in d["rows"]]
+        t.modes = list(d["modes"])
+        t._motion(d)
         return t
 
     def _index(self, name: str) -> int:
@@ -341,24 +366,23 @@ class Trajectory:
         return {c: self.column(c) for c in self.columns}
 
     def to_pandas(self) -> "pandas.DataFrame":
-        """A pandas DataFrame of float64 columns (and ``mode`` with friction).
+        """A pandas DataFrame of float64 columns and the ``mode`` column.
         Raises ``ImportError`` when pandas is not installed."""
         try:
             import pandas as pd
         except ImportError as e:  # pragma: no cover - depends on the environment
             raise ImportError("Trajectory.to_pandas() needs pandas: pip install pandas") from e
         df = pd.DataFrame(self.to_numpy(), columns=self.columns)
-        if self.modes is not None:
-            df["mode"] = self.modes
+        df["mode"] = self.modes
         return df
 
     def to_csv(self, path: Optional[str] = None) -> str:
-        """The command line's CSV (header, then the verified digits as text;
-        with friction a last ``mode`` column); written to ``path`` if given."""
-        head = list(self.columns) + (["mode"] if self.modes is not None else [])
+        """The command line's CSV (header, then the verified digits as text,
+        the ``mode`` column last); written to ``path`` if given."""
+        head = list(self.columns) + ["mode"]
         lines = [",".join(head)]
         for i, r in enumerate(self.rows):
-            cells = [v.text for v in r] + ([self.modes[i]] if self.modes is not None else [])
+            cells = [v.text for v in r] + [self.modes[i]]
             lines.append(",".join(cells))
         text = "\n".join(lines) + "\n"
         if path is not None:
@@ -372,17 +396,14 @@ class Trajectory:
                 f"({self.digits} digits requested; every digit shown is verified)")
         show = list(range(n)) if n <= 8 else [0, 1, 2, 3, None, n - 3, n - 2, n - 1]
         cols = ["t", "theta", "theta_dot", "N12"]
-        lines = [head, "  " + "  ".join(f"{c:<18}" for c in cols)
-                 + ("  mode" if self.modes is not None else "")]
+        lines = [head, "  " + "  ".join(f"{c:<18}" for c in cols) + "  mode"]
         for i in show:
             if i is None:
                 lines.append("  ...")
                 continue
             r = self.rows[i]
             cells = [r[self.columns.index(c)].text[:18] for c in cols]
-            line = "  " + "  ".join(f"{c:<18}" for c in cells)
-            if self.modes is not None:
-                line += f"  {self.modes[i]}"
+            line = "  " + "  ".join(f"{c:<18}" for c in cells) + f"  {self.modes[i]}"
             lines.append(line)
         return "\n".join(lines)
 

@@ -21,9 +21,9 @@ use cylroll::exact::Exact;
 use cylroll::golden::Case;
 use cylroll::model::input::{self, Pairs, FRICTION_KEYS, MODEL_KEYS};
 use cylroll::model::Model;
-use cylroll::motion::{self, Friction};
+use cylroll::motion::{self, Branch};
 use cylroll::numeric::verify::Verified;
-use cylroll::oracle::{Oracle, FORCE_KEYS, TRAJECTORY_COLUMNS};
+use cylroll::oracle::{self, Answer, Options, Oracle, FORCES_KEYS};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -49,11 +49,12 @@ fn value(v: &Verified) -> Value {
     )
 }
 
-/// A model's exact echo (key, text) and its friction laws (floor, contact).
-type Echo = (Vec<(&'static str, String)>, Option<(String, String)>);
+/// A model's exact echo (key, text), with the laws (`floor`, `contact`,
+/// `mu_floor`, `mu_contact`) first.
+type Echo = Vec<(&'static str, String)>;
 
-/// A trajectory: the column names, one row of values per time, the modes.
-type Table = (Vec<&'static str>, Vec<Vec<Value>>, Option<Vec<String>>);
+/// An event as it crosses into Python: kind, contact, mode entered, t, θ.
+type Event = (String, Option<String>, Option<String>, Value, Value);
 
 fn values(vs: &[Verified]) -> Vec<Value> {
     vs.iter().map(value).collect()
@@ -190,10 +191,9 @@ fn direct<T>(py: Python<'_>, f: impl FnOnce() -> cylroll::Result<T>) -> PyResult
     }
 }
 
-/// The model and its friction laws from key/value pairs, exactly as the
-/// command line builds them: with only ideal laws (`inf`, `0`) the model is
-/// the equal ideal one and the friction `None`.
-fn spec(vals: &Pairs) -> cylroll::Result<(Model, Option<Friction>)> {
+/// The model from key/value pairs, exactly as the command line builds it
+/// (every contact's law from `floor`, `contact`, `mu_floor`, `mu_contact`).
+fn spec(vals: &Pairs) -> cylroll::Result<Model> {
     for k in vals.keys() {
         if !MODEL_KEYS.contains(&k.as_str()) && !FRICTION_KEYS.contains(&k.as_str()) {
             return Err(Error::invalid(
@@ -207,20 +207,78 @@ fn spec(vals: &Pairs) -> cylroll::Result<(Model, Option<Friction>)> {
             ));
         }
     }
-    input::model_and_friction(vals)
+    input::model_from_pairs(vals)
 }
 
 /// Validates a model; returns its exact echo (key, text) in the library's
-/// order and the friction laws as text (`None` without finite friction).
+/// order, the laws first.
 #[pyfunction]
 fn validate(py: Python<'_>, pairs: Pairs) -> PyResult<Echo> {
-    direct(py, || {
-        let (model, fr) = spec(&pairs)?;
-        Ok((
-            model.echo(),
-            fr.map(|f| (f.floor.to_string(), f.contact.to_string())),
-        ))
+    direct(py, || Ok(spec(&pairs)?.echo()))
+}
+
+/// How to answer: digits, and the branch (`stay`, `part`, or an angle to
+/// part at).
+fn options(digits: u32, branch: &str, part_at: Option<&str>) -> cylroll::Result<Options> {
+    let branch = match (part_at, branch) {
+        (Some(a), _) => Branch::PartAt(Exact::parse("part_at", a, true)?),
+        (None, "stay") => Branch::Stay,
+        (None, "part") => Branch::Part,
+        (None, other) => {
+            return Err(Error::invalid(
+                "branch",
+                other,
+                "expected 'stay' (the contact persists while it can) or 'part' (the cylinders \
+                 part at the first instant they may)",
+            ))
+        }
+    };
+    Ok(Options {
+        digits,
+        branch,
+        method: motion::Method::Auto,
     })
+}
+
+fn events(a: &Answer) -> Vec<Event> {
+    a.events
+        .iter()
+        .map(|e| {
+            (
+                e.kind.name().to_string(),
+                e.which.map(|w| w.name().to_string()),
+                e.phase.map(|p| p.tag()),
+                value(&e.t),
+                value(&e.theta),
+            )
+        })
+        .collect()
+}
+
+/// The parts of an answer every question shares, as a dict: `values`,
+/// `notes`, `events`, `start_mode`, `end`, `branch`, `mode` (the phase at an
+/// angle), `routes`.
+fn answer_dict<'py>(py: Python<'py>, a: &Answer) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("values", values(&a.values))?;
+    d.set_item("notes", a.notes.clone())?;
+    d.set_item("events", events(a))?;
+    d.set_item("start_mode", a.start_mode.map(|m| m.tag()))?;
+    d.set_item("end", a.end.map(|e| e.name()))?;
+    d.set_item(
+        "impact_surface",
+        match a.end {
+            Some(motion::End::Impact(s)) => Some(s.name()),
+            _ => None,
+        },
+    )?;
+    d.set_item("branch", a.branch.name())?;
+    d.set_item("mode", a.phase.map(|p| p.tag()))?;
+    d.set_item(
+        "routes",
+        a.routes.iter().map(|r| r.name()).collect::<Vec<_>>(),
+    )?;
+    Ok(d)
 }
 
 /// The model keys of a TOML file (`--params` format: strings or integers).
@@ -279,136 +337,77 @@ fn parse_angle(name: &str, text: &str) -> cylroll::Result<Exact> {
     Exact::parse(name, text, true)
 }
 
-/// `separation`: the verified values in order, the notes, and with friction
-/// the start mode, the impact surface and the events
-/// `(kind, contact, mode, t, theta)`.
+/// `separation`: the motion to its end (see [`answer_dict`]).
 #[pyfunction]
-#[pyo3(signature = (pairs, digits, mu=None))]
+#[pyo3(signature = (pairs, digits, branch="stay".to_string(), part_at=None))]
 fn separation<'py>(
     py: Python<'py>,
     pairs: Pairs,
     digits: u32,
-    mu: Option<String>,
+    branch: String,
+    part_at: Option<String>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    type Event = (String, Option<String>, Option<String>, Value, Value);
-    type Out = (
-        Vec<Value>,
-        Vec<String>,
-        Option<(String, String, Vec<Event>)>,
-    );
-    let out: Out = detached(py, move || {
-        let (model, fr) = spec(&pairs)?;
-        if let Some(fr) = fr {
-            if let Some(m) = mu {
-                return Err(Error::invalid(
-                    "mu",
-                    m,
-                    "is the ideal-rolling diagnostic; with mu_floor/mu_contact the slip itself \
-                     is computed (see the events)",
-                ));
-            }
-            let ans = motion::answer::separation(&model, &fr, digits)?;
-            let events = ans
-                .events
-                .iter()
-                .map(|e| {
-                    (
-                        e.kind.name().to_string(),
-                        e.which.map(|w| w.name().to_string()),
-                        e.mode.clone(),
-                        value(&e.t),
-                        value(&e.theta),
-                    )
-                })
-                .collect();
-            let mut notes = ans.notes;
-            notes.insert(
-                0,
-                format!("the first impact is on the {}", ans.impact_surface),
-            );
-            return Ok((
-                values(&ans.values),
-                notes,
-                Some((ans.start_mode, ans.impact_surface.to_string(), events)),
-            ));
-        }
-        let mu = mu.map(|s| Exact::parse("mu", &s, false)).transpose()?;
-        let mut o = Oracle::new(&model, digits)?.with_mu(mu)?;
-        let sep = o.separation()?;
-        let mut vals = vec![value(&sep.theta_s)];
-        vals.extend(sep.t_s.as_ref().map(value));
-        vals.extend(values(&sep.extra));
-        Ok((vals, sep.notes, None))
+    let a = detached(py, move || {
+        let model = spec(&pairs)?;
+        oracle::separation(&model, &options(digits, &branch, part_at.as_deref())?)
     })?;
-    let d = PyDict::new(py);
-    d.set_item("values", out.0)?;
-    d.set_item("notes", out.1)?;
-    if let Some((start_mode, surface, events)) = out.2 {
-        d.set_item("start_mode", start_mode)?;
-        d.set_item("impact_surface", surface)?;
-        d.set_item("events", events)?;
-    }
-    Ok(d)
+    answer_dict(py, &a)
 }
 
-/// `time`: the time at which θ first reaches `theta`, and with friction the
-/// mode there.
+/// `time`: the time at which θ first reaches `theta`, and the mode there.
 #[pyfunction]
-fn time(
-    py: Python<'_>,
+#[pyo3(signature = (pairs, digits, theta, branch="stay".to_string(), part_at=None))]
+fn time<'py>(
+    py: Python<'py>,
     pairs: Pairs,
     digits: u32,
     theta: String,
-) -> PyResult<(Value, Option<String>)> {
-    detached(py, move || {
-        let (model, fr) = spec(&pairs)?;
+    branch: String,
+    part_at: Option<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let a = detached(py, move || {
+        let model = spec(&pairs)?;
         let th = parse_angle("theta", &theta)?;
-        match fr {
-            Some(fr) => {
-                let (t, mode) = motion::answer::time_at(&model, &fr, digits, &th)?;
-                Ok((value(&t), Some(mode)))
-            }
-            None => Ok((value(&Oracle::new(&model, digits)?.time_at(&th)?), None)),
-        }
-    })
+        oracle::time(&model, &th, &options(digits, &branch, part_at.as_deref())?)
+    })?;
+    answer_dict(py, &a)
 }
 
-/// `forces`: the forces and rates where θ first reaches `theta` (the keys
-/// of the command line's `forces`, with the ideal models the most friction
-/// needed so far), and with friction the mode there.
+/// `forces`: the forces, rates, friction needed, slip speeds and work where
+/// θ first reaches `theta` (and for the ideal models the most friction
+/// needed so far), and the mode there.
 #[pyfunction]
-fn forces(
-    py: Python<'_>,
+#[pyo3(signature = (pairs, digits, theta, branch="stay".to_string(), part_at=None))]
+fn forces<'py>(
+    py: Python<'py>,
     pairs: Pairs,
     digits: u32,
     theta: String,
-) -> PyResult<(Vec<Value>, Option<String>)> {
-    detached(py, move || {
-        let (model, fr) = spec(&pairs)?;
+    branch: String,
+    part_at: Option<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let a = detached(py, move || {
+        let model = spec(&pairs)?;
         let th = parse_angle("theta", &theta)?;
-        match fr {
-            Some(fr) => {
-                let (v, mode) = motion::answer::forces_at(&model, &fr, digits, &th)?;
-                Ok((values(&v), Some(mode)))
-            }
-            None => {
-                let mut o = Oracle::new(&model, digits)?;
-                let mut v = o.forces_at(&th)?;
-                debug_assert_eq!(v.len(), FORCE_KEYS.len());
-                // the most friction each rolling contact needs over [θ0, θ]
-                v.extend(o.friction_needed(&th)?);
-                Ok((values(&v), None))
-            }
-        }
-    })
+        oracle::forces(&model, &th, &options(digits, &branch, part_at.as_deref())?)
+    })?;
+    answer_dict(py, &a)
 }
 
-/// `trajectory`: the column names, one row of values per time, and with
-/// friction the mode of each row.
+/// `trajectory`: the answer's dict with `columns`, `rows` (one list of
+/// values per time) and `modes` (the phase of each row).
 #[pyfunction]
-fn trajectory(py: Python<'_>, pairs: Pairs, digits: u32, times: Vec<String>) -> PyResult<Table> {
-    detached(py, move || {
-        let (model, fr) = spec(&pairs)?;
+#[pyo3(signature = (pairs, digits, times, branch="stay".to_string(), part_at=None))]
+fn trajectory<'py>(
+    py: Python<'py>,
+    pairs: Pairs,
+    digits: u32,
+    times: Vec<String>,
+    branch: String,
+    part_at: Option<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let a = detached(py, move || {
+        let model = spec(&pairs)?;
         let times: Vec<Exact> = times
             .iter()
             .map(|t| Exact::parse("times", t, false))
@@ -416,19 +415,19 @@ fn trajectory(py: Python<'_>, pairs: Pairs, digits: u32, times: Vec<String>) -> 
         if times.is_empty() {
             return Err(Error::invalid("times", "", "give at least one time"));
         }
-        match fr {
-            Some(fr) => {
-                let ans = motion::answer::trajectory(&model, &fr, digits, &times)?;
-                let rows = ans.rows.iter().map(|r| values(r)).collect();
-                Ok((motion::columns(), rows, Some(ans.modes)))
-            }
-            None => {
-                let rows = Oracle::new(&model, digits)?.trajectory(&times)?;
-                let rows = rows.iter().map(|r| values(r)).collect();
-                Ok((TRAJECTORY_COLUMNS.to_vec(), rows, None))
-            }
-        }
-    })
+        oracle::trajectory(&model, &times, &options(digits, &branch, part_at.as_deref())?)
+    })?;
+    let d = answer_dict(py, &a)?;
+    d.set_item("columns", motion::COLUMNS.to_vec())?;
+    d.set_item(
+        "rows",
+        a.rows.iter().map(|r| values(&r.values)).collect::<Vec<_>>(),
+    )?;
+    d.set_item(
+        "modes",
+        a.rows.iter().map(|r| r.phase.tag()).collect::<Vec<_>>(),
+    )?;
+    Ok(d)
 }
 
 /// An enclosure as the Python side takes it: (name, proved text, proved
@@ -462,7 +461,7 @@ fn enclose(
     theta: Option<String>,
 ) -> PyResult<Vec<Enclosure>> {
     detached(py, move || {
-        let (model, fr) = spec(&pairs)?;
+        let model = spec(&pairs)?;
         match (what.as_str(), theta.is_some()) {
             ("separation", false) | ("time", true) | ("forces", true) => {}
             _ => {
@@ -473,14 +472,14 @@ fn enclose(
                 ))
             }
         }
-        if let Some(fr) = fr {
+        let Some(ideal) = model.ideal() else {
             // with friction: where sticking ends, from a start where both
             // contacts stick (the command line's separation --rigorous)
             if what != "separation" || theta.is_some() {
                 return Err(cylroll::oracle::rigorous::unsupported("with friction"));
             }
-            let ans = motion::answer::separation(&model, &fr, digits)?;
-            let slots = cylroll::oracle::rigorous::stick_end_proved(&model, &fr, &ans, digits)
+            let ans = oracle::separation(&model, &Options::digits(digits))?;
+            let slots = cylroll::oracle::rigorous::stick_end_proved(&model, &ans, digits)
                 .map_err(|why| {
                     Error::not_physical(format!("with friction nothing is enclosed: {why}"))
                 })?;
@@ -489,8 +488,8 @@ fn enclose(
                 .filter_map(|(_, _, pv)| pv)
                 .map(|v| enclosure(&v, digits))
                 .collect());
-        }
-        let mut o = Oracle::new(&model, digits)?;
+        };
+        let mut o = Oracle::new(&ideal, digits)?;
         let th = theta.map(|t| parse_angle("theta", &t)).transpose()?;
         // the command line's retry: twice the precision where digits fall
         // short, the first result kept if the second fails
@@ -549,12 +548,11 @@ fn check<'py>(
             Some(p) => (p, String::new(), 40),
             None => case_parts(&case_name, golden_text(&case_name)?)?,
         };
-        let (model, friction) = spec(&pairs)?;
+        let model = spec(&pairs)?;
         let case = Case {
             name: case_name,
             description,
             model,
-            friction,
             steps,
         };
         run_check(&csv, &source, &case, rtol, atol, digits)
@@ -605,10 +603,8 @@ fn check<'py>(
 fn _cylroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MODEL_KEYS", MODEL_KEYS.to_vec())?;
     m.add("FRICTION_KEYS", FRICTION_KEYS.to_vec())?;
-    m.add("TRAJECTORY_COLUMNS", TRAJECTORY_COLUMNS.to_vec())?;
-    m.add("FRICTION_COLUMNS", motion::columns())?;
-    m.add("FORCE_KEYS", FORCE_KEYS.to_vec())?;
-    m.add("FRICTION_FORCE_KEYS", motion::answer::force_keys())?;
+    m.add("COLUMNS", motion::COLUMNS.to_vec())?;
+    m.add("FORCE_KEYS", FORCES_KEYS.to_vec())?;
     m.add("MAX_DIGITS", cylroll::oracle::MAX_DIGITS)?;
     m.add("LIBRARY_VERSION", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;

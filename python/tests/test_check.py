@@ -27,7 +27,7 @@ def test_the_golden_csv_passes(golden_dir, name):
 
 def test_a_perturbed_candidate_fails(golden_dir):
     cols = _golden_columns(golden_dir / "data" / "mujoco_main.csv")
-    cand = {c: np.array([float(x) for x in v]) for c, v in cols.items()}
+    cand = {c: np.array([float(x) for x in v]) for c, v in cols.items() if c != "mode"}
     cand["theta_dot"][17] *= 1 + 1e-5
     with pytest.raises(AssertionError) as e:
         assert_matches_oracle(cand, case="mujoco_main", rtol=1e-8, atol=1e-10)
@@ -78,8 +78,15 @@ def test_malformed_candidates():
         cylroll.check(42, "mujoco_main")
 
 
-def test_friction_candidate_with_modes(golden_dir):
-    # a friction golden CSV carries a mode column: ignored, the numbers judged
+def test_the_mode_column_is_compared(golden_dir):
+    # a golden CSV carries a mode column: compared with the oracle's phase of each row
     rep = cylroll.check(golden_dir / "data" / "main_mu_1.csv", "main_mu_1", rtol=1e-15)
     assert rep.passed
-    assert [c.name for c in rep.columns][-3:] == ["s1", "s12", "work"]
+    assert [c.name for c in rep.columns][-4:] == ["s1", "s12", "work", "mode"]
+    # a candidate that says flight while the contacts stick fails, at that row
+    cols = _golden_columns(golden_dir / "data" / "main_mu_1.csv")
+    cand = {"t": np.array([float(x) for x in cols["t"]]), "mode": list(cols["mode"])}
+    cand["mode"][2] = "flight"
+    rep = cylroll.check(cand, "main_mu_1")
+    assert not rep.passed and rep.first_failure.row == 3
+    assert rep.first_failure.column == "mode" and rep.first_failure.oracle == "stick/stick"

@@ -61,8 +61,10 @@ def test_bad_requests():
         m.trajectory([1, "-1"])
     with pytest.raises(cylroll.InvalidParameterError):
         m.trajectory(t_end=0, steps=3)
-    with pytest.raises(cylroll.InvalidParameterError, match="mu"):
-        m.replace(mu_contact="0.3").separation(mu="0.3")
+    with pytest.raises(cylroll.InvalidParameterError, match="contradicts contact = slip"):
+        m.replace(contact="slip", mu_contact="0.3")
+    with pytest.raises(cylroll.InvalidParameterError, match="branch"):
+        m.separation(branch="sideways")
 
 
 def test_no_physical_answer():

@@ -10,11 +10,13 @@ import cylroll
 def test_defaults_are_the_paper_main_case():
     m = cylroll.Model()
     assert m.params == {
-        "floor": "roll", "contact": "roll", "m1": "1", "m2": "1", "r1": "1", "r2": "1",
+        "floor": "roll", "contact": "roll", "mu_floor": "inf", "mu_contact": "inf",
+        "m1": "1", "m2": "1", "r1": "1", "r2": "1",
         "k1": "0.5", "k2": "0.5", "g": "1", "theta0": "0", "thetadot0": "0", "omega0": "0",
     }
+    assert m.laws == {"floor": "roll", "contact": "roll", "mu_floor": "inf", "mu_contact": "inf"}
     assert m.friction is None
-    assert repr(m).startswith("Model(floor='roll', contact='roll', m1='1'")
+    assert repr(m).startswith("Model(floor='roll', contact='roll', mu_floor='inf'")
 
 
 @pytest.mark.parametrize("theta0", ["1/10", "0.1", Fraction(1, 10), Decimal("0.1"),

@@ -51,10 +51,12 @@ def test_fixed_lower_cylinder_forces_closed_form():
         assert abs(f.theta_dot.decimal() ** 2 - th2) < Decimal("1e-38")
         assert abs(f["N12"].decimal() - n12) < Decimal("1e-38")
     assert f["F1"].text == "0" or f.F1.digits > 0
-    assert f.mode is None
+    assert f.mode == "held/stick"
     assert list(f) == ["F1", "N1", "F21", "N12", "theta_dot", "theta_ddot", "mu_floor",
-                       "mu_contact", "theta_mu_floor_max", "mu_floor_max",
-                       "theta_mu_contact_max", "mu_contact_max"]
+                       "mu_contact", "s1", "s12", "work", "theta_mu_floor_max",
+                       "mu_floor_max", "theta_mu_contact_max", "mu_contact_max"]
+    # a rolling contact does not slip, and nothing is dissipated
+    assert (f["s1"].text, f["s12"].text, f["work"].text) == ("0", "0", "0")
 
 
 def test_friction_needed_so_far_bounds_a_scan():
@@ -77,7 +79,7 @@ def test_friction_needed_so_far_bounds_a_scan():
 def test_time_and_trajectory_agree():
     m = cylroll.Model(theta0="1/10")
     t = m.time("0.9", digits=30)
-    assert t.digits == 30 and t.name == "t" and t.mode is None
+    assert t.digits == 30 and t.name == "t" and t.mode == "stick/stick"
     row = m.trajectory([t.text], digits=30)
     assert abs(row.values("theta")[0].decimal() - Decimal("0.9")) < Decimal("1e-28")
     assert float(t) == pytest.approx(4.9, abs=0.2)
@@ -113,7 +115,8 @@ def test_separation_reproduces_the_golden_json(golden_dir):
 def _energy(p, row):
     """Total energy of the roll/roll system from one trajectory row, from the README's
     conventions: x1 = r1 φ1, (x2, y2) = (x1 + r sin θ, r1 + r cos θ), φ2 − θ the
-    counter-clockwise rotation of cylinder 2 with r2 φ2 = r1(φ1 − θ). With T the kinetic
+    counter-clockwise rotation of cylinder 2 with r2 φ2 = r1(φ1 − θ + θ0) (φ2 = 0 at
+    t = 0). With T the kinetic
     energy in (φ1, θ), the momentum conjugate to φ1 is
         p = r1² D φ̇1 − m2 r1 r θ̇ (k2 − cos θ),  D = m1 (1 + k1) + m2 (1 + k2),
     conserved (φ1 is cyclic) and equal to r1² D ω0 (ω0 = φ̇1 where θ̇ = 0), so
@@ -154,16 +157,22 @@ def test_energy_is_conserved_along_a_trajectory():
         scale = p["m2"] * p["g"] * (p["r1"] + p["r2"])
         drift = max(abs(e - e0) for e in energies) / scale
         assert drift < Decimal("1e-26"), drift
-        # the derivation's φ̇1 against the phi1 column (central differences, O(h²))
+        # the derivation's φ̇1 against the phi1_dot column, and against the phi1
+        # column by central differences (O(h²))
         h = Decimal(t_s.text) * Decimal("0.999") / steps
         for i in range(1, len(rows) - 1):
             fd = (rows[i + 1]["phi1"] - rows[i - 1]["phi1"]) / (2 * h)
             assert abs(fd - _energy(p, rows[i])[1]) < Decimal("1e-2") * (1 + abs(fd))
-        # the constraints the columns obey
+        for r in rows:
+            assert abs(r["phi1_dot"] - _energy(p, r)[1]) < Decimal("1e-27")
+        # the constraints the columns obey (φ2 counted from 0 at t = 0)
         for r in rows:
             assert abs(r["x1"] - p["r1"] * r["phi1"]) < Decimal("1e-28")
-            assert abs(p["r2"] * r["phi2"] - p["r1"] * (r["phi1"] - r["theta"])) < \
-                Decimal("1e-28")
+            assert abs(r["x1_dot"] - p["r1"] * r["phi1_dot"]) < Decimal("1e-27")
+            assert abs(p["r2"] * r["phi2"]
+                       - p["r1"] * (r["phi1"] - r["theta"] + p["theta0"])) < Decimal("1e-28")
+            assert abs(p["r2"] * r["phi2_dot"]
+                       - p["r1"] * (r["phi1_dot"] - r["theta_dot"])) < Decimal("1e-27")
     # the same energy in float64 from the NumPy columns
     a = {c: traj.column(c) for c in traj.columns}
     pf = {k: float(v) for k, v in p.items()}
@@ -174,23 +183,23 @@ def test_energy_is_conserved_along_a_trajectory():
 def test_friction_events_and_columns():
     m = cylroll.Model(theta0="1/10", mu_floor="0.3", mu_contact="0.3")
     sep = m.separation(digits=12)
-    assert sep.friction and sep.start_mode == "floor stick, contact stick"
+    assert sep.friction and sep.start_mode == "stick/stick"
     assert [e.kind for e in sep.events] == ["slip_onset", "separation", "impact"]
     onset = sep.events[0]
-    assert onset.contact == "contact" and onset.mode == "floor stick, contact slip+"
+    assert onset.contact == "contact" and onset.mode == "stick/slip+"
     assert onset.theta.text == "0.584216022929"
     assert sep.events[1].t.text == sep.t_s.text and sep.events[1].theta.text == sep.theta_s.text
     assert sep.impact_surface == "floor"
     assert list(sep)[:3] == ["theta_s", "t_s", "work_s"]
     assert "event 1: slip_onset (contact)" in str(sep)
     traj = m.trajectory(t_end="5.5", steps=11, digits=12)
-    assert traj.columns == list(cylroll.FRICTION_COLUMNS)
+    assert traj.columns == list(cylroll.COLUMNS)
     assert traj.modes[0] == "stick/stick" and traj.modes[-1] == "flight"
     assert traj.column("work")[-1] == pytest.approx(float(sep["work_s"]), rel=1e-9)
     f = m.forces("0.7", digits=12)
-    assert f.mode == "floor stick, contact slip+" and float(f["s12"]) > 0
+    assert f.mode == "stick/slip+" and float(f["s12"]) > 0
     t = m.time("0.7", digits=12)
-    assert t.mode == "floor stick, contact slip+"
+    assert t.mode == "stick/slip+"
 
 
 def test_value_type():
@@ -206,15 +215,15 @@ def test_trajectory_table_api():
     traj = m.trajectory(np.linspace(0, 5, 11), digits=20)
     assert traj.values("t")[1].text == "0.5"           # floats read as they print
     arr = traj.to_numpy()
-    assert arr.shape == (11, 13) and arr.dtype == np.float64
+    assert arr.shape == (11, 21) and arr.dtype == np.float64
     assert np.array_equal(arr[:, 1], traj.column("theta"))
     assert np.array_equal(traj["theta"], traj.column("theta"))
     assert (traj.errors("theta") < 1e-19).all()
-    assert traj.to_csv().splitlines()[0] == ",".join(cylroll.TRAJECTORY_COLUMNS)
+    assert traj.to_csv().splitlines()[0] == ",".join(cylroll.COLUMNS + ("mode",))
     assert set(traj.to_dict()) == set(traj.columns)
     with pytest.raises(KeyError):
         traj.column("nope")
-    assert "Trajectory: 11 rows x 13 columns" in str(traj)
+    assert "Trajectory: 11 rows x 21 columns" in str(traj)
     grid = m.trajectory(t_end="1/3", steps=3, digits=10)
     assert [v.text for v in grid.values("t")][0] == "0"
 
@@ -227,12 +236,21 @@ def test_to_pandas():
     assert df["theta"].dtype == np.float64
 
 
-def test_separation_with_mu_diagnostic():
-    sep = cylroll.Model(theta0="1/10").separation(digits=20, mu="0.3")
-    assert "theta_slip_contact" in sep and sep.t_s is not None
-    # the ideal diagnostic agrees with the frictional motion's slip onset
-    fr = cylroll.Model(theta0="1/10", mu_contact="0.3").separation(digits=12)
-    assert fr.events[0].theta.text == round_sig(sep["theta_slip_contact"].decimal(), 12)
+def test_mu_is_coulomb_friction_at_both_contacts():
+    m = cylroll.Model(theta0="1/10", mu="0.3")
+    assert m == cylroll.Model(theta0="1/10", mu_floor="0.3", mu_contact="0.3")
+    assert m.laws == {"floor": "coulomb", "contact": "coulomb", "mu_floor": "0.3",
+                      "mu_contact": "0.3"}
+    # a held cylinder keeps its floor
+    assert cylroll.Model(floor="fixed", mu="0.3").laws["mu_floor"] == "none"
+    # the first event is where rolling first needs mu: the ideal rolling model's
+    # |F21|/N12 is 0.3 exactly there
+    ev = m.separation(digits=20).events[0]
+    assert ev.kind == "slip_onset" and ev.contact == "contact"
+    need = cylroll.Model(theta0="1/10").forces(ev.theta.text, digits=25)["mu_contact"]
+    assert abs(need.decimal() - Decimal("0.3")) < Decimal("1e-18")
+    with pytest.raises(TypeError):
+        cylroll.Model(mu="0.3", mu_floor="0.2")
 
 
 def test_print_of_the_default_separation():

@@ -243,6 +243,41 @@ fn sample(sys: &mut System, t: &Float, y: &[Float]) -> Result<Sample> {
 }
 
 /// The value of a watched function at a sample.
+/// Every watched function at a sample, with sin θ and cos θ computed once
+/// for all the watches that need them (a height, a free normal
+/// acceleration): at high precision a trigonometric call costs more than the
+/// rest of a watch.
+pub fn watch_values<'a>(watches: impl Iterator<Item = &'a Watch>, s: &Sample) -> Vec<Float> {
+    let mut trig: Option<(usize, Float, Float)> = None;
+    let mut sc = |th: usize| -> (Float, Float) {
+        match &trig {
+            Some((i, sn, cs)) if *i == th => (sn.clone(), cs.clone()),
+            _ => {
+                let p = s.q[th].prec();
+                let (sn, cs) = s.q[th].clone().sin_cos(Float::new(p));
+                trig = Some((th, sn.clone(), cs.clone()));
+                (sn, cs)
+            }
+        }
+    };
+    watches
+        .map(|w| match w {
+            Watch::Height { th, r, offset } => {
+                let (_, cs) = sc(*th);
+                cs * r + offset
+            }
+            Watch::FreeNormal { th, r, g, a } => {
+                let p = s.q[*th].prec();
+                let (sn, cs) = sc(*th);
+                let td2 = Float::with_val(p, s.v[*th].square_ref());
+                Float::with_val(p, r * &td2) - Float::with_val(p, g * &cs) - Float::with_val(p, a * &sn)
+            }
+            other => watch_value(other, s),
+        })
+        .collect()
+}
+
+/// The watched function at a sample.
 pub fn watch_value(w: &Watch, s: &Sample) -> Float {
     match w {
         Watch::Multiplier(i) => s.lambda[*i].clone(),

@@ -40,7 +40,7 @@
 //! of more than two cylinders, or pieces that will not converge.
 
 use super::gbs::Stats;
-use super::solve::{watch_value, Event, Hit, Run, Sample, Start, Watch};
+use super::solve::{watch_value, watch_values, Event, Hit, Run, Sample, Start, Watch};
 use crate::error::Result;
 use crate::mechanics::system::{self as sy, Accel, Row, System};
 use crate::model::Floor;
@@ -1020,19 +1020,16 @@ pub fn run(
         pieces += 1;
         // the first sign change of each watched function over the piece
         let end_smp = pc.sample(sys, &pc.len)?;
-        let node_vals: Vec<Vec<Float>> = events
+        // per node, every watch at once (one sin/cos for all that need it)
+        let per_node: Vec<Vec<Float>> = pc
+            .nodes
             .iter()
-            .map(|e| {
-                pc.nodes
-                    .iter()
-                    .map(|(_, s)| watch_value(&e.watch, s))
-                    .collect()
-            })
+            .map(|(_, s)| watch_values(events.iter().map(|e| &e.watch), s))
             .collect();
-        let end_vals: Vec<Float> = events
-            .iter()
-            .map(|e| watch_value(&e.watch, &end_smp))
+        let node_vals: Vec<Vec<Float>> = (0..events.len())
+            .map(|k| per_node.iter().map(|v| v[k].clone()).collect())
             .collect();
+        let end_vals: Vec<Float> = watch_values(events.iter().map(|e| &e.watch), &end_smp);
         let brackets: Vec<Option<(Float, Float)>> = (0..events.len())
             .map(|k| {
                 if events[k].terminal {

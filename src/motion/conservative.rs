@@ -97,6 +97,7 @@ pub fn first_phase(
     let th0w = route.work.start().theta0.to_float(p);
     // δs at p (cached): the closed branch's end
     let (ds, ds_err) = route.delta_s(p)?;
+    crate::cancel::check()?;
     let mut refined: Vec<(Ending, Float, Float)> = vec![(Ending::Separation, ds.clone(), ds_err)];
     // the other events that can end the phase, as roots of polynomials in c
     if !ctx.held {
@@ -186,7 +187,9 @@ pub fn first_phase(
             (route.odd(th), None)
         })
     });
+    crate::cancel::check()?;
     let (t_end, t_err_q) = route.engine(p)?.time(&d_end);
+    crate::cancel::check()?;
     let (cols_end, energy_end) = route.columns_at(&d_end, &t_end, p)?;
     let thd_end = Float::with_val(p, cols_end[2].abs_ref());
     let t_err = if thd_end.is_zero() {
@@ -261,8 +264,42 @@ pub fn first_phase(
             rows.push(point_of(a, energy, mode, Some(err), zero_bits(ctx, mode)));
         }
     }
-    // the state at the end as a sample of the mode's system
-    let end_sample = sample_at(ctx, mode, &end_point)?;
+    // the state at the end as a sample of the mode's system, at the
+    // integrators' working precision: the mode decision there looks a
+    // little ahead of it (second order in 2^−wp/3), so the end must be
+    // known to wp bits, not to the answer's p
+    let wp = ctx.wp;
+    let d_wp = match ending {
+        Ending::Separation => route.delta_s(wp)?.0,
+        Ending::Cone(w) => {
+            let mu = ctx
+                .law(w)
+                .static_coef()
+                .ok_or_else(|| Error::not_physical("internal: a cone without a coefficient"))?;
+            let hp = route.cone_poly(w, &mu);
+            root_or(route.first_root("slip onset", &hp, &ds, wp)?, &d_end, wp)
+        }
+        Ending::LiftOff => {
+            let hp = route.n1_poly();
+            root_or(route.first_root("lift-off", &hp, &ds, wp)?, &d_end, wp)
+        }
+        Ending::BranchPart => {
+            let hp = route.free_normal_poly();
+            root_or(route.first_root("branch point", &hp, &ds, wp)?, &d_end, wp)
+        }
+        Ending::FloorImpact => {
+            let pr = route.work.params();
+            let cf = Float::with_val(wp, Rational::from(&pr.r2 - &pr.r1) / pr.r());
+            Float::with_val(wp, cf.acos_ref()) - route.work.start().theta0.to_float(wp)
+        }
+        Ending::PartAt | Ending::Target => Float::with_val(wp, &d_end),
+    };
+    let (cols_wp, energy_wp) = route.columns_at(&d_wp, &Float::with_val(wp, &t_end), wp)?;
+    let end_sample = sample_at(
+        ctx,
+        mode,
+        &point_of(cols_wp, energy_wp, mode, None, zero_bits(ctx, mode)),
+    )?;
     let theta_err = d_err;
     Ok(Fast {
         rows,
@@ -365,4 +402,10 @@ pub fn sample_at(ctx: &Ctx, mode: Mode, pt: &Point) -> Result<Sample> {
         work: Float::new(wp),
         power: Float::new(wp),
     })
+}
+
+/// A root refined at another precision, or the one found (lifted) where the
+/// refinement found none (the same root, at the edge of the interval).
+fn root_or(found: Option<(Float, Float)>, d: &Float, prec: u32) -> Float {
+    found.map_or_else(|| Float::with_val(prec, d), |(x, _)| x)
 }

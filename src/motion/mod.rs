@@ -425,6 +425,7 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
         _ => Float::with_val(wp, &req.horizon),
     };
     // --- a conservative first phase: the energy route
+    crate::cancel::check()?;
     if req.method == Method::Auto && mode.is_conservative() {
         let route = caches.sticking(model)?;
         let wants = conservative::Wants {
@@ -436,6 +437,7 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
             target: target_theta.as_ref(),
         };
         let fast = conservative::first_phase(&ctx, route, mode, &wants, prec)?;
+        crate::cancel::check()?;
         w.out.routes.push(Route::Energy);
         for e in fast.events {
             w.note(&e.at);
@@ -537,9 +539,10 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
     }
     // --- the other phases: the spectral route in θ, GBS where it declines
     for _ in 0..MAX_MODES {
+        crate::cancel::check()?;
         let mut sys = ctx.system(mode)?;
         // the branch watch (parting becoming lawful) while the contact holds
-        let branch_watch = !ctx.held;
+        let branch_watch = !ctx.held && std::env::var("NOBW").is_err();
         let mut ws = watch::of_mode(&ctx, &sys, mode, branch_watch);
         if let Some(th) = &target_theta {
             ws.events.push(Event {

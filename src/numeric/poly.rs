@@ -187,6 +187,7 @@ pub fn refine_root(
     // the last precision twice: the second step confirms the first
     schedule.push(prec + 8);
     for &q in &schedule {
+        crate::cancel::check()?;
         x.set_prec(q);
         v.set_prec(q);
         d.set_prec(q);

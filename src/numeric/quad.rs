@@ -200,6 +200,16 @@ impl TanhSinh {
         };
         let mut level = 0usize;
         loop {
+            if crate::cancel::cancelled() {
+                // the caller's next check reports the cancellation
+                return QuadResult {
+                    value: Float::with_val(p, f64::NAN),
+                    err: Float::with_val(p, f64::INFINITY),
+                    levels: level as u32,
+                    evals,
+                    converged: false,
+                };
+            }
             self.ensure_level(level);
             let lv = &self.levels[level];
             // a term below cut·|sum| ends a side: the tail beyond it sums to

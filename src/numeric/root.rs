@@ -69,6 +69,7 @@ where
     let mut since_halving = 0u32;
     let mut last_width = Float::with_val(p, &hi - &lo);
     loop {
+        crate::cancel::check()?;
         let width = Float::with_val(p, &hi - &lo);
         if width <= *tol {
             return Ok(Root { lo, hi, evals });

@@ -274,6 +274,10 @@ impl Engine {
             let mut need = ((p as f64 + 20.0) / rho.log2()).ceil() as usize + 12;
             let mut done = None;
             for _ in 0..3 {
+                if crate::cancel::cancelled() {
+                    // the caller's next check reports the cancellation
+                    return None;
+                }
                 let n = cheb::smooth_at_least(need);
                 let roots = self.roots.entry(n).or_insert_with(|| Roots::new(n, p));
                 let half = &mut self.half;
