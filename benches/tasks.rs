@@ -11,18 +11,24 @@
 //!   The task `T3n` (run only when named) times T3 with 10, 100, 1000 and
 //!   10000 output times, for the growth of the cost with the table's size.
 //!
-//! "Warm" reuses one `Oracle` (its node caches filled by the first call), as
-//! the anchors reuse their integrator objects; "cold" is a fresh `Oracle`.
+//! T1, T2, T2b (and the proved T1r, T2r) ask the energy route of the ideal
+//! model directly: "warm" reuses one `Oracle` (its node caches filled by the
+//! first call), as the anchors reuse their integrator objects; "cold" is a
+//! fresh `Oracle`. T3 and T3rows time what a user gets for a table:
+//! `oracle::theta_at_times` and `oracle::trajectory` on the `Model` (the
+//! hybrid motion, verified at two precisions, every column of `cylroll
+//! trajectory`), which keep no state between calls (warm = cold).
 //!
 //! The reference folder is `$CYLROLL_BENCH_REF` or `../shared/bench/results`
 //! relative to the crate.
 
 use cylroll::exact::Exact;
-use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::model::{Contact, Floor, Ideal, Law, Model, Params, Start};
+use cylroll::motion::Phase;
 use cylroll::numeric::decimal::to_sig;
 use cylroll::numeric::verify::Verified;
 use cylroll::oracle::rigorous::Proved;
-use cylroll::oracle::Oracle;
+use cylroll::oracle::{self, Options, Oracle};
 use rug::{Float, Rational};
 use std::path::PathBuf;
 use std::sync::OnceLock;
@@ -76,10 +82,24 @@ fn q(s: &str) -> Exact {
 }
 
 /// Identical solid cylinders, both rolling, from rest at θ0; `m2` the upper mass.
-fn model(m2: i64, theta0: &str) -> Model {
+fn model(m2: i64, theta0: &str) -> Ideal {
     let mut p = Params::identical_solid();
     p.m2 = Rational::from(m2);
-    Model::new(p, Floor::Roll, Contact::Roll, Start::rest(q(theta0))).expect("model")
+    Ideal::new(p, Floor::Roll, Contact::Roll, Start::rest(q(theta0))).expect("model")
+}
+
+/// T3's θ column and phases, checked: every θ the reference's rounding with
+/// all `digits` digits verified, every row with both contacts rolling (t_end
+/// is before separation).
+fn check_t3(task: &str, theta: &[&Verified], phases: &[Phase], digits: u32) {
+    let r = refs();
+    assert_eq!(theta.len(), T3_POINTS, "{task}: rows");
+    assert_eq!(phases.len(), T3_POINTS, "{task}: phases");
+    let rolling = Phase::parse("stick/stick").expect("tag");
+    for (i, (v, ph)) in theta.iter().zip(phases).enumerate() {
+        check(&format!("{task} row {i}"), v, &r.t3[i], digits);
+        assert_eq!(*ph, rolling, "{task} row {i}: phase");
+    }
 }
 
 /// `reference` (a long decimal) rounded to `digits` significant digits.
@@ -135,7 +155,11 @@ const T3N_POINTS: [usize; 4] = [10, 100, 1000, 10000];
 
 struct Task {
     name: &'static str,
+    /// The energy route of the ideal model (T1, T2, T2b, T1r, T2r).
     oracle: Oracle,
+    /// The model a user asks about (T3, T3rows).
+    model: Model,
+    opts: Options,
     times: Vec<Exact>,
 }
 
@@ -152,9 +176,12 @@ impl Task {
         } else {
             Vec::new()
         };
+        let ideal = model(m2, theta0);
         Task {
             name,
-            oracle: Oracle::new(&model(m2, theta0), digits).expect("oracle"),
+            oracle: Oracle::new(&ideal, digits).expect("oracle"),
+            model: Model::from_ideal(&ideal),
+            opts: Options::digits(digits),
             times,
         }
     }
@@ -167,12 +194,13 @@ impl Task {
             "T1r" => self.proved_t1().shown.text,
             "T2r" => self.proved_t2().shown.text,
             "T3" => {
-                let th = self.oracle.theta_at_times(&self.times).expect("T3");
+                let (th, _) =
+                    oracle::theta_at_times(&self.model, &self.times, &self.opts).expect("T3");
                 th[T3_POINTS - 1].text.clone()
             }
             "T3rows" => {
-                let rows = self.oracle.trajectory(&self.times).expect("T3rows");
-                rows[T3_POINTS - 1][1].text.clone()
+                let a = oracle::trajectory(&self.model, &self.times, &self.opts).expect("T3rows");
+                a.rows[T3_POINTS - 1].values[1].text.clone()
             }
             _ => unreachable!(),
         }
@@ -222,17 +250,17 @@ impl Task {
                 d,
             ),
             "T3" => {
-                let th = self.oracle.theta_at_times(&self.times).expect("T3");
-                assert_eq!(th.len(), T3_POINTS);
-                for (i, v) in th.iter().enumerate() {
-                    check(&format!("T3 row {i}"), v, &r.t3[i], d);
-                }
+                let (th, phases) =
+                    oracle::theta_at_times(&self.model, &self.times, &self.opts).expect("T3");
+                check_t3("T3", &th.iter().collect::<Vec<_>>(), &phases, d);
             }
             "T3rows" => {
-                let rows = self.oracle.trajectory(&self.times).expect("T3rows");
-                assert_eq!(rows.len(), T3_POINTS);
-                for (i, row) in rows.iter().enumerate() {
-                    check(&format!("T3rows row {i}"), &row[1], &r.t3[i], d);
+                let a = oracle::trajectory(&self.model, &self.times, &self.opts).expect("T3rows");
+                let theta: Vec<&Verified> = a.rows.iter().map(|row| &row.values[1]).collect();
+                let phases: Vec<Phase> = a.rows.iter().map(|row| row.phase).collect();
+                check_t3("T3rows", &theta, &phases, d);
+                for row in &a.rows {
+                    assert_eq!(row.values.len(), cylroll::motion::COLUMNS.len());
                 }
             }
             _ => unreachable!(),
@@ -286,43 +314,84 @@ fn t3_rows(bencher: divan::Bencher, digits: u32) {
 /// The frictional main case: μ = 0.3 at both contacts, from rest at θ0 =
 /// 1/10, 1000 equally spaced times from 0 to separation (t_s rounded down to
 /// 3 decimals), through the stick and slip phases.
-fn friction_case() -> (Model, cylroll::motion::Friction, Vec<Exact>) {
-    use cylroll::motion::{Friction, Law};
-    let m = model(1, "1/10");
-    let fr = Friction {
-        floor: Law::parse("mu_floor", "0.3").expect("mu"),
-        contact: Law::parse("mu_contact", "0.3").expect("mu"),
-    };
+fn friction_case() -> (Model, Vec<Exact>) {
+    let mu = || Law::parse_mu("mu", "0.3").expect("mu");
+    let m = Model::from_ideal(&model(1, "1/10"))
+        .with_laws(mu(), mu())
+        .expect("model");
     // t_s = 4.92058… (golden/data/main_mu_0_3.json)
     let end = Rational::from((4920, 1000));
     let times: Vec<Exact> = (0..T3_POINTS)
         .map(|i| Exact::rational(&end * Rational::from((i as i64, T3_POINTS as i64 - 1))))
         .collect();
-    (m, fr, times)
+    (m, times)
+}
+
+/// The frictional table's θ column and phases, checked once before timing:
+/// every θ with all `digits` digits verified, the contact sticking and then
+/// slipping (onset at t = 4.156, golden/data/main_mu_0_3.json), never in
+/// flight (the last time is before separation), and θ(4.92) the separation
+/// state of the independent derivation (tests/fixtures/friction_independent.toml,
+/// [main_b2]) carried back by Δt = t_s − 4.92 ≈ 5.9e-4: θs − θ̇s Δt, to the
+/// second-order term θ̈ Δt²/2 < 1e-6.
+fn check_friction_theta(theta: &[&Verified], phases: &[Phase], digits: u32) {
+    assert_eq!(theta.len(), T3_POINTS);
+    assert_eq!(phases.len(), T3_POINTS);
+    for v in theta {
+        assert_eq!(v.digits, digits, "{}", v.text);
+    }
+    let stick = Phase::parse("stick/stick").expect("tag");
+    let slip = Phase::parse("stick/slip+").expect("tag");
+    let first_slip = phases
+        .iter()
+        .position(|p| *p == slip)
+        .expect("a slip phase");
+    assert!(phases[..first_slip].iter().all(|p| *p == stick));
+    assert!(phases[first_slip..].iter().all(|p| *p == slip));
+    // the row at t = 4.156… · 999/4.92 ≈ 843.9: the onset is between rows 843 and 844
+    assert_eq!(first_slip, 844, "slip onset");
+    let (theta_s, theta_dot_s, t_s) = (
+        0.912_091_565_684_723_3,
+        0.553_214_745_511_575_5,
+        4.920_586_699_027_24,
+    );
+    let want = theta_s - theta_dot_s * (t_s - 4.92);
+    let last = theta[T3_POINTS - 1].value.to_f64();
+    assert!(
+        (last - want).abs() < 1e-6,
+        "theta(4.92) = {last}, want {want}"
+    );
 }
 
 /// T3 with friction (issue: within 10× of T3 at the same digits): θ at the
 /// 1000 times, verified.
 #[divan::bench(args = T3_DIGITS, sample_count = 3, sample_size = 1)]
 fn t3_friction(bencher: divan::Bencher, digits: u32) {
-    use cylroll::motion::answer;
-    let (m, fr, times) = friction_case();
+    let (m, times) = friction_case();
+    let opts = Options::digits(digits);
+    let (th, phases) = oracle::theta_at_times(&m, &times, &opts).expect("theta");
+    check_friction_theta(&th.iter().collect::<Vec<_>>(), &phases, digits);
     bencher.bench_local(|| {
-        let th = answer::theta_at_times(&m, &fr, digits, &times).expect("theta");
+        let (th, _) = oracle::theta_at_times(&m, &times, &opts).expect("theta");
         assert_eq!(th.len(), T3_POINTS);
         th[T3_POINTS - 1].text.clone()
     });
 }
 
-/// T3rows with friction: all 16 columns at the 1000 times, verified.
+/// T3rows with friction: every column of `cylroll trajectory` at the 1000
+/// times, verified.
 #[divan::bench(args = T3_DIGITS, sample_count = 3, sample_size = 1)]
 fn t3_friction_rows(bencher: divan::Bencher, digits: u32) {
-    use cylroll::motion::answer;
-    let (m, fr, times) = friction_case();
+    let (m, times) = friction_case();
+    let opts = Options::digits(digits);
+    let a = oracle::trajectory(&m, &times, &opts).expect("trajectory");
+    let theta: Vec<&Verified> = a.rows.iter().map(|r| &r.values[1]).collect();
+    let phases: Vec<Phase> = a.rows.iter().map(|r| r.phase).collect();
+    check_friction_theta(&theta, &phases, digits);
     bencher.bench_local(|| {
-        let t = answer::trajectory(&m, &fr, digits, &times).expect("trajectory");
+        let t = oracle::trajectory(&m, &times, &opts).expect("trajectory");
         assert_eq!(t.rows.len(), T3_POINTS);
-        t.modes[T3_POINTS - 1].clone()
+        t.rows[T3_POINTS - 1].phase.tag()
     });
 }
 
@@ -386,12 +455,13 @@ fn samples(batch: usize, mut run: impl FnMut()) -> (Vec<f64>, Vec<f64>) {
 /// The `T3n` task: T3 at 30 and 100 digits with `n` output times; θ(t_end)
 /// (the last time for every n) is checked against the reference first.
 fn cpu_t3n(digits: u32, n: usize) {
-    let mut oracle = Oracle::new(&model(1, "1/10"), digits).expect("oracle");
+    let m = Model::from_ideal(&model(1, "1/10"));
+    let opts = Options::digits(digits);
     let times = t3_times_n(n);
-    let th = oracle.theta_at_times(&times).expect("T3n");
+    let (th, _) = oracle::theta_at_times(&m, &times, &opts).expect("T3n");
     check("T3n", &th[n - 1], &refs().t3[T3_POINTS - 1], digits);
     let (cpus, _) = samples(1, || {
-        std::hint::black_box(oracle.theta_at_times(&times).expect("T3n"));
+        std::hint::black_box(oracle::theta_at_times(&m, &times, &opts).expect("T3n"));
     });
     println!(
         "{{\"tool\":\"cylroll\",\"task\":\"T3n\",\"digits\":{digits},\"points\":{n},\"cpu_median_s\":{:.6e},\"samples\":{},\"checked\":true}}",

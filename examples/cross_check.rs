@@ -1,20 +1,18 @@
-//! Both integrators of the motion with friction on one case:
+//! The three integrators of the motion with friction on one case:
 //! `cargo run --release --example cross_check -- DIGITS MU_FLOOR MU_CONTACT`.
+use cylroll::crosscheck::routes;
 use cylroll::exact::Exact;
-use cylroll::model::Ideal;
-use cylroll::motion::{answer, Friction, Law};
+use cylroll::model::{Law, Model};
 
 fn main() {
     let a: Vec<String> = std::env::args().collect();
     let digits: u32 = a.get(1).and_then(|s| s.parse().ok()).unwrap_or(20);
-    let law = |i: usize| Law::parse("mu", a.get(i).map_or("0.3", |s| s.as_str())).expect("mu");
-    let fr = Friction {
-        floor: law(2),
-        contact: law(3),
-    };
-    let m = Ideal::paper_default(Exact::parse("theta0", "1/10", false).expect("theta0"));
+    let law = |i: usize| Law::parse_mu("mu", a.get(i).map_or("0.3", |s| s.as_str())).expect("mu");
+    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).expect("theta0"))
+        .with_laws(law(2), law(3))
+        .expect("model");
     let t = std::time::Instant::now();
-    match answer::cross_check(&m, &fr, digits) {
+    match routes::cross_check(&m, digits) {
         Ok(rows) => {
             for r in rows {
                 println!(

@@ -9,13 +9,14 @@
 //! Tasks (those of `../shared/bench`, identical solid cylinders, both rolling):
 //! `T1` t(9/10) from rest at θ0 = 1/10 on one oracle (warm), `T1cold` the same
 //! on a fresh oracle each time, `T2cold` θs for m2 = 2 from θ0 = 0 on a fresh
-//! oracle, `T3` θ at 1000 equally spaced times on one oracle, `T3rows` all 13
-//! columns of `trajectory` at those times. Prints the mean
+//! oracle, `T3` θ at 1000 equally spaced times (`oracle::theta_at_times` on the
+//! model, as the bench times it), `T3rows` every column of `cylroll trajectory`
+//! at those times (`oracle::trajectory`). Prints the mean
 //! wall time per run to stderr (use `benches/tasks.rs` for measurements).
 
 use cylroll::exact::Exact;
-use cylroll::model::{Contact, Floor, Ideal, Params, Start};
-use cylroll::oracle::Oracle;
+use cylroll::model::{Contact, Floor, Ideal, Model, Params, Start};
+use cylroll::oracle::{self, Options, Oracle};
 use rug::Rational;
 use std::time::Instant;
 
@@ -59,6 +60,8 @@ fn main() {
 fn run(task: &str, digits: u32, repeats: usize) -> cylroll::error::Result<()> {
     let m = model(1, "1/10");
     let mut oracle = Oracle::new(&m, digits)?;
+    let user_model = Model::from_ideal(&m);
+    let opts = Options::digits(digits);
     let tend = q(T3_TEND).coef;
     let times: Vec<Exact> = (0..1000)
         .map(|i| Exact::rational(&tend * Rational::from((i as i64, 999))))
@@ -78,10 +81,10 @@ fn run(task: &str, digits: u32, repeats: usize) -> cylroll::error::Result<()> {
                 std::hint::black_box(o.separation_angle()?);
             }
             "T3" => {
-                std::hint::black_box(oracle.theta_at_times(&times)?);
+                std::hint::black_box(oracle::theta_at_times(&user_model, &times, &opts)?);
             }
             _ => {
-                std::hint::black_box(oracle.trajectory(&times)?);
+                std::hint::black_box(oracle::trajectory(&user_model, &times, &opts)?);
             }
         }
     }

@@ -88,7 +88,7 @@ fn malformed_candidates_are_named() {
         ("t,theta\n0,abc\n", "not a number"),
         ("t,theta\n0,0.05,1\n", "fields"),
         ("t,theta\n0,nan\n", "not finite"),
-        ("t,theta\n100,1\n", "separation time"),
+        ("t,theta\n100,1\n", "after the first impact"),
     ] {
         let out = run(csv, &[]);
         assert_eq!(out.status.code(), Some(2), "{csv:?}");

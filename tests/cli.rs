@@ -7,6 +7,11 @@ fn cyl() -> Command {
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&json_text(args)).unwrap()
+}
+
+/// The command's JSON text, after a zero exit.
+fn json_text(args: &[&str]) -> String {
     let out = cyl()
         .args(args)
         .args(["--format", "json"])
@@ -14,10 +19,10 @@ fn json(args: &[&str]) -> serde_json::Value {
         .unwrap();
     assert!(
         out.status.success(),
-        "{}",
+        "{args:?}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
-    serde_json::from_slice(&out.stdout).unwrap()
+    String::from_utf8(out.stdout).unwrap()
 }
 
 #[test]
@@ -30,6 +35,9 @@ fn separation_json_echoes_model_and_digits() {
     );
     assert_eq!(v["model"]["k2"], "0.5");
     assert_eq!(v["model"]["floor"], "roll");
+    assert_eq!(v["model"]["contact"], "roll");
+    assert_eq!(v["model"]["mu_floor"], "inf");
+    assert_eq!(v["model"]["mu_contact"], "inf");
     assert_eq!(v["digits_requested"], "20");
     assert_eq!(v["digits_verified"]["theta_s"], "20");
     // every number is a string
@@ -40,19 +48,34 @@ fn separation_json_echoes_model_and_digits() {
 
 #[test]
 fn separation_with_finite_time_and_mu() {
-    let v = json(&[
-        "separation",
-        "--theta0",
-        "1/10",
-        "--mu",
-        "0.2",
-        "--digits",
-        "15",
-    ]);
+    let base = ["separation", "--theta0", "1/10", "--digits", "15"];
+    let v = json(&base);
     assert_eq!(v["theta_s"], "1.05077206201851");
     assert!(v["t_s"].as_str().unwrap().starts_with("5.204959139244"));
-    // with mu = 0.2 the rolling contact needs more friction before separation
-    assert!(v.get("theta_slip_contact").is_some(), "{v}");
+    // the branch point before θs (the cylinders may stay together or part)
+    assert!(v["theta_indeterminate"]
+        .as_str()
+        .unwrap()
+        .starts_with("0.965713174981"));
+    // --mu MU is Coulomb friction μ at both contacts: the same answer, byte
+    // for byte, as --mu-floor MU --mu-contact MU
+    let mu = json_text(&[&base[..], &["--mu", "0.2"]].concat());
+    let both = json_text(&[&base[..], &["--mu-floor", "0.2", "--mu-contact", "0.2"]].concat());
+    assert_eq!(mu, both);
+    let v: serde_json::Value = serde_json::from_str(&mu).unwrap();
+    assert_eq!(v["model"]["mu_floor"], "0.2");
+    assert_eq!(v["model"]["mu_contact"], "0.2");
+    // rolling needs more than μ = 0.2 before θs: the real motion's first
+    // event is a slip onset, before the ideal separation angle
+    let ev = &v["events"][0];
+    assert_eq!(ev["kind"], "slip_onset", "{v}");
+    let th: f64 = ev["theta"].as_str().unwrap().parse().unwrap();
+    assert!(th > 0.1 && th < 1.05077206201851, "{th}");
+    // a held lower cylinder keeps its floor: μ goes to the contact only
+    let fixed = ["--floor", "fixed"];
+    let a = json_text(&[&base[..], &fixed[..], &["--mu", "0.2"]].concat());
+    let b = json_text(&[&base[..], &fixed[..], &["--mu-contact", "0.2"]].concat());
+    assert_eq!(a, b);
 }
 
 #[test]
@@ -110,15 +133,119 @@ fn trajectory_csv_has_header_and_rows() {
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(
         lines[0],
-        "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12"
+        "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,x1_dot,phi1_dot,x2_dot,y2_dot,\
+         phi2_dot,F1,N1,F21,N12,s1,s12,work,mode"
     );
     assert_eq!(lines.len(), 6);
+    // φ2 starts at 0 (the paper's φ2 is ours − r1 θ0/r2)
     assert!(
-        lines[1].starts_with("0,0.1000000000,0,0.03519415980,0,-0.1000000000,0,"),
+        lines[1].starts_with("0,0.1000000000,0,0.03519415980,0,0,0,"),
         "{}",
         lines[1]
     );
+    assert!(lines[1].ends_with(",stick/stick"), "{}", lines[1]);
     assert!(lines[5].starts_with("2,"), "{}", lines[5]);
+}
+
+/// A time after separation is answered: the rows are the free flight, which
+/// must be the projectile motion (cylinder 2 ballistic with its spin
+/// constant; cylinder 1 rolling on at constant speed, since nothing pushes
+/// it) through the state `separation` reports just before the first impact,
+/// and that projectile must leave cylinder 1 at θs at t_s. After the impact,
+/// refused.
+#[test]
+fn times_after_separation_are_answered_in_flight() {
+    use rug::Float;
+    let p = 256;
+    let model = ["--theta0", "1/10"];
+    let sep = json(&[&["separation", "--digits", "40"][..], &model[..]].concat());
+    assert_eq!(sep["end"], "impact on the floor", "{sep}");
+    let f = |s: &str| Float::with_val(p, Float::parse(s).unwrap());
+    let s = |k: &str| f(sep[k].as_str().unwrap_or_else(|| panic!("no {k}: {sep}")));
+    let (t_s, t_i) = (s("t_s"), s("t_impact"));
+    let g = f("1");
+    // the projectile through the impact state, at time t (r1 = r2 = 1)
+    let flight = |t: &Float| {
+        let tau = Float::with_val(p, t - &t_i);
+        let x1 = s("x1_impact") + s("x1_dot_impact") * tau.clone();
+        let x2 = s("x2_impact") + s("x2_dot_impact") * tau.clone();
+        let y2 = s("y2_impact") + s("y2_dot_impact") * tau.clone()
+            - g.clone() * tau.clone() * tau.clone() / 2u32;
+        let y2_dot = s("y2_dot_impact") - g.clone() * tau.clone();
+        (x1, x2, y2, y2_dot)
+    };
+    let close = |what: &str, a: &Float, b: &Float| {
+        let d = Float::with_val(p, a - b).abs().to_f64();
+        assert!(d < 1e-24, "{what}: {a} vs {b} ({d:e})");
+    };
+    // at t_s the projectile is where the cylinders part: on the line of
+    // centres at θs, at the distance r = 2
+    let (x1, x2, y2, _) = flight(&t_s);
+    let theta_s = s("theta_s");
+    close(
+        "x2 - x1 at t_s",
+        &(x2 - x1),
+        &(theta_s.clone().sin() * 2u32),
+    );
+    close("y2 - r1 at t_s", &(y2 - 1u32), &(theta_s.cos() * 2u32));
+    // rows in flight, between separation and the impact
+    let times: Vec<Float> = ["0.25", "0.5"].iter().map(|d| t_s.clone() + f(d)).collect();
+    assert!(times[1] < t_i);
+    let texts: Vec<String> = times
+        .iter()
+        .map(|t| t.to_string_radix(10, Some(45)))
+        .collect();
+    let v = json(
+        &[
+            &["trajectory", "--digits", "30", "--times", &texts.join(",")][..],
+            &model[..],
+        ]
+        .concat(),
+    );
+    let rows = v["rows"].as_array().unwrap();
+    let get = |i: usize, k: &str| f(rows[i][k].as_str().unwrap());
+    for (i, t) in times.iter().enumerate() {
+        assert_eq!(rows[i]["mode"], "flight", "{t}");
+        let (x1, x2, y2, y2_dot) = flight(&f(&texts[i]));
+        let theta = Float::with_val(p, (x2.clone() - x1.clone()).atan2(&(y2.clone() - 1u32)));
+        for (k, want) in [
+            ("x1", x1),
+            ("x2", x2),
+            ("y2", y2),
+            ("x1_dot", s("x1_dot_impact")),
+            ("phi1_dot", s("phi1_dot_impact")),
+            ("x2_dot", s("x2_dot_impact")),
+            ("y2_dot", y2_dot),
+            ("theta", theta),
+            ("N1", g.clone()),
+        ] {
+            close(&format!("{k} at {t}"), &get(i, k), &want);
+        }
+        // ψ2 = φ2 − θ turns at the constant rate of the impact state
+        close(
+            &format!("psi2_dot at {t}"),
+            &(get(i, "phi2_dot") - get(i, "theta_dot")),
+            &s("psi2_dot_impact"),
+        );
+        for k in ["F1", "F21", "N12", "work"] {
+            assert_eq!(rows[i][k], "0", "{k} at {t}");
+        }
+    }
+    // φ1 and ψ2 advance linearly between the two rows
+    let dt = f(&texts[1]) - f(&texts[0]);
+    close(
+        "phi1",
+        &(get(1, "phi1") - get(0, "phi1")),
+        &(s("phi1_dot_impact") * dt.clone()),
+    );
+    let psi2 = |i: usize| get(i, "phi2") - get(i, "theta");
+    close("psi2", &(psi2(1) - psi2(0)), &(s("psi2_dot_impact") * dt));
+    // after the first impact: refused
+    let late = (t_i + f("0.01")).to_string_radix(10, Some(10));
+    fails(
+        &["trajectory", "--theta0", "1/10", "--times", &late],
+        "after the first impact",
+    );
 }
 
 /// A time is an input and is echoed exactly when it is a terminating decimal:
@@ -131,11 +258,11 @@ fn terminating_times_are_echoed_exactly_even_at_a_rounding_tie() {
     for (times, digits, want) in [
         ("0.125,1/3", "2", ["0.125", "0.33"]),
         (
-            "1.0000000000000000000000000000005,1/3",
+            "1/3,1.0000000000000000000000000000005",
             "30",
             [
-                "1.0000000000000000000000000000005",
                 "0.333333333333333333333333333333",
+                "1.0000000000000000000000000000005",
             ],
         ),
     ] {
@@ -229,9 +356,13 @@ fn bad_input_is_named_with_its_range() {
     fails(&["forces", "--theta", "1.3"], "theta");
     fails(
         &["trajectory", "--theta0", "0.1", "--times", "0,100"],
-        "separation time",
+        "after the first impact",
     );
     fails(&["trajectory", "--theta0", "0.1", "--times", "-1"], ">= 0");
+    fails(
+        &["trajectory", "--theta0", "0.1", "--times", "2,1"],
+        "must be ascending",
+    );
     fails(&["trajectory", "--times", "1"], "infinite");
     fails(&["separation", "--mu", "-1"], "mu");
 }

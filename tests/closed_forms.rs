@@ -176,3 +176,59 @@ fn routh_roll_together_footnote_12() {
     assert_eq!(red.alpha[2], Rational::from(-1));
     assert_eq!(red.beta[2], Rational::new());
 }
+
+/// The branch point of a rolling pair: cylinder 1 alone on a rolling floor
+/// (or held) has no horizontal acceleration, so once the cylinders may part
+/// cylinder 2's free relative normal acceleration is r θ̇² − g cos θ. For
+/// identical solid cylinders from rest at θ0, θ̇² = 2(g/r)(cos θ0 − c)/K(c)
+/// with K = 1 + k2 − (c − k2)²/3 (eq. 23, confirmed by the audit), so it
+/// turns positive where 2(cos θ0 − c)/K(c) = c (g/r = 1/2): bisection in c.
+/// The answer on the default branch reports it and stays together to θs; on
+/// the `part` branch the cylinders part there. For a held lower cylinder,
+/// N12 = m2(g cos θ − r θ̇²): the two conditions coincide, no branch point.
+#[test]
+fn the_branch_point_of_the_rolling_main_case() {
+    use cylroll::model::Model;
+    use cylroll::motion::{Branch, Kind};
+    use cylroll::oracle::{self, Options};
+    let digits = 30;
+    let p = 400;
+    let c0 = Float::with_val(p, Rational::from((1, 10))).cos();
+    let k = Float::with_val(p, Rational::from((1, 2)));
+    let h = |c: &Float| -> Float {
+        let d = Float::with_val(p, c - &k);
+        let kk = Float::with_val(p, &k + 1u32) - Float::with_val(p, d.square_ref()) / 3u32;
+        Float::with_val(p, &c0 - c) * 2u32 / kk - c
+    };
+    let (mut lo, mut hi) = (Float::new(p), c0.clone());
+    for _ in 0..p {
+        let mid = Float::with_val(p, &lo + &hi) / 2u32;
+        if h(&mid).is_sign_positive() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let want = to_sig(&lo.acos(), digits);
+    let m = Model::from_ideal(&model(Floor::Roll, Contact::Roll, "1/2", "1", "1/10"));
+    let stay = oracle::separation(&m, &Options::digits(digits)).unwrap();
+    assert_eq!(stay.value("theta_indeterminate").unwrap().text, want);
+    let ev = stay.event(Kind::Indeterminate).unwrap();
+    assert_eq!(ev.theta.text, want);
+    // the closed branch goes on to N12 = 0
+    let theta_s = stay.value("theta_s").unwrap().value.to_f64();
+    assert!((theta_s - 1.050772062018511).abs() < 1e-14, "{theta_s}");
+    let part = Options {
+        branch: Branch::Part,
+        ..Options::digits(digits)
+    };
+    let parted = oracle::separation(&m, &part).unwrap();
+    assert_eq!(parted.value("theta_s").unwrap().text, want);
+    // held lower cylinder: the branch point is the separation itself
+    let held = Model::from_ideal(&model(Floor::Fixed, Contact::Roll, "1/2", "1", "1/10"));
+    let a = oracle::separation(&held, &Options::digits(digits)).unwrap();
+    assert!(a.event(Kind::Indeterminate).is_none(), "{:?}", a.notes);
+    // cos θs = 2 cos θ0/(3 + k2)
+    let c = Float::with_val(p, &c0 * 2u32) / Float::with_val(p, &k + 3u32);
+    assert_eq!(a.value("theta_s").unwrap().text, to_sig(&c.acos(), digits));
+}

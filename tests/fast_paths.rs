@@ -62,6 +62,33 @@ fn taylor_matches_the_bench_t3_rows_at_30_and_100_digits() {
     }
 }
 
+/// What a user gets for T3 (the bench times it): θ from the answers every
+/// law shares, on the `Model`, through the hybrid motion (past the branch
+/// point at t = 5.05, on the default branch where the cylinders stay
+/// together): the Arb rows, and the trajectory's θ column digit for digit.
+#[test]
+fn the_answers_on_the_model_match_the_bench_t3_rows() {
+    use cylroll::model::Model;
+    use cylroll::oracle::{self, Options};
+    let m = Model::from_ideal(&t3_model());
+    let times: Vec<Exact> = T3_ROWS.iter().map(|&(i, _)| t3_time(i)).collect();
+    let rolling = cylroll::motion::Phase::parse("stick/stick").unwrap();
+    for digits in [30u32, 100] {
+        let opts = Options::digits(digits);
+        let (th, phases) = oracle::theta_at_times(&m, &times, &opts).unwrap();
+        for (((i, want), v), ph) in T3_ROWS.iter().zip(&th).zip(&phases) {
+            assert_eq!(v.digits, digits, "row {i}");
+            assert_eq!(v.text, rounded(want, digits), "row {i} at {digits} digits");
+            assert_eq!(*ph, rolling, "row {i}");
+        }
+        let tr = oracle::trajectory(&m, &times, &opts).unwrap();
+        for (row, v) in tr.rows.iter().zip(&th) {
+            assert_eq!(row.values[1].text, v.text);
+            assert_eq!(row.phase, rolling);
+        }
+    }
+}
+
 #[test]
 fn theta_column_of_the_trajectory_is_theta_at_times() {
     let times: Vec<Exact> = [0u32, 3, 250, 999].iter().map(|&i| t3_time(i)).collect();

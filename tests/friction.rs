@@ -6,10 +6,12 @@
 //! of two requested precisions.
 
 use assert_cmd::Command;
+use cylroll::crosscheck::routes;
 use cylroll::exact::Exact;
-use cylroll::model::{Contact, Floor, Model, Params, Start};
-use cylroll::motion::answer::{self, SeparationAnswer};
-use cylroll::motion::{self, Friction, Kind, Law};
+use cylroll::model::{Law, Model, Params, Start, Which};
+use cylroll::motion::{self, Caches, End, Kind, Phase, Request, Until};
+use cylroll::numeric::verify::Run;
+use cylroll::oracle::{self, Answer, Options};
 use rug::ops::Pow;
 use rug::{Float, Rational};
 
@@ -29,20 +31,52 @@ fn q(s: &str) -> Rational {
 }
 
 fn law(s: &str) -> Law {
-    Law::parse("mu", s).unwrap()
+    Law::parse_mu("mu", s).unwrap()
 }
 
-fn model(floor: Floor, k: &str) -> Model {
+/// Identical cylinders (k1 = k2 = `k`) from rest at θ0 = 1/10 under the
+/// laws `floor` and `contact`.
+fn model(floor: Law, contact: Law, k: &str) -> Model {
     let mut p = Params::identical_solid();
     p.k1 = q(k);
     p.k2 = q(k);
     Model::new(
         p,
         floor,
-        Contact::Roll,
+        contact,
         Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
     )
     .unwrap()
+}
+
+/// The verified motion to its end, on the default branch.
+fn separation(m: &Model, digits: u32) -> Answer {
+    oracle::separation(m, &Options::digits(digits))
+        .unwrap_or_else(|e| panic!("{}: {e}", m.describe()))
+}
+
+/// The motion at one working precision, to its end, sampled at `times`.
+fn run(m: &Model, prec: u32, times: &[Exact]) -> motion::Motion {
+    let req = Request {
+        times: times.to_vec(),
+        until: Until::End,
+        theta_only: false,
+        branch: motion::Branch::Stay,
+        method: motion::Method::Auto,
+        horizon: motion::default_horizon(m),
+        run: Run::High,
+        digits: 0,
+    };
+    motion::run(m, &req, prec, &mut Caches::default()).unwrap()
+}
+
+/// The index of a trajectory column.
+fn col(name: &str) -> usize {
+    motion::point::column_index(name).unwrap_or_else(|| panic!("no column {name}"))
+}
+
+fn exact(s: &str) -> Exact {
+    Exact::parse("t", s, false).unwrap()
 }
 
 fn f(s: &str) -> Float {
@@ -64,12 +98,8 @@ fn close(what: &str, a: &Float, b: &str, digits: i32) {
     );
 }
 
-fn value<'a>(ans: &'a SeparationAnswer, name: &str) -> &'a Float {
-    &ans.values
-        .iter()
-        .find(|v| v.name == name)
-        .unwrap_or_else(|| panic!("no {name}"))
-        .value
+fn value<'a>(ans: &'a Answer, name: &str) -> &'a Float {
+    &ans.value(name).unwrap_or_else(|| panic!("no {name}")).value
 }
 
 fn s<'a>(t: &'a toml::Table, k: &str) -> &'a str {
@@ -90,7 +120,7 @@ fn fixture_events(t: &toml::Table) -> Vec<&toml::Table> {
 }
 
 /// Values of a separation answer against fixture keys (pairs: ours, theirs).
-fn close_values(label: &str, ans: &SeparationAnswer, t: &toml::Table, keys: &[(&str, &str)]) {
+fn close_values(label: &str, ans: &Answer, t: &toml::Table, keys: &[(&str, &str)]) {
     for (mine, theirs) in keys {
         close(
             &format!("{label} {mine}"),
@@ -114,11 +144,7 @@ fn fixed_lower_cylinder_matches_the_independent_closed_forms() {
         }
         let t = v.as_table().unwrap();
         let spec = format!("{},{}", s(t, "mu_s"), s(t, "mu_k"));
-        let fr = Friction {
-            floor: Law::Roll,
-            contact: law(&spec),
-        };
-        let ans = answer::separation(&model(Floor::Fixed, "1/2"), &fr, DIGITS).unwrap();
+        let ans = separation(&model(Law::Held, law(&spec), "1/2"), DIGITS);
         close_values(
             name,
             &ans,
@@ -134,7 +160,11 @@ fn fixed_lower_cylinder_matches_the_independent_closed_forms() {
                 ("psi2_dot_impact", "impact_psi2_dot"),
             ],
         );
-        assert_eq!(ans.impact_surface, s(t, "impact_surface"), "{name}");
+        let surface = match ans.end {
+            Some(End::Impact(surface)) => surface.name(),
+            other => panic!("{name}: ends {other:?}"),
+        };
+        assert_eq!(surface, s(t, "impact_surface"), "{name}");
         // the slip onset: an event unless the start already slips
         let onset = ans.events.iter().find(|e| e.kind == Kind::SlipOnset);
         if s(t, "initial_mode") == "stick" {
@@ -159,11 +189,8 @@ fn full_system_matches_the_independent_taylor_integration() {
     let fx = fixture();
     for case in ["main_b1", "main_b2", "main_b3", "main_b5"] {
         let t = fx[case].as_table().unwrap();
-        let fr = Friction {
-            floor: law(s(t, "mu_floor")),
-            contact: law(s(t, "mu_contact")),
-        };
-        let ans = answer::separation(&model(Floor::Roll, "1/2"), &fr, DIGITS).unwrap();
+        let m = model(law(s(t, "mu_floor")), law(s(t, "mu_contact")), "1/2");
+        let ans = separation(&m, DIGITS);
         // the event list: kinds and places
         let theirs = fixture_events(t);
         assert_eq!(ans.events.len(), theirs.len(), "{case}: event count");
@@ -194,21 +221,60 @@ fn mu_10_main_case_opens_at_the_slip_onset() {
     // At the cone (θ = 1.0369) sticking leaves the cone, sliding with the
     // force's sign reverses at second order, sliding the other way needs
     // N12 < 0, and the free motion separates: the contact opens at once.
+    // Before it, while both contacts stick (the rolling motion), the branch
+    // point where parting becomes lawful: the fixture finds the rigid model
+    // ambiguous at the stop, with an opening gap acceleration there.
     let fx = fixture();
     let t = fx["main_b4"].as_table().unwrap();
-    let fr = Friction {
-        floor: law("10"),
-        contact: law("10"),
-    };
-    let ans = answer::separation(&model(Floor::Roll, "1/2"), &fr, DIGITS).unwrap();
+    let ans = separation(&model(law("10"), law("10"), "1/2"), DIGITS);
     let kinds: Vec<Kind> = ans.events.iter().map(|e| e.kind).collect();
-    assert_eq!(kinds, [Kind::Separation, Kind::Impact]);
+    assert_eq!(kinds, [Kind::Indeterminate, Kind::Separation, Kind::Impact]);
+    close(
+        "theta_indeterminate",
+        &ans.events[0].theta.value,
+        &rolling_branch_point(),
+        AGREE,
+    );
+    assert_eq!(
+        ans.events[0].phase,
+        Phase::parse("stick/stick"),
+        "the cylinders stay together on the default branch"
+    );
+    assert!(s(t, "gap_acc_if_separated").parse::<f64>().unwrap() > 0.0);
     close("theta_s", value(&ans, "theta_s"), s(t, "stop_theta"), AGREE);
     close("t_s", value(&ans, "t_s"), s(t, "stop_t"), AGREE);
     assert!(ans
         .notes
         .iter()
         .any(|n| n.contains("N12 = 1.942564e-2 > 0")));
+}
+
+/// The branch point of the main case rolling from rest at θ0 = 1/10, derived
+/// here: cylinder 1 alone on a rolling floor has no horizontal acceleration,
+/// so the free relative normal acceleration of cylinder 2 is r θ̇² − g cos θ;
+/// with the energy integral θ̇² = 2(g/r)(cos θ0 − c)/K(c), K = 1 + k2 −
+/// (c − k2)²/3 (the paper's eq. 23, confirmed by the audit), it turns
+/// positive where 2 (g/r) (cos θ0 − c) r/K(c) = g c. Bisection in c at 400 bits.
+fn rolling_branch_point() -> String {
+    let p = 400;
+    let c0 = Float::with_val(p, Rational::from((1, 10))).cos();
+    let k = Float::with_val(p, Rational::from((1, 2)));
+    // r = 2, g = 1: 2 (c0 − c)/K(c) − c, decreasing in c on [0, c0]
+    let h = |c: &Float| -> Float {
+        let d = Float::with_val(p, c - &k);
+        let kk = Float::with_val(p, &k + 1u32) - Float::with_val(p, d.square_ref()) / 3u32;
+        Float::with_val(p, &c0 - c) * 2u32 / kk - c
+    };
+    let (mut lo, mut hi) = (Float::new(p), c0.clone());
+    for _ in 0..p {
+        let mid = Float::with_val(p, &lo + &hi) / 2u32;
+        if h(&mid).is_sign_positive() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo.acos().to_string_radix(10, Some(45))
 }
 
 /// The fixed lower cylinder, derived here: rolling from rest at θ0 gives
@@ -264,11 +330,7 @@ fn fixed_lower_cylinder_closed_forms_to_40_digits() {
                 hi = mid;
             }
         }
-        let fr = Friction {
-            floor: Law::Roll,
-            contact: law(mu_s),
-        };
-        let ans = answer::separation(&model(Floor::Fixed, "1/2"), &fr, 40).unwrap();
+        let ans = separation(&model(Law::Held, law(mu_s), "1/2"), 40);
         let onset = ans
             .events
             .iter()
@@ -318,6 +380,10 @@ fn infinite_and_zero_coefficients_are_the_ideal_models_exactly() {
             vec!["--mu-floor", "0,0", "--mu-contact", "0"],
             vec!["--floor", "slip", "--contact", "slip"],
         ),
+        (
+            vec!["--mu-floor", "inf", "--mu-contact", "0"],
+            vec!["--floor", "roll", "--contact", "slip"],
+        ),
     ] {
         for cmd in [
             vec!["separation"],
@@ -335,8 +401,8 @@ fn infinite_and_zero_coefficients_are_the_ideal_models_exactly() {
 #[test]
 fn large_mu_follows_the_ideal_rolling_motion_until_it_slips() {
     // with μ = 10⁶ the contacts stick until just before θs of the ideal
-    // model; the rows before that equal the ideal trajectory (a Taylor
-    // series route) to every digit printed (GBS here)
+    // model; the rows before that equal the ideal trajectory to every digit
+    // printed, in every column (the same columns for every law)
     let times = "0,1,2.5,4,5";
     let args = [
         "trajectory",
@@ -357,31 +423,24 @@ fn large_mu_follows_the_ideal_rolling_motion_until_it_slips() {
     assert_eq!(ideal.len(), fric.len());
     for (a, b) in ideal.iter().zip(&fric) {
         let b: Vec<&str> = b.split(',').collect();
+        assert_eq!(b.len(), motion::COLUMNS.len() + 1);
         assert_eq!(b.last(), Some(&"stick/stick"));
-        // the 13 ideal columns are the first 13 of the friction table
-        assert_eq!(a.split(',').collect::<Vec<_>>(), b[..13].to_vec());
+        // every column and the mode equal the ideal table's
+        assert_eq!(a.split(',').collect::<Vec<_>>(), b);
         // no slip, no work
-        assert_eq!(&b[13..16], &["0", "0", "0"]);
+        assert_eq!(&b[18..21], &["0", "0", "0"]);
     }
     // and the slip onset approaches the ideal separation angle 1.0508
-    let fr = Friction {
-        floor: law("1e6"),
-        contact: law("1e6"),
-    };
-    let ans = answer::separation(&model(Floor::Roll, "1/2"), &fr, 15).unwrap();
+    let ans = separation(&model(law("1e6"), law("1e6"), "1/2"), 15);
     let th = value(&ans, "theta_s").to_f64();
     assert!((th - 1.050772062).abs() < 1e-6, "theta_s {th}");
 }
 
 #[test]
 fn two_precisions_agree_and_energy_balances() {
-    let fr = Friction {
-        floor: law("0.05"),
-        contact: law("0.5,0.3"),
-    };
-    let m = model(Floor::Roll, "1/2");
-    let a = answer::separation(&m, &fr, 18).unwrap();
-    let b = answer::separation(&m, &fr, 36).unwrap();
+    let m = model(law("0.05"), law("0.5,0.3"), "1/2");
+    let a = separation(&m, 18);
+    let b = separation(&m, 36);
     assert_eq!(a.events.len(), b.events.len());
     for (x, y) in a.values.iter().zip(&b.values) {
         assert_eq!(x.digits, 18, "{}", x.name);
@@ -396,7 +455,7 @@ fn two_precisions_agree_and_energy_balances() {
     let kinds: Vec<&str> = b.events.iter().map(|e| e.kind.name()).collect();
     assert_eq!(kinds, ["slip_onset", "slip_onset", "separation", "impact"]);
     // the balance E(0) − E(t) = W(t), along the whole motion at one precision
-    let mo = motion::solve(&m, &fr, 200, &[], true, &motion::default_horizon(&m)).unwrap();
+    let mo = run(&m, 200, &[]);
     assert!(
         mo.energy_drift.to_f64() < 1e-50,
         "{}",
@@ -439,10 +498,14 @@ fn trajectory_runs_through_every_phase_to_the_impact() {
         ]
     );
     // in flight the contact carries no force; just before the impact y2 = r2
-    assert_eq!(&rows[3][11..13], &["0", "0"]);
-    assert!(rows[4][8].starts_with("1.0000000000000") || rows[4][8].starts_with("0.9999999999999"));
+    assert_eq!([rows[3][col("F21")], rows[3][col("N12")]], ["0", "0"]);
+    let y2 = rows[4][col("y2")];
+    assert!(y2.starts_with("1.0000000000000") || y2.starts_with("0.9999999999999"));
     // work grows while the contact slips, then stays
-    let w: Vec<f64> = rows.iter().map(|r| r[15].parse().unwrap()).collect();
+    let w: Vec<f64> = rows
+        .iter()
+        .map(|r| r[col("work")].parse().unwrap())
+        .collect();
     assert!(w[0] == 0.0 && w[1] == 0.0 && w[2] > 0.0 && w[3] > w[2] && w[4] == w[3]);
     // after the impact: refused
     let (code, out, err) = cli(&[
@@ -517,14 +580,19 @@ fn separation_json_lists_the_events() {
     let ev = v["events"].as_array().unwrap();
     assert_eq!(ev[0]["kind"], "slip_onset");
     assert_eq!(ev[0]["contact"], "contact");
-    assert_eq!(ev[0]["mode"], "floor stick, contact slip+");
+    assert_eq!(ev[0]["mode"], "stick/slip+");
     assert_eq!(ev[0]["theta"], "0.58421602292944410419");
     assert_eq!(ev[0]["digits_verified"]["theta"], "20");
     assert_eq!(ev[1]["kind"], "separation");
     assert_eq!(ev[2]["kind"], "impact");
+    assert_eq!(ev.len(), 3);
     assert_eq!(v["theta_s"], "0.91209156568472325388");
-    assert_eq!(v["mu_contact"], "0.3");
-    assert_eq!(v["start_mode"], "floor stick, contact stick");
+    assert_eq!(v["model"]["contact"], "coulomb");
+    assert_eq!(v["model"]["mu_contact"], "0.3");
+    assert_eq!(v["model"]["floor"], "roll");
+    assert_eq!(v["model"]["mu_floor"], "inf");
+    assert_eq!(v["start_mode"], "stick/stick");
+    assert_eq!(v["end"], "impact on the floor");
 }
 
 fn golden(name: &str) -> serde_json::Value {
@@ -661,8 +729,8 @@ fn three_independent_integrators_agree_on_every_built_in_case() {
     // extrapolation and Gauss–Legendre collocation in time, at the working
     // precision of 16 digits (about 31 decimal digits of arithmetic);
     // cross_check refuses a mode the spectral route declined
-    for (name, model, fr) in answer::verify_cases() {
-        let rows = answer::cross_check(&model, &fr, 16).unwrap();
+    for (name, model) in routes::friction_cases() {
+        let rows = routes::cross_check(&model, 16).unwrap();
         assert!(rows.len() >= 8, "{name}");
         for r in rows {
             assert!(
@@ -697,36 +765,46 @@ fn trajectory_rows_in_the_slip_phase_and_in_flight_match_the_independent_state()
     // section D: every column at t = 4.5 (contact slipping) and t = 5.5
     // (free flight) of the main case at μ = 0.3 on both contacts
     let fx = fixture();
-    let m = model(Floor::Roll, "1/2");
-    let fr = Friction {
-        floor: law("0.3"),
-        contact: law("0.3"),
-    };
-    let times = [
-        Exact::parse("t", "4.5", false).unwrap(),
-        Exact::parse("t", "5.5", false).unwrap(),
-    ];
-    let tr = answer::trajectory(&m, &fr, 24, &times).unwrap();
-    assert_eq!(tr.modes, ["stick/slip+", "flight"]);
+    let m = model(law("0.3"), law("0.3"), "1/2");
+    let times = [exact("4.5"), exact("5.5")];
+    let tr = oracle::trajectory(&m, &times, &Options::digits(24)).unwrap();
+    let modes: Vec<String> = tr.rows.iter().map(|r| r.phase.tag()).collect();
+    assert_eq!(modes, ["stick/slip+", "flight"]);
     for (row, key) in tr
         .rows
         .iter()
         .zip(["state_main_b2_t_4_5", "state_main_b2_t_5_5"])
     {
         let t = fx[key].as_table().unwrap();
-        for v in row.iter().skip(1) {
-            if key.ends_with("5_5") && v.name == "s12" {
-                continue; // no contact in flight: cylroll prints 0 by definition
-            }
-            close(&format!("{key} {}", v.name), &v.value, s(t, &v.name), 22);
+        let fixture_f = |k: &str| f(s(t, k));
+        let mut compared = 0;
+        for v in row.values.iter().skip(1) {
+            let want = match v.name.as_str() {
+                // the fixture's gauge is the paper's, φ2(0) = −r1 θ0/r2;
+                // cylroll's φ2 starts at 0: ours = theirs + r1 θ0/r2
+                "phi2" => fixture_f("phi2") + Float::with_val(PREC, Rational::from((1, 10))),
+                // φ2 = ψ2 + θ
+                "phi2_dot" if t.contains_key("psi2_dot") => {
+                    fixture_f("psi2_dot") + fixture_f("theta_dot")
+                }
+                // no contact in flight: cylroll's slip speed there is 0 by definition
+                "s12" if row.phase.is_flight() && v.text == "0" => continue,
+                k if t.contains_key(k) => fixture_f(k),
+                _ => continue,
+            };
+            let want = want.to_string_radix(10, Some(40));
+            close(&format!("{key} {}", v.name), &v.value, &want, 22);
+            compared += 1;
         }
+        assert!(compared >= 14, "{key}: {compared} columns compared");
     }
 }
 
 #[test]
 fn a_landing_before_separation_ends_the_model_with_an_explanation() {
     // a small lower cylinder under a large upper one: cylinder 2 reaches the
-    // floor (y2 = r2) while still touching cylinder 1
+    // floor (y2 = r2) while still touching cylinder 1. The answer is that
+    // end (exit 0): the impact, its time and state, and why the model stops
     let base = [
         "--theta0",
         "0.3",
@@ -739,27 +817,49 @@ fn a_landing_before_separation_ends_the_model_with_an_explanation() {
         "--mu-contact",
         "0.3",
     ];
-    let (code, out, err) = cli(&[&["separation"][..], &base[..]].concat());
-    assert_eq!(code, 2, "{out}{err}");
-    assert!(out.is_empty());
+    let (code, out, err) = cli(&[
+        &["separation", "--digits", "12", "--format", "json"][..],
+        &base[..],
+    ]
+    .concat());
+    assert_eq!(code, 0, "{out}{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["end"], "impact on the floor in contact", "{out}");
+    let kinds: Vec<&str> = v["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds.last(), Some(&"impact"), "{out}");
+    assert!(!kinds.contains(&"separation"), "{out}");
+    assert!(v.get("theta_s").is_none(), "{out}");
+    let t_impact = v["t_impact"].as_str().unwrap();
+    assert!(t_impact.starts_with("2.4133630"), "{out}");
+    // cylinder 2 is on the floor there: y2 = r2
+    let y2: f64 = v["y2_impact"].as_str().unwrap().parse().unwrap();
+    assert!((y2 - 2.0).abs() < 1e-11, "{out}");
+    let notes = v["notes"].to_string();
     assert!(
-        err.contains("reaches the floor") && err.contains("2.4133630"),
-        "{err}"
+        notes.contains("reaches the floor while still on cylinder 1"),
+        "{notes}"
     );
     // rows before the landing are computed; after it, refused
     let (code, out, err) = cli(&[
-        &["trajectory", "--times", "1,2.4", "--digits", "12"][..],
+        &[
+            "trajectory",
+            "--times",
+            "1,2.4",
+            "--digits",
+            "12",
+            "--format",
+            "csv",
+        ][..],
         &base[..],
     ]
     .concat());
     assert_eq!(code, 0, "{err}");
-    assert_eq!(
-        out.lines()
-            .filter(|l| !l.starts_with('#') && !l.starts_with("note:"))
-            .count(),
-        3,
-        "{out}"
-    );
+    assert_eq!(out.lines().count(), 3, "{out}");
     let (code, _, err) = cli(&[&["trajectory", "--times", "2.5"][..], &base[..]].concat());
     assert_eq!(code, 2);
     assert!(err.contains("after the first impact"), "{err}");
@@ -919,17 +1019,18 @@ fn time_and_forces_with_friction_meet_the_independent_state() {
     // to reach it is 4.5, and the forces there are the state's
     let fx = fixture();
     let st = fx["state_main_b2_t_4_5"].as_table().unwrap();
-    let m = model(Floor::Roll, "1/2");
-    let fr = Friction {
-        floor: law("0.3"),
-        contact: law("0.3"),
-    };
+    let m = model(law("0.3"), law("0.3"), "1/2");
     let th = Exact::parse("theta", s(st, "theta"), false).unwrap();
-    let (t, mode) = answer::time_at(&m, &fr, 20, &th).unwrap();
-    assert_eq!(mode, "floor stick, contact slip+");
-    close("t at theta(4.5)", &t.value, "4.5", 20);
-    let (vals, _) = answer::forces_at(&m, &fr, 20, &th).unwrap();
-    for v in &vals {
+    let slipping = Phase::parse("stick/slip+").unwrap();
+    let t = oracle::time(&m, &th, &Options::digits(20)).unwrap();
+    assert_eq!(t.phase, Some(slipping));
+    close("t at theta(4.5)", value(&t, "t"), "4.5", 20);
+    let fa = oracle::forces(&m, &th, &Options::digits(20)).unwrap();
+    assert_eq!(fa.phase, Some(slipping));
+    let vals = &fa.values;
+    let names: Vec<&str> = vals.iter().map(|v| v.name.as_str()).collect();
+    assert_eq!(names, oracle::FORCES_KEYS);
+    for v in vals {
         let key = match v.name.as_str() {
             "mu_floor" | "mu_contact" => continue,
             k => k,
@@ -945,11 +1046,7 @@ fn time_and_forces_with_friction_meet_the_independent_state() {
 fn units_only_rescale_the_motion() {
     // m, r and g set only the units: angles and the order of events are the
     // same, times scale by sqrt(r/g), work by m g r
-    let fr = Friction {
-        floor: law("0.2"),
-        contact: law("0.4"),
-    };
-    let unit = answer::separation(&model(Floor::Roll, "1/2"), &fr, 18).unwrap();
+    let unit = separation(&model(law("0.2"), law("0.4"), "1/2"), 18);
     let mut p = Params::identical_solid();
     p.m1 = q("2.5");
     p.m2 = q("2.5");
@@ -958,19 +1055,19 @@ fn units_only_rescale_the_motion() {
     p.g = q("9.81");
     let si = Model::new(
         p,
-        Floor::Roll,
-        Contact::Roll,
+        law("0.2"),
+        law("0.4"),
         Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
     )
     .unwrap();
-    let b = answer::separation(&si, &fr, 18).unwrap();
+    let b = separation(&si, 18);
     // sqrt((r1 + r2)/g) against sqrt(2/1) of the unit model
     let r_over_g = Float::with_val(PREC, q("0.1")) / Float::with_val(PREC, q("9.81"));
     let tscale = Float::with_val(PREC, r_over_g.sqrt()) / Float::with_val(PREC, 2u32).sqrt();
     assert_eq!(unit.events.len(), b.events.len());
     for (x, y) in unit.events.iter().zip(&b.events) {
         assert_eq!(x.kind, y.kind);
-        assert_eq!(x.mode, y.mode);
+        assert_eq!(x.phase, y.phase);
         close(
             "event theta",
             &y.theta.value,
@@ -997,15 +1094,11 @@ fn few_digits_and_extreme_units_take_the_same_decisions() {
     // the zero tests of the mode decision and the flight scale with the
     // integration's tolerance (√tol), not with the working precision: at few
     // digits a residual of the event location must not flip a decision
-    let m = model(Floor::Roll, "1/2");
     for mu in ["0.1", "0.3", "1", "3"] {
-        let fr = Friction {
-            floor: law(mu),
-            contact: law(mu),
-        };
-        let fine = answer::separation(&m, &fr, 30).unwrap();
+        let m = model(law(mu), law(mu), "1/2");
+        let fine = separation(&m, 30);
         for d in [4, 6, 9, 12] {
-            let a = answer::separation(&m, &fr, d).unwrap();
+            let a = separation(&m, d);
             assert_eq!(a.events.len(), fine.events.len(), "mu {mu}, {d} digits");
             close(
                 &format!("mu {mu} theta_s at {d} digits"),
@@ -1039,27 +1132,23 @@ fn a_lower_cylinder_without_inertia_is_refused_only_where_its_spin_would_be_free
     p.k1 = q("0");
     let m = Model::new(
         p.clone(),
-        Floor::Roll,
-        Contact::Roll,
+        Law::Rolling,
+        law("0.3"),
         Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
     )
     .unwrap();
-    let fr = Friction {
-        floor: Law::Roll,
-        contact: law("0.3"),
-    };
-    for r in answer::cross_check(&m, &fr, 16).unwrap() {
+    for r in routes::cross_check(&m, 16).unwrap() {
         assert!(r.digits >= 28.0, "{}: {:.1}", r.name, r.digits);
     }
     // held still, cylinder 1's inertia does not enter: the fixture's value
     let fixed = Model::new(
         p,
-        Floor::Fixed,
-        Contact::Roll,
+        Law::Held,
+        law("0.3"),
         Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
     )
     .unwrap();
-    let a = answer::separation(&fixed, &fr, DIGITS).unwrap();
+    let a = separation(&fixed, DIGITS);
     let fx = fixture();
     close(
         "fixed k1 = 0 theta_s",
@@ -1097,19 +1186,22 @@ fn few_digits_see_every_event_that_many_digits_see() {
     ];
     for (theta0, m1, r2, k2, mu) in cases {
         let mut pairs = cylroll::model::input::Pairs::new();
-        for (k, v) in [("theta0", theta0), ("m1", m1), ("r2", r2), ("k2", k2)] {
+        for (k, v) in [
+            ("theta0", theta0),
+            ("m1", m1),
+            ("r2", r2),
+            ("k2", k2),
+            ("mu_floor", mu),
+            ("mu_contact", mu),
+        ] {
             pairs.insert(k.into(), v.into());
         }
         let m = cylroll::model::input::model_from_pairs(&pairs).unwrap();
-        let fr = Friction {
-            floor: law(mu),
-            contact: law(mu),
-        };
-        let m = motion::effective_model(&m, &fr).unwrap();
         let label = format!("theta0={theta0} m1={m1} r2={r2} k2={k2} mu={mu}");
-        let full = answer::separation(&m, &fr, 30).unwrap_or_else(|e| panic!("{label}: {e}"));
+        let full =
+            oracle::separation(&m, &Options::digits(30)).unwrap_or_else(|e| panic!("{label}: {e}"));
         for digits in [6, 8, 12] {
-            let few = answer::separation(&m, &fr, digits)
+            let few = oracle::separation(&m, &Options::digits(digits))
                 .unwrap_or_else(|e| panic!("{label} at {digits}: {e}"));
             assert_eq!(few.events.len(), full.events.len(), "{label} at {digits}");
             for (a, b) in few.events.iter().zip(&full.events) {
@@ -1141,32 +1233,29 @@ fn a_floor_restick_within_one_step_is_found_and_the_work_is_kept() {
         ("r2", "1/5"),
         ("k1", "8/5"),
         ("k2", "1/5"),
+        ("mu_floor", "0.2"),
+        ("mu_contact", "0.5"),
     ] {
         pairs.insert(k.into(), v.into());
     }
     let m = cylroll::model::input::model_from_pairs(&pairs).unwrap();
-    let fr = Friction {
-        floor: law("0.2"),
-        contact: law("0.5"),
-    };
     let p = 120;
-    let h = motion::default_horizon(&m);
-    let times: Vec<Float> = [1.0, 1.06, 1.1, 1.2, 1.26]
+    let times: Vec<Exact> = ["1", "1.06", "1.1", "1.2", "1.26"]
         .iter()
-        .map(|x| Float::with_val(p, *x))
+        .map(|x| exact(x))
         .collect();
-    let with = motion::solve(&m, &fr, p, &times, true, &h).unwrap();
-    let without = motion::solve(&m, &fr, p, &[], true, &h).unwrap();
-    let kinds = |mo: &motion::Motion| -> Vec<(Kind, Option<motion::Which>)> {
+    let with = run(&m, p, &times);
+    let without = run(&m, p, &[]);
+    let kinds = |mo: &motion::Motion| -> Vec<(Kind, Option<Which>)> {
         mo.events.iter().map(|e| (e.kind, e.which)).collect()
     };
     assert_eq!(kinds(&with), kinds(&without));
     assert_eq!(
         kinds(&without)[..3],
         [
-            (Kind::SlipOnset, Some(motion::Which::Floor)),
-            (Kind::Stick, Some(motion::Which::Floor)),
-            (Kind::SlipOnset, Some(motion::Which::Contact)),
+            (Kind::SlipOnset, Some(Which::Floor)),
+            (Kind::Stick, Some(Which::Floor)),
+            (Kind::SlipOnset, Some(Which::Contact)),
         ]
     );
     for mo in [&with, &without] {
@@ -1186,37 +1275,31 @@ fn a_floor_restick_within_one_step_is_found_and_the_work_is_kept() {
 /// digit, through the stick and slip phases and the flight.
 #[test]
 fn theta_at_times_is_the_trajectory_theta_column() {
-    let m = model(Floor::Roll, "1/2");
-    let fr = Friction {
-        floor: law("0.3"),
-        contact: law("0.3"),
-    };
+    let m = model(law("0.3"), law("0.3"), "1/2");
     let times: Vec<Exact> = ["0", "1", "4", "4.5", "5", "5.5"]
         .iter()
-        .map(|t| Exact::parse("times", t, false).unwrap())
+        .map(|t| exact(t))
         .collect();
-    let th = answer::theta_at_times(&m, &fr, 25, &times).unwrap();
-    let tr = answer::trajectory(&m, &fr, 25, &times).unwrap();
+    let opts = Options::digits(25);
+    let (th, phases) = oracle::theta_at_times(&m, &times, &opts).unwrap();
+    let tr = oracle::trajectory(&m, &times, &opts).unwrap();
     assert_eq!(th.len(), times.len());
     for (i, (a, row)) in th.iter().zip(&tr.rows).enumerate() {
-        assert_eq!(a.text, row[1].text, "row {i}");
+        assert_eq!(a.text, row.values[1].text, "row {i}");
         assert_eq!(a.digits, 25, "row {i}");
+        assert_eq!(phases[i], row.phase, "row {i}");
     }
     // past the impact: refused, like the trajectory
-    let late = vec![Exact::parse("times", "9", false).unwrap()];
-    assert!(answer::theta_at_times(&m, &fr, 25, &late).is_err());
+    let late = vec![exact("9")];
+    assert!(oracle::theta_at_times(&m, &late, &opts).is_err());
+    assert!(oracle::trajectory(&m, &late, &opts).is_err());
 }
 
 /// At many digits the energy-balance note shows the drift's real size (in
 /// f64 it would underflow to 0 below 1e-308), far below the printed digits.
 #[test]
 fn energy_balance_note_keeps_its_exponent_at_many_digits() {
-    let m = model(Floor::Roll, "1/2");
-    let fr = Friction {
-        floor: law("0.3"),
-        contact: law("0.3"),
-    };
-    let a = answer::separation(&m, &fr, 350).unwrap();
+    let a = separation(&model(law("0.3"), law("0.3"), "1/2"), 350);
     let note = a
         .notes
         .iter()

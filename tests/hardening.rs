@@ -254,10 +254,17 @@ fn trajectory_json_gives_digits_and_bounds_per_column_and_marks_zeros() {
         .unwrap();
     assert_eq!(out.status.code(), Some(0));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    for c in v["columns"].as_array().unwrap() {
+    let columns = v["columns"].as_array().unwrap();
+    // every numeric column, then the text column `mode`
+    assert_eq!(columns.last().unwrap(), "mode");
+    for c in &columns[..columns.len() - 1] {
         let c = c.as_str().unwrap();
         assert_eq!(v["digits_verified"][c], "10", "{c}");
         assert!(v["error_bounds"][c].is_string(), "{c}");
+    }
+    assert!(v["digits_verified"]["mode"].is_null());
+    for r in v["rows"].as_array().unwrap() {
+        assert_eq!(r["mode"], "stick/stick");
     }
     assert!(v["digits_verified"]["rows"].is_null());
     // θ̇(1e-30) ≈ 3.5e-32 prints 0 at 10 digits: an absolute bound, stated
@@ -435,7 +442,7 @@ fn golden_cleans_stale_temporaries() {
 
 mod near_separation_and_the_top {
     use cylroll::exact::Exact;
-    use cylroll::model::Model;
+    use cylroll::model::Ideal;
     use cylroll::oracle::Oracle;
     use rug::Float;
 
@@ -443,7 +450,7 @@ mod near_separation_and_the_top {
     const PI_3: &str = "1.0471975511965977461542144610931676280657231331250352736583148641026";
 
     fn oracle(theta0: &str, digits: u32) -> Oracle {
-        let m = Model::paper_default(Exact::parse("theta0", theta0, false).unwrap());
+        let m = Ideal::paper_default(Exact::parse("theta0", theta0, false).unwrap());
         Oracle::new(&m, digits).unwrap()
     }
 
@@ -555,7 +562,7 @@ mod near_separation_and_the_top {
 
 mod along_the_motion {
     use cylroll::exact::Exact;
-    use cylroll::model::Model;
+    use cylroll::model::Ideal;
     use cylroll::oracle::Oracle;
 
     fn sep(args: &[(&str, &str)], digits: u32) -> cylroll::oracle::Separation {
@@ -564,7 +571,8 @@ mod along_the_motion {
             pairs.insert(k.to_string(), v.to_string());
         }
         let m = cylroll::model::input::model_from_pairs(&pairs).unwrap();
-        Oracle::new(&m, digits).unwrap().separation().unwrap()
+        let ideal = m.ideal().expect("an ideal model");
+        Oracle::new(&ideal, digits).unwrap().separation().unwrap()
     }
 
     fn get<'a>(
@@ -637,7 +645,7 @@ mod along_the_motion {
         let mu = get(&s, "mu_floor_max").value.to_f64();
         // a dense scan of forces_at's mu_floor (the state from the dynamics,
         // not the polynomial extremum) never exceeds it, and comes close
-        let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+        let m = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
         let mut o = Oracle::new(&m, 12).unwrap();
         let ths = s.theta_s.value.to_f64();
         let mut best = (0.0, 0.0);
@@ -675,7 +683,7 @@ mod along_the_motion {
 
     #[test]
     fn the_most_friction_needed_so_far_bounds_every_angle_before() {
-        let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+        let m = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
         let mut o = Oracle::new(&m, 15).unwrap();
         let th = Exact::parse("theta", "1", false).unwrap();
         let need = o.friction_needed(&th).unwrap();

@@ -7,7 +7,7 @@
 use cylroll::exact::Exact;
 use cylroll::model::input::{model_from_pairs, Pairs};
 use cylroll::numeric::decimal::to_sig;
-use cylroll::oracle::{Oracle, FORCE_KEYS};
+use cylroll::oracle::{self, Options, Oracle, FORCE_KEYS};
 
 /// `reference` (a longer decimal string) rounded to `digits` significant digits.
 fn round(reference: &str, digits: u32) -> String {
@@ -38,7 +38,7 @@ fn agrees_with_the_independent_sympy_mpmath_derivation() {
         pairs.insert("floor".into(), c["floor"].as_str().unwrap().into());
         pairs.insert("contact".into(), c["contact"].as_str().unwrap().into());
         // the limit θ0 → 0+
-        let m = model_from_pairs(&pairs).unwrap();
+        let m = model_from_pairs(&pairs).unwrap().ideal().unwrap();
         let s = Oracle::new(&m, 45).unwrap().separation().unwrap();
         assert_eq!(
             s.theta_s.text,
@@ -47,7 +47,8 @@ fn agrees_with_the_independent_sympy_mpmath_derivation() {
         );
         // from rest at θ0 = 1/10
         pairs.insert("theta0".into(), "1/10".into());
-        let m = model_from_pairs(&pairs).unwrap();
+        let model = model_from_pairs(&pairs).unwrap();
+        let m = model.ideal().unwrap();
         let mut o = Oracle::new(&m, 36).unwrap();
         let s = o.separation().unwrap();
         assert_eq!(
@@ -60,13 +61,32 @@ fn agrees_with_the_independent_sympy_mpmath_derivation() {
             round(c["t_s_0p1"].as_str().unwrap(), 36),
             "{name} t_s"
         );
-        let f = o
-            .forces_at(&Exact::parse("theta", "1/2", false).unwrap())
-            .unwrap();
+        let half_angle = Exact::parse("theta", "1/2", false).unwrap();
+        let f = o.forces_at(&half_angle).unwrap();
         let half = c["at_half"].as_table().unwrap();
         for (i, key) in FORCE_KEYS.iter().enumerate().take(6) {
             let r = half[*key].as_str().unwrap();
             assert_eq!(f[i].text, round(r, 36), "{name} {key} at theta = 1/2");
+        }
+        // the answers every law shares (the hybrid motion to its end, the
+        // forces where θ first reaches 1/2) give the same digits
+        let opts = Options::digits(36);
+        let a = oracle::separation(&model, &opts).unwrap();
+        for key in ["theta_s", "t_s"] {
+            assert_eq!(
+                a.value(key).unwrap().text,
+                round(c[&format!("{key}_0p1")].as_str().unwrap(), 36),
+                "{name} {key} of the motion"
+            );
+        }
+        let fa = oracle::forces(&model, &half_angle, &opts).unwrap();
+        for key in FORCE_KEYS.iter().take(6) {
+            let r = half[*key].as_str().unwrap();
+            assert_eq!(
+                fa.value(key).unwrap().text,
+                round(r, 36),
+                "{name} {key} of the motion at theta = 1/2"
+            );
         }
     }
 }

@@ -4,7 +4,7 @@
 use cylroll::exact::Exact;
 use cylroll::mechanics::dynamics::Dyn;
 use cylroll::mechanics::Reduced;
-use cylroll::model::{Contact, Floor, Model, Params, Start};
+use cylroll::model::{Contact, Floor, Ideal, Law, Model, Params, Start};
 use cylroll::oracle::Oracle;
 use cylroll::Error;
 use proptest::prelude::*;
@@ -25,7 +25,7 @@ prop_compose! {
         k1 in 0i64..30, k2 in 0i64..30, si in any::<bool>(),
         floor in 0usize..3, contact in 0usize..2,
         th0 in 1i64..40, td0 in 0i64..4, w0 in -5i64..5,
-    ) -> Model {
+    ) -> Ideal {
         let params = Params {
             m1: rat(m1, 10), m2: rat(m2, 10), r1: rat(r1, 10), r2: rat(r2, 10),
             k1: rat(k1, 10), k2: rat(k2, 10),
@@ -38,7 +38,7 @@ prop_compose! {
             thetadot0: rat(td0, 20),
             omega0: if floor == Floor::Fixed { rat(0, 1) } else { rat(w0, 4) },
         };
-        Model::new(params, floor, contact, start).expect("valid by construction")
+        Ideal::new(params, floor, contact, start).expect("valid by construction")
     }
 }
 
@@ -120,6 +120,9 @@ fn token() -> impl Strategy<Value = String> {
         Just("--mu".to_string()),
         Just("--mu-floor".to_string()),
         Just("--mu-contact".to_string()),
+        Just("--branch".to_string()),
+        Just("part".to_string()),
+        Just("--part-at".to_string()),
         Just("0.3,0.1".to_string()),
         Just("0.1,0.3".to_string()),
         Just("--params".to_string()),
@@ -171,8 +174,7 @@ prop_compose! {
         m1 in 1i64..40, m2 in 1i64..40, r1 in 2i64..30, r2 in 2i64..30,
         k1 in 1i64..20, k2 in 1i64..20,
         th0 in 3i64..40, mf in 0usize..6, mc in 0usize..6, ks in any::<bool>(),
-    ) -> (Model, cylroll::motion::Friction) {
-        use cylroll::motion::{Friction, Law};
+    ) -> Model {
         let params = Params {
             m1: rat(m1, 10), m2: rat(m2, 10), r1: rat(r1, 10), r2: rat(r2, 10),
             k1: rat(k1, 10), k2: rat(k2, 10), g: rat(1, 1),
@@ -180,11 +182,10 @@ prop_compose! {
         let mus = ["0.05", "0.2", "0.5", "1", "3", "inf"];
         let law = |i: usize| {
             let t = if ks && mus[i] != "inf" { format!("{0},{0}", mus[i]) } else { mus[i].to_string() };
-            Law::parse("mu", &t).unwrap()
+            Law::parse_mu("mu", &t).unwrap()
         };
-        let model = Model::new(params, Floor::Roll, Contact::Roll, Start::rest(Exact::rational(rat(th0, 100))))
-            .expect("valid by construction");
-        (model, Friction { floor: law(mf), contact: law(mc) })
+        Model::new(params, law(mf), law(mc), Start::rest(Exact::rational(rat(th0, 100))))
+            .expect("valid by construction")
     }
 }
 
@@ -194,18 +195,26 @@ proptest! {
     /// Over random models with Coulomb friction: events in time order, the
     /// dissipated work never decreasing from event to event, the energy
     /// balance kept, separation after the start and the impact after
-    /// separation; an undecidable mode (exit 3) or a start that parts at
-    /// once are refusals, not numbers.
+    /// separation (or a lift-off ending the model); an undecidable mode
+    /// (exit 3) or a start that parts at once are refusals, not numbers.
     #[test]
-    fn invariants_of_the_motion_with_friction(mf in any_friction_model()) {
-        use cylroll::motion::{self, Kind};
-        let (model, fr) = mf;
-        let h = motion::default_horizon(&model);
-        let m = match motion::solve(&model, &fr, 120, &[], true, &h) {
+    fn invariants_of_the_motion_with_friction(model in any_friction_model()) {
+        use cylroll::motion::{self, End, Kind};
+        let req = motion::Request {
+            times: Vec::new(),
+            until: motion::Until::End,
+            theta_only: false,
+            branch: motion::Branch::Stay,
+            method: motion::Method::Auto,
+            horizon: motion::default_horizon(&model),
+            run: cylroll::numeric::verify::Run::High,
+            digits: 0,
+        };
+        let m = match motion::run(&model, &req, 120, &mut motion::Caches::default()) {
             Ok(m) => m,
             Err(Error::NotConverged { quantity, .. }) if quantity == "mode" || quantity == "separation" => return Ok(()),
             Err(Error::NotPhysical { .. }) => return Ok(()),
-            Err(e) => panic!("{e}: {} {fr:?}", model.describe()),
+            Err(e) => panic!("{e}: {}", model.describe()),
         };
         prop_assert!(m.energy_drift.to_f64() < 1e-25, "{}", m.energy_drift.to_f64());
         let mut t = 0.0f64;
@@ -217,6 +226,13 @@ proptest! {
             let we = e.at.work.to_f64();
             prop_assert!(we >= w - 1e-30, "work decreases");
             w = we;
+        }
+        if m.end == Some(End::LiftOff) {
+            // cylinder 1 leaves the floor: N1 = 0 there, the model ends
+            let last = m.events.last().unwrap();
+            prop_assert_eq!(last.kind, Kind::LiftOff);
+            prop_assert!(last.at.n1.to_f64().abs() < 1e-20, "N1 at lift-off {}", last.at.n1.to_f64());
+            return Ok(());
         }
         prop_assert_eq!(m.events.last().map(|e| e.kind), Some(Kind::Impact));
         let imp = m.impact.as_ref().unwrap();

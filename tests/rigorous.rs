@@ -3,17 +3,32 @@
 
 use cylroll::exact::Exact;
 use cylroll::model::input::{model_from_pairs, Pairs};
-use cylroll::model::Ideal;
-use cylroll::oracle::Oracle;
+use cylroll::model::{Ideal, Law, Model, Which};
+use cylroll::motion::Kind;
+use cylroll::oracle::{self, EventAnswer, Options, Oracle};
 use rug::float::Constant;
 use rug::Float;
 
-fn model(pairs: &[(&str, &str)]) -> Ideal {
+/// The model of `pairs` (model keys, and `mu_floor`, `mu_contact`).
+fn full_model(pairs: &[(&str, &str)]) -> Model {
     let mut p = Pairs::new();
     for (k, v) in pairs {
         p.insert(k.to_string(), v.to_string());
     }
     model_from_pairs(&p).unwrap()
+}
+
+/// The ideal model of `pairs`.
+fn model(pairs: &[(&str, &str)]) -> Ideal {
+    full_model(pairs).ideal().expect("an ideal model")
+}
+
+/// The first event that is not a branch point (where sticking ends).
+fn first_event(a: &oracle::Answer) -> &EventAnswer {
+    a.events
+        .iter()
+        .find(|e| e.kind != Kind::Indeterminate)
+        .expect("an event")
 }
 
 fn ex(s: &str) -> Exact {
@@ -347,29 +362,26 @@ fn where_sticking_ends_is_proved_with_friction() {
         ),
     ];
     for (pairs, mf, mc, floor_first) in cases {
-        let m = model(pairs);
-        fn law(x: Option<&str>) -> &str {
-            x.unwrap_or("inf")
-        }
-        let fr = cylroll::motion::Friction {
-            floor: cylroll::motion::Law::parse("mu_floor", law(mf)).unwrap(),
-            contact: cylroll::motion::Law::parse("mu_contact", law(mc)).unwrap(),
-        };
+        let mut all = pairs.to_vec();
+        all.push(("mu_floor", mf.unwrap_or("inf")));
+        all.push(("mu_contact", mc.unwrap_or("inf")));
+        let m = full_model(&all);
         // the verified event at 60 digits
-        let ans = cylroll::motion::answer::separation(&m, &fr, 60).unwrap();
-        let ev = &ans.events[0];
+        let ans = oracle::separation(&m, &Options::digits(60)).unwrap();
+        let ev = first_event(&ans);
+        assert_eq!(ev.kind, Kind::SlipOnset, "{pairs:?}");
         assert_eq!(
             ev.which,
             Some(if floor_first {
-                cylroll::motion::Which::Floor
+                Which::Floor
             } else {
-                cylroll::motion::Which::Contact
+                Which::Contact
             }),
             "{pairs:?}"
         );
         let q = |x: Option<&str>| x.map(|s| s.parse::<rug::Rational>().unwrap());
         let (qf, qc) = (q(mf), q(mc));
-        let mut o = Oracle::new(&m, 20).unwrap();
+        let mut o = Oracle::new(&m.sticking(), 20).unwrap();
         let mut last_w: Option<Float> = None;
         for p in [96u32, 192, 384] {
             let iv = o
@@ -423,7 +435,7 @@ fn where_sticking_ends_is_proved_with_friction() {
         v["theta_slip_onset"], v["events"][0]["theta"],
         "the proved value is the verified event's"
     );
-    let (code, out, _) = cli(&[
+    let args = [
         "separation",
         "--rigorous",
         "--theta0",
@@ -432,24 +444,26 @@ fn where_sticking_ends_is_proved_with_friction() {
         "2",
         "--digits",
         "20",
-    ]);
+    ];
+    let (code, out, _) = cli(&args);
     assert_eq!(code, 0);
+    let v = cli_json(&args);
     // the proved digits are those of the motion integrated at 40 digits
-    let m = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
-    let fr = cylroll::motion::Friction {
-        floor: cylroll::motion::Law::Roll,
-        contact: cylroll::motion::Law::parse("mu_contact", "2").unwrap(),
-    };
-    let a = cylroll::motion::answer::separation(&m, &fr, 40).unwrap();
-    for (key, label) in [
-        ("theta_s", "theta_s         = "),
-        ("t_s", "t_s             = "),
-    ] {
-        let v = a.values.iter().find(|v| v.name == key).unwrap();
-        let want = cylroll::numeric::decimal::to_sig(&v.value, 20);
+    let m = Model::paper_default(Exact::parse("theta0", "1/10", false).unwrap())
+        .with_laws(Law::Rolling, Law::parse_mu("mu_contact", "2").unwrap())
+        .unwrap();
+    let a = oracle::separation(&m, &Options::digits(40)).unwrap();
+    for key in ["theta_s", "t_s"] {
+        let want = cylroll::numeric::decimal::to_sig(&a.value(key).unwrap().value, 20);
+        assert_eq!(v[key], want, "{key}");
+        assert_eq!(v["digits_rigorous"][key], "20", "{key}");
+        let line = out
+            .lines()
+            .find(|l| l.starts_with(&format!("{key} ")))
+            .unwrap_or_else(|| panic!("{key} in {out}"));
         assert!(
-            out.contains(&format!("{label}{want}  [proved: 20 digits")),
-            "{key}: {want} in {out}"
+            line.contains(&format!("= {want}  [proved: 20 digits")),
+            "{key}: {want} in {line}"
         );
     }
 }
@@ -464,11 +478,11 @@ fn every_golden_case_is_enclosed_around_its_verified_values() {
     let cases = cylroll::golden::load_cases(&dir).unwrap();
     let (mut ideal, mut friction) = (0, 0);
     for case in &cases {
-        match &case.friction {
-            None => {
-                let mut o = Oracle::new(&case.model, 30).unwrap();
+        match case.model.ideal() {
+            Some(model) => {
+                let mut o = Oracle::new(&model, 30).unwrap();
                 let (th, ts) = o.rigorous_separation(160).unwrap();
-                let want = Oracle::new(&case.model, 60).unwrap().separation().unwrap();
+                let want = Oracle::new(&model, 60).unwrap().separation().unwrap();
                 assert!(
                     th.iv.contains(&want.theta_s.value),
                     "{}: theta_s",
@@ -487,15 +501,13 @@ fn every_golden_case_is_enclosed_around_its_verified_values() {
                 }
                 ideal += 1;
             }
-            Some(fr) => {
-                let ans = cylroll::motion::answer::separation(&case.model, fr, 30).unwrap();
-                let Ok(slots) =
-                    cylroll::oracle::rigorous::stick_end_proved(&case.model, fr, &ans, 30)
-                else {
+            None => {
+                let ans = oracle::separation(&case.model, &Options::digits(30)).unwrap();
+                let Ok(slots) = oracle::rigorous::stick_end_proved(&case.model, &ans, 30) else {
                     continue; // a start that slips at once: nothing enclosed, said so
                 };
-                let more = cylroll::motion::answer::separation(&case.model, fr, 45).unwrap();
-                let ev = &more.events[0];
+                let more = oracle::separation(&case.model, &Options::digits(45)).unwrap();
+                let ev = first_event(&more);
                 for (_, v, pv) in slots {
                     let pv = pv.unwrap_or_else(|| panic!("{}: {} not enclosed", case.name, v.name));
                     let want = if v.name.starts_with("theta") {
