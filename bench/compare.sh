@@ -70,6 +70,7 @@ done
 
 if [ -z "$OUT" ]; then OUT=$(mktemp -d); fi
 mkdir -p "$OUT" "$BIN"
+OUT=$(cd "$OUT" && pwd)
 R="$OUT/results"
 mkdir -p "$R"
 find "$R" -maxdepth 1 -type f -delete
