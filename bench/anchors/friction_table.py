@@ -65,11 +65,12 @@ def main():
             row = res["per_digits"][str(d)].get(task)
             if row is None:
                 continue
+            lb = lib.get((lib_name.get(task, ""), d))
             if "error" in row:
-                print(f"| {names[task]} | {d} | - | failed: {row['error'][:80]} | | | | | |")
+                print(f"| {names[task]} | {d} | {fmt(row.get('cylroll_cpu_s'))} | {row['error'][:80]} | - | - | - "
+                      f"| - | {fmt(lb)} |")
                 continue
             cy, hc, hw = row["cylroll_cpu_s"], row["heyoka_cold_cpu_s"], row["heyoka_warm_cpu_s"]
-            lb = lib.get((lib_name.get(task, ""), d))
             warm_n = f" ({row['heyoka_runs']} runs)" if row.get("heyoka_runs", 3) < 3 else ""
             print(f"| {names[task]} | {d} | {fmt(cy)} | {fmt(hc)} | {fmt(hw)}{warm_n} | {cy / hw:.2g} | {hc / cy:.2g} "
                   f"| {row['agreement_min']:.1f} | {fmt(lb)} |")
@@ -87,7 +88,8 @@ def main():
         r_ = res["per_digits"][str(d)]
         for task in ("events", "theta", "rows"):
             if task in r_ and "agreement_digits" in r_[task]:
-                ag = {k: (round(v, 1) if isinstance(v, float) else v) for k, v in r_[task]["agreement_digits"].items()}
+                ag = {k: ("exact" if v == 9999.0 else round(v, 1)) if isinstance(v, float) else v
+                      for k, v in r_[task]["agreement_digits"].items()}
                 print(f"- {task} {d}: {ag}")
 
 
