@@ -1,15 +1,14 @@
 #!/bin/sh
 # Whole-process times of the `cylroll` command at high precision, side by side
-# with the hand-written C/MPFR tanh-sinh of ../shared/bench/ts_mpfr.c run as a
-# one-shot program (bench/ts_once.c: one T1 integral, nodes generated, no
-# verification) at the same digits, in one run on this machine. Each row is a
+# with the project's hand-written C/MPFR tanh-sinh (bench/anchors/ts_mpfr.c) run
+# as a one-shot program (`ts_mpfr --once D`: one T1 integral, nodes generated,
+# no verification) at the same digits, in one run on this machine. Each row is a
 # goal of issue 17; ratios are cylroll / C (below 1: cylroll is faster).
 #
 # Usage: bench/cold.sh [--out DIR]     (about 2 minutes)
 # Needs: cargo, gcc, libmpfr-dev, libgmp-dev, hyperfine, python3.
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
-ANCH=${CYLROLL_ANCHORS:-$ROOT/../shared/bench}
 OUT=$(mktemp -d)
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -22,8 +21,8 @@ mkdir -p "$OUT"
 command -v hyperfine >/dev/null || { echo "cold.sh needs hyperfine (apt-get install -y hyperfine)" >&2; exit 2; }
 (cd "$ROOT" && cargo build --release -q)
 B="$ROOT/target/release/cylroll"
-gcc -O2 -I "$ANCH" -o "$OUT/ts_once" "$ROOT/bench/ts_once.c" -lmpfr -lgmp -lm
-C="$OUT/ts_once"
+gcc -O2 -o "$OUT/ts_mpfr" "$ROOT/bench/anchors/ts_mpfr.c" -lmpfr -lgmp -lm
+C="$OUT/ts_mpfr --once"
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores; $(date -u '+%Y-%m-%d %H:%M UTC'); load:$(uptime | sed 's/.*load average://')"
 M="--theta0 1/10"
 # name|digits|runs|goal|command
@@ -57,5 +56,5 @@ for line in open(sys.argv[1]):
 print()
 print("Whole-process times (hyperfine -N, one warm-up run): wall = median, CPU = mean user +")
 print("system; the goal is judged on CPU time, the steadier figure on a shared machine. The C")
-print("program is ../shared/bench/ts_mpfr.c unchanged, run once per process (bench/ts_once.c).")
+print("program is bench/anchors/ts_mpfr.c, run once per process (`ts_mpfr --once D`).")
 PY

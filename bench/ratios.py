@@ -3,10 +3,11 @@
 ratios (anchor time / cylroll time: above 1 means cylroll is faster).
 
 Usage: python3 bench/ratios.py RESULTS_DIR
-RESULTS_DIR holds cylroll.jsonl (benches/tasks.rs in CPU mode) and the anchors'
-files as ../shared/bench writes them (ts_mpfr.jsonl, boost.jsonl, flint.json,
-mpmath.json, heyoka.json, T3_<tool>_<d>.txt), reference.json, T3_reference.txt,
-evals.json and mpfr_ops.md (this machine's MPFR costs, for the floor).
+RESULTS_DIR holds cylroll.jsonl (benches/tasks.rs in CPU mode) and the files
+the anchors of bench/anchors write (ts_mpfr.jsonl, boost.jsonl, flint.json,
+mpmath.json, heyoka.json, T3_<tool>_<d>.txt), evals.json (ts_mpfr --count) and
+mpfr_ops.md (this machine's MPFR costs, for the floor); reference.json and
+T3_reference.txt are read from RESULTS_DIR, else from bench/anchors/ref.
 
 For each anchor the fastest method whose value is correct to at least d - 5
 digits is shown (methods that fail or lose digits are left out and listed).
@@ -133,11 +134,19 @@ def print_header(cols):
     print("|" + "---|" * len(cols))
 
 
+REF_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "anchors", "ref")
+
+
+def ref_file(r, name):
+    p = os.path.join(r, name)
+    return p if os.path.exists(p) else os.path.join(REF_DIR, name)
+
+
 def main():
     r = sys.argv[1]
-    ref = json.load(open(os.path.join(r, "reference.json")))
+    ref = json.load(open(ref_file(r, "reference.json")))
     refs = {k: mp.mpf(ref[k]["mid"]) for k in ("T1", "T2", "T2b")}
-    t3ref = [mp.mpf(x) for x in open(os.path.join(r, "T3_reference.txt"))]
+    t3ref = [mp.mpf(x) for x in open(ref_file(r, "T3_reference.txt"))]
     rows, ours = load(r)
     floors = floor_ms(r)
     best = {}
@@ -190,9 +199,10 @@ def main():
     print("positions, F1, N1, F21, N12, energy…) verified at 1000 times; no anchor computes them,")
     print("so no ratio is given.")
     print()
-    print("Cold: the first call in a fresh process state (cylroll: a fresh `Oracle`, CPU; C anchor:")
-    print("CPU of its first integral, nodes generated; Python anchors: wall time of the first call,")
-    print("heyoka's including its JIT compilation), with the anchor's cold over cylroll's cold.")
+    print("Cold: the first call in a fresh process state (cylroll: a fresh `Oracle`; C anchor: its")
+    print("first integral, nodes generated; Boost: the integrator object built; Python anchors: the")
+    print("first call, heyoka's including its JIT compilation), all CPU time, with the anchor's cold")
+    print("over cylroll's cold.")
     print()
     print_header(["task", "digits", "cylroll cold"] + [name for _, name in TOOLS])
     for task, d in tasks:

@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""The friction table of bench/compare.sh: cylroll's commands run as processes
+(CPU of the process) beside heyoka cold and warm (bench/anchors/heyoka_friction.py),
+with cylroll's library calls from `cargo bench --bench tasks -- t3_friction`
+(divan, wall-time medians) where they exist.
+
+Usage: python3 bench/anchors/friction_table.py RESULTS_DIR
+reads RESULTS_DIR/heyoka_friction.json and RESULTS_DIR/cylroll_friction_divan.txt.
+"""
+import json
+import os
+import re
+import sys
+
+
+def fmt(x):
+    if x is None:
+        return "-"
+    if x < 1e-3:
+        return f"{x * 1e6:.3g} µs"
+    if x < 1:
+        return f"{x * 1e3:.3g} ms"
+    return f"{x:.3g} s"
+
+
+UNIT = {"ns": 1e-9, "µs": 1e-6, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+
+
+def divan(path):
+    """{(bench, digits): median seconds} from divan's tree output."""
+    out, bench = {}, None
+    if not os.path.exists(path):
+        return out
+    for line in open(path, encoding="utf-8"):
+        m = re.match(r"^[├╰]─ (\w+)\s", line)
+        if m:
+            bench = m.group(1)
+            continue
+        m = re.match(r"^[│ ]\s+[├╰]─ (\d+)\s+(.*)$", line)
+        if m and bench:
+            cells = [c.strip() for c in m.group(2).split("│")]
+            if len(cells) >= 3:
+                v, u = cells[2].split()
+                out[(bench, int(m.group(1)))] = float(v) * UNIT[u]
+    return out
+
+
+def main():
+    r = sys.argv[1]
+    res = json.load(open(os.path.join(r, "heyoka_friction.json")))
+    lib = divan(os.path.join(r, "cylroll_friction_divan.txt"))
+    print(f"heyoka {res['heyoka']}, {res['cylroll']}; case: {res['case']}; 1000 times t_i = i h, "
+          f"h = {res['h']} (t_999 = {res['t_last']} = 0.99 t_s to 25 digits).")
+    print()
+    print("| task | digits | cylroll process CPU | heyoka cold CPU | heyoka warm CPU | cylroll / heyoka warm "
+          "| heyoka cold / cylroll | digits agreeing | cylroll library (divan, wall) |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    names = {"events": "events: slip onset + separation (`separation`)",
+             "theta": "θ at 1000 times (`trajectory --times`, all columns printed)",
+             "rows": "1000 rows, every column (`trajectory --times`)"}
+    lib_name = {"theta": "t3_friction", "rows": "t3_friction_rows"}
+    digits = sorted(int(d) for d in res["per_digits"])
+    for task in ("events", "theta", "rows"):
+        for d in digits:
+            row = res["per_digits"][str(d)].get(task)
+            if row is None:
+                continue
+            lb = lib.get((lib_name.get(task, ""), d))
+            if "error" in row:
+                print(f"| {names[task]} | {d} | {fmt(row.get('cylroll_cpu_s'))} | {row['error'][:80]} | - | - | - "
+                      f"| - | {fmt(lb)} |")
+                continue
+            cy, hc, hw = row["cylroll_cpu_s"], row["heyoka_cold_cpu_s"], row["heyoka_warm_cpu_s"]
+            warm_n = f" ({row['heyoka_runs']} runs)" if row.get("heyoka_runs", 3) < 3 else ""
+            print(f"| {names[task]} | {d} | {fmt(cy)} | {fmt(hc)} | {fmt(hw)}{warm_n} | {cy / hw:.2g} | {hc / cy:.2g} "
+                  f"| {row['agreement_min']:.1f} | {fmt(lb)} |")
+    print()
+    print("cylroll process CPU: user + system of the command run as a process (median of "
+          "its runs); it verifies every digit at two precisions, and `separation` also integrates "
+          "the flight to the impact. heyoka: CPU of this process, cold = integrators built (JIT, "
+          "caches emptied) + first run, warm = median of re-runs. Ratios above 1 in the first ratio "
+          "column mean heyoka warm is faster; in the second, that cylroll's process is faster than "
+          "heyoka's first call. Digits agreeing: heyoka against cylroll's verified output (events: "
+          "t and θ of both events; θ: all 1000 values; rows: every column, relative to the column's "
+          "largest value). Library: divan's median wall time of the library call on its own grid "
+          "(1000 times on [0, 4.920]), θ only (t3_friction) or all 16 columns (t3_friction_rows).")
+    for d in digits:
+        r_ = res["per_digits"][str(d)]
+        for task in ("events", "theta", "rows"):
+            if task in r_ and "agreement_digits" in r_[task]:
+                ag = {k: ("exact" if v == 9999.0 else round(v, 1)) if isinstance(v, float) else v
+                      for k, v in r_[task]["agreement_digits"].items()}
+                print(f"- {task} {d}: {ag}")
+
+
+if __name__ == "__main__":
+    main()
