@@ -36,6 +36,10 @@ Conventions (the paper's frame, README "Conventions"):
   ``velocities()`` and ``contact_forces()`` describe the state at the new time
   (an engine that lags, such as MuJoCo's ``mj_step``, must recompute).
 
+Optional: ``mu_engine = {"floor": μ, "contact": μ}``, the coefficients the
+engine really uses (a rolling contact's "very large μ"), for the cone
+violation of rolling contacts.
+
 ``case_params`` is the dict of :func:`case_params` (floats, the contact laws
 and the start): build the scene at the start state of :func:`initial_state`,
 so that every engine starts from the same bodies' positions and velocities.

@@ -83,7 +83,15 @@ def slip_onset(t: np.ndarray, slip: np.ndarray, F: np.ndarray, N: np.ndarray,
         Fz, Nz = np.nan_to_num(F), np.nan_to_num(N)
         loaded = Nz > o["n_min"] * fscale
         on = loaded & (np.abs(Fz) >= (1 - o["cone_eps"]) * mu * np.abs(Nz))
-        i = first_lasting(t, on, o["hold"], 0, stop)
+        # a contact that chatters open while it slides does not end the slip: unloaded
+        # samples neither break a run on the cone nor start one
+        i = None
+        for a, b in lasting_runs((on | ~loaded)[:stop]):
+            first_on = a + int(np.argmax(on[a:b])) if np.any(on[a:b]) else None
+            if first_on is not None and np.count_nonzero(on[a:b]) >= 3 and \
+                    (t[b - 1] - t[first_on] >= o["hold"] or b == stop):
+                i = first_on
+                break
         if i is not None:
             # the threshold 1 − cone_eps is crossed early by cone_eps / (rate of the ratio):
             # extend the ratio's rise over the samples before i to where it reaches 1

@@ -9,7 +9,6 @@ and then only these small functions change.
 
 from __future__ import annotations
 
-import math
 from functools import lru_cache
 from typing import Any, Dict, List, Optional, Sequence
 
@@ -17,7 +16,7 @@ import numpy as np
 
 import cylroll
 
-from .adapter import case_params, mu_pair, parse_exact
+from .adapter import case_params
 
 __all__ = ["model", "params", "events", "closed_end", "t_max", "rows_at", "branch_point",
            "phases", "check_table", "POSITION_COLUMNS", "RATE_COLUMNS"]

@@ -86,7 +86,7 @@ def run_case(adapter: Any, case_params: Mapping[str, Any], dt: float, t_end: flo
         pz = adapter.poses()
         poses[k] = pz
         vels[k] = adapter.velocities()
-        f = adapter.contact_forces()
+        f = adapter.contact_forces() or {}
         forces[k, :2] = _vec(f.get("floor"))
         forces[k, 2:] = _vec(f.get("contact"))
         # the stop: cheap online checks of an impact
