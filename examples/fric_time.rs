@@ -33,6 +33,8 @@ fn main() {
             horizon: motion::default_horizon(&m),
             run,
             digits,
+            sides: Vec::new(),
+            target_side: None,
         };
         let mo = motion::run(&m, &req, p, &mut Caches::default()).expect("motion");
         println!(

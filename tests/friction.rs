@@ -66,6 +66,8 @@ fn run(m: &Model, prec: u32, times: &[Exact]) -> motion::Motion {
         horizon: motion::default_horizon(m),
         run: Run::High,
         digits: 0,
+        sides: Vec::new(),
+        target_side: None,
     };
     motion::run(m, &req, prec, &mut Caches::default()).unwrap()
 }

@@ -209,6 +209,8 @@ proptest! {
             horizon: motion::default_horizon(&model),
             run: cylroll::numeric::verify::Run::High,
             digits: 0,
+            sides: Vec::new(),
+            target_side: None,
         };
         let m = match motion::run(&model, &req, 120, &mut motion::Caches::default()) {
             Ok(m) => m,

@@ -165,6 +165,25 @@ pub struct Request {
     pub target_side: Option<(usize, Side)>,
 }
 
+impl Request {
+    /// The motion of `model` to its end, sampled at `times`, on the
+    /// default branch and routes (the horizon [`default_horizon`]).
+    pub fn to_end(model: &Model, times: Vec<Exact>) -> Self {
+        Request {
+            times,
+            until: Until::End,
+            theta_only: false,
+            branch: Branch::Stay,
+            method: Method::Auto,
+            horizon: default_horizon(model),
+            run: Run::High,
+            digits: 0,
+            sides: Vec::new(),
+            target_side: None,
+        }
+    }
+}
+
 /// The motion at one working precision.
 #[derive(Debug, Clone)]
 pub struct Motion {
