@@ -398,18 +398,12 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     ans.notes = motion_notes(&first, opts);
     if let (Some(i), Some(imp)) = (sep_ev, &first.impact) {
         let n = first.events[i].at.n12.to_f64();
-        if n.abs() > 1e-12
-            && first.events[..i]
-                .iter()
-                .all(|e| e.kind != Kind::Indeterminate || opts.branch == Branch::Stay)
-        {
-            if opts.branch == Branch::Stay {
-                ans.notes.push(format!(
-                    "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
-                     event no mode with the contact closed is consistent and the free motion \
-                     separates, so the normal force drops to 0 at once"
-                ));
-            }
+        if n.abs() > 1e-12 && opts.branch == Branch::Stay {
+            ans.notes.push(format!(
+                "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
+                 event no mode with the contact closed is consistent and the free motion \
+                 separates, so the normal force drops to 0 at once"
+            ));
         }
         ans.notes.push(format!(
             "the first impact is on the {}{}",
