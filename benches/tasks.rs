@@ -1,6 +1,6 @@
-//! The benchmark tasks of `../shared/bench` (T1, T2, T2b, T3) through the public
+//! The benchmark tasks of `bench/anchors/README.md` (T1, T2, T2b, T3) through the public
 //! library API, each result checked against the Arb references of
-//! `../shared/bench/results` before anything is timed.
+//! `bench/anchors/ref` before anything is timed.
 //!
 //! Two modes:
 //! - `cargo bench --bench tasks` runs divan (wall time);
@@ -19,7 +19,7 @@
 //! hybrid motion, verified at two precisions, every column of `cylroll
 //! trajectory`), which keep no state between calls (warm = cold).
 //!
-//! The reference folder is `$CYLROLL_BENCH_REF` or `../shared/bench/results`
+//! The reference folder is `$CYLROLL_BENCH_REF` or `bench/anchors/ref`
 //! relative to the crate.
 
 use cylroll::exact::Exact;
@@ -50,7 +50,7 @@ struct Refs {
 fn ref_dir() -> PathBuf {
     match std::env::var_os("CYLROLL_BENCH_REF") {
         Some(p) => PathBuf::from(p),
-        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/bench/results"),
+        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("bench/anchors/ref"),
     }
 }
 

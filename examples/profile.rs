@@ -6,7 +6,7 @@
 //! valgrind --tool=callgrind target/release/examples/profile T3 30 20
 //! ```
 //!
-//! Tasks (those of `../shared/bench`, identical solid cylinders, both rolling):
+//! Tasks (those of `bench/anchors/README.md`, identical solid cylinders, both rolling):
 //! `T1` t(9/10) from rest at θ0 = 1/10 on one oracle (warm), `T1cold` the same
 //! on a fresh oracle each time, `T2cold` θs for m2 = 2 from θ0 = 0 on a fresh
 //! oracle, `T3` θ at 1000 equally spaced times (`oracle::theta_at_times` on the
@@ -20,7 +20,7 @@ use cylroll::oracle::{self, Options, Oracle};
 use rug::Rational;
 use std::time::Instant;
 
-/// T3's t_end = 0.99 t(θs) (../shared/bench/README.md).
+/// T3's t_end = 0.99 t(θs) (bench/anchors/README.md).
 const T3_TEND: &str = "5.1467589831225409016963170827052163394777";
 
 fn q(s: &str) -> Exact {

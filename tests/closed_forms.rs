@@ -1,7 +1,7 @@
 //! Closed forms the oracle must reproduce to every requested digit. Each
 //! expected value is computed here independently of the oracle (MPFR
 //! elementary functions of an exact argument, or the Arb references of
-//! `../shared/bench/results/reference.json` copied below).
+//! `bench/anchors/ref/reference.json` copied below).
 
 use cylroll::exact::Exact;
 use cylroll::mechanics::Reduced;
@@ -177,6 +177,27 @@ fn routh_roll_together_footnote_12() {
     assert_eq!(red.beta[2], Rational::new());
 }
 
+/// cos θ* of identical solid cylinders rolling from rest at cos θ0 = `c0`:
+/// the root of 2(c0 − c)/K(c) = c on (0, c0) by bisection (see below).
+fn identical_solid_branch_point(c0: &Float, p: u32) -> Float {
+    let k = Float::with_val(p, Rational::from((1, 2)));
+    let h = |c: &Float| -> Float {
+        let d = Float::with_val(p, c - &k);
+        let kk = Float::with_val(p, &k + 1u32) - Float::with_val(p, d.square_ref()) / 3u32;
+        Float::with_val(p, c0 - c) * 2u32 / kk - c
+    };
+    let (mut lo, mut hi) = (Float::new(p), c0.clone());
+    for _ in 0..p {
+        let mid = Float::with_val(p, &lo + &hi) / 2u32;
+        if h(&mid).is_sign_positive() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
 /// The branch point of a rolling pair: cylinder 1 alone on a rolling floor
 /// (or held) has no horizontal acceleration, so once the cylinders may part
 /// cylinder 2's free relative normal acceleration is r θ̇² − g cos θ. For
@@ -195,21 +216,7 @@ fn the_branch_point_of_the_rolling_main_case() {
     let p = 400;
     let c0 = Float::with_val(p, Rational::from((1, 10))).cos();
     let k = Float::with_val(p, Rational::from((1, 2)));
-    let h = |c: &Float| -> Float {
-        let d = Float::with_val(p, c - &k);
-        let kk = Float::with_val(p, &k + 1u32) - Float::with_val(p, d.square_ref()) / 3u32;
-        Float::with_val(p, &c0 - c) * 2u32 / kk - c
-    };
-    let (mut lo, mut hi) = (Float::new(p), c0.clone());
-    for _ in 0..p {
-        let mid = Float::with_val(p, &lo + &hi) / 2u32;
-        if h(&mid).is_sign_positive() {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let want = to_sig(&lo.acos(), digits);
+    let want = to_sig(&identical_solid_branch_point(&c0, p).acos(), digits);
     let m = Model::from_ideal(&model(Floor::Roll, Contact::Roll, "1/2", "1", "1/10"));
     let stay = oracle::separation(&m, &Options::digits(digits)).unwrap();
     assert_eq!(stay.value("theta_indeterminate").unwrap().text, want);
@@ -231,4 +238,74 @@ fn the_branch_point_of_the_rolling_main_case() {
     // cos θs = 2 cos θ0/(3 + k2)
     let c = Float::with_val(p, &c0 * 2u32) / Float::with_val(p, &k + 3u32);
     assert_eq!(a.value("theta_s").unwrap().text, to_sig(&c.acos(), digits));
+}
+
+/// From rest exactly at the top every time is infinite, but the closed
+/// branch's angles are limits θ0 → 0+: the branch point too (c0 = 1 in the
+/// closed form above; 0.96220953928886545929905906584675357888 by mpmath's
+/// root of the cubic Π(c) of tests/fixtures/branch_derivation.md). On the
+/// `part` branch θs is θ*; `--part-at` inside the window is where they part,
+/// outside it is refused naming the window; a frictionless contact has no
+/// branch point (its Π root is θs itself).
+#[test]
+fn the_branch_point_from_rest_at_the_top() {
+    use cylroll::model::Model;
+    use cylroll::motion::{Branch, Mode, State};
+    use cylroll::oracle::{self, Options};
+    let digits = 35;
+    let p = 400;
+    let want = to_sig(
+        &identical_solid_branch_point(&Float::with_val(p, 1u32), p).acos(),
+        digits,
+    );
+    assert_eq!(want, "0.96220953928886545929905906584675358");
+    let m = Model::from_ideal(&model(Floor::Roll, Contact::Roll, "1/2", "1", "0"));
+    let stay = oracle::separation(&m, &Options::digits(digits)).unwrap();
+    assert_eq!(stay.value("theta_indeterminate").unwrap().text, want);
+    assert_eq!(
+        stay.start_mode,
+        Some(Mode {
+            floor: State::Stick,
+            contact: State::Stick
+        })
+    );
+    // θs = π/3 for identical solid cylinders from the top
+    let pi3 = Float::with_val(p, rug::float::Constant::Pi) / 3u32;
+    assert_eq!(stay.value("theta_s").unwrap().text, to_sig(&pi3, digits));
+    let at = |branch: Branch| {
+        oracle::separation(
+            &m,
+            &Options {
+                branch,
+                ..Options::digits(digits)
+            },
+        )
+    };
+    let parted = at(Branch::Part).unwrap();
+    assert_eq!(parted.value("theta_s").unwrap().text, want);
+    let one = at(Branch::PartAt(Exact::parse("part_at", "1", true).unwrap())).unwrap();
+    assert!(one
+        .value("theta_s")
+        .unwrap()
+        .text
+        .starts_with("1.0000000000"));
+    let err = at(Branch::PartAt(
+        Exact::parse("part_at", "6/5", true).unwrap(),
+    ))
+    .unwrap_err()
+    .to_string();
+    assert!(
+        err.contains("part-at") && err.contains("0.96220953"),
+        "{err}"
+    );
+    let err = at(Branch::PartAt(
+        Exact::parse("part_at", "0.9", true).unwrap(),
+    ))
+    .unwrap_err()
+    .to_string();
+    assert!(err.contains("part-at"), "{err}");
+    // a frictionless contact: unique
+    let slip = Model::from_ideal(&model(Floor::Roll, Contact::Slip, "1/2", "1", "0"));
+    let a = oracle::separation(&slip, &Options::digits(digits)).unwrap();
+    assert!(a.value("theta_indeterminate").is_none(), "{:?}", a.notes);
 }

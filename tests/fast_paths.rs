@@ -7,7 +7,7 @@
 //! Chebyshev time integral and from 600 bits on the Chebyshev inversion for
 //! θ(t) (against Arb and against the Taylor route).
 //!
-//! Reference values are the Arb balls of `../shared/bench/results`
+//! Reference values are the Arb balls of `bench/anchors/ref` (made by `bench/anchors/reference.py` with Arb)
 //! (reference.json, T3_reference.txt), copied here.
 
 use cylroll::exact::Exact;

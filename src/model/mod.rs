@@ -511,9 +511,14 @@ impl Model {
     pub fn describe(&self) -> String {
         let mut s = format!(
             "floor={} contact={}",
-            self.floor.mu_text(),
-            self.contact.mu_text()
+            self.floor.keyword(),
+            self.contact.keyword()
         );
+        for (key, law) in [("mu_floor", &self.floor), ("mu_contact", &self.contact)] {
+            if matches!(law, Law::Coulomb { .. }) {
+                s.push_str(&format!(" {key}={}", law.mu_text()));
+            }
+        }
         let ideal = self.sticking().describe();
         if let Some(rest) = ideal.split_once(" m1=").map(|(_, r)| r) {
             s.push_str(" m1=");

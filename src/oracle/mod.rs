@@ -225,9 +225,81 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         })?;
         let mut o = Oracle::new(&ideal, digits)?;
         let sep = o.separation()?;
-        ans.values.push(sep.theta_s);
-        ans.values.extend(sep.extra);
+        let star = o.branch_point(&sep.theta_s)?;
+        ans.start_mode = Some(conservative_mode(model));
         ans.notes = sep.notes;
+        let Some(star) = star else {
+            ans.values.push(sep.theta_s);
+            ans.values.extend(sep.extra);
+            return Ok(ans);
+        };
+        let window = format!(
+            "the rigid-body motion is not unique from the branch point theta_indeterminate = {} (the limit theta0 -> 0+): the free relative normal acceleration r thetadot^2 - g cos(theta) turns positive while N12 > 0, so the cylinders may stay together or part anywhere up to theta = {} (N12 = 0)",
+            star.text, sep.theta_s.text
+        );
+        match &opts.branch {
+            Branch::Stay => {
+                ans.values.push(sep.theta_s);
+                ans.values.push(star);
+                ans.values.extend(sep.extra);
+                ans.notes.push(format!(
+                    "{window}; the branch followed: they stay together (the limit of stiff \
+                     compliant contact; velocity-level complementarity engines part at \
+                     theta_indeterminate: --branch part)"
+                ));
+            }
+            Branch::Part | Branch::PartAt(_) => {
+                let at = match &opts.branch {
+                    Branch::PartAt(a) => {
+                        let inside = |v: &Verified, lower: bool| {
+                            let d =
+                                Float::with_val(256, a.to_float(256).abs() - v.value.clone().abs());
+                            let e = Float::with_val(256, &v.err_bound);
+                            if lower {
+                                d >= -e
+                            } else {
+                                d <= e
+                            }
+                        };
+                        if a.signum() != star.value.cmp0().map_or(0, |o| o as i32)
+                            || !inside(&star, true)
+                            || !inside(&sep.theta_s, false)
+                        {
+                            return Err(Error::invalid(
+                                "part-at",
+                                a,
+                                format!(
+                                    "must lie where parting is lawful: from theta_indeterminate = \
+                                     {} to theta_s = {}",
+                                    star.text, sep.theta_s.text
+                                ),
+                            ));
+                        }
+                        let exact = a.clone();
+                        single_value(digits, "theta_s", |p| {
+                            Estimate::rounded(exact.to_float(p), Float::with_val(p, 1u32))
+                        })?
+                    }
+                    _ => {
+                        let mut v = star.clone();
+                        v.name = "theta_s".into();
+                        v
+                    }
+                };
+                ans.values.push(at);
+                ans.values.push(star);
+                // the closed branch's findings do not apply
+                ans.notes.retain(|n| n.starts_with("t_s is infinite"));
+                ans.notes.push(format!(
+                    "{window}; the branch followed: they part {} (theta_s is where they part; the \
+                     closed branch's findings are not computed)",
+                    match &opts.branch {
+                        Branch::PartAt(a) => format!("where theta reaches {a} (--part-at)"),
+                        _ => "at the first instant they may (--branch part)".to_string(),
+                    }
+                ));
+            }
+        }
         return Ok(ans);
     }
     let mut runs = runs(model, opts, Vec::new(), Until::End);
@@ -246,7 +318,16 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         names.extend(["theta_s", "t_s", "work_s"].map(String::from));
     }
     if ind_ev.is_some() {
-        names.extend(["theta_indeterminate", "t_indeterminate"].map(String::from));
+        names.extend(
+            [
+                "theta_indeterminate",
+                "t_indeterminate",
+                "theta_dot_indeterminate",
+                "N12_indeterminate",
+                "F21_indeterminate",
+            ]
+            .map(String::from),
+        );
     }
     if has_impact {
         names.extend(IMPACT_KEYS.map(String::from));
@@ -268,6 +349,18 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         if let Some(i) = ind_ev {
             out.push(out[2 * i + 1].clone());
             out.push(out[2 * i].clone());
+            // the state there, with the event's location error carried
+            let ev = &m.events[i];
+            let sc = ladder::column_scales(model, p);
+            let all = ladder::point_estimates(&ev.at, &sc, None);
+            let loc = Float::with_val(p, &ev.theta_err)
+                + Float::with_val(p, &ev.t_err) * Float::with_val(p, ev.at.theta_dot.abs_ref());
+            for name in ["theta_dot", "N12", "F21"] {
+                let k = motion::point::column_index(name).unwrap_or(0);
+                let mut e = all[k].clone();
+                e.err += Float::with_val(p, &loc * &sc[k]) * 16u32;
+                out.push(e);
+            }
         }
         if let Some(imp) = &m.impact {
             let ev_err = sep_ev
@@ -305,18 +398,12 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     ans.notes = motion_notes(&first, opts);
     if let (Some(i), Some(imp)) = (sep_ev, &first.impact) {
         let n = first.events[i].at.n12.to_f64();
-        if n.abs() > 1e-12
-            && first.events[..i]
-                .iter()
-                .all(|e| e.kind != Kind::Indeterminate || opts.branch == Branch::Stay)
-        {
-            if opts.branch == Branch::Stay {
-                ans.notes.push(format!(
-                    "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
-                     event no mode with the contact closed is consistent and the free motion \
-                     separates, so the normal force drops to 0 at once"
-                ));
-            }
+        if n.abs() > 1e-12 && opts.branch == Branch::Stay {
+            ans.notes.push(format!(
+                "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
+                 event no mode with the contact closed is consistent and the free motion \
+                 separates, so the normal force drops to 0 at once"
+            ));
         }
         ans.notes.push(format!(
             "the first impact is on the {}{}",
@@ -469,6 +556,14 @@ pub fn time(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
     ans.phase = Some(phase);
     ans.notes.extend(note);
     Ok(ans)
+}
+
+/// One verified value from one estimate per precision.
+fn single_value(digits: u32, name: &str, est: impl Fn(u32) -> Estimate) -> Result<Verified> {
+    ladder(digits, &[name], |p| Ok(vec![est(p)]))?
+        .into_iter()
+        .next()
+        .ok_or_else(|| Error::not_physical("internal: the ladder returned no value"))
 }
 
 /// The contacts' states of an ideal model.

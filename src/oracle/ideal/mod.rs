@@ -217,6 +217,56 @@ impl Oracle {
         })
     }
 
+    /// θ*, the branch point: the first angle past θ0, before θs, where the
+    /// free relative normal acceleration r θ̇² − g cos θ turns positive while
+    /// the cylinders press on each other — from there parting is as lawful
+    /// as staying together. None where it coincides with θs (a frictionless
+    /// contact, a held lower cylinder: the motion is unique) or does not
+    /// come before it.
+    ///
+    /// Method: K²(r θ̇² − g cos θ) is a polynomial in c = cos θ
+    /// ([`Route::free_normal_poly`]); its first sign change is isolated and
+    /// refined like θs at both precisions of the ladder.
+    ///
+    /// Errors: a root the refinement cannot verify.
+    pub fn branch_point(&mut self, theta_s: &Verified) -> Result<Option<Verified>> {
+        if self.model.floor() == Floor::Fixed {
+            return Ok(None);
+        }
+        let hp = self.route.free_normal_poly();
+        if self.route.sign_at_start(&hp)? > 0 {
+            return Ok(None);
+        }
+        let th0 = self.route.work.start().theta0.to_float(64);
+        let ds = Float::with_val(64, theta_s.value.clone().abs() - th0.abs());
+        let Some((d, err)) = self.route.first_root("branch point", &hp, &ds, 64)? else {
+            return Ok(None);
+        };
+        // coinciding with θs within both bounds: no branch point
+        let gap = Float::with_val(64, &d - &ds).abs();
+        let tol = Float::with_val(64, &err + &theta_s.err_bound) * 4u32;
+        if gap <= tol || d > ds {
+            return Ok(None);
+        }
+        let v = ladder(self.digits, &["theta_indeterminate"], |p| {
+            let (ds, _) = self.route.delta_s(p)?;
+            let (d, err) = self
+                .route
+                .first_root("branch point", &hp, &ds, p)?
+                .ok_or_else(|| {
+                    Error::not_physical("internal: the branch point was lost at a higher precision")
+                })?;
+            let th0 = self.route.work.start().theta0.to_float(p);
+            let th = Float::with_val(p, &th0 + &d);
+            Ok(vec![Estimate::new(
+                self.route.odd(th),
+                err,
+                Float::with_val(p, 1u32),
+            )])
+        })?;
+        single(v).map(Some)
+    }
+
     /// θs alone: the first angle past θ0 where N12 = 0, with verified digits
     /// (the same quantity as [`Separation::theta_s`], without the other
     /// findings of [`Oracle::separation`]).
