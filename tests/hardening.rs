@@ -791,3 +791,37 @@ fn json_types_the_lower_bounds() {
     let j: serde_json::Value = serde_json::from_slice(&ok.stdout).unwrap();
     assert!(j.get("lower_bounds").is_none());
 }
+
+/// A closed standard output (`>&-`) is exit 4 with a one-line error before
+/// anything is computed, while `> /dev/null` is an ordinary exit 0; a
+/// friction coefficient `S,K` is one quoted CSV field.
+#[test]
+fn a_closed_stdout_is_exit_4_and_csv_fields_are_quoted() {
+    let bin = assert_cmd::cargo::cargo_bin("cylroll");
+    let run = |redirect: &str| {
+        std::process::Command::new("sh")
+            .arg("-c")
+            .arg(format!("exec \"$0\" separation --digits 5 {redirect}"))
+            .arg(&bin)
+            .output()
+            .unwrap()
+    };
+    let closed = run(">&-");
+    assert_eq!(closed.status.code(), Some(4));
+    let err = String::from_utf8_lossy(&closed.stderr);
+    assert!(
+        err.contains("standard output") && err.contains("closed"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert_eq!(run("> /dev/null").status.code(), Some(0));
+    let out = cyl()
+        .args(["separation", "--theta0", "0.1", "--mu-contact", "0.5,0.4"])
+        .args(["--digits", "10", "--format", "csv"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let line = text.lines().find(|l| l.starts_with("mu_contact,")).unwrap();
+    assert_eq!(line, "mu_contact,\"0.5,0.4\",,");
+}
