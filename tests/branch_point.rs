@@ -286,3 +286,67 @@ fn every_case_has_the_branch_point_and_both_branches_of_the_independent_derivati
         "{checked} cases, {with_star} with a branch point"
     );
 }
+
+/// The committed golden files carry the branch point and the state there
+/// (`theta_indeterminate`, `t_indeterminate`, `theta_dot_`, `N12_`,
+/// `F21_indeterminate`) exactly where the independent derivation has one, and
+/// every printed digit agrees with it (the files are read as text, not
+/// recomputed).
+#[test]
+fn the_golden_files_carry_the_branch_point_of_the_independent_derivation() {
+    let fx = fixture();
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("golden/data");
+    let mut seen = 0;
+    for (case, t) in fx.iter() {
+        let Some(t) = t.as_table() else { continue };
+        let path = dir.join(format!("{case}.json"));
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
+        let d: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let sc = &d["scalars"];
+        let er = &d["scalar_error_bounds"];
+        if s(t, "theta_star") == "none" {
+            assert!(
+                sc.get("theta_indeterminate").is_none(),
+                "[{case}] the golden file has a branch point the derivation does not"
+            );
+            continue;
+        }
+        seen += 1;
+        for (key, fkey) in [
+            ("theta_indeterminate", "theta_star"),
+            ("t_indeterminate", "t_star"),
+            ("theta_dot_indeterminate", "theta_dot_star"),
+            ("N12_indeterminate", "N12_star"),
+            ("F21_indeterminate", "F21_star"),
+        ] {
+            let got = sc[key]
+                .as_str()
+                .unwrap_or_else(|| panic!("[{case}] golden file lacks {key}"));
+            let bound = er[key]
+                .as_str()
+                .unwrap_or_else(|| panic!("[{case}] golden file lacks the bound of {key}"));
+            let g = Float::with_val(P, Float::parse(got).unwrap());
+            let w = Float::with_val(P, Float::parse(s(t, fkey)).unwrap());
+            let digits = got
+                .trim_start_matches('-')
+                .trim_start_matches(['0', '.'])
+                .chars()
+                .filter(|c| c.is_ascii_digit())
+                .count() as i32;
+            let exp = Float::with_val(P, g.abs_ref()).log10().floor().to_f64() as i32;
+            let lim = Float::with_val(P, 10u32).pow(exp - digits + 1) / 2u32
+                + Float::with_val(P, Float::parse(bound).unwrap());
+            let diff = Float::with_val(P, &g - &w).abs();
+            assert!(
+                diff <= lim,
+                "[{case}] golden {key} = {got} vs independent {}: differ by {:.3e}",
+                s(t, fkey),
+                diff.to_f64()
+            );
+            assert!(digits >= 25, "[{case}] golden {key} has {digits} digits");
+        }
+    }
+    assert!(seen >= 8, "only {seen} golden cases with a branch point");
+}
