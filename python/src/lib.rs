@@ -554,8 +554,10 @@ fn run_check(
 type TolOverride = (String, f64, Option<f64>);
 
 /// `check`: judges a candidate (CSV text, or the path of a CSV file)
-/// against a golden case (by name) or a model (key/value pairs); returns
-/// `{"report": JSON text with numbers, "text": the table, "passed": bool}`.
+/// against a golden case (by name) or a model (key/value pairs) with the
+/// command line's scoring core; returns `{"report": JSON text with numbers,
+/// "text": the table, "passed": bool, "verdict": "pass" | "fail" |
+/// "undecided"}`.
 #[pyfunction]
 #[pyo3(signature = (csv, path, source, case_name, pairs, rtol, atol, tols, branch, part_at, event_tol, digits, past_end))]
 #[allow(clippy::too_many_arguments)]
@@ -616,21 +618,12 @@ fn check<'py>(
         if let Some(e) = event_tol {
             lim.event_tol = e;
         }
-        lim.past_end = match past_end.as_str() {
-            "error" => PastEnd::Refuse,
-            "drop" => PastEnd::Drop,
-            other => {
-                return Err(Error::invalid(
-                    "past_end",
-                    other,
-                    "expected 'error' (refuse rows after the end of the model) or 'drop' (leave them out)",
-                ))
-            }
-        };
+        lim.past_end = PastEnd::parse("past_end", &past_end)?;
         run_check(csv, path, &source, &case, &lim)
     })?;
     let d = PyDict::new(py);
     d.set_item("passed", rep.passed())?;
+    d.set_item("verdict", rep.verdict())?;
     d.set_item("text", rep.text())?;
     d.set_item("report", rep.value(false).to_string())?;
     Ok(d)

@@ -9,25 +9,30 @@
 //! last closed row and its first open one, and classifies by the closed
 //! branch's θ over that bracket:
 //!
-//! - θ* within `event_tol` of the candidate's bracket (its last closed row
-//!   and first open one): the `part` branch;
-//! - θs within `event_tol` of it: the `stay` branch;
-//! - inside the window, away from both ends: `part-at` its own angle, the
-//!   closed branch's θ midway in time between the two rows (it parted
-//!   lawfully inside the window; its flight is compared with the reference
-//!   that parts there);
+//! - θ* within `event_tol` of the bracket: the `part` branch; θs within it:
+//!   the `stay` branch; both (a coarse grid): the branch — `stay`, `part`, or
+//!   parting inside the window at the angle that fits best — whose flight is
+//!   nearest the candidate's rows from its parting on (the sum over its
+//!   numeric cells of |candidate − reference| / the column's scale);
+//! - inside the window, away from both ends: `part-at` the angle in the
+//!   bracket whose flight is nearest those rows (a golden-section search;
+//!   the bracket's middle in time without a numeric column);
 //! - before θ* (the bracket ends more than `event_tol` before it): not
 //!   lawful, a failing verdict; compared with the closed branch;
 //! - after θs: not lawful either (the contact cannot stay closed where
 //!   N12 = 0); compared with the closed branch.
 
-use super::read::{Rows, Source};
+use super::read::{Cell, Rows, Source};
+use super::tol::Tol;
 use super::{Limits, MODE};
 use crate::error::Result;
 use crate::exact::Exact;
 use crate::golden::Case;
 use crate::motion::{Branch, Kind};
 use crate::oracle::{Answer, Options};
+
+/// The index of `N12` in [`crate::motion::COLUMNS`].
+const N12: usize = 17;
 
 /// The branch a check is asked to follow.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -112,55 +117,79 @@ pub fn window(stay: &Answer) -> Option<[(String, f64); 2]> {
     ])
 }
 
+/// Rows of the candidate kept from its first open row on, to tell the
+/// branches apart where its bracket holds both ends of the window.
+const ROWS_AFTER: usize = 8;
+
+/// A candidate row: its number, time and cells.
+type CandRow = (usize, Exact, Vec<Cell>);
+
 /// Pass 1: where the candidate parts (None: it never does, or it has no
 /// column to tell by).
-fn find_parting(src: &dyn Source, case: &Case, lim: &Limits, atol_n12: f64) -> Result<Option<Found>> {
+fn find_parting(
+    src: &dyn Source,
+    case: &Case,
+    lim: &Limits,
+    atol_n12: f64,
+) -> Result<Option<Found>> {
     let mut rows = Rows::open(src, case, lim)?;
     let h = rows.header.clone();
     let mode_at = h.idx.iter().filter(|&&i| i != 0).position(|&i| i == MODE);
-    let n12 = crate::motion::COLUMNS.iter().position(|c| *c == "N12").unwrap_or(0);
-    let n12_at = h.idx.iter().filter(|&&i| i != 0).position(|&i| i == n12);
+    let n12_at = h.idx.iter().filter(|&&i| i != 0).position(|&i| i == N12);
     if mode_at.is_none() && n12_at.is_none() {
         return Ok(None);
     }
     let mut prev: Option<(usize, Exact)> = None;
-    // N12: the last loaded row and the row after it
-    let mut loaded: Option<(usize, Exact)> = None;
-    let mut after: Option<(usize, Exact)> = None;
-    let mut any_loaded = false;
+    // the last closed row and the first open one after it; the rows from there
+    let mut closed: Option<(usize, Exact)> = None;
+    let mut open: Option<(usize, Exact)> = None;
+    let mut after: Vec<CandRow> = Vec::new();
+    let mut found_by_mode = false;
     while let Some((row, t, cells)) = rows.next_row()? {
         if let Some(k) = mode_at {
+            if found_by_mode {
+                after.push((row, t, cells));
+                if after.len() == ROWS_AFTER {
+                    break;
+                }
+                continue;
+            }
             if cells[k].1 == "flight" {
-                let (rc, tc) = prev.unwrap_or((row, t.clone()));
-                return Ok(Some(Found {
-                    row_closed: rc,
-                    t_closed: tc,
-                    row_open: row,
-                    t_open: t,
-                    by: "mode",
-                }));
+                // the first row of mode flight (open from the first row: both ends are it)
+                closed = Some(prev.clone().unwrap_or((row, t.clone())));
+                open = Some((row, t.clone()));
+                after.push((row, t, cells));
+                found_by_mode = true;
+                continue;
             }
         } else if let Some(k) = n12_at {
+            // the row from which N12 stays within its atol of 0 to the last row
             if cells[k].2.abs() > atol_n12 {
-                loaded = Some((row, t.clone()));
-                after = None;
-                any_loaded = true;
-            } else if after.is_none() && any_loaded {
-                after = Some((row, t.clone()));
+                closed = Some((row, t.clone()));
+                open = None;
+                after.clear();
+            } else if closed.is_some() {
+                if open.is_none() {
+                    open = Some((row, t.clone()));
+                }
+                if after.len() < ROWS_AFTER {
+                    after.push((row, t.clone(), cells));
+                }
             }
         }
         prev = Some((row, t));
     }
-    if mode_at.is_some() {
+    if mode_at.is_some() && !found_by_mode {
         return Ok(None);
     }
-    Ok(match (loaded, after) {
+    Ok(match (closed, open) {
         (Some((rc, tc)), Some((ro, to))) => Some(Found {
             row_closed: rc,
             t_closed: tc,
             row_open: ro,
             t_open: to,
-            by: "N12",
+            by: if mode_at.is_some() { "mode" } else { "N12" },
+            after,
         }),
         _ => None,
     })
@@ -172,16 +201,57 @@ struct Found {
     row_open: usize,
     t_open: Exact,
     by: &'static str,
+    after: Vec<CandRow>,
+}
+
+/// How far the candidate's rows are from the reference on `branch`: the sum
+/// over its numeric cells of |candidate − oracle| / the column's scale
+/// (None: the reference cannot be evaluated there, or no cell to compare).
+fn distance(
+    case: &Case,
+    branch: Branch,
+    rows: &[CandRow],
+    tols: &[Tol],
+    shift: f64,
+) -> Option<f64> {
+    if rows.is_empty() {
+        return None;
+    }
+    let times: Vec<Exact> = rows.iter().map(|r| r.1.clone()).collect();
+    let opts = Options {
+        digits: 17,
+        branch,
+        method: crate::motion::Method::Auto,
+    };
+    let ans = crate::oracle::trajectory(&case.model, &times, &opts).ok()?;
+    debug_assert_eq!(ans.rows.len(), rows.len());
+    let mut sum = 0.0;
+    let mut n = 0usize;
+    for ((_, _, cells), orow) in rows.iter().zip(&ans.rows) {
+        for (gi, _, v) in cells {
+            if *gi == MODE {
+                continue;
+            }
+            let v = if crate::motion::COLUMNS[*gi] == "phi2" {
+                v + shift
+            } else {
+                *v
+            };
+            sum += (v - orow.values[*gi].value.to_f64()).abs() / tols[*gi].scale;
+            n += 1;
+        }
+    }
+    (n > 0).then_some(sum)
 }
 
 /// The branch to follow: the requested one, or under `auto` the one the
-/// candidate took (reading it once, `atol_n12` the atol of its N12).
+/// candidate took (reading it once; `tols` the columns' tolerances).
 pub fn decide(
     src: &dyn Source,
     case: &Case,
     lim: &Limits,
     stay: &Answer,
-    atol_n12: f64,
+    tols: &[Tol],
 ) -> Result<BranchReport> {
     let win = window(stay);
     let requested = lim.branch.name();
@@ -224,10 +294,9 @@ pub fn decide(
         rep.why = unique.into();
         return Ok(rep);
     };
-    let Some(f) = find_parting(src, case, lim, atol_n12)? else {
+    let Some(f) = find_parting(src, case, lim, tols[N12].atol)? else {
         let h = Rows::open(src, case, lim)?.header;
-        let n12 = crate::motion::COLUMNS.iter().position(|c| *c == "N12").unwrap_or(0);
-        rep.why = if !h.has(MODE) && !h.has(n12) {
+        rep.why = if !h.has(MODE) && !h.has(N12) {
             "without a mode or N12 column the candidate's parting cannot be found: the closed \
              branch (stay)"
                 .into()
@@ -243,9 +312,20 @@ pub fn decide(
     let t_mid = Exact::rational(
         rug::Rational::from(&f.t_closed.coef + &f.t_open.coef) / rug::Rational::from(2),
     );
+    // the closed branch's θ at the bracket (a time after the end of its
+    // motion, the first impact, is taken at that end)
+    let t_stay_end = stay
+        .events
+        .iter()
+        .find(|e| e.phase.is_none())
+        .and_then(|e| e.t.value.to_rational());
+    let clamp = |t: &Exact| match &t_stay_end {
+        Some(te) if t.coef > *te => Exact::rational(te.clone()),
+        _ => t.clone(),
+    };
     let (thetas, _) = crate::oracle::theta_at_times(
         &case.model,
-        &[f.t_closed.clone(), t_mid.clone(), f.t_open.clone()],
+        &[clamp(&f.t_closed), clamp(&t_mid), clamp(&f.t_open)],
         &Options::digits(lim.digits),
     )?;
     let th = |i: usize| (thetas[i].text.clone(), thetas[i].value.to_f64());
@@ -285,25 +365,111 @@ pub fn decide(
         short(p.theta_open.1)
     );
     let (d_star, d_end) = (dist(star_s), dist(end_s));
-    if d_star <= tol || d_end <= tol {
-        if d_star <= d_end {
-            rep.followed = Branch::Part;
-            rep.why = format!(
-                "{found}: at the branch point theta* = {star_text} (within event-tol {tol:e}): the \
-                 part branch, as velocity-level complementarity solvers take"
-            );
-        } else {
-            rep.why = format!(
-                "{found}: at the end of the closed branch theta_s = {end_text} (within event-tol \
-                 {tol:e}): the closed branch (stay)"
-            );
+    let mid_inside = s * p.theta_mid.1 > star_s && s * p.theta_mid.1 < end_s;
+    if d_star <= tol && d_end <= tol {
+        // the bracket holds the whole window: the rows after it decide
+        let shift = Rows::open(src, case, lim)?.header.phi2_shift.to_f64();
+        let mut options = vec![(Branch::Stay, "stay"), (Branch::Part, "part")];
+        // parting inside the window: at the angle that fits its rows best
+        let fit = fit_part_at(case, (star_s, end_s), s, &f.after, tols, shift);
+        if let Some((theta, _, _)) = fit {
+            // (within event-tol of an end it is that end's branch, scored above)
+            if (s * theta - star_s).abs() > tol && (s * theta - end_s).abs() > tol {
+                let at = Exact::parse("part-at", &format!("{theta:e}"), false)?;
+                options.push((Branch::PartAt(at), "part-at"));
+            }
+        } else if mid_inside {
+            let at = Exact::parse("part-at", &p.theta_mid.0, false)?;
+            options.push((Branch::PartAt(at), "part-at"));
         }
+        // the rows before the end of every branch's motion (its first impact)
+        let mut after = f.after.clone();
+        for (b, _) in &options {
+            let ans = crate::oracle::separation(
+                &case.model,
+                &Options {
+                    digits: 17,
+                    branch: b.clone(),
+                    method: crate::motion::Method::Auto,
+                },
+            )?;
+            if let Some(te) = ans.events.iter().find(|e| e.phase.is_none()) {
+                let te = te.t.value.to_f64() * (1.0 - 1e-12);
+                after.retain(|r| r.1.to_f64() < te);
+            }
+        }
+        let scored: Vec<(Branch, &str, Option<f64>)> = options
+            .into_iter()
+            .map(|(b, name)| {
+                let d = distance(case, b.clone(), &after, tols, shift);
+                (b, name, d)
+            })
+            .collect();
+        let best = scored
+            .iter()
+            .filter_map(|(b, name, d)| d.map(|d| (b, *name, d)))
+            .min_by(|x, y| x.2.total_cmp(&y.2));
+        let listed: Vec<String> = scored
+            .iter()
+            .map(|(_, name, d)| match d {
+                Some(d) => format!("{name} {d:.3e}"),
+                None => format!("{name} -"),
+            })
+            .collect();
+        match best {
+            Some((b, name, _)) => {
+                rep.followed = b.clone();
+                rep.why = format!(
+                    "{found}: the bracket holds both theta* = {star_text} and theta_s = \
+                     {end_text} (within event-tol {tol:e}); the candidate's {} rows from its \
+                     parting on are nearest the {name} branch (sum of |candidate - reference| / \
+                     the column's scale: {})",
+                    after.len(),
+                    listed.join(", ")
+                );
+            }
+            None => {
+                rep.why = format!(
+                    "{found}: the bracket holds both theta* = {star_text} and theta_s = \
+                     {end_text} (within event-tol {tol:e}) and the candidate has no numeric \
+                     column after it to tell the branches apart: the closed branch (stay)"
+                );
+            }
+        }
+    } else if d_star <= tol {
+        rep.followed = Branch::Part;
+        rep.why = format!(
+            "{found}: at the branch point theta* = {star_text} (within event-tol {tol:e}): the \
+             part branch, as velocity-level complementarity solvers take"
+        );
+    } else if d_end <= tol {
+        rep.why = format!(
+            "{found}: at the end of the closed branch theta_s = {end_text} (within event-tol \
+             {tol:e}): the closed branch (stay)"
+        );
     } else if a > star_s && a < end_s {
-        let at = Exact::parse("part-at", &p.theta_mid.0, false)?;
+        // where in its bracket it parted: the angle whose lawful flight is
+        // nearest its rows after the parting (else the bracket's middle)
+        let shift = Rows::open(src, case, lim)?.header.phi2_shift.to_f64();
+        let range = (a.max(star_s), b.min(end_s));
+        let fit = fit_part_at(case, range, s, &f.after, tols, shift);
+        let (at, how) = match fit {
+            Some((theta, d, n)) => (
+                Exact::parse("part-at", &format!("{theta:e}"), false)?,
+                format!(
+                    "at the angle in its bracket whose flight is nearest its {n} rows from the \
+                     parting on (sum of |candidate - reference| / the column's scale {d:.3e})"
+                ),
+            ),
+            None => (
+                Exact::parse("part-at", &p.theta_mid.0, false)?,
+                "midway between those rows (no numeric column after the parting to place it by)"
+                    .to_string(),
+            ),
+        };
         rep.why = format!(
             "{found}: inside the window [theta*, theta_s] = [{star_text}, {end_text}] where \
-             parting is lawful; compared with the reference that parts midway between those \
-             rows, at theta = {at}"
+             parting is lawful; compared with the reference that parts {how}: theta = {at}"
         );
         rep.followed = Branch::PartAt(at);
     } else if b < star_s {
@@ -323,6 +489,67 @@ pub fn decide(
     }
     rep.parting = Some(p);
     Ok(rep)
+}
+
+/// The parting angle in `range` (in the direction `s` of the motion:
+/// s·θ) whose lawful flight is nearest the candidate's `rows` from its
+/// parting on, by golden-section search: (θ, its distance, rows used).
+fn fit_part_at(
+    case: &Case,
+    range: (f64, f64),
+    s: f64,
+    rows: &[CandRow],
+    tols: &[Tol],
+    shift: f64,
+) -> Option<(f64, f64, usize)> {
+    // inside the window by a hair: an end rounded to f64 may fall outside it
+    let eps = (range.1 - range.0) * 1e-9;
+    let range = (range.0 + eps, range.1 - eps);
+    if range.1 <= range.0 {
+        return None;
+    }
+    // the rows before the end of the motion parting at either end of the range
+    let mut rows = rows.to_vec();
+    for x in [range.0, range.1] {
+        let at = Exact::parse("part-at", &format!("{:e}", s * x), false).ok()?;
+        let opts = Options {
+            digits: 17,
+            branch: Branch::PartAt(at),
+            method: crate::motion::Method::Auto,
+        };
+        let ans = crate::oracle::separation(&case.model, &opts).ok()?;
+        if let Some(te) = ans.events.iter().find(|e| e.phase.is_none()) {
+            let te = te.t.value.to_f64() * (1.0 - 1e-6);
+            rows.retain(|r| r.1.to_f64() < te);
+        }
+    }
+    let cost = |x: f64| {
+        let at = Exact::parse("part-at", &format!("{:e}", s * x), false).ok()?;
+        distance(case, Branch::PartAt(at), &rows, tols, shift)
+    };
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut lo, mut hi) = range;
+    let mut x1 = hi - g * (hi - lo);
+    let mut x2 = lo + g * (hi - lo);
+    let (mut f1, mut f2) = (cost(x1)?, cost(x2)?);
+    // to about 1e-9 of the bracket
+    for _ in 0..44 {
+        if f1 <= f2 {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = cost(x1).unwrap_or(f64::INFINITY);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = cost(x2).unwrap_or(f64::INFINITY);
+        }
+    }
+    let (x, d) = if f1 <= f2 { (x1, f1) } else { (x2, f2) };
+    d.is_finite().then_some((s * x, d, rows.len()))
 }
 
 /// A short decimal for messages.

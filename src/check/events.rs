@@ -176,7 +176,7 @@ pub fn judge(
             }
             listed += 1;
             out.list.push(EventVerdict {
-                kind: "none".into(),
+                kind: "spurious".into(),
                 contact: None,
                 mode: tr.to.clone(),
                 reference: None,

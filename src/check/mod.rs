@@ -34,7 +34,7 @@ pub use branch::{BranchReport, Parting, Request as BranchRequest};
 pub use read::{File, Source, Text, MAX_LINE_BYTES};
 pub use tol::{parse_override, Override, Tol};
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::golden::Case;
 use crate::motion::Branch;
@@ -55,6 +55,13 @@ pub const MODE: usize = crate::motion::COLUMNS.len();
 /// The index of `theta` in [`crate::motion::COLUMNS`].
 const THETA: usize = 1;
 
+/// The smallest nonzero rtol the oracle's `digits` significant digits can
+/// judge: 10^(2 − digits) (a d-digit value is good to 10^(1 − d) relative at
+/// worst; a tolerance ten times that keeps the verdict off its last digit).
+pub fn finest_rtol(digits: u32) -> f64 {
+    10f64.powi(2 - digits as i32)
+}
+
 /// Rows evaluated by the oracle at once: memory stays bounded by this many
 /// rows whatever the candidate's length.
 pub const CHUNK_ROWS: usize = 4096;
@@ -73,14 +80,31 @@ pub const DEFAULT_EVENT_TOL: f64 = 1e-3;
 pub const MAX_TRANSITIONS: usize = 10_000;
 
 /// What to do with candidate rows after the end of the model on the branch
-/// followed (its first impact or a lift-off).
+/// followed (its first impact or a lift-off), where the reference ends.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum PastEnd {
-    /// Refuse the candidate (bad input).
+    /// Leave them out, count them and report the first (`rows_after_end`):
+    /// an engine that runs on past the impact is judged up to it.
     #[default]
+    Report,
+    /// Refuse the candidate, naming the first such row.
     Refuse,
-    /// Leave them out and count them (`rows_after_end`).
-    Drop,
+}
+
+impl PastEnd {
+    /// `report` or `refuse`.
+    pub fn parse(name: &str, text: &str) -> Result<Self> {
+        match text.trim() {
+            "report" => Ok(PastEnd::Report),
+            "refuse" => Ok(PastEnd::Refuse),
+            _ => Err(crate::error::Error::invalid(
+                name,
+                text,
+                "expected 'report' (leave rows after the end of the model out and report them) \
+                 or 'refuse' (refuse the candidate)",
+            )),
+        }
+    }
 }
 
 /// The tolerances and limits of a check.
@@ -135,6 +159,10 @@ pub struct PhaseColumn {
     pub max_abs_t: String,
     /// Rows exceeding the tolerance (`mode`: rows in another mode).
     pub failures: usize,
+    /// Largest |err| / limit there.
+    pub worst_ratio: f64,
+    /// Values whose verdict the oracle's error bound leaves open.
+    pub undecided: usize,
 }
 
 /// Per-column statistics.
@@ -158,13 +186,17 @@ pub struct ColumnStats {
     pub worst_bound: &'static str,
     /// Rows exceeding the tolerance.
     pub failures: usize,
+    /// Values whose verdict is open: |err| is within the oracle's error
+    /// bound of the limit, so the verdict would rest on unverified digits.
+    pub undecided: usize,
     /// The tolerance applied (None for `mode`).
     pub tol: Option<Tol>,
     /// Per phase of [`CheckReport::phases`], in order.
     pub phases: Vec<PhaseColumn>,
 }
 
-/// The first value out of tolerance.
+/// The first value out of tolerance (or, for [`CheckReport::first_undecided`],
+/// whose verdict is open).
 #[derive(Debug, Clone)]
 pub struct FirstFailure {
     /// 1-based data row of the candidate file.
@@ -226,14 +258,14 @@ pub struct Transition {
 /// candidate the reference does not have).
 #[derive(Debug, Clone)]
 pub struct EventVerdict {
-    /// `slip_onset`, `separation`, …; `none` for a transition of the
+    /// `slip_onset`, `separation`, …; `spurious` for a transition of the
     /// candidate the reference does not have.
     pub kind: String,
     /// `floor` or `contact`, where the event concerns one.
     pub contact: Option<String>,
     /// The mode entered (`flight`, `stick/slip+`; `-` at the end of the model).
     pub mode: String,
-    /// The reference's time and θ (verified digits; None for `none`).
+    /// The reference's time and θ (verified digits; None for `spurious`).
     pub reference: Option<(String, String)>,
     /// The same as f64.
     pub reference_f: Option<(f64, f64)>,
@@ -276,8 +308,15 @@ pub struct CheckReport {
     pub event_tol: f64,
     /// Data rows read.
     pub rows: usize,
-    /// Rows left out after the end of the model ([`PastEnd::Drop`]).
+    /// Rows left out after the end of the model ([`PastEnd::Report`]).
     pub rows_after_end: usize,
+    /// The first of them: its row and time.
+    pub first_after_end: Option<(usize, String)>,
+    /// The end of the model on the branch followed: the event (`impact`,
+    /// `lift_off`) and its time (verified digits).
+    pub end: Option<(String, String)>,
+    /// The first value whose verdict is open (see [`ColumnStats::undecided`]).
+    pub first_undecided: Option<FirstFailure>,
     /// Column statistics in the candidate's column order (without `t`).
     pub columns: Vec<ColumnStats>,
     /// The first failing value, if any.
@@ -293,19 +332,46 @@ pub struct CheckReport {
 }
 
 impl CheckReport {
-    /// Whether every value is within tolerance, every judged event within
+    /// Whether every value is within tolerance (certainly: no verdict left
+    /// open by the oracle's error bound), every judged event within
     /// `event_tol` and the branch lawful.
     pub fn passed(&self) -> bool {
-        self.first_failure.is_none()
-            && self.branch.lawful
-            && self.events.list.iter().all(|e| e.passed != Some(false))
+        self.failed_definitely().is_none() && self.first_undecided.is_none()
     }
 
-    /// Whether phase `k` passes (every column within tolerance there).
+    /// Whether something certainly fails: a value, an event or the branch
+    /// (its name); None otherwise.
+    pub fn failed_definitely(&self) -> Option<&'static str> {
+        if self.first_failure.is_some() {
+            Some("value")
+        } else if !self.branch.lawful {
+            Some("branch")
+        } else if self.events.list.iter().any(|e| e.passed == Some(false)) {
+            Some("event")
+        } else {
+            None
+        }
+    }
+
+    /// The command line's exit status: 0 passed, 1 something fails, 3 no
+    /// failure but a verdict the oracle's digits leave open.
+    pub fn exit_code(&self) -> i32 {
+        if self.failed_definitely().is_some() {
+            1
+        } else if self.first_undecided.is_some() {
+            3
+        } else {
+            0
+        }
+    }
+
+    /// Whether phase `k` passes (every column certainly within tolerance there).
     pub fn phase_passed(&self, k: usize) -> bool {
-        self.columns
-            .iter()
-            .all(|c| c.phases.get(k).is_none_or(|p| p.failures == 0))
+        self.columns.iter().all(|c| {
+            c.phases
+                .get(k)
+                .is_none_or(|p| p.failures == 0 && p.undecided == 0)
+        })
     }
 
     /// A column's statistics.
@@ -347,11 +413,56 @@ struct Judge<'a> {
     phi2_shift: Float,
     stats: Vec<ColumnStats>,
     first: Option<FirstFailure>,
+    first_undecided: Option<FirstFailure>,
     phases: Vec<PhaseInfo>,
     transitions: Vec<Transition>,
     n_transitions: usize,
     prev: Option<Prev>,
     mode_at: Option<usize>,
+}
+
+/// A chunk of candidate rows: (row, t, cells).
+type Chunk = Vec<(usize, Exact, Vec<Cell>)>;
+
+/// An error of the oracle on a chunk of rows, naming the candidate and the
+/// row (the row whose time the message quotes, else the chunk's rows).
+fn at_rows(e: Error, source: &str, chunk: &Chunk) -> Error {
+    let (first, last) = (
+        chunk.first().map_or(0, |c| c.0),
+        chunk.last().map_or(0, |c| c.0),
+    );
+    let rows = |value: &str| {
+        chunk
+            .iter()
+            .find(|c| c.1.to_string() == value)
+            .map_or(format!("rows {first}-{last}"), |c| format!("row {}", c.0))
+    };
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            allowed,
+        } => Error::InvalidParameter {
+            name: format!("{name} (candidate {source}, {})", rows(&value)),
+            value,
+            allowed,
+        },
+        Error::NotPhysical { what } => Error::NotPhysical {
+            what: format!("candidate {source}, rows {first}-{last}: {what}"),
+        },
+        Error::NotConverged {
+            quantity,
+            requested,
+            reached,
+            detail,
+        } => Error::NotConverged {
+            quantity: format!("candidate {source}, rows {first}-{last}: {quantity}"),
+            requested,
+            reached,
+            detail,
+        },
+        other => other,
+    }
 }
 
 /// Checks the candidate `src` against `case` with the tolerances and limits
@@ -360,15 +471,18 @@ struct Judge<'a> {
 /// oracle is evaluated in chunks of [`CHUNK_ROWS`] rows, so memory does not
 /// grow with the number of rows.
 ///
-/// Errors: a malformed candidate (header, fields, numbers), more rows than
-/// `lim.max_rows`, a tolerance that is not finite and >= 0 or names a
-/// column the candidate lacks, nothing to compare, times the oracle refuses
-/// (after the end of the model, unless [`PastEnd::Drop`]).
+/// Errors (each naming the candidate, and the row where one is at fault): a
+/// malformed candidate (header, fields, numbers, times before 0 or out of
+/// order), more rows than `lim.max_rows`, a tolerance that is negative or
+/// not finite, names a column the candidate lacks or is tighter than the
+/// oracle's digits can judge ([`finest_rtol`]), nothing to compare, rows after the
+/// end of the model under [`PastEnd::Refuse`] (or every row after it), a
+/// failure of the oracle.
 pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<CheckReport> {
     let digits = lim.digits;
     let tols = tol::tolerances(&case.model, lim.rtol, lim.atol, &lim.tols)?;
     if !lim.event_tol.is_finite() || lim.event_tol < 0.0 {
-        return Err(crate::error::Error::invalid(
+        return Err(Error::invalid(
             "event-tol",
             lim.event_tol,
             "must be a finite number >= 0 (radians of theta)",
@@ -379,12 +493,40 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
     for o in &lim.tols {
         let gi = crate::motion::COLUMNS.iter().position(|c| *c == o.column);
         if !gi.is_some_and(|g| header.has(g)) {
-            return Err(crate::error::Error::invalid(
+            return Err(Error::invalid(
                 "tol",
                 format!("{}={}", o.column, o.rtol),
                 format!(
-                    "names a column the candidate does not have (its columns: {})",
+                    "names a column the candidate {} does not have (its columns: {})",
+                    src.name(),
                     header.cols.join(", ")
+                ),
+            ));
+        }
+    }
+    // a relative tolerance finer than the oracle's digits would judge
+    // against digits nobody verified
+    let finest = finest_rtol(digits);
+    for (gi, t) in tols.iter().enumerate().skip(1) {
+        if header.has(gi) && t.rtol > 0.0 && t.rtol < finest * (1.0 - 1e-9) {
+            let (name, value) = if t.set {
+                (
+                    "tol",
+                    format!("{}={:e}", crate::motion::COLUMNS[gi], t.rtol),
+                )
+            } else {
+                ("rtol", format!("{:e}", t.rtol))
+            };
+            let need = (2.0 - t.rtol.log10()).ceil() as u32;
+            return Err(Error::invalid(
+                name,
+                value,
+                format!(
+                    "is tighter than the oracle's {digits} significant digits can judge (a \
+                     {digits}-digit value is good to 1e{} relative): give --digits {need} or \
+                     more, or an rtol of at least 1e{}",
+                    1 - digits as i32,
+                    2 - digits as i32
                 ),
             ));
         }
@@ -395,21 +537,20 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
         method: crate::motion::Method::Auto,
     };
     let stay = crate::oracle::separation(&case.model, &opts(Branch::Stay))?;
-    let n12 = crate::motion::COLUMNS
-        .iter()
-        .position(|c| *c == "N12")
-        .unwrap_or(0);
-    let branch = branch::decide(src, case, lim, &stay, tols[n12].atol)?;
+    let branch = branch::decide(src, case, lim, &stay, &tols)?;
     let followed = if branch.followed == Branch::Stay {
         stay
     } else {
         crate::oracle::separation(&case.model, &opts(branch.followed.clone()))?
     };
-    let t_end = followed
-        .events
-        .iter()
-        .find(|e| e.phase.is_none())
-        .map(|e| e.t.value.clone());
+    let end_event = followed.events.iter().find(|e| e.phase.is_none());
+    let end = end_event.map(|e| (e.kind.name().to_string(), e.t.text.clone()));
+    // a row is after the end when its time exceeds the end's by more than
+    // the end's error bound; nearer ones are the oracle's to place
+    let t_end = end_event.map(|e| {
+        let p = e.t.value.prec();
+        Float::with_val(p, &e.t.value + &e.t.err_bound)
+    });
 
     let mut rows = Rows::open(src, case, lim)?;
     let h = rows.header.clone();
@@ -430,26 +571,32 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
                 worst_ratio: 0.0,
                 worst_bound: "-",
                 failures: 0,
+                undecided: 0,
                 tol: (gi != MODE).then(|| tols[gi]),
                 phases: Vec::new(),
             })
             .collect(),
         first: None,
+        first_undecided: None,
         phases: Vec::new(),
         transitions: Vec::new(),
         n_transitions: 0,
         prev: None,
         mode_at: h.idx.iter().filter(|&&i| i != 0).position(|&i| i == MODE),
     };
-    let mut dropped = 0usize;
-    let mut chunk: Vec<(usize, Exact, Vec<Cell>)> = Vec::with_capacity(CHUNK_ROWS);
+    let mut after_end = 0usize;
+    let mut first_after_end: Option<(usize, String)> = None;
+    let mut chunk: Chunk = Vec::with_capacity(CHUNK_ROWS);
     let trajectory_opts = opts(branch.followed.clone());
-    let flush = |chunk: &mut Vec<(usize, Exact, Vec<Cell>)>, judge: &mut Judge| -> Result<()> {
+    let flush = |chunk: &mut Chunk, judge: &mut Judge| -> Result<()> {
         if chunk.is_empty() {
             return Ok(());
         }
+        crate::cancel::check()?;
         let times: Vec<Exact> = chunk.iter().map(|d| d.1.clone()).collect();
-        let orows = crate::oracle::trajectory(&case.model, &times, &trajectory_opts)?.rows;
+        let orows = crate::oracle::trajectory(&case.model, &times, &trajectory_opts)
+            .map_err(|e| at_rows(e, src.name(), chunk))?
+            .rows;
         for ((row, t, vals), orow) in chunk.iter().zip(&orows) {
             judge.row(*row, t, vals, orow)?;
         }
@@ -457,15 +604,25 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
         Ok(())
     };
     while let Some((row, t, cells)) = rows.next_row()? {
-        if lim.past_end == PastEnd::Drop {
-            if let Some(te) = &t_end {
-                // a margin of 1e-12 (relative) keeps the row at the impact itself out
-                let tf = t.to_float(te.prec());
-                let margin = Float::with_val(te.prec(), te.abs_ref()) * 1e-12f64;
-                if tf >= Float::with_val(te.prec(), te - &margin) {
-                    dropped += 1;
-                    continue;
+        if let (Some(te), Some((kind, te_text))) = (&t_end, &end) {
+            if t.to_float(te.prec()) > *te {
+                if lim.past_end == PastEnd::Refuse {
+                    return Err(Error::invalid(
+                        "candidate",
+                        src.name(),
+                        format!(
+                            "row {row}: t = {t} is after the end of the model (the {kind} at t = \
+                             {te_text} on the {} branch), where the reference ends (past-end \
+                             'report' leaves such rows out and reports them)",
+                            branch.followed.name()
+                        ),
+                    ));
                 }
+                after_end += 1;
+                if first_after_end.is_none() {
+                    first_after_end = Some((row, t.to_string()));
+                }
+                continue;
             }
         }
         chunk.push((row, t, cells));
@@ -476,17 +633,17 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
     flush(&mut chunk, &mut judge)?;
     let n_rows = rows.rows;
     if n_rows == 0 {
-        return Err(crate::error::Error::invalid(
-            "candidate",
-            src.name(),
-            "has no data rows",
-        ));
+        return Err(Error::invalid("candidate", src.name(), "has no data rows"));
     }
-    if n_rows == dropped {
-        return Err(crate::error::Error::invalid(
+    if n_rows == after_end {
+        let (kind, te) = end.clone().unwrap_or_default();
+        return Err(Error::invalid(
             "candidate",
             src.name(),
-            "has no rows before the end of the model (every row was after it)",
+            format!(
+                "has no row before the end of the model (the {kind} at t = {te}): every row, \
+                 from row 1, is after it"
+            ),
         ));
     }
     let events = events::judge(
@@ -503,7 +660,10 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
         atol: lim.atol,
         event_tol: lim.event_tol,
         rows: n_rows,
-        rows_after_end: dropped,
+        rows_after_end: after_end,
+        first_after_end,
+        end,
+        first_undecided: judge.first_undecided,
         columns: judge.stats,
         first_failure: judge.first,
         digits,
@@ -538,6 +698,8 @@ impl Judge<'_> {
                     max_abs: 0.0,
                     max_abs_t: "-".into(),
                     failures: 0,
+                    worst_ratio: 0.0,
+                    undecided: 0,
                 });
             }
         }
@@ -584,6 +746,7 @@ impl Judge<'_> {
                     st.failures += 1;
                     st.phases[k].failures += 1;
                     st.worst_ratio = f64::INFINITY;
+                    st.phases[k].worst_ratio = f64::INFINITY;
                     st.worst_bound = "mode";
                     if st.max_abs_t == "-" {
                         st.max_abs_t = t_text.clone();
@@ -609,7 +772,7 @@ impl Judge<'_> {
             }
             let tol = self.tols[*gi];
             let o = &orow.values[*gi];
-            let mut cand = Exact::parse("value", text, false)?.to_float(p);
+            let mut cand = Exact::parse(&st.name, text, false)?.to_float(p);
             if crate::motion::COLUMNS[*gi] == "phi2" {
                 cand += &self.phi2_shift;
             }
@@ -655,22 +818,56 @@ impl Judge<'_> {
                 st.worst_ratio = ratio;
                 st.worst_bound = bound;
             }
-            if err > limit {
+            if ratio > st.phases[k].worst_ratio {
+                st.phases[k].worst_ratio = ratio;
+            }
+            // the oracle's value is within its error bound of the truth: a
+            // verdict is certain only when |err| is farther than that from
+            // the limit
+            let u = Float::with_val(p, &o.err_bound);
+            let certain_fail = Float::with_val(p, &err - &u) > limit;
+            let certain_pass = Float::with_val(p, &err + &u) <= limit;
+            let failure = || FirstFailure {
+                row,
+                t: t_text.clone(),
+                column: st.name.clone(),
+                candidate: text.clone(),
+                oracle: o.text.clone(),
+                limit: limit.to_f64(),
+                bound,
+            };
+            if certain_fail {
+                if self.first.is_none() {
+                    self.first = Some(failure());
+                }
                 st.failures += 1;
                 st.phases[k].failures += 1;
-                if self.first.is_none() {
-                    self.first = Some(FirstFailure {
-                        row,
-                        t: t_text.clone(),
-                        column: st.name.clone(),
-                        candidate: text.clone(),
-                        oracle: o.text.clone(),
-                        limit: limit.to_f64(),
-                        bound,
-                    });
+            } else if !certain_pass {
+                if self.first_undecided.is_none() {
+                    self.first_undecided = Some(failure());
                 }
+                st.undecided += 1;
+                st.phases[k].undecided += 1;
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_column_indices_name_their_columns() {
+        assert_eq!(crate::motion::COLUMNS[THETA], "theta");
+        assert_eq!(crate::motion::COLUMNS[17], "N12");
+        assert_eq!(known_columns()[MODE], "mode");
+    }
+
+    #[test]
+    fn the_finest_rtol_follows_the_digits() {
+        assert_eq!(finest_rtol(20), 1e-18);
+        assert_eq!(finest_rtol(2), 1.0);
     }
 }

@@ -107,6 +107,8 @@ pub struct Rows<'a> {
     /// Data rows read so far.
     pub rows: usize,
     max_rows: usize,
+    /// The previous row's time (rows must be in time order).
+    prev_t: Option<Exact>,
 }
 
 impl<'a> Rows<'a> {
@@ -136,6 +138,7 @@ impl<'a> Rows<'a> {
             header,
             rows: 0,
             max_rows: lim.max_rows,
+            prev_t: None,
         })
     }
 
@@ -159,8 +162,32 @@ impl<'a> Rows<'a> {
                     ),
                 ));
             }
+            if self.rows % 4096 == 0 {
+                crate::cancel::check()?;
+            }
             let (t, cells) = parse_row(&line, self.rows, &self.header, &self.source)?;
-            return Ok(Some((self.rows, t, cells)));
+            let row = self.rows;
+            if t.signum() < 0 {
+                return Err(Error::invalid(
+                    "candidate",
+                    &self.source,
+                    format!("row {row}: t = {t} is before the start (t must be >= 0)"),
+                ));
+            }
+            if let Some(p) = &self.prev_t {
+                if t.coef < p.coef {
+                    return Err(Error::invalid(
+                        "candidate",
+                        &self.source,
+                        format!(
+                            "row {row}: t = {t} is before the previous row's t = {p}: rows must be \
+                             in time order (equal times are allowed)"
+                        ),
+                    ));
+                }
+            }
+            self.prev_t = Some(t.clone());
+            return Ok(Some((row, t, cells)));
         }
     }
 }
@@ -299,6 +326,18 @@ fn parse_row(line: &str, row: usize, h: &Header, source: &str) -> Result<(Exact,
                 "candidate",
                 source,
                 format!("row {row}, column {}: {cell} is not finite", h.cols[k]),
+            ));
+        }
+        // the value is read exactly in the comparison: it must be a decimal
+        if Exact::parse(&h.cols[k], cell, false).is_err() {
+            return Err(Error::invalid(
+                "candidate",
+                source,
+                format!(
+                    "row {row}, column {}: {:?} is not a decimal number",
+                    h.cols[k],
+                    crate::error::shorten(cell)
+                ),
             ));
         }
         vals.push((h.idx[k], cell.to_string(), v));

@@ -70,16 +70,21 @@ fn event_line(e: &EventVerdict) -> String {
         Some(false) => "FAIL",
         None => "-",
     };
-    let reference = e.reference.as_ref().map_or("the reference: none".into(), |(t, th)| {
-        format!("reference t = {t}, theta = {th}")
-    });
+    let reference = e
+        .reference
+        .as_ref()
+        .map_or("the reference: none".into(), |(t, th)| {
+            format!("reference t = {t}, theta = {th}")
+        });
     let cand = e.candidate.as_ref().map_or(String::new(), |tr| {
         format!(
             "; candidate rows {}-{} (t = {} .. {})",
             tr.rows.0, tr.rows.1, tr.t.0, tr.t.1
         )
     });
-    let err = e.error.map_or(String::new(), |x| format!("; error {x:+.3e}"));
+    let err = e
+        .error
+        .map_or(String::new(), |x| format!("; error {x:+.3e}"));
     format!(
         "{:<13} {:<8} -> {:<12} {reference}{cand}{err}: {verdict} ({})\n",
         e.kind,
@@ -95,7 +100,7 @@ impl CheckReport {
     pub fn text(&self) -> String {
         let dropped = if self.rows_after_end > 0 {
             format!(
-                "; {} rows after the end of the model left out",
+                "; {} after the end of the model left out",
                 self.rows_after_end
             )
         } else {
@@ -153,10 +158,25 @@ impl CheckReport {
                 c.failures
             ));
         }
-        s.push_str("# phases of the reference on the candidate's rows\n");
+        s.push_str("# phases of the reference on the candidate's rows (worst column: the largest err/limit)\n");
         for (k, ph) in self.phases.iter().enumerate() {
+            let worst = self
+                .columns
+                .iter()
+                .filter_map(|c| c.phases.get(k).map(|p| (c, p)))
+                .max_by(|a, b| a.1.worst_ratio.total_cmp(&b.1.worst_ratio));
+            let worst = worst.map_or(String::new(), |(c, p)| {
+                if c.tol.is_none() {
+                    format!("; worst {}: {} rows in another mode", c.name, p.failures)
+                } else {
+                    format!(
+                        "; worst {}: err/limit {:.3e}, max_abs {:.3e} at t = {}",
+                        c.name, p.worst_ratio, p.max_abs, p.max_abs_t
+                    )
+                }
+            });
             s.push_str(&format!(
-                "phase {} {:<12} rows {}-{} ({}), t = {} .. {}: {}\n",
+                "phase {} {:<12} rows {}-{} ({}), t = {} .. {}: {}{worst}\n",
                 k + 1,
                 ph.tag,
                 ph.row_first,
@@ -164,13 +184,16 @@ impl CheckReport {
                 ph.rows,
                 ph.t_first,
                 ph.t_last,
-                if self.phase_passed(k) { "PASS" } else { "FAIL" }
+                self.phase_verdict(k),
             ));
             for c in &self.columns {
                 let Some(pc) = c.phases.get(k) else { continue };
+                if pc.failures == 0 && pc.undecided == 0 {
+                    continue;
+                }
                 s.push_str(&format!(
-                    "  {:<11} max_abs {:>10.3e} at t = {:<12} failures {}\n",
-                    c.name, pc.max_abs, pc.max_abs_t, pc.failures
+                    "  {:<11} failures {}, undecided {}, max_abs {:.3e} at t = {}\n",
+                    c.name, pc.failures, pc.undecided, pc.max_abs, pc.max_abs_t
                 ));
             }
         }
@@ -191,7 +214,12 @@ impl CheckReport {
             ));
         }
         match &self.first_failure {
+            None if self.first_undecided.is_some() => {}
             None => s.push_str("PASS: every value within tolerance\n"),
+            Some(f) if f.bound == "mode" => s.push_str(&format!(
+                "FAIL: first at row {} (t = {}), column mode: candidate {} vs oracle {}\n",
+                f.row, f.t, f.candidate, f.oracle
+            )),
             Some(f) => s.push_str(&format!(
                 "FAIL: first at row {} (t = {}), column {}: candidate {} vs oracle {}; |err| > {:.3e} ({} decides)\n",
                 f.row, f.t, f.column, f.candidate, f.oracle, f.limit, f.bound
@@ -220,14 +248,50 @@ impl CheckReport {
                 self.branch.why
             ));
         }
+        if let Some(f) = &self.first_undecided {
+            let n: usize = self.columns.iter().map(|c| c.undecided).sum();
+            s.push_str(&format!(
+                "UNDECIDED: {n} value(s) lie within the oracle's error bound of their limit, the first at row {} (t = {}), column {}: candidate {} vs oracle {} (limit {:.3e}); raise --digits or loosen the tolerance\n",
+                f.row, f.t, f.column, f.candidate, f.oracle, f.limit
+            ));
+        }
+        if let Some((row, t)) = &self.first_after_end {
+            let (kind, te) = self.end.clone().unwrap_or_default();
+            s.push_str(&format!(
+                "NOTE: {} row(s) after the end of the model (the {kind} at t = {te}) not compared, the first at row {row} (t = {t})\n",
+                self.rows_after_end
+            ));
+        }
         s
+    }
+
+    /// `PASS`, `FAIL` or `UNDECIDED` for phase `k`.
+    fn phase_verdict(&self, k: usize) -> &'static str {
+        let cols = || self.columns.iter().filter_map(|c| c.phases.get(k));
+        if cols().any(|p| p.failures > 0) {
+            "FAIL"
+        } else if cols().any(|p| p.undecided > 0) {
+            "UNDECIDED"
+        } else {
+            "PASS"
+        }
+    }
+
+    /// `pass`, `fail` or `undecided` (nothing fails, but a value's verdict
+    /// rests on digits the oracle did not verify).
+    pub fn verdict(&self) -> &'static str {
+        match self.exit_code() {
+            0 => "pass",
+            1 => "fail",
+            _ => "undecided",
+        }
     }
 
     /// One CSV row per compared column (phase `all`), then one per column
     /// and phase of the reference (`1 stick/stick`, …).
     pub fn csv(&self) -> String {
         let mut s = String::from(
-            "column,max_abs,max_abs_t,max_rel,max_rel_t,worst_err_over_limit,worst_bound,failures,rtol,atol,phase\n",
+            "column,max_abs,max_abs_t,max_rel,max_rel_t,worst_err_over_limit,worst_bound,failures,undecided,rtol,atol,phase\n",
         );
         let tols = |c: &super::ColumnStats| {
             c.tol.map_or(("-".to_string(), "-".to_string()), |t| {
@@ -237,7 +301,7 @@ impl CheckReport {
         for c in &self.columns {
             let (rt, at) = tols(c);
             s.push_str(&format!(
-                "{},{:.3e},{},{},{},{:.3e},{},{},{rt},{at},all\n",
+                "{},{:.3e},{},{},{},{:.3e},{},{},{},{rt},{at},all\n",
                 c.name,
                 c.max_abs,
                 c.max_abs_t,
@@ -245,7 +309,8 @@ impl CheckReport {
                 c.max_rel_t,
                 c.worst_ratio,
                 c.worst_bound,
-                c.failures
+                c.failures,
+                c.undecided
             ));
         }
         for (k, ph) in self.phases.iter().enumerate() {
@@ -253,11 +318,13 @@ impl CheckReport {
                 let Some(pc) = c.phases.get(k) else { continue };
                 let (rt, at) = tols(c);
                 s.push_str(&format!(
-                    "{},{:.3e},{},-,-,-,-,{},{rt},{at},{} {}\n",
+                    "{},{:.3e},{},-,-,{:.3e},-,{},{},{rt},{at},{} {}\n",
                     c.name,
                     pc.max_abs,
                     pc.max_abs_t,
+                    pc.worst_ratio,
                     pc.failures,
+                    pc.undecided,
                     k + 1,
                     ph.tag
                 ));
@@ -281,8 +348,10 @@ impl CheckReport {
                         json!({
                             "max_abs": num(p.max_abs, strings),
                             "max_abs_t": p.max_abs_t,
+                            "worst_err_over_limit": num(p.worst_ratio, strings),
                             "failures": count(p.failures, strings),
-                            "passed": p.failures == 0,
+                            "undecided": count(p.undecided, strings),
+                            "passed": p.failures == 0 && p.undecided == 0,
                         })
                     })
                     .collect();
@@ -299,15 +368,18 @@ impl CheckReport {
                     "worst_err_over_limit": num(c.worst_ratio, strings),
                     "worst_bound": c.worst_bound,
                     "failures": count(c.failures, strings),
+                    "undecided": count(c.undecided, strings),
                     "phases": phases,
                 })
             })
             .collect();
-        let first = self.first_failure.as_ref().map(|f| {
+        let failure = |f: &super::FirstFailure| {
             json!({"row": count(f.row, strings), "t": f.t, "column": f.column,
                    "candidate": f.candidate, "oracle": f.oracle,
                    "limit": num(f.limit, strings), "bound": f.bound})
-        });
+        };
+        let first = self.first_failure.as_ref().map(failure);
+        let first_undecided = self.first_undecided.as_ref().map(failure);
         let phases: Vec<Value> = self
             .phases
             .iter()
@@ -322,6 +394,7 @@ impl CheckReport {
                     "row_first": count(p.row_first, strings),
                     "row_last": count(p.row_last, strings),
                     "passed": self.phase_passed(k),
+                    "verdict": self.phase_verdict(k).to_lowercase(),
                 })
             })
             .collect();
@@ -343,8 +416,12 @@ impl CheckReport {
         json!({
             "case": self.case,
             "passed": self.passed(),
+            "verdict": self.verdict(),
             "rows": count(self.rows, strings),
             "rows_after_end": count(self.rows_after_end, strings),
+            "first_after_end": self.first_after_end.as_ref().map(|(r, t)| json!({
+                "row": count(*r, strings), "t": t})),
+            "end": self.end.as_ref().map(|(k, t)| json!({"event": k, "t": t})),
             "rtol": tol_num(self.rtol, strings),
             "atol": tol_num(self.atol, strings),
             "atol_unit": "the column's scale (each column's atol applied is under columns)",
@@ -359,6 +436,7 @@ impl CheckReport {
             "transitions": count(self.events.transitions, strings),
             "transitions_unlisted": count(self.events.unlisted, strings),
             "first_failure": first,
+            "first_undecided": first_undecided,
         })
     }
 

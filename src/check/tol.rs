@@ -76,7 +76,10 @@ pub fn parse_override(spec: &str) -> Result<Override> {
     }
     let mut parts = vals.split(',');
     let rtol = tol_value("tol", spec, parts.next().unwrap_or(""))?;
-    let atol = parts.next().map(|a| tol_value("tol", spec, a)).transpose()?;
+    let atol = parts
+        .next()
+        .map(|a| tol_value("tol", spec, a))
+        .transpose()?;
     if parts.next().is_some() {
         return Err(Error::invalid(
             "tol",
@@ -155,9 +158,21 @@ mod tests {
     #[test]
     fn overrides_parse_and_refuse_what_they_cannot_read() {
         let o = parse_override("theta=1e-3,1e-6").unwrap();
-        assert_eq!((o.column.as_str(), o.rtol, o.atol), ("theta", 1e-3, Some(1e-6)));
+        assert_eq!(
+            (o.column.as_str(), o.rtol, o.atol),
+            ("theta", 1e-3, Some(1e-6))
+        );
         assert_eq!(parse_override(" N12 = 0 ").unwrap().atol, None);
-        for bad in ["theta", "omega=1", "t=1", "mode=1", "theta=-1", "theta=1,x", "theta=1,2,3", "theta=inf"] {
+        for bad in [
+            "theta",
+            "omega=1",
+            "t=1",
+            "mode=1",
+            "theta=-1",
+            "theta=1,x",
+            "theta=1,2,3",
+            "theta=inf",
+        ] {
             let e = parse_override(bad).unwrap_err().to_string();
             assert!(e.contains("tol") && e.contains(bad.trim()), "{bad}: {e}");
         }

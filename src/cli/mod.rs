@@ -71,12 +71,17 @@ pub enum Command {
         dir: std::path::PathBuf,
     },
     /// Judge another program's CSV against the oracle (exit 1 if a tolerance is exceeded)
+    #[command(group(clap::ArgGroup::new("reference").required(true).args(["case", "params"])))]
     Check {
         /// The candidate CSV (header row with golden column names; t required)
         candidate: std::path::PathBuf,
         /// The golden case it simulates (a file stem of golden/cases)
         #[arg(long)]
-        case: String,
+        case: Option<String>,
+        /// Or the model it simulates, as a parameter file (the keys of --params; a golden case
+        /// file is one)
+        #[arg(long)]
+        params: Option<std::path::PathBuf>,
         /// Relative tolerance of every column (>= 0)
         #[arg(long, default_value_t = 1e-8, allow_hyphen_values = true, value_parser = tol_arg)]
         rtol: f64,
@@ -98,6 +103,10 @@ pub enum Command {
         /// Tolerance of an event (slip onset, parting, ...), in radians of theta [default: 1e-3]
         #[arg(long, allow_hyphen_values = true, value_parser = tol_arg)]
         event_tol: Option<f64>,
+        /// Rows after the end of the model (the first impact): report (left out, counted, the
+        /// first named) or refuse (exit 2)
+        #[arg(long, value_enum, default_value_t = PastEndArg::Report)]
+        past_end: PastEndArg,
         /// Significant digits of the oracle values compared against, 1 to 2000
         #[arg(long, default_value_t = 20, allow_hyphen_values = true, value_parser = digits_arg)]
         digits: u32,
@@ -154,6 +163,13 @@ pub enum Command {
 pub enum BranchArg {
     Stay,
     Part,
+}
+
+/// `check --past-end`.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum PastEndArg {
+    Report,
+    Refuse,
 }
 
 /// `check --branch`.
@@ -446,12 +462,14 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
         Command::Check {
             candidate,
             case,
+            params,
             rtol,
             atol,
             tols,
             branch,
             part_at,
             event_tol,
+            past_end,
             digits,
             max_rows,
             golden,
@@ -459,7 +477,22 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             format,
         } => {
             use cylroll::check::BranchRequest;
-            let case = cylroll::golden::find_case(&golden, &case)?;
+            let case = match (case, params) {
+                (Some(name), _) => cylroll::golden::find_case(&golden, &name)?,
+                (None, Some(path)) => {
+                    let table = input::read_toml(&path, "params")?;
+                    let (pairs, description, steps) =
+                        cylroll::golden::case_parts(&table).map_err(|e| in_file(e, &path))?;
+                    let model = input::model_from_pairs(&pairs).map_err(|e| in_file(e, &path))?;
+                    cylroll::golden::Case {
+                        name: path.display().to_string(),
+                        description,
+                        model,
+                        steps,
+                    }
+                }
+                (None, None) => unreachable!("clap requires --case or --params"),
+            };
             let branch = match (part_at, branch) {
                 (Some(a), _) => BranchRequest::PartAt(Exact::parse("part-at", &a, true)?),
                 (None, CheckBranchArg::Auto) => BranchRequest::Auto,
@@ -474,6 +507,10 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             if let Some(e) = event_tol {
                 lim.event_tol = e;
             }
+            lim.past_end = match past_end {
+                PastEndArg::Report => cylroll::check::PastEnd::Report,
+                PastEndArg::Refuse => cylroll::check::PastEnd::Refuse,
+            };
             let src = cylroll::check::File::new(&candidate);
             let rep = cylroll::check::check_source(&src, &case, &lim)?;
             let out = match format {
@@ -481,7 +518,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 Format::Csv => rep.csv(),
                 Format::Text => rep.text(),
             };
-            return Ok((out, if rep.passed() { 0 } else { 1 }));
+            return Ok((out, rep.exit_code()));
         }
         Command::Audit { equation, out } => {
             return cylroll::audit::run(equation.as_deref(), &out).map(|s| (s, 0))
