@@ -607,8 +607,7 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
         if let (Some(te), Some((kind, te_text))) = (&t_end, &end) {
             if t.to_float(te.prec()) > *te {
                 if lim.past_end == PastEnd::Refuse {
-                    return Err(Error::invalid(
-                        "candidate",
+                    return Err(read::refuse(
                         src.name(),
                         format!(
                             "row {row}: t = {t} is after the end of the model (the {kind} at t = \
@@ -633,12 +632,11 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
     flush(&mut chunk, &mut judge)?;
     let n_rows = rows.rows;
     if n_rows == 0 {
-        return Err(Error::invalid("candidate", src.name(), "has no data rows"));
+        return Err(read::refuse(src.name(), "has no data rows"));
     }
     if n_rows == after_end {
         let (kind, te) = end.clone().unwrap_or_default();
-        return Err(Error::invalid(
-            "candidate",
+        return Err(read::refuse(
             src.name(),
             format!(
                 "has no row before the end of the model (the {kind} at t = {te}): every row, \

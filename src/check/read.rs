@@ -20,6 +20,16 @@ const V1_HEADERS: [&str; 2] = [
     "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12,s1,s12,work,mode",
 ];
 
+/// A refusal of the candidate `source` (its name in full: a path is not
+/// shortened, so the file is always named).
+pub fn refuse(source: &str, allowed: impl ToString) -> Error {
+    Error::InvalidParameter {
+        name: "candidate".into(),
+        value: source.to_string(),
+        allowed: allowed.to_string(),
+    }
+}
+
 /// A candidate that can be read from its start as often as needed.
 pub trait Source {
     /// Its name in messages (a path, or `candidate`).
@@ -68,7 +78,7 @@ impl Source for File {
     }
     fn open(&self) -> Result<Box<dyn BufRead + '_>> {
         let f = std::fs::File::open(&self.path)
-            .map_err(|e| Error::invalid("candidate", &self.name, format!("cannot be read: {e}")))?;
+            .map_err(|e| refuse(&self.name, format!("cannot be read: {e}")))?;
         Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, f)))
     }
 }
@@ -119,13 +129,7 @@ impl<'a> Rows<'a> {
         let mut buf = Vec::new();
         let header = loop {
             match next_line(&mut reader, &mut buf, &source)? {
-                None => {
-                    return Err(Error::invalid(
-                        "candidate",
-                        &source,
-                        "is empty; expected a header row",
-                    ))
-                }
+                None => return Err(refuse(&source, "is empty; expected a header row")),
                 Some(l) if l.trim().is_empty() => continue,
                 Some(l) => break crate::model::input::strip_bom(&l).to_string(),
             }
@@ -153,8 +157,7 @@ impl<'a> Rows<'a> {
             }
             self.rows += 1;
             if self.rows > self.max_rows {
-                return Err(Error::invalid(
-                    "candidate",
+                return Err(refuse(
                     &self.source,
                     format!(
                         "has more than {} data rows (raise --max-rows, at most 100000000)",
@@ -168,16 +171,14 @@ impl<'a> Rows<'a> {
             let (t, cells) = parse_row(&line, self.rows, &self.header, &self.source)?;
             let row = self.rows;
             if t.signum() < 0 {
-                return Err(Error::invalid(
-                    "candidate",
+                return Err(refuse(
                     &self.source,
                     format!("row {row}: t = {t} is before the start (t must be >= 0)"),
                 ));
             }
             if let Some(p) = &self.prev_t {
                 if t.coef < p.coef {
-                    return Err(Error::invalid(
-                        "candidate",
+                    return Err(refuse(
                         &self.source,
                         format!(
                             "row {row}: t = {t} is before the previous row's t = {p}: rows must be \
@@ -212,16 +213,11 @@ fn parse_header(line: &str, source: &str, case: &Case, lim: &Limits) -> Result<H
     for c in &cols {
         match known.iter().position(|g| g == c) {
             Some(i) if idx.contains(&i) => {
-                return Err(Error::invalid(
-                    "candidate",
-                    source,
-                    format!("has the column {c:?} twice"),
-                ))
+                return Err(refuse(source, format!("has the column {c:?} twice")))
             }
             Some(i) => idx.push(i),
             None => {
-                return Err(Error::invalid(
-                    "candidate",
+                return Err(refuse(
                     source,
                     format!("unknown column {c:?}; allowed: {}", known.join(", ")),
                 ))
@@ -231,10 +227,9 @@ fn parse_header(line: &str, source: &str, case: &Case, lim: &Limits) -> Result<H
     let t_col = cols
         .iter()
         .position(|c| c == "t")
-        .ok_or_else(|| Error::invalid("candidate", source, "needs a column named t"))?;
+        .ok_or_else(|| refuse(source, "needs a column named t"))?;
     if cols.len() < 2 {
-        return Err(Error::invalid(
-            "candidate",
+        return Err(refuse(
             source,
             format!(
                 "has only the column t: nothing to compare (add any of {})",
@@ -261,19 +256,17 @@ fn next_line<R: BufRead + ?Sized>(
     let n = r
         .take(MAX_LINE_BYTES + 1)
         .read_until(b'\n', buf)
-        .map_err(|e| Error::invalid("candidate", source, format!("cannot be read: {e}")))?;
+        .map_err(|e| refuse(source, format!("cannot be read: {e}")))?;
     if n == 0 {
         return Ok(None);
     }
     if buf.len() as u64 > MAX_LINE_BYTES {
-        return Err(Error::invalid(
-            "candidate",
+        return Err(refuse(
             source,
             format!("has a line longer than {MAX_LINE_BYTES} bytes"),
         ));
     }
-    let text = std::str::from_utf8(buf)
-        .map_err(|_| Error::invalid("candidate", source, "is not UTF-8 text"))?;
+    let text = std::str::from_utf8(buf).map_err(|_| refuse(source, "is not UTF-8 text"))?;
     Ok(Some(text.trim_end_matches(['\n', '\r']).to_string()))
 }
 
@@ -281,8 +274,7 @@ fn next_line<R: BufRead + ?Sized>(
 fn parse_row(line: &str, row: usize, h: &Header, source: &str) -> Result<(Exact, Vec<Cell>)> {
     let cells: Vec<&str> = line.split(',').map(|c| c.trim()).collect();
     if cells.len() != h.cols.len() {
-        return Err(Error::invalid(
-            "candidate",
+        return Err(refuse(
             source,
             format!(
                 "row {row} has {} fields, the header {}",
@@ -292,8 +284,7 @@ fn parse_row(line: &str, row: usize, h: &Header, source: &str) -> Result<(Exact,
         ));
     }
     let t = Exact::parse("t", cells[h.t_col], false).map_err(|_| {
-        Error::invalid(
-            "candidate",
+        refuse(
             source,
             format!(
                 "row {row}: t = {:?} is not a number",
@@ -311,8 +302,7 @@ fn parse_row(line: &str, row: usize, h: &Header, source: &str) -> Result<(Exact,
             continue;
         }
         let v: f64 = cell.parse().map_err(|_| {
-            Error::invalid(
-                "candidate",
+            refuse(
                 source,
                 format!(
                     "row {row}, column {}: {:?} is not a number",
@@ -322,16 +312,14 @@ fn parse_row(line: &str, row: usize, h: &Header, source: &str) -> Result<(Exact,
             )
         })?;
         if !v.is_finite() {
-            return Err(Error::invalid(
-                "candidate",
+            return Err(refuse(
                 source,
                 format!("row {row}, column {}: {cell} is not finite", h.cols[k]),
             ));
         }
         // the value is read exactly in the comparison: it must be a decimal
         if Exact::parse(&h.cols[k], cell, false).is_err() {
-            return Err(Error::invalid(
-                "candidate",
+            return Err(refuse(
                 source,
                 format!(
                     "row {row}, column {}: {:?} is not a decimal number",
