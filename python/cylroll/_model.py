@@ -266,7 +266,8 @@ class Model:
         """Proved enclosures (the command line's ``--rigorous``).
 
         ``what="separation"``: ``theta_s`` and, when finite and enclosed,
-        ``t_s``; ``what="time"`` with ``theta``: ``t``; ``what="forces"``
+        ``t_s``, and where the motion is not unique the branch point
+        ``theta_indeterminate``, ``t_indeterminate``; ``what="time"`` with ``theta``: ``t``; ``what="forces"``
         with ``theta``: the forces, rates and needed friction that can be
         enclosed. With friction only ``what="separation"``, from a start where
         both contacts stick: where sticking ends, ``theta_slip_onset`` and

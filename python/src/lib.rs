@@ -459,7 +459,7 @@ fn enclosure(v: &cylroll::oracle::rigorous::Proved, digits: u32) -> Enclosure {
 }
 
 /// `enclose`: proved enclosures (`--rigorous`) of the ideal models'
-/// `separation` (θs, t_s), `time` (t) or `forces` at `theta`, and with
+/// `separation` (θs, t_s, and θ*, t* where the motion is not unique), `time` (t) or `forces` at `theta`, and with
 /// friction of where sticking ends (`separation`: θ and t of the first slip
 /// onset, or θs and t_s when the contact opens there); a quantity that
 /// cannot be enclosed is left out (its verified value is elsewhere).
@@ -502,6 +502,14 @@ fn enclose(
         };
         let mut o = Oracle::new(&ideal, digits)?;
         let th = theta.map(|t| parse_angle("theta", &t)).transpose()?;
+        // the branch point's verified angle, the start of its proof (the
+        // command line's separation --rigorous encloses it too)
+        let branch_start = if th.is_none() {
+            let ths = o.separation_angle()?;
+            o.branch_point(&ths)?.map(|v| v.value)
+        } else {
+            None
+        };
         // the command line's retry: twice the precision where digits fall
         // short, the first result kept if the second fails
         let proved = cylroll::oracle::rigorous::prove_with(
@@ -510,7 +518,16 @@ fn enclose(
                 Ok(match &th {
                     None => {
                         let (a, b) = o.rigorous_separation(p)?;
-                        std::iter::once(a).chain(b.ok()).collect()
+                        // θ*, t* where the motion is not unique (left out
+                        // when the proof does not close, like every value)
+                        let star = match &branch_start {
+                            Some(start) => match o.rigorous_branch_point(start, &a.iv, p) {
+                                Ok((th, t)) => std::iter::once(th).chain(t.ok()).collect(),
+                                Err(_) => Vec::new(),
+                            },
+                            None => Vec::new(),
+                        };
+                        std::iter::once(a).chain(b.ok()).chain(star).collect()
                     }
                     Some(t) if what == "time" => vec![o.rigorous_time(t, p)?],
                     Some(t) => o.rigorous_forces(t, p)?.into_iter().flatten().collect(),

@@ -320,3 +320,16 @@ def test_where_sticking_ends_is_enclosed_with_friction():
     # a start that slips at once has nothing enclosed, and says so
     with pytest.raises(cylroll.NotPhysicalError, match="nothing is enclosed"):
         cylroll.Model(theta0="1/10", mu_contact="0.001").enclose("separation")
+
+
+def test_the_branch_point_is_enclosed():
+    """θ* of the main case from θ0 = 1/10 (0.96571317498136093557878…, an
+    independent Newton–Euler derivation: tests/fixtures/branch_independent.toml)
+    lies inside its proved enclosure, which comes before θs's."""
+    enc = {e.name: e for e in cylroll.Model(theta0="1/10").enclose("separation", digits=30)}
+    star = enc["theta_indeterminate"]
+    assert Decimal("0.965713174981360935578780994479426") in star
+    assert star.digits == 30 and "t_indeterminate" in enc
+    lo_s, _ = enc["theta_s"].interval()
+    _, hi_star = star.interval()
+    assert hi_star < lo_s
