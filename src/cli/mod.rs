@@ -608,6 +608,14 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
 
 /// Entry point used by `main`: prints or reports the error, returns the exit code.
 pub fn main_with(args: Vec<String>) -> i32 {
+    // a closed standard output (`>&-`): Rust's runtime reopens a closed
+    // descriptor 1 on /dev/null (read-write) before main, so the answer
+    // would vanish with exit 0. A shell's `> /dev/null` opens it write-only;
+    // read-write /dev/null on descriptor 1 is the runtime's replacement.
+    if stdout_was_closed() {
+        eprintln!("error: cannot write standard output: it is closed (nothing was computed)");
+        return 4;
+    }
     let cli = match Cli::try_parse_from(args) {
         Ok(c) => c,
         Err(e) => {
@@ -634,6 +642,25 @@ pub fn main_with(args: Vec<String>) -> i32 {
             e.exit_code()
         }
     }
+}
+
+/// Whether descriptor 1 is the runtime's stand-in for a closed standard
+/// output: /dev/null opened read-write (Linux: /proc/self/fd and fdinfo).
+fn stdout_was_closed() -> bool {
+    #[cfg(target_os = "linux")]
+    {
+        let target = std::fs::read_link("/proc/self/fd/1");
+        if target.is_ok_and(|t| t == std::path::Path::new("/dev/null")) {
+            let info = std::fs::read_to_string("/proc/self/fdinfo/1").unwrap_or_default();
+            let flags = info
+                .lines()
+                .find_map(|l| l.strip_prefix("flags:"))
+                .and_then(|f| u32::from_str_radix(f.trim(), 8).ok());
+            // O_ACCMODE = 3, O_RDWR = 2
+            return flags.is_some_and(|f| f & 3 == 2);
+        }
+    }
+    false
 }
 
 /// A message on one line: clap's multi-line errors (tip, usage) joined, the

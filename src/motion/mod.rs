@@ -260,8 +260,8 @@ fn after_end(t: &Exact, end: &Float, what: &str) -> Error {
         "times",
         t,
         format!(
-            "must not be after {what} at t = {} (the model ends there)",
-            crate::numeric::decimal::to_sig(end, 17)
+            "must not be after {what} at t ≈ {} (the model ends there)",
+            crate::numeric::decimal::approx_text(end)
         ),
     )
 }
