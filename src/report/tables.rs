@@ -119,6 +119,7 @@ fn table(
         intro,
         header,
         rows,
+        csv: format!("{id}.csv"),
     }
 }
 
@@ -619,7 +620,7 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
 /// A verified value rounded for prose.
 fn r6(v: &Verified) -> String {
     let x = v.value.to_f64();
-    super::plot::minus(&format!("{x:.6}"))
+    super::model::minus(&format!("{x:.6}"))
 }
 
 /// Plain words for the oracle's technical names in a note it wrote.
