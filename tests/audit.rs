@@ -241,3 +241,26 @@ fn cli_audit_one_equation() {
         .assert()
         .code(2);
 }
+
+/// Beside eq. (36): the branch point of the paper's cases from the top,
+/// against the roots of the closed-form cubics of
+/// tests/fixtures/branch_derivation.md (mpmath, c0 = 1, ν0 = 0):
+/// roll/roll 0.96220953928886545930, slip/roll 0.85061907623976005918; the
+/// frictionless contacts and the held cylinder have none.
+#[test]
+fn the_branch_point_is_stated_beside_eq_36_and_among_the_omissions() {
+    let notes = row("36").finding.notes.join(" ");
+    assert!(
+        notes.contains("roll/roll: θ* = 0.962209539289 < θs = 1.04719755120"),
+        "{notes}"
+    );
+    assert!(
+        notes.contains("slip/roll: θ* = 0.850619076240 < θs"),
+        "{notes}"
+    );
+    for none in ["roll/slip: none", "slip/slip: none", "fixed/roll: none"] {
+        assert!(notes.contains(none), "{none}: {notes}");
+    }
+    let md = audit::render_report(rows());
+    assert!(md.contains("## What the paper does not say") && md.contains("θ* = 0.962209539289"));
+}

@@ -161,18 +161,21 @@ class Event:
     ``contact``: ``"floor"``, ``"contact"`` or ``None``; ``mode``: the mode
     entered (``"stick/slip+"`` = floor sticking, contact slipping forwards;
     ``"flight"`` after separation; ``None`` at the end of the model); ``t``
-    and ``theta``: verified :class:`Value` s.
+    and ``theta``: verified :class:`Value` s; ``alternatives``: at a branch
+    point every other continuation consistent there (``"part"``, and any other
+    closed mode such as ``"stick/slip+"``), else empty.
     """
 
-    __slots__ = ("kind", "contact", "mode", "t", "theta")
+    __slots__ = ("kind", "contact", "mode", "t", "theta", "alternatives")
 
     def __init__(self, kind: str, contact: Optional[str], mode: Optional[str], t: Value,
-                 theta: Value) -> None:
+                 theta: Value, alternatives: Sequence[str] = ()) -> None:
         self.kind = kind
         self.contact = contact
         self.mode = mode
         self.t = t
         self.theta = theta
+        self.alternatives = list(alternatives)
 
     def __repr__(self) -> str:
         where = f" ({self.contact})" if self.contact else ""
@@ -192,8 +195,8 @@ class _Motion:
     notes: List[str]
 
     def _motion(self, d: Dict[str, Any]) -> None:
-        self.events = [Event(k, c, m, Value._from(t), Value._from(th))
-                       for (k, c, m, t, th) in d.get("events", [])]
+        self.events = [Event(k, c, m, Value._from(t), Value._from(th), alt)
+                       for (k, c, m, t, th, alt) in d.get("events", [])]
         self.start_mode = d.get("start_mode")
         self.end = d.get("end")
         self.impact_surface = d.get("impact_surface")

@@ -54,7 +54,14 @@ fn value(v: &Verified) -> Value {
 type Echo = Vec<(&'static str, String)>;
 
 /// An event as it crosses into Python: kind, contact, mode entered, t, θ.
-type Event = (String, Option<String>, Option<String>, Value, Value);
+type Event = (
+    String,
+    Option<String>,
+    Option<String>,
+    Value,
+    Value,
+    Vec<String>,
+);
 
 fn values(vs: &[Verified]) -> Vec<Value> {
     vs.iter().map(value).collect()
@@ -250,6 +257,7 @@ fn events(a: &Answer) -> Vec<Event> {
                 e.phase.map(|p| p.tag()),
                 value(&e.t),
                 value(&e.theta),
+                e.also.clone(),
             )
         })
         .collect()

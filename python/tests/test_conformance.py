@@ -45,14 +45,15 @@ def test_case_params_of_golden_cases():
 
 def test_initial_state_matches_the_reference_rates():
     """θ̇0 and the conserved momentum of ω0 give the bodies' start velocities; the
-    reference's φ1, x1, x2, y2 (differentiated) agree."""
+    reference's velocity columns agree."""
     p = reference.params("moving_start")
     pose, vel = ad.initial_state(p)
-    ref = reference.rows_at("moving_start", [0.0], h=1e-6)
-    assert vel[2] == pytest.approx(ref["phi1_dot"][0], abs=1e-5)
-    assert vel[0] == pytest.approx(ref["x1_dot"][0], abs=1e-5)
-    assert vel[3] == pytest.approx(ref["x2_dot"][0], abs=1e-5)
-    assert vel[4] == pytest.approx(ref["y2_dot"][0], abs=1e-5)
+    ref = reference.rows_at("moving_start", [0.0])
+    assert vel[2] == pytest.approx(ref["phi1_dot"][0], abs=1e-12)
+    assert vel[0] == pytest.approx(ref["x1_dot"][0], abs=1e-12)
+    assert vel[3] == pytest.approx(ref["x2_dot"][0], abs=1e-12)
+    assert vel[4] == pytest.approx(ref["y2_dot"][0], abs=1e-12)
+    assert ref["phi2"][0] == 0.0 and reference.phi2_start("moving_start") == 0.0
     assert pose[3] == pytest.approx(ref["x2"][0], abs=1e-12)
     q = kinematics.derive(p, [pose], [vel])
     assert q["theta_dot"][0] == pytest.approx(0.1, abs=1e-12)
@@ -88,7 +89,7 @@ def test_kinematics_closed_forms_rolling():
     np.testing.assert_allclose(q["theta_dot"], thd, atol=1e-13)
     np.testing.assert_allclose(q["phi1"], a1 - a1[0], atol=1e-14)
     np.testing.assert_allclose(q["phi1_dot"], w1, atol=1e-14)
-    # the paper's rolling relation r2 φ2 = r1 (φ1 − θ) in the README's gauge φ2(0) = −r1 θ0 / r2
+    # the paper's rolling relation r2 φ2 = r1 (φ1 − θ), in the paper's gauge φ2(0) = −r1 θ0 / r2
     np.testing.assert_allclose(0.5 * q["phi2"], 1.0 * (q["phi1"] - q["theta"]), atol=1e-13)
     np.testing.assert_allclose(0.5 * q["phi2_dot"], q["phi1_dot"] - q["theta_dot"], atol=1e-13)
     np.testing.assert_allclose(q["s1"], 0.0, atol=1e-14)
@@ -256,10 +257,56 @@ def test_slip_onset_at_mu_0_3_matches_the_reference(engine):
 # --- the reference side and the command -----------------------------------------------------------
 
 def test_branch_point_of_the_main_case():
+    """θ*, t* and θs of the main case (tests/fixtures/branch_independent.toml,
+    an independent Newton–Euler derivation); a frictionless pair is unique."""
     bp = reference.branch_point("mujoco_main")
-    assert bp["theta"] == pytest.approx(0.965713, abs=1e-5)
-    assert bp["t"] == pytest.approx(5.05157, abs=1e-4)
-    assert reference.branch_point("slip_slip") is None
+    assert bp["theta"] == pytest.approx(0.9657131749813609, abs=1e-12)
+    assert bp["t"] == pytest.approx(5.051573457307166, abs=1e-12)
+    assert bp["N12"] > 0.05
+    a, b = reference.window("mujoco_main")
+    assert (a, b) == pytest.approx((0.9657131749813609, 1.0507720620185106), abs=1e-12)
+    assert reference.branch_point("slip_slip") is None and reference.window("slip_slip") is None
+
+
+def test_the_reference_on_each_branch():
+    """On the part branch the cylinders part at θ* and fly (N12 = F21 = 0) while
+    the stay branch still presses; parting at an angle inside the window parts
+    there; both end at their first impact."""
+    t_star = reference.branch_point("mujoco_main")["t"]
+    t_s = reference.closed_end("mujoco_main")["t"]
+    tm = 0.5 * (t_star + t_s)
+    stay = reference.rows_at("mujoco_main", [tm])
+    part = reference.rows_at("mujoco_main", [tm], "part")
+    assert stay["N12"][0] > 0.01 and part["N12"][0] == 0.0 and part["F21"][0] == 0.0
+    sep = [e for e in reference.events("mujoco_main", "part") if e["kind"] == "separation"]
+    assert sep[0]["theta"] == pytest.approx(0.9657131749813609, abs=1e-12)
+    at = [e for e in reference.events("mujoco_main", 1.0) if e["kind"] == "separation"]
+    assert at[0]["theta"] == pytest.approx(1.0, abs=1e-12)
+    assert reference.t_max("mujoco_main", "part") != reference.t_max("mujoco_main")
+    ph = reference.phases("mujoco_main", "part")
+    assert ph["after_parting"][0] == pytest.approx(t_star, abs=1e-12)
+
+
+class _Run:
+    def __init__(self, theta):
+        self._theta = theta
+
+    def event(self, kind, contact=None):
+        return None if self._theta is None else dict(t=1.0, theta=self._theta)
+
+
+def test_the_branch_an_engine_took():
+    """Where the motion is not unique the engine is judged on the branch it took:
+    near θ* the part branch, near θs the closed one, inside the window the
+    reference parting at the engine's angle, before θ* not lawful."""
+    from cylroll.conformance.scorecard import _branch
+    win = (0.9657, 1.0508)
+    assert _branch(_Run(0.9660), win) == ("part", "part")
+    assert _branch(_Run(1.0500), win) == ("stay", "stay")
+    assert _branch(_Run(1.0), win) == ("part_at", 1.0)
+    assert _branch(_Run(0.90), win) == ("outside", "stay")
+    assert _branch(_Run(None), win) == (None, "stay")
+    assert _branch(_Run(0.9660), None) == (None, "stay")
 
 
 def test_command_usage_errors(tmp_path, capsys):

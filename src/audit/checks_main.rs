@@ -639,7 +639,52 @@ pub fn eq36(cx: &mut Ctx) -> Result<Finding> {
             oracle: ths,
         });
     }
+    f.note(branch_point_note()?);
     Ok(f)
+}
+
+/// Eq. (36)'s condition r θ̇² = g cos θ is where cylinder 2, falling
+/// freely, would leave a cylinder 1 that does not accelerate. On a held
+/// cylinder it is N12 = 0 itself; on the paper's other cases it is met
+/// *before* N12 = 0 while the cylinders still press on each other: from
+/// there parting is as lawful as staying together (the branch point θ*), and
+/// the paper's θs is the end of the closed branch only.
+fn branch_point_note() -> Result<String> {
+    use crate::model::{Ideal, Params, Start};
+    use crate::oracle::ideal::Oracle;
+    let mut rows = Vec::new();
+    for (floor, contact, name) in [
+        (Floor::Roll, Contact::Roll, "sec. 2, roll/roll"),
+        (Floor::Slip, Contact::Roll, "sec. 3.2, slip/roll"),
+        (Floor::Roll, Contact::Slip, "sec. 3.3, roll/slip"),
+        (Floor::Slip, Contact::Slip, "sec. 3.1, slip/slip"),
+        (Floor::Fixed, Contact::Roll, "footnote 8, fixed/roll"),
+    ] {
+        let m = Ideal::new(
+            Params::identical_solid(),
+            floor,
+            contact,
+            Start::rest(crate::exact::Exact::zero()),
+        )?;
+        let mut o = Oracle::new(&m, 12)?;
+        let ths = o.separation_angle()?;
+        let star = o.branch_point(&ths)?;
+        rows.push(match star {
+            Some(st) => format!("{name}: θ* = {} < θs = {}", st.text, ths.text),
+            None => format!("{name}: none (unique up to θs = {})", ths.text),
+        });
+    }
+    Ok(format!(
+        "the condition r θ̇² = g cos θ of this footnote is where cylinder 2, falling freely, \
+         would leave a cylinder 1 that does not accelerate; on a held cylinder it is N12 = 0 \
+         itself, but on a lower cylinder free to move under a rolling contact it is met before N12 = 0 while the cylinders \
+         still press on each other: from there (the branch point θ*) parting is as lawful as \
+         staying together in the rigid-body model, and the θs of eqs. (34), (37) and sec. 3.2 is \
+         the end of the closed branch only (reached when the contact persists, the limit of stiff \
+         compliant contact). Identical solid cylinders from rest at the top (limits θ0 → 0+): {}; \
+         a frictionless contact or a held cylinder has no branch point",
+        rows.join("; ")
+    ))
 }
 
 pub fn eq37(cx: &mut Ctx) -> Result<Finding> {

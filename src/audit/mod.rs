@@ -411,6 +411,10 @@ const CONTRADICTIONS: &str = "\
 - **P_x in (81) against (100).** (81) holds only if P_x is the expression (13), without the ṙ term; (100) defines P_x with the ṙ term. With (100)'s P_x, (81) counts m2 r1 ṙ sin θ twice. Evidence: `--equation 81`.
 ";
 
+const OMISSIONS: &str = "\
+- **Where the motion is not unique (eqs. (34), (36), (37)).** The paper's θs, where N12 = 0, is reached only if the contact persists. On a lower cylinder free to move under a rolling contact, the condition r θ̇² = g cos θ of footnote 8 — cylinder 2 falling freely would leave a cylinder 1 that does not accelerate — is met earlier, at θ* < θs, while the cylinders still press on each other: from θ* parting is as lawful as staying together in the rigid-body model (identical solid cylinders from the top: θ* = 0.962209539289, θs = π/3). The closed branch to θs is the limit of stiff compliant contact; velocity-level complementarity engines part at θ*. A frictionless contact or a held cylinder has no such point. Evidence: `--equation 36` (θ* for the paper's cases); `cylroll separation` reports θ*, and `--branch part` follows the other branch.
+";
+
 const SLIPS: &str = "\
 - (24): 'the (Mathieu) equation for an inverted pendulum' — θ̈ = (g/2r) θ has a constant coefficient; Mathieu's equation has a periodic one.
 - (43): `cos θs^2` is typeset ambiguously (cos²θs or cos(θs²)); neither reading is right (see the erratum).
@@ -517,6 +521,9 @@ pub fn render_report(rows: &[Row]) -> String {
     errata_section(rows, &mut s);
     let _ = writeln!(s, "## Where the paper contradicts itself\n");
     s.push_str(CONTRADICTIONS);
+    s.push('\n');
+    let _ = writeln!(s, "## What the paper does not say\n");
+    s.push_str(OMISSIONS);
     s.push('\n');
     let _ = writeln!(s, "## Slips that change no value\n");
     s.push_str(SLIPS);

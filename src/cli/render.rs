@@ -118,7 +118,7 @@ fn text(a: &Answer) -> String {
     }
     for (i, e) in a.events.iter().enumerate() {
         out.push_str(&format!(
-            "event {}: {}{} at t = {} [{} digits], theta = {} [{} digits]{}\n",
+            "event {}: {}{} at t = {} [{} digits], theta = {} [{} digits]{}{}\n",
             i + 1,
             e.kind.name(),
             e.which
@@ -130,7 +130,12 @@ fn text(a: &Answer) -> String {
             e.theta.digits,
             e.phase
                 .map(|m| format!(" -> {m}"))
-                .unwrap_or_else(|| " (end of the model)".into())
+                .unwrap_or_else(|| " (end of the model)".into()),
+            if e.also.is_empty() {
+                String::new()
+            } else {
+                format!("; also consistent there: {}", e.also.join(", "))
+            }
         ));
     }
     if a.question == Question::Trajectory {
@@ -196,7 +201,7 @@ fn json_text(a: &Answer) -> String {
             .events
             .iter()
             .map(|e| {
-                json!({
+                let mut j = json!({
                     "kind": e.kind.name(),
                     "contact": e.which.map(|w| w.name()),
                     "mode": e.phase.map(|p| p.tag()),
@@ -204,7 +209,11 @@ fn json_text(a: &Answer) -> String {
                     "theta": e.theta.text,
                     "digits_verified": {"t": e.t.digits.to_string(), "theta": e.theta.digits.to_string()},
                     "error_bounds": {"t": e.t.err_text(), "theta": e.theta.err_text()},
-                })
+                });
+                if !e.also.is_empty() {
+                    j["alternatives"] = e.also.clone().into();
+                }
+                j
             })
             .collect();
         o.insert("events".into(), evs.into());
@@ -391,6 +400,13 @@ fn csv(a: &Answer) -> String {
             i + 1,
             e.phase.map_or_else(|| "end".to_string(), |p| p.tag())
         ));
+        if !e.also.is_empty() {
+            out.push_str(&format!(
+                "event{}_alternatives,\"{}\",,{tail}\n",
+                i + 1,
+                e.also.join(" ")
+            ));
+        }
     }
     for (i, v) in a.values.iter().enumerate() {
         match a.proved.get(i).and_then(|p| p.as_ref()) {

@@ -27,7 +27,9 @@
 //! against this module.
 
 pub mod dynamics;
+pub mod half_angle;
 pub mod kkt;
+pub mod polys;
 pub mod system;
 
 use crate::error::{Error, Result};

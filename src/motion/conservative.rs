@@ -200,6 +200,14 @@ pub fn first_phase(
         .into_iter()
         .next()
         .ok_or_else(|| Error::not_physical("internal: no end of the conservative phase"))?;
+    if ending == Ending::PartAt {
+        let lawful = branch_at
+            .as_ref()
+            .is_some_and(|(d, e)| Float::with_val(p, &d_end + e) >= *d);
+        if !lawful {
+            return Err(super::part_at_refused(wants.branch));
+        }
+    }
     // the branch window on the `stay` branch (parting lawful from the branch
     // point to the end of the closed branch)
     let window = branch_at.as_ref().and_then(|(d, _)| {
@@ -237,6 +245,7 @@ pub fn first_phase(
                 which: Some(Which::Contact),
                 phase: Some(Phase::Contact(mode)),
                 after: Some(at.clone()),
+                also: Vec::new(),
                 at,
                 t_err,
                 theta_err: err.clone(),

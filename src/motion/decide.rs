@@ -217,3 +217,27 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
         }),
     }
 }
+
+/// Every continuation consistent at a branch point besides staying in
+/// `mode`: `part` (the contact opening, consistent there by definition)
+/// and any other closed mode that is consistent too (sliding from rest
+/// where sticking is still consistent: with μs = μk this happens only
+/// together with parting).
+///
+/// Errors: a singular constraint system of a candidate (reported as
+/// inconsistent, not as an error) never; a failed KKT evaluation.
+pub fn alternatives(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<Vec<String>> {
+    let mut out = vec!["part".to_string()];
+    for f in ctx.candidates(Which::Floor) {
+        for c in ctx.candidates(Which::Contact) {
+            let m = Mode {
+                floor: f,
+                contact: c,
+            };
+            if m != mode && inconsistency(ctx, m, q, v)?.is_none() {
+                out.push(m.tag());
+            }
+        }
+    }
+    Ok(out)
+}

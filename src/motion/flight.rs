@@ -380,6 +380,7 @@ impl Flight {
                     t_err: Float::new(p),
                     theta_err: Float::new(p),
                     after: Some(self.point(&t)),
+                    also: Vec::new(),
                 });
             }
         }

@@ -75,6 +75,9 @@ pub struct EventRec {
     /// its forces and accelerations at the event; None at the end of the
     /// model).
     pub after: Option<Point>,
+    /// At a branch point, every other continuation consistent there: `part`
+    /// and any other closed mode (empty for other events).
+    pub also: Vec<String>,
 }
 
 /// The route that computed a phase.
@@ -453,6 +456,7 @@ impl Walk<'_> {
             t_err: imp_err,
             theta_err,
             after: None,
+            also: Vec::new(),
         });
         self.out.separation = Some(at.clone());
         self.out.end = Some(End::Impact(fli.impact.surface));
@@ -470,10 +474,37 @@ impl Walk<'_> {
 /// ([`Error::NotConverged`]); an integrator's failure.
 pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<Motion> {
     let mut m = walk(model, req, prec, caches)?;
+    if m.events.iter().any(|e| e.kind == Kind::Indeterminate) {
+        let ctx = Ctx::new(model, prec)?;
+        for e in m
+            .events
+            .iter_mut()
+            .filter(|e| e.kind == Kind::Indeterminate)
+        {
+            if let Some(mode) = e.at.phase.mode() {
+                let s = conservative::sample_at(&ctx, mode, &e.at)?;
+                e.also = decide::alternatives(&ctx, mode, &s.q, &s.v)?;
+            }
+        }
+    }
     sides::mark_near(&mut m, req, prec);
     sides::apply_sides(&mut m, req)?;
     sides::trim_events(&mut m, req, prec);
     Ok(m)
+}
+
+/// The error of a `--part-at` angle where parting is not lawful.
+pub(crate) fn part_at_refused(branch: &Branch) -> Error {
+    let th = match branch {
+        Branch::PartAt(a) => a.to_string(),
+        _ => String::new(),
+    };
+    Error::invalid(
+        "part-at",
+        th,
+        "must lie where parting is lawful (the window between the branch point \
+         theta_indeterminate and the end of the closed branch)",
+    )
 }
 
 /// [`run`] before the sides of times at events are marked and applied.
@@ -602,6 +633,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             t_err: t_err.clone(),
             theta_err: theta_err.clone(),
             after: None,
+            also: Vec::new(),
         };
         use conservative::Ending;
         match fast.ending {
@@ -854,6 +886,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             t_err: hit.t_err.clone(),
             theta_err: theta_err.clone(),
             after: None,
+            also: Vec::new(),
         };
         let flight_phase = Phase::Flight { floor: mode.floor };
         match what {
@@ -951,17 +984,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                     (Branch::Part, What::FreeNormal) => rising,
                     (Branch::PartAt(_), What::PartAt) => {
                         if !window_open {
-                            let th = match &req.branch {
-                                Branch::PartAt(a) => a.to_string(),
-                                _ => String::new(),
-                            };
-                            return Err(Error::invalid(
-                                "part-at",
-                                th,
-                                "must lie where parting is lawful (the window between the \
-                                 branch point theta_indeterminate and the end of the closed \
-                                 branch)",
-                            ));
+                            return Err(part_at_refused(&req.branch));
                         }
                         true
                     }
@@ -1106,6 +1129,7 @@ fn push_changes(
             t_err: t_err.clone(),
             theta_err: th_err.clone(),
             after: Some(after.clone()),
+            also: Vec::new(),
         });
     }
 }

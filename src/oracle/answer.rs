@@ -43,6 +43,9 @@ pub struct EventAnswer {
     pub t: Verified,
     /// θ there.
     pub theta: Verified,
+    /// At a branch point, every other continuation consistent there (`part`,
+    /// and any other closed mode, e.g. `stick/slip+`); empty otherwise.
+    pub also: Vec<String>,
 }
 
 /// One row of a trajectory.

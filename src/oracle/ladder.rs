@@ -350,6 +350,7 @@ pub fn events_of(m: &Motion, vals: &[Verified]) -> Vec<EventAnswer> {
             phase: e.phase,
             t: vals[2 * i].clone(),
             theta: vals[2 * i + 1].clone(),
+            also: e.also.clone(),
         })
         .collect()
 }

@@ -318,7 +318,16 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         names.extend(["theta_s", "t_s", "work_s"].map(String::from));
     }
     if ind_ev.is_some() {
-        names.extend(["theta_indeterminate", "t_indeterminate"].map(String::from));
+        names.extend(
+            [
+                "theta_indeterminate",
+                "t_indeterminate",
+                "theta_dot_indeterminate",
+                "N12_indeterminate",
+                "F21_indeterminate",
+            ]
+            .map(String::from),
+        );
     }
     if has_impact {
         names.extend(IMPACT_KEYS.map(String::from));
@@ -340,6 +349,18 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         if let Some(i) = ind_ev {
             out.push(out[2 * i + 1].clone());
             out.push(out[2 * i].clone());
+            // the state there, with the event's location error carried
+            let ev = &m.events[i];
+            let sc = ladder::column_scales(model, p);
+            let all = ladder::point_estimates(&ev.at, &sc, None);
+            let loc = Float::with_val(p, &ev.theta_err)
+                + Float::with_val(p, &ev.t_err) * Float::with_val(p, ev.at.theta_dot.abs_ref());
+            for name in ["theta_dot", "N12", "F21"] {
+                let k = motion::point::column_index(name).unwrap_or(0);
+                let mut e = all[k].clone();
+                e.err += Float::with_val(p, &loc * &sc[k]) * 16u32;
+                out.push(e);
+            }
         }
         if let Some(imp) = &m.impact {
             let ev_err = sep_ev
@@ -377,18 +398,12 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     ans.notes = motion_notes(&first, opts);
     if let (Some(i), Some(imp)) = (sep_ev, &first.impact) {
         let n = first.events[i].at.n12.to_f64();
-        if n.abs() > 1e-12
-            && first.events[..i]
-                .iter()
-                .all(|e| e.kind != Kind::Indeterminate || opts.branch == Branch::Stay)
-        {
-            if opts.branch == Branch::Stay {
-                ans.notes.push(format!(
-                    "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
-                     event no mode with the contact closed is consistent and the free motion \
-                     separates, so the normal force drops to 0 at once"
-                ));
-            }
+        if n.abs() > 1e-12 && opts.branch == Branch::Stay {
+            ans.notes.push(format!(
+                "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
+                 event no mode with the contact closed is consistent and the free motion \
+                 separates, so the normal force drops to 0 at once"
+            ));
         }
         ans.notes.push(format!(
             "the first impact is on the {}{}",

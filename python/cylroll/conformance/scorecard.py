@@ -63,17 +63,32 @@ def _subsample(t: np.ndarray, t_hi: float, max_rows: int) -> np.ndarray:
     return idx
 
 
-def _branch(run: RunResult, bp: Optional[Dict[str, float]], end: Optional[Dict[str, Any]]):
+def _branch(run: RunResult, win: Optional[tuple]) -> tuple:
+    """Which lawful continuation the engine took where the motion is not
+    unique, and the reference's branch to judge it against:
+    (label, reference branch). ``part`` (it parted within the parting
+    tolerance of θ*), ``stay`` (within it of the end of the closed branch),
+    ``part_at`` (inside the window, away from both ends: the reference parts
+    at the engine's angle), ``outside`` (it parted before θ*: not lawful; the
+    closed reference up to its parting). (None, "stay") where the motion is
+    unique or the engine never parted."""
     sep = run.event("separation")
-    if bp is None or sep is None or end is None:
-        return None
-    return "part" if abs(sep["theta"] - bp["theta"]) < abs(sep["theta"] - end["theta"]) else "stay"
+    if win is None or sep is None:
+        return None, "stay"
+    a, b = win
+    th = sep["theta"]
+    tol = TOLERANCES["parting"]
+    if abs(th - a) <= tol or abs(th - b) <= tol:
+        return ("part", "part") if abs(th - a) < abs(th - b) else ("stay", "stay")
+    if a < th < b:
+        return "part_at", float(th)
+    return ("outside", "stay") if th < a else ("stay", "stay")
 
 
 def _compare(case: str, run: RunResult, phases: Dict[str, tuple], t_hi: float,
-             max_rows: int) -> Dict[str, Dict[str, float]]:
+             max_rows: int, branch: Any = "stay") -> Dict[str, Dict[str, float]]:
     idx = _subsample(run.t, t_hi, max_rows)
-    ref = reference.rows_at(case, run.t[idx])
+    ref = reference.rows_at(case, run.t[idx], branch)
     keep = np.isin(run.t[idx], ref["t"])
     idx = idx[keep]
     t = run.t[idx]
@@ -122,30 +137,38 @@ def score_case(adapter: Any, case: str, dts: Sequence[float],
     """One case of the scorecard: runs at every dt, errors per quantity and
     phase, events, observed order, branch taken and checks."""
     p = reference.params(case)
-    ref_events = reference.events(case)
-    phases = reference.phases(case)
     bp = reference.branch_point(case)
     end = reference.closed_end(case)
-    t_max = reference.t_max(case)
-    friction = any(e["kind"] == "impact" for e in ref_events)
-    t_end = t_max * 1.02 + 0.05 if friction else t_max * 1.3 + 0.5
+    win = reference.window(case)
+    # run past the latest impact of the lawful branches
+    t_max = max(reference.t_max(case, b) for b in (("stay", "part") if bp else ("stay",)))
+    t_end = t_max * 1.02 + 0.05
     phi2_0 = reference.phi2_start(case)
     runs, results = [], []
     for dt in sorted(dts, reverse=True):
         run = run_case(adapter, p, dt, t_end, settings, phi2_0=phi2_0)
-        branch = _branch(run, bp, end)
-        t_hi = t_max
+        branch, ref_branch = _branch(run, win)
+        t_hi = reference.t_max(case, ref_branch)
         note = None
-        if branch == "part":
-            # the engine left the reference's branch at θ*: compare up to there only
+        if branch == "outside":
+            # parting before θ* is not lawful: the closed reference up to the parting
             t_hi = min(t_hi, run.event("separation")["t"])
-            note = ("the engine took the part branch at the branch point; compared up to its "
-                    "parting (the reference for the part branch will come later)")
-        errors = _compare(case, run, phases, t_hi, max_rows)
+            note = ("the engine parted before the branch point, where the rigid-body motion "
+                    "may not part; compared with the closed branch up to its parting")
+        elif branch == "part_at":
+            note = (f"the engine parted inside the window where parting is lawful, at theta = "
+                    f"{ref_branch:.6g}; compared with the reference parting there")
+        elif branch == "part":
+            note = ("the engine took the part branch at the branch point (as velocity-level "
+                    "complementarity solvers do); compared with the reference's part branch")
+        ref_events = reference.events(case, ref_branch)
+        phases = reference.phases(case, ref_branch)
+        errors = _compare(case, run, phases, t_hi, max_rows, ref_branch)
         m = run.measurements
         item = dict(dt=dt, wall_seconds=round(run.wall, 3), steps=int(len(run.t) - 1),
                     stopped=run.stopped, errors=errors, events=_events(run, ref_events),
-                    branch_taken=branch, contact_losses=m["contact_losses"],
+                    branch_taken=branch, reference_branch=ref_branch,
+                    contact_losses=m["contact_losses"],
                     contact_loss_times=m["contact_loss_times"], chatter=m["chatter"],
                     cone_violation=m["cone_violation"], penetration=m["penetration"],
                     energy=m["energy"], forces_exposed=dict(floor=run.has_forces[0],
@@ -169,10 +192,12 @@ def score_case(adapter: Any, case: str, dts: Sequence[float],
         if o is not None:
             order[qn] = o
     finest = min(runs, key=lambda r: r["dt"])
-    checks = _checks(p, finest, order, bp, end)
+    checks = _checks(p, finest, order, bp, end, win)
     return _f(dict(case=case, params=p["exact"], branch_point=bp,
                    closed_branch_end=None if end is None else dict(t=end["t"], theta=end["theta"]),
-                   phases={k: list(v) for k, v in phases.items()}, runs=runs, order=order,
+                   parting_window=None if win is None else list(win),
+                   phases={k: list(v) for k, v in reference.phases(case).items()},
+                   runs=runs, order=order,
                    branch_taken=finest["branch_taken"], checks=checks))
 
 
@@ -180,7 +205,7 @@ def _check(name, value, tol, ok, why):
     return dict(name=name, value=value, tolerance=tol, ok=ok, why=why)
 
 
-def _checks(p, run, order, bp, end) -> List[Dict[str, Any]]:
+def _checks(p, run, order, bp, end, win) -> List[Dict[str, Any]]:
     T = TOLERANCES
     r = p["r1"] + p["r2"]
     scale = p["m2"] * p["g"] * r
@@ -213,13 +238,22 @@ def _checks(p, run, order, bp, end) -> List[Dict[str, Any]]:
                 out.append(_check(f"slip onset ({e['contact']}) theta error", v, T["slip_onset"],
                                   v <= T["slip_onset"], f"engine found by {e.get('method')}"))
     sep = next((e for e in run["events"] if e["kind"] == "separation"), None)
-    if sep is not None and sep["engine"] is not None:
-        if run["branch_taken"] == "part":
-            v = abs(sep["engine"]["theta"] - bp["theta"])
+    taken = run["branch_taken"]
+    if sep is not None and sep["engine"] is not None and taken in ("part_at", "outside"):
+        th = sep["engine"]["theta"]
+        v = 0.0 if taken == "part_at" else win[0] - th
+        out.append(_check("parting inside the window where it is lawful", v, T["parting"],
+                          taken == "part_at",
+                          f"the rigid-body motion may part anywhere in [θ*, θs] = "
+                          f"[{win[0]:.6g}, {win[1]:.6g}]; the engine parted at {th:.6g}"))
+    elif sep is not None and sep["engine"] is not None:
+        if taken == "part":
+            v = abs(sep["error"]) if sep["reference"] is not None else \
+                abs(sep["engine"]["theta"] - bp["theta"])
             out.append(_check("parting theta error (part branch: against the branch point)", v,
                               T["parting"], v <= T["parting"],
-                              "the engine parted near θ*, where the rigid motion may part; "
-                              "the reference's default stays closed"))
+                              "the engine parted near θ*, the first instant the rigid-body "
+                              "motion may part; judged against the reference's part branch"))
         elif sep["reference"] is not None:
             v = abs(sep["error"])
             out.append(_check("parting theta error", v, T["parting"], v <= T["parting"],

@@ -1,0 +1,184 @@
+//! Events on a piece: which watched functions read more than θ, the first
+//! sign change of each over the points (and samples of its interpolant
+//! between them, so a graze is not missed), and its root, by Newton's
+//! method on the interpolant corrected once by the exact value.
+
+use super::piece::{Piece, Setup};
+use crate::error::Result;
+use crate::integrate::solve::{watch_value, Event, Sample, Watch};
+use crate::mechanics::system::{self as sy, System};
+use crate::numeric::cheb::ChebFit;
+use rug::{Assign, Float};
+
+/// Whether a watched function reads a coordinate other than θ.
+pub(super) fn reads_positions(w: &Watch) -> bool {
+    match w {
+        Watch::Coord(i) | Watch::Reach { i, .. } => *i != sy::th(0),
+        Watch::Lin(terms) => terms.iter().any(|(w, _)| reads_positions(w)),
+        Watch::Height { th, .. } | Watch::FreeNormal { th, .. } => *th != sy::th(0),
+        Watch::Multiplier(_) | Watch::Rate(_) => false,
+    }
+}
+
+/// Interior samples per gap between two points where a watched function's
+/// interpolant is looked at too (a graze that crosses zero and comes back
+/// between two points).
+const BETWEEN: usize = 4;
+
+/// The Chebyshev coefficients, in f64, of the interpolant of values at the
+/// N points (`asc`: ascending s, i.e. the points in reverse order), by the
+/// direct cosine sum (`cos[m]` = cos(mπ/2N), m < 4N).
+pub(super) fn coeffs64(asc: &[Float], cos: &[f64]) -> Vec<f64> {
+    let n = asc.len();
+    let f: Vec<f64> = asc.iter().rev().map(Float::to_f64).collect();
+    (0..n)
+        .map(|k| {
+            // the angle index k(2j + 1) mod 4N, stepped by 2k < 4N
+            let mut sum = 0.0;
+            let mut m = k;
+            for fj in &f {
+                sum += fj * cos[m];
+                m += 2 * k;
+                if m >= 4 * n {
+                    m -= 4 * n;
+                }
+            }
+            let c = 2.0 * sum / n as f64;
+            if k == 0 {
+                c / 2.0
+            } else {
+                c
+            }
+        })
+        .collect()
+}
+
+/// The first sign change of a watched function over the piece: from its
+/// value at s = 0 (None: on its boundary there, not watched), over the
+/// points — and [`BETWEEN`] samples of its interpolant `c64` in each gap,
+/// where values below 10^−12 of the largest count as 0 — to its value at
+/// the end.
+pub(super) fn first_bracket(
+    nodes: &[&Float],
+    len: &Float,
+    start: Option<&Float>,
+    vals: &[Float],
+    end: &Float,
+    c64: &[f64],
+) -> Option<(Float, Float)> {
+    let p = len.prec();
+    let lenf = len.to_f64();
+    let big = vals.iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max);
+    let floor = 1e-12 * big;
+    // the sequence of (s, sign, the point itself) with the interpolant's
+    // samples between points
+    let mut seq: Vec<(f64, bool, Option<&Float>)> =
+        Vec::with_capacity((BETWEEN + 1) * vals.len() + 2);
+    let zero = Float::new(p);
+    if let Some(g) = start.filter(|g| !g.is_zero()) {
+        seq.push((0.0, g.is_sign_negative(), Some(&zero)));
+    }
+    let mut last = 0.0;
+    let mut first_point = true;
+    let points = nodes.iter().copied().zip(vals).chain([(len, end)]);
+    for (s, g) in points {
+        let sf = s.to_f64();
+        if !first_point {
+            for i in 1..=BETWEEN {
+                let x = last + (sf - last) * i as f64 / (BETWEEN + 1) as f64;
+                let v = ChebFit::eval_f64(c64, 0.0, lenf, x);
+                if v.abs() > floor {
+                    seq.push((x, v < 0.0, None));
+                }
+            }
+        }
+        first_point = false;
+        last = sf;
+        if !g.is_zero() {
+            seq.push((sf, g.is_sign_negative(), Some(s)));
+        }
+    }
+    let at = |(x, _, s): &(f64, bool, Option<&Float>)| match s {
+        Some(s) => (*s).clone(),
+        None => Float::with_val(p, *x),
+    };
+    seq.windows(2)
+        .find(|w| w[0].1 != w[1].1)
+        .map(|w| (at(&w[0]), at(&w[1])))
+}
+
+impl Piece {
+    /// The first root in (lo, hi) of a watched function, from its
+    /// interpolant over the points (its values `vals` at the points,
+    /// ascending), corrected once by the exact value.
+    pub(super) fn root(
+        &self,
+        sys: &mut System,
+        su: &Setup,
+        ev: &Event,
+        vals: &[Float],
+        lo: &Float,
+        hi: &Float,
+    ) -> Result<(Float, Sample, Float)> {
+        let p = sys.prec;
+        // the interpolant wants the values in point order (descending s)
+        let desc: Vec<Float> = vals.iter().rev().cloned().collect();
+        let zero = Float::new(p);
+        let fit = ChebFit::from_values(&zero, &self.len, su.roots, p, &desc);
+        let d = fit.derivative();
+        // bisection at 64 bits to a seed, then Newton at full precision
+        let f64fit = fit.rounded(64);
+        let mut a = Float::with_val(64, lo);
+        let mut b = Float::with_val(64, hi);
+        let fa = f64fit.eval(&a, 64);
+        let neg_a = fa.is_sign_negative();
+        for _ in 0..60 {
+            let mid = Float::with_val(64, &a + &b) >> 1;
+            if f64fit.eval(&mid, 64).is_sign_negative() == neg_a {
+                a = mid;
+            } else {
+                b = mid;
+            }
+        }
+        let mut s = Float::with_val(p, &a + &b) >> 1;
+        let stop = Float::with_val(p, &self.len) >> (p as i32 - 8);
+        for _ in 0..40 {
+            let step = fit.eval(&s, p) / d.eval(&s, p);
+            s -= &step;
+            if !step.is_finite() {
+                break;
+            }
+            if step.abs() <= stop {
+                break;
+            }
+        }
+        if !s.is_finite() {
+            s = Float::with_val(p, &a + &b) >> 1;
+        }
+        s.assign(s.clone().max(lo).min(hi));
+        // one correction by the exact value
+        let smp = self.sample(sys, &s)?;
+        let g = watch_value(&ev.watch, &smp);
+        let dg = d.eval(&s, p);
+        let ds = g / dg;
+        let smp = if ds.is_finite() && !ds.is_zero() {
+            let s2 = Float::with_val(p, &s - &ds);
+            if s2 >= *lo && s2 <= *hi {
+                s = s2;
+                self.sample(sys, &s)?
+            } else {
+                smp
+            }
+        } else {
+            smp
+        };
+        let t_err = Float::with_val(p, ds.abs_ref()) * self.rate.eval(&s, p)
+            + Float::with_val(p, &su.sc.ts * su.tol);
+        let t_err = if t_err.is_finite() {
+            t_err
+        } else {
+            Float::with_val(p, &su.sc.ts * su.tol)
+        };
+        Ok((s, smp, t_err))
+    }
+}

@@ -1,0 +1,453 @@
+//! One piece of the angle: the state at its start and the Chebyshev
+//! interpolants of θ̇², t, the moving rates and coordinates and the work
+//! on it ([`Piece`]), built from the KKT solves at its points by
+//! [`attempt`], which also judges whether the interpolants converged; the
+//! state and samples anywhere on the piece.
+
+use super::dependents::{fill_dependents, Dependent};
+use super::time::lower_copies;
+use super::Settings;
+use crate::error::Result;
+use crate::integrate::solve::Sample;
+use crate::mechanics::system::{self as sy, Accel, System};
+use crate::numeric::cheb::{ChebFit, Roots};
+use rug::{Assign, Float};
+
+/// Extra bits of the m = 2 quadrature for u.
+pub(super) const REST_GUARD: u32 = 48;
+
+/// One piece: the state at s = 0 and the interpolants on [0, L].
+pub(super) struct Piece {
+    m: u32,
+    dir: i32,
+    pub(super) len: Float,
+    pub(super) t0: Float,
+    q0: Vec<Float>,
+    v0: Vec<Float>,
+    work0: Float,
+    /// t(s) − t0.
+    pub(super) dt: ChebFit,
+    /// dt/ds = m/√w (u = θ̇² = s^(2(m−1)) w; θ̇ = σ s^(m−1) m/rate).
+    pub(super) rate: ChebFit,
+    /// q̇_i(s) − q̇_i(0) of the coordinates that move besides θ.
+    vel: Vec<(usize, ChebFit)>,
+    /// q_i(s) − q_i(0).
+    pos: Vec<(usize, ChebFit)>,
+    /// W(s) − W(0) (None without slipping contacts).
+    work: Option<ChebFit>,
+    deps: Vec<Dependent>,
+    /// t(s) − t0 and dt/ds at 128, 256, … bits up to 3p/4, their
+    /// coefficients cut where they fall below the precision (the first
+    /// Newton steps of an inversion).
+    pub(super) lower: Vec<(u32, ChebFit, ChebFit)>,
+    /// t(s) − t0 and dt/ds in f64 (Newton seeds).
+    pub(super) dt64: Vec<f64>,
+    pub(super) rate64: Vec<f64>,
+    /// The samples at the points, in ascending s, with their s.
+    pub(super) nodes: Vec<(Float, Sample)>,
+    /// The most coefficients any interpolant needed (above its tolerance).
+    pub(super) used: usize,
+    /// Bases of the inversions' Newton steps (lower precisions, full).
+    pub(super) scratch: std::cell::RefCell<(Vec<Float>, Vec<Float>)>,
+}
+
+pub(super) enum Attempt {
+    Done(Box<Piece>),
+    /// The interpolants did not converge: a shorter piece.
+    Shorter,
+    /// θ̇ vanishes inside (or w is not positive): the route declines.
+    Decline,
+}
+
+/// Whether the fit's last coefficients are below tol·(max |f| + floor);
+/// `used` grows to the number of coefficients above that level.
+pub(super) fn within(f: &ChebFit, tol: &Float, floor: &Float, used: &mut usize) -> bool {
+    let p = f.prec();
+    let lim = Float::with_val(p, &f.fmax + floor) * tol;
+    let k =
+        f.c.iter()
+            .rposition(|c| c.cmp_abs(&lim) == Some(std::cmp::Ordering::Greater));
+    *used = (*used).max(k.map_or(0, |k| k + 1));
+    f.tail() <= lim
+}
+
+/// θ(s) = θ_a + σ s^m.
+fn theta_at(th0: &Float, dir: i32, m: u32, s: &Float) -> Float {
+    let p = s.prec();
+    let sm = if m == 1 {
+        s.clone()
+    } else {
+        Float::with_val(p, s.square_ref())
+    };
+    Float::with_val(p, th0 + sm * dir)
+}
+
+/// a and b of q̈ = a + b θ̇² (and of λ) at angle θ: two KKT solves.
+fn probe(sys: &mut System, q: &mut [Float], th: &Float) -> Result<(Accel, Accel)> {
+    q[sy::th(0)].assign(th);
+    let (a0, mut a1) = sys.accel_pair(q, 0)?;
+    for (x, y) in a1.qdd.iter_mut().zip(&a0.qdd) {
+        *x -= y;
+    }
+    for (x, y) in a1.lambda.iter_mut().zip(&a0.lambda) {
+        *x -= y;
+    }
+    Ok((a0, a1))
+}
+
+/// x + y·u for vectors.
+fn affine(x: &[Float], y: &[Float], u: &Float) -> Vec<Float> {
+    x.iter()
+        .zip(y)
+        .map(|(a, b)| Float::with_val(a.prec(), a + Float::with_val(a.prec(), b * u)))
+        .collect()
+}
+
+pub(super) struct Setup<'a> {
+    pub(super) roots: &'a Roots,
+    /// The same points with twiddles at p + [`REST_GUARD`] (+ 32) bits, for
+    /// a start from rest.
+    pub(super) rest_roots: Option<&'a Roots>,
+    pub(super) tol: &'a Float,
+    pub(super) sc: &'a Settings,
+    pub(super) moving: Vec<usize>,
+    pub(super) deps: Vec<Dependent>,
+    /// Whether a watched function reads a moving coordinate: only then do
+    /// the samples at the points carry their positions and the work (else
+    /// those of s = 0; the samples serve the watched functions and the
+    /// times).
+    pub(super) node_positions: bool,
+}
+
+#[allow(clippy::too_many_arguments)]
+pub(super) fn attempt(
+    sys: &mut System,
+    su: &Setup,
+    m: u32,
+    dir: i32,
+    len: &Float,
+    t0: &Float,
+    q0: &[Float],
+    v0: &[Float],
+    work0: &Float,
+    evals: &mut u64,
+) -> Result<Attempt> {
+    let p = sys.prec;
+    let n = su.roots.n();
+    let ith = sy::th(0);
+    let zero = Float::new(p);
+    let pts = ChebFit::points(&zero, len, su.roots, p);
+    let th0 = &q0[ith];
+    let mut used = 0usize;
+    let mut parts = Vec::with_capacity(n);
+    let mut qp = q0.to_vec();
+    for s in &pts {
+        parts.push(probe(sys, &mut qp, &theta_at(th0, dir, m, s))?);
+        *evals += 2;
+    }
+    // θ'(s) = σ m s^(m−1)
+    let dth: Vec<Float> = pts
+        .iter()
+        .map(|s| {
+            let d = if m == 1 {
+                Float::with_val(p, 1u32)
+            } else {
+                Float::with_val(p, s * 2u32)
+            };
+            d * dir
+        })
+        .collect();
+    let inv_len = Float::with_val(p, len.recip_ref());
+    // G = ∫ 2b θ' ds
+    let g: Vec<Float> = parts
+        .iter()
+        .zip(&dth)
+        .map(|((_, b), d)| Float::with_val(p, &b.qdd[ith] * d) * 2u32)
+        .collect();
+    let gfit = ChebFit::from_values(&zero, len, su.roots, p, &g);
+    if !within(&gfit, su.tol, &inv_len, &mut used) {
+        return Ok(Attempt::Shorter);
+    }
+    let gv = gfit.antiderivative().values(su.roots, p);
+    // u = e^G (u_a + ∫ 2a θ' e^(−G) ds), at hp bits
+    let hp = if m == 2 { p + REST_GUARD } else { p };
+    let e: Vec<Float> = gv.iter().map(|x| Float::with_val(hp, -x).exp()).collect();
+    let j: Vec<Float> = parts
+        .iter()
+        .zip(&dth)
+        .zip(&e)
+        .map(|(((a, _), d), e)| Float::with_val(hp, &a.qdd[ith] * d) * e * 2u32)
+        .collect();
+    let hz = Float::new(hp);
+    let hl = Float::with_val(hp, len);
+    let hroots = match (m, su.rest_roots) {
+        (2, Some(r)) => r,
+        _ => su.roots,
+    };
+    let jfit = ChebFit::from_values(&hz, &hl, hroots, hp, &j);
+    let uscale = Float::with_val(p, su.sc.ts.square_ref()).recip() * &inv_len;
+    if !within(&jfit, su.tol, &uscale, &mut used) {
+        return Ok(Attempt::Shorter);
+    }
+    let iv = jfit.antiderivative().values(hroots, hp);
+    let ua = Float::with_val(hp, v0[ith].square_ref());
+    let mut w = Vec::with_capacity(n);
+    for ((s, i), e) in pts.iter().zip(&iv).zip(&e) {
+        let mut u = Float::with_val(hp, &ua + i) / e;
+        if m == 2 {
+            u /= Float::with_val(hp, s.square_ref());
+        }
+        if !u.is_sign_positive() || u.is_zero() {
+            return Ok(Attempt::Decline);
+        }
+        w.push(Float::with_val(p, &u));
+    }
+    let rate: Vec<Float> = w
+        .iter()
+        .map(|x| Float::with_val(p, x.sqrt_ref()).recip() * m)
+        .collect();
+    let rfit = ChebFit::from_values(&zero, len, su.roots, p, &rate);
+    let tfloor = Float::with_val(p, &su.sc.ts * &inv_len);
+    if !within(&rfit, su.tol, &tfloor, &mut used) {
+        return Ok(Attempt::Shorter);
+    }
+    // θ̇ must not vanish up to the end either
+    let r_end = rfit.eval(len, p);
+    if !r_end.is_sign_positive() || r_end.is_zero() || !r_end.is_finite() {
+        return Ok(Attempt::Decline);
+    }
+    let dt = rfit.antiderivative();
+    let tv = dt.values(su.roots, p);
+    // u at the points, and the full velocity
+    let u: Vec<Float> = pts
+        .iter()
+        .zip(&w)
+        .map(|(s, w)| {
+            if m == 2 {
+                Float::with_val(p, s.square_ref()) * w
+            } else {
+                w.clone()
+            }
+        })
+        .collect();
+    let vscale = Float::with_val(p, &su.sc.r / &su.sc.ts);
+    let mut vel = Vec::new();
+    let mut vnodes: Vec<Vec<Float>> = (0..n)
+        .map(|k| {
+            let mut v = vec![Float::new(p); sys.nq()];
+            let thd = if m == 2 {
+                Float::with_val(p, w[k].sqrt_ref()) * &pts[k]
+            } else {
+                Float::with_val(p, w[k].sqrt_ref())
+            };
+            v[ith] = thd * dir;
+            v
+        })
+        .collect();
+    for &i in &su.moving {
+        let f: Vec<Float> = (0..n)
+            .map(|k| {
+                let (a, b) = &parts[k];
+                let acc = Float::with_val(p, &a.qdd[i] + Float::with_val(p, &b.qdd[i] * &u[k]));
+                acc * &rate[k]
+            })
+            .collect();
+        let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
+        if !within(
+            &fit,
+            su.tol,
+            &Float::with_val(p, &vscale * &inv_len),
+            &mut used,
+        ) {
+            return Ok(Attempt::Shorter);
+        }
+        let anti = fit.antiderivative();
+        for (k, x) in anti.values(su.roots, p).into_iter().enumerate() {
+            vnodes[k][i] = x + &v0[i];
+        }
+        vel.push((i, anti));
+    }
+    let mut pos = Vec::new();
+    let mut qnodes: Vec<Vec<Float>> = pts
+        .iter()
+        .map(|s| {
+            let mut q = q0.to_vec();
+            q[ith] = theta_at(th0, dir, m, s);
+            q
+        })
+        .collect();
+    for &i in &su.moving {
+        let f: Vec<Float> = (0..n)
+            .map(|k| Float::with_val(p, &vnodes[k][i] * &rate[k]))
+            .collect();
+        let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
+        if !within(
+            &fit,
+            su.tol,
+            &Float::with_val(p, &su.sc.r * &inv_len),
+            &mut used,
+        ) {
+            return Ok(Attempt::Shorter);
+        }
+        let anti = fit.antiderivative();
+        if su.node_positions {
+            for (k, x) in anti.values(su.roots, p).into_iter().enumerate() {
+                qnodes[k][i] = x + &q0[i];
+            }
+        }
+        pos.push((i, anti));
+    }
+    for (q, v) in qnodes.iter_mut().zip(&mut vnodes) {
+        fill_dependents(&su.deps, q0, q, v);
+    }
+    let mut lambdas = Vec::with_capacity(n);
+    let mut qdds = Vec::with_capacity(n);
+    let mut powers = Vec::with_capacity(n);
+    for k in 0..n {
+        let (a, b) = &parts[k];
+        let lam = affine(&a.lambda, &b.lambda, &u[k]);
+        let pw = if sys.has_slips() {
+            sys.slip_power(&qnodes[k], &vnodes[k], &lam)
+        } else {
+            Float::new(p)
+        };
+        qdds.push(affine(&a.qdd, &b.qdd, &u[k]));
+        lambdas.push(lam);
+        powers.push(pw);
+    }
+    let (work, wv) = if sys.has_slips() {
+        let f: Vec<Float> = powers
+            .iter()
+            .zip(&rate)
+            .map(|(x, r)| Float::with_val(p, x * r))
+            .collect();
+        let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
+        let floor = Float::with_val(p, &su.sc.escale * &inv_len);
+        if !within(&fit, su.tol, &floor, &mut used) {
+            return Ok(Attempt::Shorter);
+        }
+        let anti = fit.antiderivative();
+        let wv = if su.node_positions {
+            anti.values(su.roots, p)
+        } else {
+            vec![Float::new(p); n]
+        };
+        (Some(anti), wv)
+    } else {
+        (None, vec![Float::new(p); n])
+    };
+    // the samples at the points, ascending in s
+    let mut nodes = Vec::with_capacity(n);
+    for k in (0..n).rev() {
+        nodes.push((
+            pts[k].clone(),
+            Sample {
+                t: Float::with_val(p, t0 + &tv[k]),
+                q: std::mem::take(&mut qnodes[k]),
+                v: std::mem::take(&mut vnodes[k]),
+                qdd: std::mem::take(&mut qdds[k]),
+                lambda: std::mem::take(&mut lambdas[k]),
+                work: Float::with_val(p, work0 + &wv[k]),
+                power: std::mem::replace(&mut powers[k], Float::new(p)),
+            },
+        ));
+    }
+    Ok(Attempt::Done(Box::new(Piece {
+        m,
+        dir,
+        len: len.clone(),
+        t0: t0.clone(),
+        q0: q0.to_vec(),
+        v0: v0.to_vec(),
+        work0: work0.clone(),
+        dt: dt.clone(),
+        rate: rfit.clone(),
+        vel,
+        pos,
+        work,
+        deps: su.deps.clone(),
+        lower: lower_copies(&dt, &rfit, p),
+        used,
+        scratch: Default::default(),
+        dt64: dt.to_f64(),
+        rate64: rfit.to_f64(),
+        nodes,
+    })))
+}
+
+impl Piece {
+    /// The state (t, q, q̇, W) at s: every interpolant on one basis.
+    fn state(&self, s: &Float) -> (Float, Vec<Float>, Vec<Float>, Float) {
+        let p = s.prec();
+        let ith = sy::th(0);
+        let zero = Float::new(p);
+        let mut sc = self.scratch.borrow_mut();
+        let basis = &mut sc.1;
+        ChebFit::basis_into(&zero, &self.len, s, self.dt.c.len(), p, basis);
+        let mut q = self.q0.clone();
+        let mut v = self.v0.clone();
+        q[ith] = theta_at(&self.q0[ith], self.dir, self.m, s);
+        let mut thd = Float::with_val(p, self.m) / self.rate.dot(basis);
+        if self.m == 2 {
+            thd *= s;
+        }
+        v[ith] = thd * self.dir;
+        for (i, f) in &self.vel {
+            v[*i] = Float::with_val(p, &self.v0[*i] + f.dot(basis));
+        }
+        for (i, f) in &self.pos {
+            q[*i] = Float::with_val(p, &self.q0[*i] + f.dot(basis));
+        }
+        fill_dependents(&self.deps, &self.q0, &mut q, &mut v);
+        let t = Float::with_val(p, &self.t0 + self.dt.dot(basis));
+        let work = match &self.work {
+            Some(f) => Float::with_val(p, &self.work0 + f.dot(basis)),
+            None => self.work0.clone(),
+        };
+        (t, q, v, work)
+    }
+
+    /// A sample at s with t and θ only (every other value that of s = 0,
+    /// no rates, forces or work): for [`run`](super::run) without `full` rows.
+    pub(super) fn theta_sample(&self, s: &Float) -> Sample {
+        let p = s.prec();
+        let mut q = self.q0.clone();
+        q[sy::th(0)] = theta_at(&self.q0[sy::th(0)], self.dir, self.m, s);
+        let zeros = |n: usize| vec![Float::new(p); n];
+        Sample {
+            t: Float::new(p),
+            q,
+            v: zeros(self.v0.len()),
+            qdd: zeros(self.v0.len()),
+            lambda: Vec::new(),
+            work: Float::new(p),
+            power: Float::new(p),
+        }
+    }
+
+    /// The full sample at s (one KKT solve).
+    pub(super) fn sample(&self, sys: &mut System, s: &Float) -> Result<Sample> {
+        let (t, q, v, work) = self.state(s);
+        let acc = sys.accel(&q, &v)?;
+        let power = if sys.has_slips() {
+            sys.slip_power(&q, &v, &acc.lambda)
+        } else {
+            Float::new(sys.prec)
+        };
+        Ok(Sample {
+            t,
+            q,
+            v,
+            qdd: acc.qdd,
+            lambda: acc.lambda,
+            work,
+            power,
+        })
+    }
+
+    /// The time at the end of the piece.
+    pub(super) fn t_end(&self) -> Float {
+        let p = self.len.prec();
+        Float::with_val(p, &self.t0 + self.dt.eval(&self.len, p))
+    }
+}

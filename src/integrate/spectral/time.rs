@@ -1,0 +1,137 @@
+//! Times on a piece: s where t(s) equals a given time, by Newton's method
+//! in f64, then on lower-precision copies of t(s) and dt/ds (precision
+//! doubling), then at full precision; and s(t) as an interpolant of its
+//! own when many outputs fall inside one piece.
+
+use super::piece::{within, Piece};
+use crate::numeric::cheb::{ChebFit, Roots};
+use rug::{Assign, Float};
+
+/// `f` rounded to q bits without the trailing coefficients below
+/// 2^−(q+8) of the largest.
+fn cut(f: &ChebFit, q: u32) -> ChebFit {
+    let mut g = f.rounded(q);
+    let big =
+        g.c.iter()
+            .map(|c| c.clone().abs())
+            .fold(Float::new(q), |a, b| a.max(&b));
+    let small = big >> (q as i32 + 8);
+    while g.c.len() > 2 && g.c.last().is_some_and(|c| c.clone().abs() < small) {
+        g.c.pop();
+    }
+    g
+}
+
+/// The lower copies of `dt` and `rate` for precision doubling: 128, 256, …
+/// bits up to 3/4 p (then one or two full steps end it).
+pub(super) fn lower_copies(dt: &ChebFit, rate: &ChebFit, p: u32) -> Vec<(u32, ChebFit, ChebFit)> {
+    let mut out = Vec::new();
+    let mut q = 128u32;
+    while 4 * q <= 3 * p {
+        out.push((q, cut(dt, q), cut(rate, q)));
+        q *= 2;
+    }
+    out
+}
+
+impl Piece {
+    /// s where t(s) = tau, bracketed among the points first.
+    pub(super) fn invert_at(&self, tau: &Float) -> Float {
+        let p = tau.prec();
+        let k = self.nodes.partition_point(|(_, smp)| smp.t < *tau);
+        let lo = match k {
+            0 => (Float::new(p), self.t0.clone()),
+            _ => (self.nodes[k - 1].0.clone(), self.nodes[k - 1].1.t.clone()),
+        };
+        let hi = match self.nodes.get(k) {
+            Some((s, smp)) => (s.clone(), smp.t.clone()),
+            None => (self.len.clone(), self.t_end()),
+        };
+        self.invert(tau, &lo, &hi)
+    }
+
+    /// s(t) on [t0, t1] as an interpolant (None: it does not converge to
+    /// `tol` L with the points of `roots`), without the trailing
+    /// coefficients whose sum stays below that tolerance.
+    pub(super) fn inverse(&self, roots: &Roots, t1: &Float, tol: &Float) -> Option<ChebFit> {
+        let p = self.len.prec();
+        let ts = ChebFit::points(&self.t0, t1, roots, p);
+        let ss: Vec<Float> = ts.iter().map(|t| self.invert_at(t)).collect();
+        let mut f = ChebFit::from_values(&self.t0, t1, roots, p, &ss);
+        if !within(&f, tol, &self.len, &mut 0) {
+            return None;
+        }
+        let each = Float::with_val(p, &self.len * tol) / (roots.n() as u64);
+        while f.c.len() > 2
+            && f.c
+                .last()
+                .is_some_and(|c| c.cmp_abs(&each) == Some(std::cmp::Ordering::Less))
+        {
+            f.c.pop();
+        }
+        Some(f)
+    }
+
+    /// s in [0, L] where t(s) = tau (t increasing in s): Newton's method in
+    /// f64 from the bracket's linear interpolation, then at full precision
+    /// (each step on one basis) until the step is below 2^(−p/2) L.
+    pub(super) fn invert(&self, tau: &Float, lo: &(Float, Float), hi: &(Float, Float)) -> Float {
+        let p = tau.prec();
+        let mut sc = self.scratch.borrow_mut();
+        let (low, full) = &mut *sc;
+        let target = Float::with_val(p, tau - &self.t0);
+        let (a, b) = (lo.0.to_f64(), hi.0.to_f64());
+        let (ta, tb) = (lo.1.to_f64(), hi.1.to_f64());
+        let len = self.len.to_f64();
+        let tg = target.to_f64();
+        let mut s = if tb > ta {
+            a + (b - a) * ((tau.to_f64() - ta) / (tb - ta))
+        } else {
+            a
+        };
+        for _ in 0..30 {
+            let f = ChebFit::eval_f64(&self.dt64, 0.0, len, s) - tg;
+            let d = ChebFit::eval_f64(&self.rate64, 0.0, len, s);
+            let step = f / d;
+            if !step.is_finite() {
+                break;
+            }
+            s = (s - step).clamp(a, b);
+            if step.abs() <= 1e-15 * len {
+                break;
+            }
+        }
+        // precision doubling: one step on each lower copy, then full steps
+        let mut s = Float::with_val(p, s);
+        for (q, dt, rate) in &self.lower {
+            let sq = Float::with_val(*q, &s);
+            let zero = Float::new(*q);
+            let basis = &mut *low;
+            ChebFit::basis_into(&zero, &dt.b, &sq, dt.c.len(), *q, basis);
+            let f = dt.dot(basis) - Float::with_val(*q, &target);
+            let step = f / rate.dot(basis);
+            if step.is_finite() {
+                s -= &step;
+                s.assign(s.clone().max(&lo.0).min(&hi.0));
+            }
+        }
+        let zero = Float::new(p);
+        let stop = Float::with_val(p, &self.len) >> (p as i32 / 2 + 4);
+        let n = self.dt.c.len();
+        for _ in 0..20 {
+            let basis = &mut *full;
+            ChebFit::basis_into(&zero, &self.len, &s, n, p, basis);
+            let f = self.dt.dot(basis) - &target;
+            let step = f / self.rate.dot(basis);
+            if !step.is_finite() {
+                break;
+            }
+            s -= &step;
+            s.assign(s.clone().max(&lo.0).min(&hi.0));
+            if step.abs() <= stop {
+                break;
+            }
+        }
+        s
+    }
+}

@@ -1,0 +1,355 @@
+//! The KKT solve: the mass matrix M(q) and the generalised forces
+//! h(q, q̇) of the stack, the KKT matrix with the rows and the sliding
+//! friction assembled into the workspace, and its solution for q̈ and the
+//! multipliers by Gaussian elimination with partial pivoting (one or several
+//! right-hand sides at once).
+
+use super::{psi, rr, th, Accel, System, PHI1, X1, Y1};
+use crate::error::{Error, Result};
+use rug::ops::NegAssign;
+use rug::{Assign, Float};
+
+impl System {
+    fn trig(&mut self, q: &[Float]) {
+        for j in 0..self.n - 1 {
+            let (s, c) = (&mut self.ws.s[j], &mut self.ws.c[j]);
+            s.assign(&q[th(j)]);
+            // sin_cos_mut computes both into s (sin) and c (cos)
+            s.sin_cos_mut(c);
+        }
+    }
+
+    /// Fills the workspace mass matrix at q (computes the trigonometry).
+    pub(super) fn mass_matrix(&mut self, q: &[Float]) {
+        self.trig(q);
+        let nq = self.nq();
+        let nl = self.n - 1;
+        let ws = &mut self.ws;
+        for x in ws.m.iter_mut() {
+            x.assign(0u32);
+        }
+        let mm = &mut ws.m;
+        let idx = |i: usize, j: usize| i * nq + j;
+        mm[idx(X1, X1)].assign(&self.mtot);
+        mm[idx(Y1, Y1)].assign(&self.mtot);
+        mm[idx(PHI1, PHI1)].assign(&self.inertia[0]);
+        for j in 0..nl {
+            mm[idx(psi(j), psi(j))].assign(&self.inertia[j + 1]);
+        }
+        let t = &mut ws.t;
+        let t2 = &mut ws.t2;
+        for j in 0..nl {
+            let (a, b) = (th(j), rr(j));
+            let s = &ws.s[j];
+            let c = &ws.c[j];
+            let sa = &self.above[j];
+            let rj = &q[b];
+            // x1–θ_j, x1–r_j, y1–θ_j, y1–r_j
+            t.assign(sa * rj);
+            mm[idx(X1, a)].assign(&*t * c);
+            mm[idx(Y1, a)].assign(&*t * s);
+            mm[idx(Y1, a)].neg_assign();
+            mm[idx(X1, b)].assign(sa * s);
+            mm[idx(Y1, b)].assign(sa * c);
+            for k in 0..=j {
+                // pairs (j, k), k ≤ j: bodies above line j move with both
+                let (ak, bk) = (th(k), rr(k));
+                let sk = &ws.s[k];
+                let ck = &ws.c[k];
+                let rk = &q[bk];
+                // cos(θj − θk), sin(θk − θj)
+                let mut cjk = Float::with_val(self.prec, c * ck);
+                cjk += s * sk;
+                let mut skj = Float::with_val(self.prec, sk * c);
+                skj -= ck * s;
+                t.assign(sa * &cjk);
+                // r_j–r_k
+                mm[idx(b, bk)].assign(&*t);
+                // θ_j–θ_k
+                t2.assign(&*t * rj);
+                mm[idx(a, ak)].assign(&*t2 * rk);
+                if k < j {
+                    // θ_j–r_k: S r_j sin(θ_k − θ_j); θ_k–r_j: S r_k sin(θ_j − θ_k)
+                    t.assign(sa * &skj);
+                    mm[idx(a, bk)].assign(&*t * rj);
+                    mm[idx(ak, b)].assign(&*t * rk);
+                    mm[idx(ak, b)].neg_assign();
+                }
+            }
+        }
+        // symmetrise: each pair was written on one side only
+        for i in 0..nq {
+            for j in 0..i {
+                let (lo, hi) = mm.split_at_mut(i * nq);
+                let upper = &mut lo[j * nq + i];
+                let lower = &mut hi[j];
+                if lower.is_zero() {
+                    lower.assign(&*upper);
+                } else {
+                    upper.assign(&*lower);
+                }
+            }
+        }
+    }
+
+    /// Generalised forces h(q, q̇) (gravity and velocity terms), into the
+    /// workspace; the trigonometry must be current (call after `mass_matrix`).
+    fn forces_h(&mut self, q: &[Float], v: &[Float]) {
+        let p = self.prec;
+        let nl = self.n - 1;
+        let ws = &mut self.ws;
+        for x in ws.h.iter_mut() {
+            x.assign(0u32);
+        }
+        let h = &mut ws.h;
+        h[Y1].assign(&self.mtot * &self.g);
+        h[Y1].neg_assign();
+        // per-line centripetal/Coriolis accelerations of the relative vector
+        let mut cx = vec![Float::new(p); nl];
+        let mut cy = vec![Float::new(p); nl];
+        for j in 0..nl {
+            let s = &ws.s[j];
+            let c = &ws.c[j];
+            let rj = &q[rr(j)];
+            let td = &v[th(j)];
+            let rd = &v[rr(j)];
+            let td2 = Float::with_val(p, td.square_ref());
+            let rtd2 = Float::with_val(p, rj * &td2);
+            let two_rd_td = Float::with_val(p, rd * td) * 2u32;
+            // c^x = −r s θ̇² + 2 ṙ c θ̇ ; c^y = −r c θ̇² − 2 ṙ s θ̇
+            cx[j].assign(&two_rd_td * c);
+            cx[j] -= &rtd2 * s;
+            cy[j].assign(&two_rd_td * s);
+            cy[j] += &rtd2 * c;
+            cy[j].neg_assign();
+            // gravity on θ_j, r_j
+            let sg = Float::with_val(p, &self.above[j] * &self.g);
+            h[th(j)].assign(&sg * rj);
+            h[th(j)] *= s;
+            h[rr(j)].assign(&sg * c);
+            h[rr(j)].neg_assign();
+        }
+        // body i ≥ 1 accelerates by Σ_{j<i} c_j (velocity part)
+        let mut ax = Float::new(p);
+        let mut ay = Float::new(p);
+        // X_j = Σ_{i>j} m_i acx_i, accumulated from the top down
+        let mut acx = vec![Float::new(p); self.n];
+        let mut acy = vec![Float::new(p); self.n];
+        for i in 1..self.n {
+            ax += &cx[i - 1];
+            ay += &cy[i - 1];
+            acx[i].assign(&ax * &self.m[i]);
+            acy[i].assign(&ay * &self.m[i]);
+        }
+        let mut sx = Float::new(p);
+        let mut sy = Float::new(p);
+        for j in (0..nl).rev() {
+            sx += &acx[j + 1];
+            sy += &acy[j + 1];
+            let s = &ws.s[j];
+            let c = &ws.c[j];
+            let rj = &q[rr(j)];
+            // h_θj −= r_j (c X − s Y); h_rj −= s X + c Y
+            let mut t = Float::with_val(p, c * &sx);
+            t -= s * &sy;
+            t *= rj;
+            h[th(j)] -= &t;
+            let mut u = Float::with_val(p, s * &sx);
+            u += c * &sy;
+            h[rr(j)] -= &u;
+        }
+        h[X1] -= &sx;
+        h[Y1] -= &sy;
+    }
+
+    /// Solves the KKT system at (q, q̇): the accelerations and the
+    /// multipliers (one per row of [`System::rows`]).
+    ///
+    /// Errors: a singular system (not expected for a valid model).
+    pub fn accel(&mut self, q: &[Float], v: &[Float]) -> Result<Accel> {
+        let mut qdd = vec![Float::new(self.prec); self.nq()];
+        let mut lambda = vec![Float::new(self.prec); self.rows.len()];
+        self.accel_into(q, v, &mut qdd, Some(&mut lambda))?;
+        Ok(Accel { qdd, lambda })
+    }
+
+    /// The accelerations and multipliers at q for θ̇_j = 0 and θ̇_j = 1 (every
+    /// other rate 0), from one elimination with two right-hand sides. With
+    /// ṙ = 0 the equations depend on the rates only through the θ̇_j², so
+    /// q̈ = a + b θ̇_j² with a the first and a + b the second.
+    ///
+    /// Errors: a singular system.
+    pub fn accel_pair(&mut self, q: &[Float], j: usize) -> Result<(Accel, Accel)> {
+        let nq = self.nq();
+        let nk = nq + self.rows.len();
+        let p = self.prec;
+        let mut v = vec![Float::new(p); nq];
+        self.assemble(q, &v);
+        // the second right-hand side: the rates enter h only (the rows'
+        // right-hand sides carry −ṙ θ̇, which is 0 for both)
+        v[th(j)].assign(1u32);
+        self.forces_h(q, &v);
+        let mut b1 = self.ws.b[..nk].to_vec();
+        for (x, h) in b1.iter_mut().zip(&self.ws.h[..nq]) {
+            x.assign(h);
+        }
+        let mut b0 = std::mem::take(&mut self.ws.b);
+        let mut x0 = vec![Float::new(p); nk];
+        let mut x1 = vec![Float::new(p); nk];
+        let ok = gauss_many(
+            &mut self.ws.a,
+            &mut [&mut b0, &mut b1],
+            &mut [&mut x0, &mut x1],
+            nk,
+        );
+        self.ws.b = b0;
+        ok.ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
+        let mut out = [x0, x1].into_iter().map(|mut x| {
+            let lambda = x.split_off(nq);
+            Accel { qdd: x, lambda }
+        });
+        let a0 = out.next().expect("two solutions");
+        let a1 = out.next().expect("two solutions");
+        Ok((a0, a1))
+    }
+
+    /// [`System::accel`] into caller buffers (the multipliers only if asked).
+    pub fn accel_into(
+        &mut self,
+        q: &[Float],
+        v: &[Float],
+        qdd: &mut [Float],
+        lambda: Option<&mut Vec<Float>>,
+    ) -> Result<()> {
+        let nq = self.nq();
+        let nk = nq + self.rows.len();
+        self.assemble(q, v);
+        let ws = &mut self.ws;
+        gauss(&mut ws.a, &mut ws.b, &mut ws.x, nk)
+            .ok_or_else(|| Error::not_physical("the constraint (KKT) system is singular"))?;
+        for (o, x) in qdd.iter_mut().zip(&ws.x[..nq]) {
+            o.assign(x);
+        }
+        if let Some(l) = lambda {
+            for (o, x) in l.iter_mut().zip(&ws.x[nq..]) {
+                o.assign(x);
+            }
+        }
+        Ok(())
+    }
+
+    /// The KKT matrix and right-hand side at (q, q̇) into the workspace.
+    fn assemble(&mut self, q: &[Float], v: &[Float]) {
+        let nq = self.nq();
+        self.mass_matrix(q);
+        self.forces_h(q, v);
+        let nr = self.rows.len();
+        let nk = nq + nr;
+        let rows: Vec<(Vec<(usize, Float)>, Float)> = self
+            .rows
+            .iter()
+            .map(|&r| self.row_coeffs(r, q, v))
+            .collect();
+        let ws = &mut self.ws;
+        for x in ws.a.iter_mut() {
+            x.assign(0u32);
+        }
+        for i in 0..nq {
+            for j in 0..nq {
+                let mij = &ws.m[i * nq + j];
+                if !mij.is_zero() {
+                    ws.a[i * nk + j].assign(mij);
+                }
+            }
+            ws.b[i].assign(&ws.h[i]);
+        }
+        for (k, (coefs, rhs)) in rows.iter().enumerate() {
+            for (i, c) in coefs {
+                ws.a[(nq + k) * nk + i].assign(c);
+                ws.a[i * nk + nq + k].assign(c);
+                ws.a[i * nk + nq + k].neg_assign();
+            }
+            ws.b[nq + k].assign(rhs);
+        }
+        // sliding friction −μk σ N along the slip direction: M q̈ − J_nᵀ N
+        // + μk σ J_tᵀ N = h, so the normal row's column gains μk σ J_t
+        for sl in &self.slips {
+            let col = nq + sl.normal;
+            for (i, c) in Self::tangent_of(&self.rho, sl.at, q) {
+                ws.a[i * nk + col] += Float::with_val(self.prec, &c * &sl.mu_sigma);
+            }
+        }
+    }
+}
+
+/// Gaussian elimination with partial pivoting on a row-major n×n matrix,
+/// in place, for several right-hand sides at once (one elimination); the
+/// solution of `bs[k]` goes to `xs[k]`. `None` if singular.
+pub(crate) fn gauss_many(
+    a: &mut [Float],
+    bs: &mut [&mut [Float]],
+    xs: &mut [&mut [Float]],
+    n: usize,
+) -> Option<()> {
+    let p = bs
+        .first()
+        .and_then(|b| b.first())
+        .map(|f| f.prec())
+        .unwrap_or(64);
+    let mut f = Float::new(p);
+    for col in 0..n {
+        let mut piv = col;
+        for i in col + 1..n {
+            if a[i * n + col].cmp_abs(&a[piv * n + col]) == Some(std::cmp::Ordering::Greater) {
+                piv = i;
+            }
+        }
+        if a[piv * n + col].is_zero() {
+            return None;
+        }
+        if piv != col {
+            for j in 0..n {
+                a.swap(piv * n + j, col * n + j);
+            }
+            for b in bs.iter_mut() {
+                b.swap(piv, col);
+            }
+        }
+        let (top, bottom) = a.split_at_mut((col + 1) * n);
+        let prow = &top[col * n..];
+        for ii in 0..n - col - 1 {
+            let row = &mut bottom[ii * n..(ii + 1) * n];
+            if row[col].is_zero() {
+                continue;
+            }
+            f.assign(&row[col] / &prow[col]);
+            for j in col + 1..n {
+                if !prow[j].is_zero() {
+                    row[j] -= &f * &prow[j];
+                }
+            }
+            row[col].assign(0u32);
+            for b in bs.iter_mut() {
+                let (btop, bbot) = b.split_at_mut(col + 1);
+                bbot[ii] -= &f * &btop[col];
+            }
+        }
+    }
+    for (b, x) in bs.iter().zip(xs.iter_mut()) {
+        for i in (0..n).rev() {
+            let mut s = b[i].clone();
+            for j in i + 1..n {
+                if !a[i * n + j].is_zero() {
+                    s -= &a[i * n + j] * &x[j];
+                }
+            }
+            x[i].assign(&s / &a[i * n + i]);
+        }
+    }
+    Some(())
+}
+
+/// [`gauss_many`] for one right-hand side.
+pub(crate) fn gauss(a: &mut [Float], b: &mut [Float], x: &mut [Float], n: usize) -> Option<()> {
+    gauss_many(a, &mut [b], &mut [x], n)
+}

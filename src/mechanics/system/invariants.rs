@@ -1,0 +1,208 @@
+//! What the integration must keep: the energy T + V and the conserved
+//! momenta of the cyclic directions (and their largest drifts over a run),
+//! the residuals of the position and velocity constraints, the projection
+//! back onto the constraint manifold, and the heights of the centres.
+
+use super::{psi, rr, th, Row, System, PHI1, X1, Y1};
+use crate::model::{Contact, Floor};
+use rug::{Assign, Float};
+
+impl System {
+    /// Total energy T + V (V = g Σ m_i y_i).
+    pub fn energy(&mut self, q: &[Float], v: &[Float]) -> Float {
+        let p = self.prec;
+        let nq = self.nq();
+        self.mass_matrix(q);
+        let mut t = Float::new(p);
+        for i in 0..nq {
+            if v[i].is_zero() {
+                continue;
+            }
+            let mut row = Float::new(p);
+            for (mk, vk) in self.ws.m[i * nq..(i + 1) * nq].iter().zip(v) {
+                row += mk * vk;
+            }
+            t += &row * &v[i];
+        }
+        t /= 2u32;
+        // heights: y1, then y_{i} = y_{i-1} + r c
+        let mut y = Float::with_val(p, &q[Y1]);
+        let mut vpot = Float::with_val(p, &self.m[0] * &y);
+        for i in 1..self.n {
+            y += &q[rr(i - 1)] * &self.ws.c[i - 1];
+            vpot += &self.m[i] * &y;
+        }
+        vpot *= &self.g;
+        t + vpot
+    }
+
+    /// The largest drifts of energy and momenta from `e0`, `p0` over the
+    /// given states (q, q̇): |E − E0|/escale and max_c |p_c − p_c0|/pscale.
+    pub fn drifts<'a>(
+        &mut self,
+        states: impl Iterator<Item = (&'a [Float], &'a [Float])>,
+        e0: &Float,
+        p0: &[Float],
+        escale: &Float,
+        pscale: &Float,
+    ) -> (Float, Float) {
+        let p = self.prec;
+        let mut energy = Float::new(p);
+        let mut momentum = Float::new(p);
+        for (q, v) in states {
+            let de = Float::with_val(p, &self.energy(q, v) - e0).abs() / escale;
+            if de > energy {
+                energy = de;
+            }
+            for (a, b) in self.momenta(q, v).iter().zip(p0) {
+                let d = Float::with_val(p, a - b).abs() / pscale;
+                if d > momentum {
+                    momentum = d;
+                }
+            }
+        }
+        (energy, momentum)
+    }
+
+    /// The conserved momenta p_c = e_cᵀ M q̇ of the cyclic directions with
+    /// inertia (for a rolling floor and rolling contacts: the one canonical
+    /// momentum of footnote 3, conjugate to φ1).
+    pub fn momenta(&mut self, q: &[Float], v: &[Float]) -> Vec<Float> {
+        let p = self.prec;
+        let nq = self.nq();
+        self.mass_matrix(q);
+        let mv: Vec<Float> = (0..nq)
+            .map(|i| {
+                let mut s = Float::new(p);
+                for (mk, vk) in self.ws.m[i * nq..(i + 1) * nq].iter().zip(v) {
+                    s += mk * vk;
+                }
+                s
+            })
+            .collect();
+        self.cyclic
+            .iter()
+            .map(|(_, e)| {
+                let mut s = Float::new(p);
+                for (a, b) in e.iter().zip(&mv) {
+                    s += a * b;
+                }
+                s
+            })
+            .collect()
+    }
+
+    /// The residuals of the position and velocity constraints at (q, q̇),
+    /// relative to their values at (q0, q̇0): the drift of the integration.
+    /// Returns the largest absolute residual (lengths and angles in the
+    /// model's units; velocities as they are).
+    pub fn drift(&self, q: &[Float], v: &[Float], q0: &[Float]) -> Float {
+        let p = self.prec;
+        let mut worst = Float::new(p);
+        let mut upd = |x: Float| {
+            let a = x.abs();
+            if a > worst {
+                worst = a;
+            }
+        };
+        let pos = |q: &[Float], row: Row| -> Float {
+            match row {
+                Row::FloorNormal => q[Y1].clone(),
+                Row::FloorFriction => match self.floor {
+                    Floor::Roll => {
+                        Float::with_val(p, &q[X1] - Float::with_val(p, &self.rho[0] * &q[PHI1]))
+                    }
+                    _ => q[X1].clone(),
+                },
+                Row::Hold => q[PHI1].clone(),
+                Row::Normal(j) => q[rr(j)].clone(),
+                Row::Friction(j) => {
+                    // r_j θ_j + ρ_{j+1} a_{j+1} + ρ_j a_j, a the ccw angles
+                    let (i0, s0) = Self::spin(j);
+                    let (i1, s1) = Self::spin(j + 1);
+                    let rj = Float::with_val(p, &self.rho[j] + &self.rho[j + 1]);
+                    let mut s = Float::with_val(p, &rj * &q[th(j)]);
+                    s += Float::with_val(p, &self.rho[j] * s0) * &q[i0];
+                    s += Float::with_val(p, &self.rho[j + 1] * s1) * &q[i1];
+                    s
+                }
+                Row::Massless(_) => Float::new(p),
+            }
+        };
+        for &row in &self.rows {
+            upd(pos(q, row) - pos(q0, row));
+            let (coefs, _) = self.row_coeffs(row, q, v);
+            if let Row::Massless(_) = row {
+                continue;
+            }
+            let mut s = Float::new(p);
+            for (i, c) in coefs {
+                s += &c * &v[i];
+            }
+            upd(s);
+        }
+        worst
+    }
+
+    /// Puts (q, q̇) back on the constraint manifold by recomputing the
+    /// dependent coordinates and rates from the independent ones (y1, r_j
+    /// exact; x1 from φ1 on a rolling floor; spins of rolling contacts from
+    /// the rolling constraints with the constants of q0).
+    pub fn project(&self, q: &mut [Float], v: &mut [Float], q0: &[Float]) {
+        let p = self.prec;
+        q[Y1].assign(&q0[Y1]);
+        v[Y1].assign(0u32);
+        match self.floor {
+            Floor::Roll => {
+                let x = Float::with_val(p, &self.rho[0] * &q[PHI1]) + &q0[X1]
+                    - Float::with_val(p, &self.rho[0] * &q0[PHI1]);
+                q[X1].assign(&x);
+                let xd = Float::with_val(p, &self.rho[0] * &v[PHI1]);
+                v[X1].assign(&xd);
+            }
+            Floor::Fixed => {
+                q[X1].assign(&q0[X1]);
+                q[PHI1].assign(&q0[PHI1]);
+                v[X1].assign(0u32);
+                v[PHI1].assign(0u32);
+            }
+            Floor::Slip => {}
+        }
+        for j in 0..self.n - 1 {
+            q[rr(j)].assign(&q0[rr(j)]);
+            v[rr(j)].assign(0u32);
+            if self.contacts[j] == Contact::Roll {
+                let (i0, s0) = Self::spin(j);
+                let rj = &q0[rr(j)];
+                let f = |q: &[Float]| {
+                    Float::with_val(p, rj * &q[th(j)])
+                        + Float::with_val(p, &self.rho[j] * s0) * &q[i0]
+                };
+                let c0 = Float::with_val(
+                    p,
+                    f(q0) + Float::with_val(p, &self.rho[j + 1] * &q0[psi(j)]),
+                );
+                let a = (c0 - f(q)) / &self.rho[j + 1];
+                q[psi(j)].assign(&a);
+                let w = Float::with_val(p, rj * &v[th(j)])
+                    + Float::with_val(p, &self.rho[j] * s0) * &v[i0];
+                let w = -w / &self.rho[j + 1];
+                v[psi(j)].assign(&w);
+            }
+        }
+    }
+
+    /// Heights of the centres (y_i) at q, bottom up.
+    pub fn heights(&self, q: &[Float]) -> Vec<Float> {
+        let p = self.prec;
+        let mut out = Vec::with_capacity(self.n);
+        let mut y = Float::with_val(p, &q[Y1]);
+        out.push(y.clone());
+        for j in 0..self.n - 1 {
+            let c = Float::with_val(p, q[th(j)].cos_ref());
+            y += Float::with_val(p, &q[rr(j)] * &c);
+            out.push(y.clone());
+        }
+        out
+    }
+}
