@@ -25,8 +25,10 @@ screen-sized pieces of them (index-WIDTH-NN.png) for reading.
 
 It talks to Chromium over the DevTools protocol on a pipe
 (--remote-debugging-pipe): Python's standard library only, no driver to install.
-Chromium is `$CHROMIUM`, else `chromium` or `chromium-browser` on PATH; if none
-is found the check FAILS (exit 2) — it never passes without a browser.
+Chromium is `$CHROMIUM`, else `chromium` or `chromium-browser` on PATH, else the
+one Playwright downloads (`pip install playwright && playwright install --with-deps
+chromium`, found under ~/.cache/ms-playwright); if none is found the check FAILS
+(exit 2) — it never passes without a browser.
 Exit 0: all checks pass; 1: a check failed (each failure printed); 2: no browser.
 """
 
@@ -75,6 +77,11 @@ def find_chromium():
         p = shutil.which(name)
         if p:
             return p
+    # the Chromium that `playwright install chromium` downloads
+    cache = Path(os.environ.get("PLAYWRIGHT_BROWSERS_PATH", Path.home() / ".cache" / "ms-playwright"))
+    for p in sorted(cache.glob("chromium-*/chrome-linux*/chrome"), reverse=True):
+        if p.is_file():
+            return str(p)
     return None
 
 
@@ -152,6 +159,13 @@ class Browser:
         except subprocess.TimeoutExpired:
             self.proc.kill()
 
+
+READY = r"""
+(() => [...document.querySelectorAll('object')]
+  .filter(o => o.offsetParent !== null)
+  .every(o => o.contentDocument && o.contentDocument.documentElement
+              && o.contentDocument.readyState === 'complete'))()
+"""
 
 PROBE = r"""
 (() => {
@@ -289,6 +303,14 @@ def check_page(b, url, width, shot=None):
     b.events.clear()
     b.send("Page.navigate", {"url": url}, session=s)
     b.wait_event("Page.loadEventFired", timeout=120)
+    # the figures are <object>s, each a document of its own: wait until every
+    # shown one has loaded (a busy machine can be slower than the page's load event)
+    deadline = time.time() + 60
+    while time.time() < deadline:
+        r = b.send("Runtime.evaluate", {"expression": READY, "returnByValue": True}, session=s)
+        if r.get("result", {}).get("value"):
+            break
+        time.sleep(0.2)
     time.sleep(0.3)
     r = b.send(
         "Runtime.evaluate",

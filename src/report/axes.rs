@@ -95,6 +95,8 @@ impl Axis {
 
 /// The data range of a panel's curves, markers, bands and patches along x
 /// (`x` true) or y, in data coordinates.
+/// Along y only the points within the panel's fixed x range count (a
+/// panel that zooms into part of its curves fits their visible part).
 pub fn data_range(p: &Panel, x: bool) -> Option<(f64, f64)> {
     let mut lo = f64::INFINITY;
     let mut hi = f64::NEG_INFINITY;
@@ -104,14 +106,15 @@ pub fn data_range(p: &Panel, x: bool) -> Option<(f64, f64)> {
             hi = hi.max(v);
         }
     };
+    let shown = |a: f64| x || p.xrange.is_none_or(|(l, h)| a >= l && a <= h);
     for s in &p.series {
         for q in &s.points {
-            if q.0.is_finite() && q.1.is_finite() {
+            if q.0.is_finite() && q.1.is_finite() && shown(q.0) {
                 add(if x { q.0 } else { q.1 });
             }
         }
     }
-    for m in &p.markers {
+    for m in p.markers.iter().filter(|m| shown(m.at.0)) {
         add(if x { m.at.0 } else { m.at.1 });
     }
     for l in &p.lines {
@@ -170,6 +173,20 @@ pub fn logarithmic(fixed: Option<(f64, f64)>, data: Option<(f64, f64)>, pad: boo
         texts: ticks_v.iter().map(|v| log_tick_text(*v)).collect(),
         log: true,
     }
+}
+
+/// The edges of the cells around nodes `g` (at least two, increasing):
+/// each cell reaches halfway to its neighbours, the outer ones as far out
+/// as in. `g.len() + 1` edges.
+pub fn cell_edges(g: &[f64]) -> Vec<f64> {
+    let n = g.len();
+    let mut e = Vec::with_capacity(n + 1);
+    e.push(g[0] - (g[1] - g[0]) / 2.0);
+    for w in g.windows(2) {
+        e.push((w[0] + w[1]) / 2.0);
+    }
+    e.push(g[n - 1] + (g[n - 1] - g[n - 2]) / 2.0);
+    e
 }
 
 /// Clips the polyline `pts` to [x0,x1]×[y0,y1]: the visible pieces
@@ -275,7 +292,13 @@ mod tests {
         let pieces = clip_polyline(&[(0.0, 0.0), (1.0, 2.0), (2.0, 0.0)], 0.0, 2.0, 0.0, 1.0);
         assert_eq!(pieces.len(), 2);
         let broken = clip_polyline(
-            &[(0.1, 0.1), (0.2, 0.2), (f64::NAN, f64::NAN), (0.3, 0.1), (0.4, 0.2)],
+            &[
+                (0.1, 0.1),
+                (0.2, 0.2),
+                (f64::NAN, f64::NAN),
+                (0.3, 0.1),
+                (0.4, 0.2),
+            ],
             0.0,
             1.0,
             0.0,

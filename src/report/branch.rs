@@ -23,6 +23,20 @@ pub struct BranchData {
     pub stay: Track,
     /// The motion on the `part` branch.
     pub part: Track,
+    /// r₁ and r = r₁ + r₂ (the gap between the surfaces is the distance of
+    /// the centres less r; cylinder 1's centre stays at height r₁).
+    pub radii: (f64, f64),
+}
+
+impl BranchData {
+    /// The gap between the cylinders' surfaces along a track, in units of
+    /// r₁ (0 while they touch).
+    pub fn gap(&self, tr: &Track) -> (Vec<(f64, f64)>, Vec<String>) {
+        let col = |n: &str| crate::motion::point::column_index(n).unwrap_or(0);
+        let (x1, x2, y2) = (col("x1"), col("x2"), col("y2"));
+        let (r1, r) = self.radii;
+        tr.map(|v| ((v[x2] - v[x1]).hypot(v[y2] - r1) - r) / r1)
+    }
 }
 
 /// The main case from θ₀ = [`super::data::THETA0_TIME`].
@@ -84,5 +98,6 @@ pub fn compute(digits: u32, n: usize, stay: Option<Track>) -> Result<BranchData>
         closed,
         stay,
         part,
+        radii: (model.params().r1.to_f64(), r),
     })
 }

@@ -14,8 +14,8 @@
 
 use plotters_backend::{
     text_anchor::{HPos, VPos},
-    BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend,
-    DrawingErrorKind, FontTransform,
+    BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
+    FontTransform,
 };
 use std::cell::RefCell;
 use std::fmt::Write as _;
@@ -124,6 +124,8 @@ pub struct Doc {
     pub body: String,
     /// What plotters draws next.
     pub ctx: Ctx,
+    /// Labels left out for want of a free place.
+    pub dropped: Vec<String>,
 }
 
 impl Doc {
@@ -187,7 +189,18 @@ impl Doc {
         } else {
             String::new()
         };
-        format!(" fill=\"{}\" stroke=\"none\"{op}", hex(c.rgb))
+        // the cells of a map are outlined in their own colour, so that no
+        // seam of the background shows between neighbours where a renderer
+        // anti-aliases their shared edges
+        let stroke = if self.ctx.class == "patch" && a >= 1.0 {
+            format!(
+                " stroke=\"{}\" stroke-width=\"0.35\" stroke-linejoin=\"round\"",
+                hex(c.rgb)
+            )
+        } else {
+            " stroke=\"none\"".to_string()
+        };
+        format!(" fill=\"{}\"{stroke}{op}", hex(c.rgb))
     }
 
     /// A path through pixel points (already in pt).
@@ -311,13 +324,7 @@ impl DrawingBackend for Canvas {
         Ok(())
     }
 
-    fn draw_circle<St: BackendStyle>(
-        &mut self,
-        c: BackendCoord,
-        r: u32,
-        s: &St,
-        fill: bool,
-    ) -> R {
+    fn draw_circle<St: BackendStyle>(&mut self, c: BackendCoord, r: u32, s: &St, fill: bool) -> R {
         let mut d = self.doc.borrow_mut();
         let (x, y) = pt(c);
         let paint = if fill {
@@ -409,10 +416,11 @@ impl DrawingBackend for Canvas {
     }
 }
 
-/// The SVG document around `body`: `w` × `h` pt, the viewBox in pt.
+/// The SVG document around `body`: `w` × `h` pt (its print size: the
+/// width and height carry the unit), the viewBox in pt.
 pub fn svg_document(w: f64, h: f64, body: &str) -> String {
     format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\" style=\"font-kerning:none\">\n\
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}pt\" height=\"{h}pt\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\" style=\"font-kerning:none\">\n\
          <rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n{body}</svg>\n",
         w = n(w),
         h = n(h),

@@ -88,7 +88,12 @@ pub fn write(records: &[Record]) -> String {
 }
 
 /// A record of a verified value.
-pub fn verified(case: &str, quantity: &str, unit: &str, v: &crate::numeric::verify::Verified) -> Record {
+pub fn verified(
+    case: &str,
+    quantity: &str,
+    unit: &str,
+    v: &crate::numeric::verify::Verified,
+) -> Record {
     Record {
         case: case.into(),
         point: None,
@@ -134,7 +139,11 @@ pub fn figure(fig: &Figure) -> String {
             }
         }
         for m in &p.markers {
-            let key = if m.key.is_empty() { ascii_key(&m.title) } else { m.key.clone() };
+            let key = if m.key.is_empty() {
+                ascii_key(&m.title)
+            } else {
+                m.key.clone()
+            };
             let case = format!("{panel};marker={key}");
             for (q, v) in [(&p.xq, m.at.0), (&p.yq, m.at.1)] {
                 out.push(Record {
@@ -151,7 +160,14 @@ pub fn figure(fig: &Figure) -> String {
         for l in &p.lines {
             let q = if l.vertical { &p.xq } else { &p.yq };
             out.push(Record {
-                case: format!("{panel};line={}", ascii_key(&l.title)),
+                case: format!(
+                    "{panel};line={}",
+                    if l.key.is_empty() {
+                        ascii_key(&l.title)
+                    } else {
+                        l.key.clone()
+                    }
+                ),
                 point: None,
                 phase: String::new(),
                 quantity: q.name.clone(),

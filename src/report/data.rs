@@ -172,7 +172,7 @@ impl Job {
 }
 
 enum Out {
-    Time(Result<TimeCurve>),
+    Time(Box<Result<TimeCurve>>),
     Theta(Result<ThetaCurve>),
     Sep(Result<Separation>),
     Forces(Vec<Result<Vec<Verified>>>),
@@ -376,7 +376,7 @@ fn theta_curve(v: usize, cfg: &Config, pb: &ProgressBar) -> Result<ThetaCurve> {
 
 fn run_job(job: &Job, cfg: &Config, pb: &ProgressBar) -> Out {
     match job {
-        Job::Time(v) => Out::Time(time_curve(*v, cfg, pb)),
+        Job::Time(v) => Out::Time(Box::new(time_curve(*v, cfg, pb))),
         Job::Theta(v) => Out::Theta(theta_curve(*v, cfg, pb)),
         Job::Sep(v, th0) => {
             let r = variant_model(VARIANTS[*v], th0)
@@ -465,7 +465,7 @@ pub fn compute(cfg: &Config, pb: &ProgressBar, show: bool) -> Result<Data> {
     let mut key_iter = keys.into_iter();
     for (job, out) in jobs.iter().zip(outs) {
         match (job, out) {
-            (Job::Time(_), Out::Time(t)) => data.time.push(t),
+            (Job::Time(_), Out::Time(t)) => data.time.push(*t),
             (Job::Theta(_), Out::Theta(t)) => data.theta.push(t),
             (Job::Sep(v, _), Out::Sep(s)) => data.sep[*v].push(s),
             (Job::Forces, Out::Forces(f)) => data.forces = f,

@@ -80,7 +80,7 @@ pub fn svg() -> String {
     let mut d = D { s: String::new() };
     let _ = writeln!(
         d.s,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\" font-size=\"17\">",
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}pt\" height=\"{}pt\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\" font-size=\"17\">",
         super::canvas::n(PRINT_W),
         super::canvas::n(PRINT_W * h / w)
     );

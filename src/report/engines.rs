@@ -15,6 +15,20 @@ pub struct Card {
     pub dir: String,
     /// The JSON.
     pub json: Value,
+    /// The last commit of the file (`abc123def456 of 2025-01-31`), or None
+    /// where it is not committed (or git is not at hand).
+    pub committed: Option<String>,
+}
+
+/// The last commit that touched `path`: its short hash and date.
+fn last_commit(path: &Path) -> Option<String> {
+    let out = std::process::Command::new("git")
+        .args(["log", "-1", "--format=%h of %cs", "--"])
+        .arg(path)
+        .output()
+        .ok()?;
+    let s = String::from_utf8_lossy(&out.stdout).trim().to_string();
+    (out.status.success() && !s.is_empty()).then_some(s)
 }
 
 /// Every `*/scorecard.json` under `root`, in name order (unreadable ones
@@ -25,16 +39,30 @@ pub fn read(root: &Path) -> (Vec<Card>, Vec<String>) {
     let Ok(rd) = std::fs::read_dir(root) else {
         return (cards, problems);
     };
-    let mut dirs: Vec<_> = rd.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| p.is_dir()).collect();
+    let mut dirs: Vec<_> = rd
+        .filter_map(|e| e.ok())
+        .map(|e| e.path())
+        .filter(|p| p.is_dir())
+        .collect();
     dirs.sort();
     for d in dirs {
         let f = d.join("scorecard.json");
         if !f.is_file() {
             continue;
         }
-        let name = d.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        match std::fs::read_to_string(&f).map_err(|e| e.to_string()).and_then(|t| serde_json::from_str::<Value>(&t).map_err(|e| e.to_string())) {
-            Ok(json) => cards.push(Card { dir: name, json }),
+        let name = d
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        match std::fs::read_to_string(&f)
+            .map_err(|e| e.to_string())
+            .and_then(|t| serde_json::from_str::<Value>(&t).map_err(|e| e.to_string()))
+        {
+            Ok(json) => cards.push(Card {
+                dir: name,
+                json,
+                committed: last_commit(&f),
+            }),
             Err(e) => problems.push(format!("{}: {e}", f.display())),
         }
     }
@@ -60,7 +88,11 @@ fn stamp(v: &Value, keys: &[&str]) -> Option<String> {
     keys.iter().find_map(|k| {
         v.get(*k)
             .or_else(|| v.get("reference").and_then(|r| r.get(*k)))
-            .and_then(|x| x.as_str().map(str::to_string).or_else(|| x.as_i64().map(|i| i.to_string())))
+            .and_then(|x| {
+                x.as_str()
+                    .map(str::to_string)
+                    .or_else(|| x.as_i64().map(|i| i.to_string()))
+            })
     })
 }
 
@@ -77,15 +109,23 @@ pub fn page(cards: &[Card], root_shown: &str, report_stamp: &str) -> String {
     ));
     if cards.is_empty() {
         s.push_str(&format!(
-            "<p><strong>No scorecards are committed</strong> (none at <code>{}/*/scorecard.json</code>), so this page holds no result for any engine.</p>\n",
-            esc(root_shown)
+            "<p><strong>No scorecards are committed</strong> (none at <code>{r}/*/scorecard.json</code>), so this page holds no result for any engine.</p>\n\
+             <p>To produce one, install the Python package with an engine and run the conformance battery with the scorecard written where the report reads it:</p>\n\
+             <pre><code>pip install './python[engines]'\n\
+             python -m cylroll.conformance ENGINE \\\n    --out {r}/ENGINE\n\
+             cargo run --release -- report</code></pre>\n\
+             <p>ENGINE is <code>pybullet</code>, <code>pymunk</code>, <code>mujoco</code>, <code>example</code> or your own adapter (<code>module:Class</code>); the extras <code>[pybullet]</code>, <code>[pymunk]</code>, <code>[mujoco]</code> install one engine each; see <code>python/cylroll/conformance/README.md</code>. Commit the <code>scorecard.json</code>: this page shows the committed scorecards and nothing else.</p>\n",
+            r = esc(root_shown)
         ));
         s.push_str("</body>\n</html>\n");
         return s;
     }
     s.push_str("<nav><h2>Contents</h2><ul>\n");
     for c in cards {
-        s.push_str(&format!("<li><a href=\"#engine-{0}\">{0}</a></li>\n", esc(&c.dir)));
+        s.push_str(&format!(
+            "<li><a href=\"#engine-{0}\">{0}</a></li>\n",
+            esc(&c.dir)
+        ));
     }
     s.push_str("</ul></nav>\n");
     for c in cards {
@@ -99,8 +139,17 @@ pub fn page(cards: &[Card], root_shown: &str, report_stamp: &str) -> String {
             esc(&name),
             esc(&version)
         ));
-        let date = stamp(j, &["date", "created", "generated", "timestamp"]).unwrap_or_else(|| "no date recorded".into());
-        let commit = stamp(j, &["commit", "git_commit", "reference_commit"]).unwrap_or_else(|| "no commit recorded".into());
+        // the scorecard's own stamp where it records one, else its commit
+        let date = stamp(j, &["date", "created", "generated", "timestamp"]);
+        let commit = stamp(j, &["commit", "git_commit", "reference_commit"]);
+        let (date, commit) = match (date, commit, &c.committed) {
+            (None, None, Some(g)) => ("committed".to_string(), format!("commit {g}")),
+            (None, None, None) => ("no date recorded".to_string(), "not committed".to_string()),
+            (d, k, _) => (
+                d.unwrap_or_else(|| "no date recorded".into()),
+                k.unwrap_or_else(|| "no commit recorded".into()),
+            ),
+        };
         let passed = j.get("passed").and_then(Value::as_bool);
         s.push_str(&format!(
             "<p>Scorecard <code>{}/{}/scorecard.json</code> (schema {}): {}, {}; reference {} {}; time steps {}; {}.</p>\n",
@@ -118,7 +167,12 @@ pub fn page(cards: &[Card], root_shown: &str, report_stamp: &str) -> String {
                 None => "no overall verdict recorded",
             }
         ));
-        for case in j.get("cases").and_then(Value::as_array).into_iter().flatten() {
+        for case in j
+            .get("cases")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+        {
             s.push_str(&format!("<h3>{}</h3>\n", esc(&text(case.get("case")))));
             if let Some(bp) = case.get("branch_point").filter(|b| !b.is_null()) {
                 s.push_str(&format!(
@@ -129,7 +183,12 @@ pub fn page(cards: &[Card], root_shown: &str, report_stamp: &str) -> String {
                 ));
             }
             s.push_str("<div class=\"scroll\"><table class=\"data\">\n<thead><tr><th>check</th><th>value</th><th>tolerance</th><th>passes</th><th>what it measures</th></tr></thead>\n<tbody>\n");
-            for ch in case.get("checks").and_then(Value::as_array).into_iter().flatten() {
+            for ch in case
+                .get("checks")
+                .and_then(Value::as_array)
+                .into_iter()
+                .flatten()
+            {
                 s.push_str(&format!(
                     "<tr><td data-label=\"check\">{}</td><td class=\"num\" data-label=\"value\">{}</td><td class=\"num\" data-label=\"tolerance\">{}</td><td data-label=\"passes\">{}</td><td data-label=\"what it measures\">{}</td></tr>\n",
                     esc(&text(ch.get("name"))),
@@ -150,7 +209,9 @@ pub fn page(cards: &[Card], root_shown: &str, report_stamp: &str) -> String {
 /// The commit the report was generated from (`git rev-parse HEAD` where
 /// the report runs), or a sentence saying it is unknown.
 pub fn report_stamp() -> String {
-    let out = std::process::Command::new("git").args(["rev-parse", "--short=12", "HEAD"]).output();
+    let out = std::process::Command::new("git")
+        .args(["rev-parse", "--short=12", "HEAD"])
+        .output();
     match out {
         Ok(o) if o.status.success() => {
             let c = String::from_utf8_lossy(&o.stdout).trim().to_string();
@@ -160,15 +221,79 @@ pub fn report_stamp() -> String {
                 .map(|d| String::from_utf8_lossy(&d.stdout).trim().to_string())
                 .unwrap_or_default();
             let dirty = std::process::Command::new("git")
-                .args(["diff", "--quiet", "HEAD", "--", "src", "Cargo.toml", "golden/engines"])
+                .args([
+                    "diff",
+                    "--quiet",
+                    "HEAD",
+                    "--",
+                    "src",
+                    "Cargo.toml",
+                    "golden/engines",
+                ])
                 .status()
                 .map(|s| !s.success())
                 .unwrap_or(false);
             format!(
                 "source commit {c} of {date}{}",
-                if dirty { " with uncommitted changes" } else { "" }
+                if dirty {
+                    " with uncommitted changes"
+                } else {
+                    ""
+                }
             )
         }
         _ => "source commit unknown (not run in a git checkout)".into(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn without_scorecards_the_page_says_so_and_how_to_make_one() {
+        let p = page(&[], "golden/engines", "source commit abc of 2025-01-01");
+        assert!(p.contains("No scorecards are committed"), "{p}");
+        assert!(p.contains("python -m cylroll.conformance ENGINE"));
+        assert!(p.contains("--out golden/engines/ENGINE"));
+        assert!(p.contains("source commit abc of 2025-01-01"));
+        assert!(!p.contains("<table"), "no table without evidence");
+    }
+
+    #[test]
+    fn a_scorecard_is_shown_with_its_checks_and_stamp() {
+        let json: Value = serde_json::from_str(
+            r#"{"schema": "cylroll-conformance/0",
+                "engine": {"name": "toy", "version": "1.2", "settings": {}},
+                "reference": {"package": "cylroll", "version": "0.1.0"},
+                "dts": [0.002, 0.001], "passed": false,
+                "cases": [{"case": "main_mu_10",
+                           "branch_point": {"theta": 0.9657, "t": 5.05},
+                           "branch_taken": "part",
+                           "checks": [{"name": "theta error (before_slip, dt=0.001)",
+                                       "value": 0.00027, "tolerance": 0.002,
+                                       "pass": true, "why": "max |dtheta|"},
+                                      {"name": "energy increase / (m2 g r)",
+                                       "value": 0.01, "tolerance": 0.001,
+                                       "pass": false, "why": "contacts never add energy"}]}]}"#,
+        )
+        .expect("json");
+        let card = Card {
+            dir: "toy".into(),
+            json,
+            committed: Some("0123456789ab of 2025-02-03".into()),
+        };
+        let p = page(&[card], "golden/engines", "source commit abc of 2025-01-01");
+        for want in [
+            "toy 1.2",
+            "main_mu_10",
+            "the engine took the <strong>part</strong> branch",
+            "2.700e-4",
+            "some checks fail",
+            "commit 0123456789ab of 2025-02-03",
+            "golden/engines/toy/scorecard.json",
+        ] {
+            assert!(p.contains(want), "{want} missing from {p}");
+        }
     }
 }

@@ -4,13 +4,13 @@
 //! models at both ends.
 
 use super::data::{log_grid, text_f64};
-use super::page::Table;
 use super::fig_main::{sep_line, UNITS};
 use super::legend::viridis;
 use super::model::{
     fmt, order, q_force, q_t, q_theta, rad, Band, ColorBar, Dash, Digits, Figure, LegendEntry,
     Marker, Panel, Patch, Quantity, RefLine, Series, Shape, PALETTE, REF,
 };
+use super::page::Table;
 use super::track::{track, Track};
 use super::Config;
 use crate::error::Result;
@@ -22,6 +22,10 @@ use crate::oracle::{self, Answer as SeparationAnswer, Options, Oracle};
 /// θ0 of the friction section (the main case's start).
 const THETA0: &str = "1/10";
 
+/// A point of the map over μ: (μ, the first slip onset (θ, contact), θs,
+/// the contact opened at an event with N₁₂ > 0).
+pub type MapPoint = (f64, Option<(f64, String)>, f64, bool);
+
 /// What the section computes.
 pub struct FrictionData {
     /// (μ text, the separation answer) for the event table.
@@ -30,7 +34,7 @@ pub struct FrictionData {
     pub traj: Result<Track>,
     /// (μ, the first slip onset (θ, contact), θs, the contact opened at the
     /// cone) at equal coefficients on both contacts.
-    pub map: Vec<(f64, Option<(f64, String)>, f64, bool)>,
+    pub map: Vec<MapPoint>,
     /// Points of the map that had no unique continuation (μ, reason).
     pub map_failed: Vec<(f64, String)>,
     /// θs over (μ_floor, μ_contact): grid values and rows of θs (None: failed).
@@ -86,9 +90,8 @@ pub fn compute(cfg: &Config) -> FrictionData {
             )
         })
         .collect();
-    let traj = both("0.3", "0.3").and_then(|m| {
-        track(&m, &Options::digits(cfg.plot_digits), cfg.time_points, None)
-    });
+    let traj = both("0.3", "0.3")
+        .and_then(|m| track(&m, &Options::digits(cfg.plot_digits), cfg.time_points, None));
     let mut map = Vec::new();
     let mut map_failed = Vec::new();
     for mu in log_grid(-2, 2, cfg.friction_per_decade) {
@@ -205,8 +208,17 @@ fn phase_bands(tr: &Track) -> Vec<Band> {
             j += 1;
         }
         // the phase runs from the event before its first row to the event after its last
-        let t0 = tr.events.iter().rev().find(|e| e.t <= tr.rows[k][0]).map_or(0.0, |e| e.t);
-        let t1 = tr.events.iter().find(|e| e.t >= tr.rows[j][0]).map_or(tr.rows[j][0], |e| e.t);
+        let t0 = tr
+            .events
+            .iter()
+            .rev()
+            .find(|e| e.t <= tr.rows[k][0])
+            .map_or(0.0, |e| e.t);
+        let t1 = tr
+            .events
+            .iter()
+            .find(|e| e.t >= tr.rows[j][0])
+            .map_or(tr.rows[j][0], |e| e.t);
         let (floor, contact) = ph.split_once('/').unwrap_or((ph.as_str(), ""));
         let color = if ph == "flight" {
             Some((super::fig_main::FLIGHT, "flight"))
@@ -235,7 +247,14 @@ fn ev_name(e: &super::track::Ev) -> String {
     if e.which.is_empty() {
         k
     } else {
-        format!("{k} ({})", if e.which == "contact" { "cylinders" } else { "floor" })
+        format!(
+            "{k} ({})",
+            if e.which == "contact" {
+                "cylinders"
+            } else {
+                "floor"
+            }
+        )
     }
 }
 
@@ -264,20 +283,37 @@ fn friction_main(tr: &Track, digits: u32) -> Figure {
             .iter()
             .filter(|e| e.kind != Kind::Impact)
             .map(|e| {
-                let l = if label { format!("{} t = {}", if e.kind == Kind::Separation { "tₛ" } else { "" }, fmt(e.t, 3)).trim().to_string() } else { String::new() };
+                let l = if !label {
+                    String::new()
+                } else if e.kind == Kind::Separation {
+                    format!("tₛ = {}", fmt(e.t, 3))
+                } else {
+                    format!("{}: t = {}", e.kind.name().replace('_', " "), fmt(e.t, 3))
+                };
                 let mut r = if e.kind == Kind::Separation {
                     sep_line(e.t, if label { l } else { String::new() }, d)
                 } else {
-                    RefLine::vertical(e.t, Dash::DashDot, String::new()).verified(d, format!("{} at t = {}", ev_name(e), fmt(e.t, 4)))
+                    RefLine::vertical(e.t, Dash::DashDot, l)
+                        .verified(d, format!("{} at t = {}", ev_name(e), fmt(e.t, 4)))
                 };
-                r.title = format!("{} at t = {}, θ = {}", ev_name(e), fmt(e.t, 4), fmt(e.theta, 4));
+                r.key = format!("{};contact={}", e.kind.name(), e.which);
+                r.title = format!(
+                    "{} at t = {}, θ = {}",
+                    ev_name(e),
+                    fmt(e.t, 4),
+                    fmt(e.theta, 4)
+                );
                 r
             })
             .collect()
     };
     let series = |name: &str, col: &str, color, dash, label: &str| {
         let (pts, ph) = tr.col(col);
-        Series::new(label, color, pts).csv(format!("curve={name}"), Some(Quantity::new(col, "", ""))).phases(ph).dashed(dash).digits(Digits::Exact, d)
+        Series::new(label, color, pts)
+            .csv(format!("curve={name}"), Some(Quantity::new(col, "", "")))
+            .phases(ph)
+            .dashed(dash)
+            .digits(Digits::Exact, d)
     };
     let mut p1 = Panel::new("θ, with its events", q_t(), q_theta());
     let mut s = series("theta", "theta", PALETTE[0], Dash::Solid, "");
@@ -287,10 +323,19 @@ fn friction_main(tr: &Track, digits: u32) -> Figure {
         .events
         .iter()
         .map(|e| {
-            Marker::new(Shape::Diamond, (e.t, e.theta), PALETTE[6], format!("{} at t = {}, θ = {}", ev_name(e), fmt(e.t, 4), fmt(e.theta, 4)))
-                .label(ev_name(e))
-                .key(format!("event={}", e.kind.name()))
-                .digits(d)
+            Marker::new(
+                Shape::Diamond,
+                (e.t, e.theta),
+                PALETTE[6],
+                format!(
+                    "{} at t = {}, θ = {}",
+                    ev_name(e),
+                    fmt(e.t, 4),
+                    fmt(e.theta, 4)
+                ),
+            )
+            .key(format!("event={}", e.kind.name()))
+            .digits(d)
         })
         .collect();
     let mut p2 = Panel::new("forces between the cylinders", q_t(), q_force());
@@ -298,19 +343,54 @@ fn friction_main(tr: &Track, digits: u32) -> Figure {
     let cone: Vec<(f64, f64)> = n12.iter().map(|&(t, n)| (t, 0.3 * n)).collect();
     let ncone: Vec<(f64, f64)> = cone.iter().map(|&(t, c)| (t, -c)).collect();
     p2.series = vec![
-        series("N12", "N12", PALETTE[2], Dash::Solid, "N₁₂").shape(Shape::Circle).every(9, 2),
-        series("F21", "F21", PALETTE[1], Dash::Dashed, "F₂₁").shape(Shape::Square).every(9, 6),
-        Series::new("±μN₁₂, the friction cone", PALETTE[6], cone).csv("curve=mu_N12", Some(Quantity::new("mu_N12", "m1*g", ""))).phases(ph.clone()).dashed(Dash::Dotted).digits(Digits::Exact, d),
-        Series::new("", PALETTE[6], ncone).csv("curve=minus_mu_N12", Some(Quantity::new("minus_mu_N12", "m1*g", ""))).phases(ph).dashed(Dash::Dotted).digits(Digits::Exact, d),
+        series("N12", "N12", PALETTE[2], Dash::Solid, "N₁₂")
+            .shape(Shape::Circle)
+            .every(9, 2),
+        series("F21", "F21", PALETTE[1], Dash::Dashed, "F₂₁")
+            .shape(Shape::Square)
+            .every(9, 6),
+        Series::new("±μN₁₂, the friction cone", PALETTE[6], cone)
+            .csv("curve=mu_N12", Some(Quantity::new("mu_N12", "m1*g", "")))
+            .phases(ph.clone())
+            .dashed(Dash::Dotted)
+            .digits(Digits::Exact, d),
+        Series::new("", PALETTE[6], ncone)
+            .csv(
+                "curve=minus_mu_N12",
+                Some(Quantity::new("minus_mu_N12", "m1*g", "")),
+            )
+            .phases(ph)
+            .dashed(Dash::Dotted)
+            .digits(Digits::Exact, d),
     ];
     let q_slip = Quantity::new("slip_speed", "sqrt(r1*g)", "slip speed (√(r₁g))");
     let mut p3 = Panel::new("slip speeds", q_t(), q_slip);
     p3.series = vec![
-        series("s12", "s12", PALETTE[3], Dash::Solid, "s₁₂: between the cylinders"),
+        series(
+            "s12",
+            "s12",
+            PALETTE[3],
+            Dash::Solid,
+            "s₁₂: between the cylinders",
+        ),
         series("s1", "s1", PALETTE[4], Dash::Dashed, "s₁: at the floor"),
     ];
-    let mut p4 = Panel::new("energy dissipated, W = E(0) − E(t)", q_t(), Quantity::new("work", "m1*g*r1", "W (m₁gr₁)"));
-    p4.series.push(series("work", "work", PALETTE[5], Dash::Solid, ""));
+    // a slip speed belongs to a contact: none in flight (each curve ends at
+    // its value at separation)
+    for sr in &mut p3.series {
+        for (q, ph) in sr.points.iter_mut().zip(&sr.phases) {
+            if ph == "flight" {
+                *q = (f64::NAN, f64::NAN);
+            }
+        }
+    }
+    let mut p4 = Panel::new(
+        "energy dissipated, W = E(0) − E(t)",
+        q_t(),
+        Quantity::new("work", "m1*g*r1", "W (m₁gr₁)"),
+    );
+    p4.series
+        .push(series("work", "work", PALETTE[5], Dash::Solid, ""));
     for (k, p) in [&mut p1, &mut p2, &mut p3, &mut p4].into_iter().enumerate() {
         p.bands = bands.clone();
         p.lines = lines(k == 0);
@@ -321,24 +401,48 @@ fn friction_main(tr: &Track, digits: u32) -> Figure {
             }
         }
     }
-    let evtext: Vec<String> = tr.events.iter().map(|e| format!("{} at t = {}, θ = {}", ev_name(e), fmt(e.t, 4), rad(e.theta, 4))).collect();
-    let mut f = Figure::new("friction_main", format!("The main case with μ = 0.3 at both contacts, from rest at θ₀ = {THETA0}"), vec![p1, p2, p3, p4], 2)
-        .heights(150.0, 150.0);
+    let evtext: Vec<String> = tr
+        .events
+        .iter()
+        .map(|e| {
+            format!(
+                "{} at t = {}, θ = {}",
+                ev_name(e),
+                fmt(e.t, 4),
+                rad(e.theta, 4)
+            )
+        })
+        .collect();
+    let mut f = Figure::new(
+        "friction_main",
+        format!("The main case with μ = 0.3 at both contacts, from rest at θ₀ = {THETA0}"),
+        vec![p1, p2, p3, p4],
+        2,
+    )
+    .heights(150.0, 150.0);
     f.share_x = true;
     f.legend = vec![
         LegendEntry::marker("event", PALETTE[6], Shape::Diamond, true, order::MARK),
-        LegendEntry::line("slip onset (dash-dot line)", REF, Dash::DashDot, order::BRANCH - 1),
+        LegendEntry::line(
+            "slip onset (dash-dot line)",
+            REF,
+            Dash::DashDot,
+            order::BRANCH - 1,
+        ),
         LegendEntry::line("separation", REF, Dash::Dotted, order::SEPARATION),
         LegendEntry::swatch("the cylinders slide on each other", SLIP_CONTACT),
         LegendEntry::swatch("cylinder 1 slides on the floor", SLIP_FLOOR),
         LegendEntry::swatch("flight to the first impact", super::fig_main::FLIGHT),
     ];
-    let slides_floor = tr.phases.iter().any(|p| p.split_once('/').is_some_and(|x| x.0.starts_with("slip")));
+    let slides_floor = tr
+        .phases
+        .iter()
+        .any(|p| p.split_once('/').is_some_and(|x| x.0.starts_with("slip")));
     if !slides_floor {
         f.legend.retain(|e| e.color != SLIP_FLOOR);
     }
     f.caption(format!(
-        "The main case with the same Coulomb coefficient μ = 0.3 (static = kinetic) at the floor and between the cylinders. Events: {}. Shading tells which contact slides: orange, the cylinders on each other (F₂₁ = −μN₁₂ on the cone); {}blue, the free flight after separation to the first impact. Every event time is a sample point and the lines break at every phase boundary; in flight F₂₁ = N₁₂ = 0 and W stays constant. {UNITS}",
+        "The main case with the same Coulomb coefficient μ = 0.3 (static = kinetic) at the floor and between the cylinders. Events: {}. Shading tells which contact slides: orange, the cylinders on each other (F₂₁ = −μN₁₂ on the cone); {}blue, the free flight after separation to the first impact. Every event time is a sample point and the lines break at every phase boundary: N₁₂ reaches 0 at tₛ, the slip speeds end at their values there (there is no contact, and no slip speed, in flight), and in flight F₂₁ = N₁₂ = 0 and W stays constant. {UNITS}",
         evtext.join("; "),
         if slides_floor { "violet, cylinder 1 on the floor; " } else { "the floor never slides here; " }
     ))
@@ -348,53 +452,112 @@ fn friction_main(tr: &Track, digits: u32) -> Figure {
 /// over μ.
 fn friction_map(d: &FrictionData, digits: u32) -> Figure {
     let dg = Digits::Verified(digits);
-    let (x0, x1) = (0.01, 100.0);
     let q_mu = Quantity::new("mu", "1", "μ at both contacts (log scale)");
     let mut p = Panel::new("", q_mu, q_theta());
     p.xlog = true;
-    p.xrange = Some((x0, x1));
     let ths: Vec<(f64, f64)> = d.map.iter().map(|m| (m.0, m.2)).collect();
     let onset = |w: &str| -> Vec<(f64, f64)> {
-        d.map.iter().map(|m| match &m.1 {
-            Some((o, c)) if c == w => (m.0, *o),
-            _ => (f64::NAN, f64::NAN),
-        }).collect()
+        d.map
+            .iter()
+            .map(|m| match &m.1 {
+                Some((o, c)) if c == w => (m.0, *o),
+                _ => (f64::NAN, f64::NAN),
+            })
+            .collect()
     };
-    let mut s_ths = Series::new("θₛ with friction", PALETTE[0], ths).csv("theta_s", None).shape(Shape::Circle).digits(Digits::Exact, dg);
+    let mut s_ths = Series::new("θₛ with friction", PALETTE[0], ths)
+        .csv("theta_s", None)
+        .shape(Shape::Circle)
+        .digits(Digits::Exact, dg);
     s_ths.every = 4;
     s_ths.offset = 1;
-    let mut s_c = Series::new("first slip onset: the cylinders", PALETTE[1], onset("contact")).csv("first_slip;contact=cylinders", None).shape(Shape::TriangleDown).digits(Digits::Exact, dg);
+    let mut s_c = Series::new(
+        "first slip onset: the cylinders",
+        PALETTE[1],
+        onset("contact"),
+    )
+    .csv("first_slip;contact=cylinders", None)
+    .shape(Shape::TriangleDown)
+    .digits(Digits::Exact, dg);
     s_c.dash = Dash::Dashed;
     s_c.every = 1;
-    let mut s_f = Series::new("first slip onset: the floor", PALETTE[4], onset("floor")).csv("first_slip;contact=floor", None).shape(Shape::Triangle).digits(Digits::Exact, dg);
+    let mut s_f = Series::new("first slip onset: the floor", PALETTE[4], onset("floor"))
+        .csv("first_slip;contact=floor", None)
+        .shape(Shape::Triangle)
+        .digits(Digits::Exact, dg);
     s_f.dash = Dash::Dashed;
     s_f.every = 1;
     p.series = vec![s_ths, s_c, s_f];
-    p.lines.push(RefLine::horizontal(d.ideal[0], PALETTE[6], Dash::Dotted, format!("rolling (μ = ∞): θₛ = {}", fmt(d.ideal[0], 4))).verified(dg, "theta_s rolling"));
-    p.lines.push(RefLine::horizontal(d.ideal[1], PALETTE[2], Dash::Dotted, format!("frictionless (μ = 0): θₛ = {}", fmt(d.ideal[1], 4))).verified(dg, "theta_s frictionless"));
+    p.lines.push(
+        RefLine::horizontal(d.ideal[0], PALETTE[6], Dash::Dotted, "μ = ∞")
+            .verified(
+                dg,
+                format!("both contacts rolling (μ = ∞): θₛ = {}", fmt(d.ideal[0], 6)),
+            )
+            .key("theta_s;model=roll/roll"),
+    );
+    p.lines.push(
+        RefLine::horizontal(d.ideal[1], PALETTE[2], Dash::Dotted, "μ = 0")
+            .verified(
+                dg,
+                format!(
+                    "both contacts frictionless (μ = 0): θₛ = {}",
+                    fmt(d.ideal[1], 6)
+                ),
+            )
+            .key("theta_s;model=slip/slip"),
+    );
     p.markers = d
         .map
         .iter()
         .filter(|m| m.3)
         .map(|m| {
-            Marker::new(Shape::Diamond, (m.0, m.2), PALETTE[3], format!("μ = {}: the contact opens at θ = {} with N₁₂ > 0", fmt(m.0, 3), fmt(m.2, 4)))
-                .key(format!("opens_at_cone;mu={}", super::csv::num(m.0, 6)))
-                .digits(dg)
+            Marker::new(
+                Shape::Diamond,
+                (m.0, m.2),
+                PALETTE[3],
+                format!(
+                    "μ = {}: the contact opens at θ = {} with N₁₂ > 0",
+                    fmt(m.0, 3),
+                    fmt(m.2, 4)
+                ),
+            )
+            .key(format!("opens_at_cone;mu={}", super::csv::num(m.0, 6)))
+            .digits(dg)
         })
         .collect();
     let mut f = Figure::new("friction_map", format!("The main case from θ₀ = {THETA0}: where slip starts, at which contact, and where the cylinders part"), vec![p], 1)
         .heights(200.0, 180.0);
     if !f.panels[0].markers.is_empty() {
-        f.legend.push(LegendEntry::marker("the contact opens at an event, N₁₂ > 0", PALETTE[3], Shape::Diamond, true, order::MARK));
+        f.legend.push(LegendEntry::marker(
+            "the contact opens at an event, N₁₂ > 0",
+            PALETTE[3],
+            Shape::Diamond,
+            true,
+            order::MARK,
+        ));
     }
-    f.legend.push(LegendEntry::line("the ideal models' θₛ", PALETTE[6], Dash::Dotted, order::LIMIT));
+    f.legend.push(LegendEntry::line(
+        "θₛ of the ideal limits: μ = ∞ (rolling), μ = 0 (frictionless)",
+        PALETTE[6],
+        Dash::Dotted,
+        order::LIMIT,
+    ));
     let failed = if d.map_failed.is_empty() {
         String::new()
     } else {
         let mus: Vec<String> = d.map_failed.iter().map(|(m, _)| fmt(*m, 3)).collect();
-        format!(" Not computed (no unique continuation of the rigid-body model): μ = {}.", mus.join(", "))
+        format!(
+            " Not computed (no unique continuation of the rigid-body model): μ = {}.",
+            mus.join(", ")
+        )
     };
-    let floor_mus: Vec<String> = d.map.iter().filter(|m| m.1.as_ref().is_some_and(|o| o.1 == "floor")).map(|m| fmt(m.0, 3)).collect();
+    let floor_mus: Vec<String> = d
+        .map
+        .iter()
+        .filter(|m| m.1.as_ref().is_some_and(|o| o.1 == "floor"))
+        .map(|m| fmt(m.0, 3))
+        .collect();
     let floor_text = if floor_mus.is_empty() {
         "The cylinders always slip first.".to_string()
     } else {
@@ -408,35 +571,51 @@ fn friction_map(d: &FrictionData, digits: u32) -> Figure {
     ))
 }
 
-/// The extent of grid cell `i` of nodes `lg`: halfway to its neighbours.
-fn half_cell(lg: &[f64], i: usize) -> (f64, f64) {
-    let a = if i == 0 { lg[0] - (lg[1] - lg[0]) / 2.0 } else { (lg[i - 1] + lg[i]) / 2.0 };
-    let b = if i + 1 == lg.len() { lg[i] + (lg[i] - lg[i - 1]) / 2.0 } else { (lg[i] + lg[i + 1]) / 2.0 };
-    (a, b)
-}
-
 /// θs over (μ_floor, μ_contact): one cell per computed point.
 fn friction_plane(d: &FrictionData, digits: u32) -> Figure {
     let (gx, rows) = &d.plane;
-    let vals = rows.iter().flatten().flatten().copied();
+    // the colour scale spans the values and the ideal limits marked on its bar
+    let vals = rows
+        .iter()
+        .flatten()
+        .flatten()
+        .copied()
+        .chain([d.ideal[0], d.ideal[2]])
+        .filter(|v| v.is_finite());
     let lo = vals.clone().fold(f64::INFINITY, f64::min);
     let hi = vals.fold(f64::NEG_INFINITY, f64::max).max(lo + 1e-9);
-    let q_f = Quantity::new("log10_mu_floor", "1", "log₁₀ μ at the floor");
-    let q_c = Quantity::new("log10_mu_contact", "1", "log₁₀ μ between the cylinders");
+    let q_f = Quantity::new("mu_floor", "1", "μ at the floor (log scale)");
+    let q_c = Quantity::new("mu_contact", "1", "μ between the cylinders (log scale)");
     let mut p = Panel::new("", q_f, q_c);
+    p.xlog = true;
+    p.ylog = true;
+    p.grid = false;
     let lg: Vec<f64> = gx.iter().map(|x| x.log10()).collect();
+    let e = super::axes::cell_edges(&lg);
     let mut recs = Vec::new();
     for (j, row) in rows.iter().enumerate() {
         for (i, v) in row.iter().enumerate() {
-            let ((x0, x1), (y0, y1)) = (half_cell(&lg, i), half_cell(&lg, j));
+            let ((x0, x1), (y0, y1)) = ((e[i], e[i + 1]), (e[j], e[j + 1]));
             p.patches.push(Patch {
                 outline: vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)],
                 color: v.map_or((200, 200, 200), |v| viridis((v - lo) / (hi - lo))),
-                title: format!("μ floor = {}, μ contact = {}: {}", fmt(gx[i], 3), fmt(gx[j], 3), v.map_or("no unique continuation".into(), |v| format!("θₛ = {}", fmt(v, 4)))),
+                title: format!(
+                    "μ floor = {}, μ contact = {}: {}",
+                    fmt(gx[i], 3),
+                    fmt(gx[j], 3),
+                    v.map_or("no unique continuation".into(), |v| format!(
+                        "θₛ = {}",
+                        fmt(v, 4)
+                    ))
+                ),
             });
             if let Some(v) = v {
                 recs.push(super::csv::Record {
-                    case: format!("mu_floor={};mu_contact={}", super::csv::num(gx[i], 6), super::csv::num(gx[j], 6)),
+                    case: format!(
+                        "mu_floor={};mu_contact={}",
+                        super::csv::num(gx[i], 6),
+                        super::csv::num(gx[j], 6)
+                    ),
                     point: None,
                     phase: String::new(),
                     quantity: "theta_s".into(),
@@ -447,21 +626,33 @@ fn friction_plane(d: &FrictionData, digits: u32) -> Figure {
             }
         }
     }
-    let (a, b) = (half_cell(&lg, 0).0, half_cell(&lg, lg.len() - 1).1);
-    p.xrange = Some((a, b));
-    p.yrange = Some((a, b));
+    let (a, b) = (e[0], e[lg.len()]);
+    p.xrange = Some((10f64.powf(a), 10f64.powf(b)));
+    p.yrange = Some((10f64.powf(a), 10f64.powf(b)));
     let missing = rows.iter().flatten().filter(|v| v.is_none()).count();
     let mut f = Figure::new("friction_plane", format!("Separation angle of the main case over (μ at the floor, μ between the cylinders), from θ₀ = {THETA0}"), vec![p], 1)
         .heights(230.0, 210.0);
     f.colorbar = Some(ColorBar {
         label: "θₛ (rad)".into(),
         range: (lo, hi),
-        marks: vec![(d.ideal[0], "roll/roll".into()), (d.ideal[2], "roll/slip".into())],
+        marks: vec![
+            (d.ideal[0], "roll/roll".into()),
+            (d.ideal[2], "roll/slip".into()),
+        ],
         steps: Vec::new(),
     });
-    f.extra_csv.push(super::csv::write(&recs).lines().skip(1).map(|l| format!("{l}\n")).collect());
+    f.extra_csv.push(
+        super::csv::write(&recs)
+            .lines()
+            .skip(1)
+            .map(|l| format!("{l}\n"))
+            .collect(),
+    );
     let grey = if missing > 0 {
-        format!(" Grey: {missing} point{} with no unique continuation of the rigid-body model.", if missing == 1 { "" } else { "s" })
+        format!(
+            " Grey: {missing} point{} with no unique continuation of the rigid-body model.",
+            if missing == 1 { "" } else { "s" }
+        )
     } else {
         String::new()
     };

@@ -1,13 +1,17 @@
 //! Direct labels with obstacle avoidance: every text cylroll writes into a
-//! plot (a curve's name, a reference line's value, an event's label, a
-//! note) goes to the first candidate place where its box crosses no curve,
-//! reference line, marker, other text or the plot's frame; where no place is
-//! free the text is left out (the legend and the hover text still carry
-//! it). The boxes are the font's (advance × ascent + descent), as the
-//! browser's overlap test measures them.
+//! plot (a curve's name, an event's label, a contour's level, a note) goes
+//! to the first candidate place where its box crosses no curve, reference
+//! line, marker, other text or the plot's frame; where no place is free the
+//! text is left out (the legend and the hover text still carry it; the
+//! curves of a panel are named all or none). Reference lines are labelled
+//! outside the plot, where nothing else is drawn: a vertical line's label
+//! in a strip over the plot ([`spread`]), a horizontal line's in a margin
+//! right of it ([`stack`]), pushed apart so that none is ever left out.
+//! The boxes are the font's (advance × ascent + descent), as the browser's
+//! overlap test measures them.
 
-use super::canvas::{ascent, descent, text_width};
 use super::axes::clip_segment;
+use super::canvas::{ascent, descent, text_width};
 
 /// A box in pt: (x0, x1, y0, y1), y down.
 pub type Rect = (f64, f64, f64, f64);
@@ -58,10 +62,10 @@ impl Obstacles {
         if self.boxes.iter().any(|o| meets(g, *o)) {
             return false;
         }
-        !self.lines.iter().any(|l| {
-            l.windows(2)
-                .any(|w| clip_segment(w[0], w[1], g).is_some())
-        })
+        !self
+            .lines
+            .iter()
+            .any(|l| l.windows(2).any(|w| clip_segment(w[0], w[1], g).is_some()))
     }
 
     /// Takes the box `b` (a text placed, a marker drawn).
@@ -119,29 +123,64 @@ pub fn along(line: &[(f64, f64)], n: usize, size: f64) -> Vec<(f64, f64, &'stati
     out
 }
 
-/// Places down a vertical line at `x` from `top` to `bottom`: right of it,
-/// then left of it.
-pub fn down_vertical(x: f64, top: f64, bottom: f64, size: f64) -> Vec<(f64, f64, &'static str)> {
-    let mut out = Vec::new();
-    let step = size * 0.6;
-    let mut y = top + ascent() * size + CLEAR + 0.5;
-    while y < bottom {
-        out.push((x + 2.0, y, "start"));
-        out.push((x - 2.0, y, "end"));
-        y += step;
+/// Baselines for labels in a margin beside the plot, one per height in
+/// `ys` (pt, each label centred on its height where it can be), pushed
+/// apart so that no two boxes meet and kept between `top` and `bottom`.
+/// Returned in the order of `ys`.
+pub fn stack(ys: &[f64], top: f64, bottom: f64, size: f64) -> Vec<f64> {
+    let h = (ascent() + descent()) * size;
+    let gap = h + 0.8;
+    let mut order: Vec<usize> = (0..ys.len()).collect();
+    order.sort_by(|&a, &b| ys[a].total_cmp(&ys[b]));
+    // box centres, top down
+    let mut c: Vec<f64> = order
+        .iter()
+        .map(|&i| ys[i].clamp(top + h / 2.0, bottom - h / 2.0))
+        .collect();
+    for k in 1..c.len() {
+        c[k] = c[k].max(c[k - 1] + gap);
+    }
+    if let Some(&last) = c.last() {
+        if last > bottom - h / 2.0 {
+            let n = c.len();
+            c[n - 1] = bottom - h / 2.0;
+            for k in (0..n - 1).rev() {
+                c[k] = c[k].min(c[k + 1] - gap);
+            }
+        }
+    }
+    let mut out = vec![0.0; ys.len()];
+    for (k, &i) in order.iter().enumerate() {
+        out[i] = c[k] + (ascent() - descent()) * size / 2.0;
     }
     out
 }
 
-/// Places along a horizontal line at `y` from `right` to `left`: above
-/// it, then below it.
-pub fn along_horizontal(y: f64, left: f64, right: f64, size: f64) -> Vec<(f64, f64, &'static str)> {
-    let mut out = Vec::new();
-    let step = (right - left) / 12.0;
-    for k in 0..=12 {
-        let x = right - 2.0 - k as f64 * step;
-        out.push((x, y - 2.0 - descent() * size, "end"));
-        out.push((x, y + 2.0 + ascent() * size, "end"));
+/// Centres for labels of widths `ws` in a strip over the plot, one per
+/// position in `xs` (pt, each label centred on its position where it can
+/// be), pushed apart so that no two meet and kept between `left` and
+/// `right`. Returned in the order of `xs`.
+pub fn spread(xs: &[f64], ws: &[f64], left: f64, right: f64) -> Vec<f64> {
+    let gap = 4.0;
+    let mut order: Vec<usize> = (0..xs.len()).collect();
+    order.sort_by(|&a, &b| xs[a].total_cmp(&xs[b]));
+    let half = |k: usize| ws[order[k]] / 2.0;
+    let mut c: Vec<f64> = (0..order.len())
+        .map(|k| xs[order[k]].clamp(left + half(k), right - half(k)))
+        .collect();
+    for k in 1..c.len() {
+        c[k] = c[k].max(c[k - 1] + half(k - 1) + half(k) + gap);
+    }
+    let n = c.len();
+    if n > 0 && c[n - 1] > right - half(n - 1) {
+        c[n - 1] = right - half(n - 1);
+        for k in (0..n - 1).rev() {
+            c[k] = c[k].min(c[k + 1] - half(k + 1) - half(k) - gap);
+        }
+    }
+    let mut out = vec![0.0; xs.len()];
+    for (k, &i) in order.iter().enumerate() {
+        out[i] = c[k];
     }
     out
 }
@@ -169,6 +208,29 @@ pub fn corners_then_grid(a: Rect, size: f64) -> Vec<(f64, f64, &'static str)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn labels_over_a_plot_are_spread_apart() {
+        let c = spread(&[10.0, 12.0, 90.0], &[20.0, 30.0, 10.0], 0.0, 100.0);
+        assert!(c[1] - c[0] >= 25.0, "{c:?}");
+        assert!(c[0] - 10.0 >= 0.0 && c[2] + 5.0 <= 100.0, "{c:?}");
+        assert_eq!(c[2], 90.0);
+    }
+
+    #[test]
+    fn labels_in_a_margin_are_stacked_apart() {
+        let ys = [50.0, 48.0, 10.0, 51.0];
+        let b = stack(&ys, 0.0, 100.0, 7.0);
+        let h = (ascent() + descent()) * 7.0;
+        let mut sorted = b.clone();
+        sorted.sort_by(f64::total_cmp);
+        for w in sorted.windows(2) {
+            assert!(w[1] - w[0] >= h, "{b:?}");
+        }
+        // the lone label stays at its line
+        let mid = b[2] - (ascent() - descent()) * 7.0 / 2.0;
+        assert!((mid - 10.0).abs() < 1e-9);
+    }
 
     #[test]
     fn a_label_avoids_a_curve_and_other_labels() {

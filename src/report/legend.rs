@@ -21,7 +21,12 @@ pub fn entries(fig: &Figure) -> Vec<LegendEntry> {
         }
     };
     for p in &fig.panels {
-        for s in p.series.iter().filter(|s| s.drawn && !s.label.is_empty()) {
+        let named = |s: &&super::model::Series| p.names_right && s.direct.is_some();
+        for s in p
+            .series
+            .iter()
+            .filter(|s| s.drawn && !s.label.is_empty() && !named(s))
+        {
             push(LegendEntry {
                 label: s.label.clone(),
                 color: s.color,
@@ -60,7 +65,11 @@ pub fn wrap(s: &str, size: f64, w: f64) -> Vec<String> {
     let mut out = Vec::new();
     let mut cur = String::new();
     for word in s.split(' ') {
-        let cand = if cur.is_empty() { word.to_string() } else { format!("{cur} {word}") };
+        let cand = if cur.is_empty() {
+            word.to_string()
+        } else {
+            format!("{cur} {word}")
+        };
         if text_width(&cand, size) > w && !cur.is_empty() {
             out.push(std::mem::take(&mut cur));
             cur = word.to_string();
@@ -76,7 +85,11 @@ pub fn wrap(s: &str, size: f64, w: f64) -> Vec<String> {
 /// row in their order.
 pub fn layout(entries: &[LegendEntry], w: f64) -> Placed {
     if entries.is_empty() {
-        return Placed { height: 0.0, col_w: w, items: Vec::new() };
+        return Placed {
+            height: 0.0,
+            col_w: w,
+            items: Vec::new(),
+        };
     }
     let inner = w - 12.0;
     let widest = entries
@@ -84,7 +97,11 @@ pub fn layout(entries: &[LegendEntry], w: f64) -> Placed {
         .map(|e| SAMPLE + 4.0 + text_width(&e.label, LABEL) + 10.0)
         .fold(0.0, f64::max);
     let cols = ((inner / widest).floor() as usize).clamp(1, 3);
-    let cols = if widest > inner / 2.0 && entries.len() > 2 { cols.max(2).min(if w > 400.0 { 2 } else { 1 }) } else { cols };
+    let cols = if widest > inner / 2.0 && entries.len() > 2 {
+        cols.max(2).min(if w > 400.0 { 2 } else { 1 })
+    } else {
+        cols
+    };
     let col_w = inner / cols as f64;
     let mut items = Vec::new();
     let mut y = 4.0;
@@ -97,11 +114,21 @@ pub fn layout(entries: &[LegendEntry], w: f64) -> Placed {
         }
         y += tallest as f64 * LINE + 2.5;
     }
-    Placed { height: y + 2.0, col_w, items }
+    Placed {
+        height: y + 2.0,
+        col_w,
+        items,
+    }
 }
 
 /// Draws the legend at `top` (pt).
-pub fn draw(root: &DrawingArea<Canvas, Shift>, doc: &Rc<RefCell<Doc>>, entries: &[LegendEntry], p: &Placed, top: f64) {
+pub fn draw(
+    root: &DrawingArea<Canvas, Shift>,
+    doc: &Rc<RefCell<Doc>>,
+    entries: &[LegendEntry],
+    p: &Placed,
+    top: f64,
+) {
     let u = |v: f64| (v * super::canvas::S).round() as i32;
     for (e, (c, dy, lines)) in entries.iter().zip(&p.items) {
         let x = 6.0 + *c as f64 * p.col_w;
@@ -110,19 +137,46 @@ pub fn draw(root: &DrawingArea<Canvas, Shift>, doc: &Rc<RefCell<Doc>>, entries: 
         if e.swatch {
             doc.borrow_mut().set("legend", "", "");
             let col = RGBColor(e.color.0, e.color.1, e.color.2);
-            let _ = root.draw(&Rectangle::new([(u(x + 2.0), u(cy - 3.2)), (u(x + SAMPLE - 2.0), u(cy + 3.2))], col.filled()));
+            let _ = root.draw(&Rectangle::new(
+                [
+                    (u(x + 2.0), u(cy - 3.2)),
+                    (u(x + SAMPLE - 2.0), u(cy + 3.2)),
+                ],
+                col.filled(),
+            ));
         }
         if let Some(d) = e.dash {
             doc.borrow_mut().set("legend", d.array(), "");
             let col = RGBColor(e.color.0, e.color.1, e.color.2);
-            let _ = root.draw(&PathElement::new(vec![(u(x), u(cy)), (u(x + SAMPLE), u(cy))], col.stroke_width(u(1.1) as u32)));
+            let _ = root.draw(&PathElement::new(
+                vec![(u(x), u(cy)), (u(x + SAMPLE), u(cy))],
+                col.stroke_width(u(1.1) as u32),
+            ));
         }
         if let Some(s) = e.shape {
-            draw_marker(root, doc, "legend", (x + SAMPLE / 2.0, cy), s, MARK_R, e.color, e.filled, "");
+            draw_marker(
+                root,
+                doc,
+                "legend",
+                (x + SAMPLE / 2.0, cy),
+                s,
+                MARK_R,
+                e.color,
+                e.filled,
+                "",
+            );
         }
         for (i, l) in lines.iter().enumerate() {
             let by = y + LINE * (i as f64 + 0.78);
-            own_text(doc, (x + SAMPLE + 4.0, by), l, LABEL, "start", (0, 0, 0), false);
+            own_text(
+                doc,
+                (x + SAMPLE + 4.0, by),
+                l,
+                LABEL,
+                "start",
+                (0, 0, 0),
+                false,
+            );
         }
     }
 }
@@ -140,12 +194,20 @@ pub fn viridis(u: f64) -> (u8, u8, u8) {
         (173, 220, 48),
         (253, 231, 37),
     ];
-    let u = if u.is_finite() { u.clamp(0.0, 1.0) } else { 0.0 };
+    let u = if u.is_finite() {
+        u.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     let f = u * (V.len() - 1) as f64;
     let i = (f.floor() as usize).min(V.len() - 2);
     let t = f - i as f64;
     let l = |a: u8, b: u8| (f64::from(a) + t * (f64::from(b) - f64::from(a))).round() as u8;
-    (l(V[i].0, V[i + 1].0), l(V[i].1, V[i + 1].1), l(V[i].2, V[i + 1].2))
+    (
+        l(V[i].0, V[i + 1].0),
+        l(V[i].1, V[i + 1].1),
+        l(V[i].2, V[i + 1].2),
+    )
 }
 
 /// A horizontal colour bar at (x, y) of width `w`: the label, the bar (in
@@ -156,7 +218,15 @@ pub fn colorbar(doc: &Rc<RefCell<Doc>>, cb: &ColorBar, (x, y, w): (f64, f64, f64
     let (lo, hi) = cb.range;
     let label_w = text_width(&cb.label, LABEL) + 8.0;
     let (bx, by, bw, bh) = (x + label_w, y + 12.0, w - label_w - 8.0, 7.0);
-    own_text(doc, (x, by + bh - 0.5), &cb.label, LABEL, "start", (0, 0, 0), false);
+    own_text(
+        doc,
+        (x, by + bh - 0.5),
+        &cb.label,
+        LABEL,
+        "start",
+        (0, 0, 0),
+        false,
+    );
     let xp = |v: f64| bx + (v - lo) / (hi - lo).max(1e-300) * bw;
     let mut d = doc.borrow_mut();
     let mut edges: Vec<f64> = vec![lo];
@@ -166,19 +236,22 @@ pub fn colorbar(doc: &Rc<RefCell<Doc>>, cb: &ColorBar, (x, y, w): (f64, f64, f64
     let parts = if smooth { 64 } else { edges.len() - 1 };
     for k in 0..parts {
         let (a, b) = if smooth {
-            (lo + (hi - lo) * k as f64 / 64.0, lo + (hi - lo) * (k + 1) as f64 / 64.0)
+            (
+                lo + (hi - lo) * k as f64 / 64.0,
+                lo + (hi - lo) * (k + 1) as f64 / 64.0,
+            )
         } else {
             (edges[k], edges[k + 1])
         };
         let c = viridis(((a + b) / 2.0 - lo) / (hi - lo).max(1e-300));
         let _ = writeln!(
             d.body,
-            "<rect class=\"legend\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
+            "<rect class=\"legend\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{c}\" stroke=\"{c}\" stroke-width=\"0.3\"/>",
             super::canvas::n(xp(a)),
             super::canvas::n(by),
-            super::canvas::n(xp(b) - xp(a) + 0.05),
+            super::canvas::n(xp(b) - xp(a)),
             super::canvas::n(bh),
-            super::canvas::hex(c)
+            c = super::canvas::hex(c)
         );
     }
     let _ = writeln!(
@@ -198,7 +271,15 @@ pub fn colorbar(doc: &Rc<RefCell<Doc>>, cb: &ColorBar, (x, y, w): (f64, f64, f64
         let s = super::model::tick_text(t, dec);
         let tw = text_width(&s, TICK);
         taken.push((xt - tw / 2.0 - 1.5, xt + tw / 2.0 + 1.5));
-        own_text(doc, (xt, by + bh + TICK * 1.15), &s, TICK, "middle", (0, 0, 0), false);
+        own_text(
+            doc,
+            (xt, by + bh + TICK * 1.15),
+            &s,
+            TICK,
+            "middle",
+            (0, 0, 0),
+            false,
+        );
         tick(doc, xt, by + bh, by + bh + 2.0);
     }
     // marked levels: a line across the bar, the name above it where free
@@ -211,9 +292,23 @@ pub fn colorbar(doc: &Rc<RefCell<Doc>>, cb: &ColorBar, (x, y, w): (f64, f64, f64
         tick(doc, xm, by - 2.0, by + bh);
         let tw = text_width(name, LABEL);
         let (a, b) = (xm - tw / 2.0, xm + tw / 2.0);
-        let (a, b) = if b > x + w { (x + w - tw, x + w) } else if a < bx { (bx, bx + tw) } else { (a, b) };
+        let (a, b) = if b > x + w {
+            (x + w - tw, x + w)
+        } else if a < bx {
+            (bx, bx + tw)
+        } else {
+            (a, b)
+        };
         if !name.is_empty() && above.iter().all(|r| b + 2.0 < r.0 || a - 2.0 > r.1) {
-            own_text(doc, ((a + b) / 2.0, by - 3.0), name, LABEL, "middle", (0, 0, 0), false);
+            own_text(
+                doc,
+                ((a + b) / 2.0, by - 3.0),
+                name,
+                LABEL,
+                "middle",
+                (0, 0, 0),
+                false,
+            );
             above.push((a, b));
         }
     }

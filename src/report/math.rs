@@ -2,17 +2,32 @@
 //! as MathML: symbols in italic, digits after a symbol as subscripts, dots
 //! over symbols as accents, ² and ³ as superscripts, functions upright. An
 //! equation is cut into pieces at its top-level `=`, `+` and `−`, each its
-//! own `<math>`, so that a long one wraps on a narrow screen.
+//! own `<math>`, so that a long one wraps on a narrow screen (a long piece is
+//! cut inside its brackets too, at `+`, `−` and `/`).
 
 use super::page::esc;
 
-const FUNCTIONS: [&str; 10] = ["sin", "cos", "tan", "arccos", "arcsin", "arctan", "exp", "ln", "log", "sqrt"];
+const FUNCTIONS: [&str; 10] = [
+    "sin", "cos", "tan", "arccos", "arcsin", "arctan", "exp", "ln", "log", "sqrt",
+];
+
+/// Whether a code span is prose with symbols in it (a sentence the paper
+/// prints, rendered as text): symbols beyond ASCII and three words or more
+/// of three letters or more, not counting functions (a command is ASCII).
+pub fn is_prose(s: &str) -> bool {
+    !s.is_ascii()
+        && s.split(|c: char| !c.is_ascii_alphabetic())
+            .filter(|w| w.len() >= 3 && !FUNCTIONS.contains(w))
+            .count()
+            >= 3
+}
 
 /// Whether a code span is an equation (rendered as math) rather than a
-/// command or a file name.
+/// command, a file name or prose.
 pub fn is_equation(s: &str) -> bool {
     let t = s.trim();
-    !t.starts_with("cylroll")
+    !is_prose(t)
+        && !t.starts_with("cylroll")
         && !t.contains("--")
         && !t.contains(".toml")
         && !t.contains(".md")
@@ -56,7 +71,9 @@ fn tokens(s: &str) -> Vec<Tok> {
                 i += 1;
             }
             out.push(Tok::Id(w));
-        } else if c.is_ascii_digit() || (c == '.' && cs.get(i + 1).is_some_and(|d| d.is_ascii_digit())) {
+        } else if c.is_ascii_digit()
+            || (c == '.' && cs.get(i + 1).is_some_and(|d| d.is_ascii_digit()))
+        {
             let mut w = String::new();
             while i < cs.len() && (cs[i].is_ascii_digit() || cs[i] == '.') {
                 w.push(cs[i]);
@@ -158,14 +175,20 @@ pub fn mathml(eq: &str) -> String {
     let toks = tokens(eq);
     let mut pieces: Vec<Vec<Tok>> = vec![Vec::new()];
     let mut depth = 0i32;
+    // a piece this long is cut inside brackets too (at `+`, `−`) and at `/`
+    const LONG: usize = 8;
     for (k, t) in toks.iter().enumerate() {
         if let Tok::Op(c) = t {
+            let long = pieces
+                .last()
+                .is_some_and(|p| p.iter().filter(|t| **t != Tok::Space).count() >= LONG);
             match c {
                 '(' | '[' | '{' => depth += 1,
                 ')' | ']' | '}' => depth -= 1,
-                '=' | '+' | '−' if depth == 0 && k > 0 => {
+                '=' | '+' | '−' if k > 0 && (depth == 0 || long) => {
                     pieces.push(Vec::new());
                 }
+                '/' if k > 0 && long => pieces.push(Vec::new()),
                 _ => {}
             }
         }
@@ -192,11 +215,21 @@ mod tests {
     #[test]
     fn equations_become_mathml() {
         let m = mathml("r θ̇s² = g cos θs + r1 sin θs φ̈1");
-        assert!(m.contains("<mover accent=\"true\"><mi>θ</mi><mo>˙</mo></mover>"), "{m}");
+        assert!(
+            m.contains("<mover accent=\"true\"><mi>θ</mi><mo>˙</mo></mover>"),
+            "{m}"
+        );
         assert!(m.contains("<mi>cos</mi>"));
         assert!(m.contains("<msub><mi>r</mi><mn>1</mn></msub>"), "{m}");
         assert!(m.matches("<math>").count() >= 3, "cut at = and +: {m}");
         assert!(is_equation("N12 = m2 (g cos θ)"));
+        // a long bracket is cut too, so that no piece is wider than a phone
+        let long = mathml("θ̈ = [g/r − A(cos θ − k2) θ̇²] sin θ / [1 + k2 − A(cos θ − k2)²]");
+        assert!(long.matches("<math>").count() >= 4, "{long}");
         assert!(!is_equation("cylroll audit --equation 21"));
+        assert!(!is_equation("the only steady motion is θ ≡ 0, φ1 = ω0 t"));
+        assert!(is_prose("the only steady motion is θ ≡ 0, φ1 = ω0 t"));
+        assert!(!is_prose("cylroll separation --branch part"));
+        assert!(is_equation("p_φ1 = (k1 m1 + k2 m2) r1² φ̇1 − k2 m2 r1 r θ̇"));
     }
 }

@@ -250,22 +250,32 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     pb.set_message("friction");
     let fdata = friction::compute(cfg);
     pb.set_message("branches");
-    let stay = data.time.first().and_then(|r| r.as_ref().ok()).map(|c| c.track.clone());
-    let bdata = branch::compute(cfg.plot_digits, cfg.time_points.min(60).max(8), stay);
+    let stay = data
+        .time
+        .first()
+        .and_then(|r| r.as_ref().ok())
+        .map(|c| c.track.clone());
+    let bdata = branch::compute(cfg.plot_digits, cfg.time_points.clamp(8, 60), stay);
     pb.set_message("drawing");
     let mut figs = figures(&data, &bdata, &fdata, cfg);
     let tabs = tables::tables(&data, cfg)?;
     let ftable = friction::table(&fdata);
 
-    let mut files = figure_files(&mut figs)?;
+    let (mut files, dropped) = figure_files(&mut figs)?;
     let mut all_tables = tabs.tables.clone();
     all_tables.push(ftable.clone());
     for t in &all_tables {
         if !t.csv.is_empty() {
-            files.push((t.csv.clone().into(), csv::write(&tidy::table_records(t)).into_bytes()));
+            files.push((
+                t.csv.clone().into(),
+                csv::write(&tidy::table_records(t)).into_bytes(),
+            ));
         }
     }
-    files.push(("plane.csv".into(), csv::write(&tidy::plane_records(&data.plane)).into_bytes()));
+    files.push((
+        "plane.csv".into(),
+        csv::write(&tidy::plane_records(&data.plane)).into_bytes(),
+    ));
     let blocks = page_blocks(&figs, &tabs, ftable);
     // other pages: the audit (when present) and the engines page
     let mut pages: page::Pages = Vec::new();
@@ -285,7 +295,21 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
         "engines.html".into(),
         engines::page(&cards, &shown, &engines::report_stamp()).into_bytes(),
     ));
-    pages.push(("engines.html".into(), ENGINES.into()));
+    pages.push((
+        "engines.html".into(),
+        if cards.is_empty() {
+            format!("{ENGINES}: none committed yet")
+        } else {
+            format!(
+                "{ENGINES}: {}",
+                cards
+                    .iter()
+                    .map(|c| c.dir.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        },
+    ));
     let intro = intro(cfg);
     let md = page::markdown(TITLE, &intro, &blocks, &pages);
     let html = page::html(TITLE, &intro, &blocks, &pages);
@@ -293,6 +317,7 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
         files.push((name.into(), text.as_bytes().to_vec()));
     }
     crate::golden::fileset::write_set(dir, &files)?;
+    let stale = remove_stale_figures(dir, &files)?;
     pb.finish_and_clear();
 
     let mut out = format!(
@@ -310,6 +335,18 @@ pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
     }
     if let Err(e) = &fdata.traj {
         problems.push(format!("the friction figure: {e}"));
+    }
+    if !stale.is_empty() {
+        out.push_str(&format!(
+            "removed {} figure files of an earlier report: {}\n",
+            stale.len(),
+            stale.join(", ")
+        ));
+    }
+    for d in &dropped {
+        out.push_str(&format!(
+            "note: label left out for want of room (the legend and hover text carry it): {d}\n"
+        ));
     }
     if problems.is_empty() {
         out.push_str("every table entry verified; every closed form agrees to all digits shown\n");
@@ -343,20 +380,67 @@ pub fn figures(
     figs
 }
 
+/// Removes from `figures/` the figure files (`.svg`, `.pdf`, `.csv`,
+/// `.png`) that this run did not write: figures of an earlier version of the
+/// report. `figures/` is the report's own; nothing else is touched. Returns
+/// their names.
+fn remove_stale_figures(dir: &Path, files: &[File]) -> Result<Vec<String>> {
+    let written: std::collections::BTreeSet<&std::path::Path> =
+        files.iter().map(|f| f.0.as_path()).collect();
+    let mut removed = Vec::new();
+    let Ok(rd) = std::fs::read_dir(dir.join("figures")) else {
+        return Ok(removed);
+    };
+    let mut names: Vec<String> = rd
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    for name in names {
+        let rel = std::path::PathBuf::from("figures").join(&name);
+        let ours = [".svg", ".pdf", ".csv", ".png"]
+            .iter()
+            .any(|x| name.ends_with(x));
+        if ours && !name.starts_with('.') && !written.contains(rel.as_path()) {
+            std::fs::remove_file(dir.join(&rel)).map_err(|e| crate::error::Error::Write {
+                path: dir.join(&rel).display().to_string(),
+                what: format!("removing a figure of an earlier report: {e}"),
+            })?;
+            removed.push(name);
+        }
+    }
+    Ok(removed)
+}
+
 /// A file of the report: its path in the directory and its bytes.
 type File = (std::path::PathBuf, Vec<u8>);
 
 /// Every figure's SVG and PDF in both layouts, and its CSV; records the
-/// sizes drawn in the figure.
-fn figure_files(figs: &mut [model::Figure]) -> Result<Vec<File>> {
+/// sizes drawn in the figure. Also returns the labels left out for want of
+/// a free place, by figure and layout.
+fn figure_files(figs: &mut [model::Figure]) -> Result<(Vec<File>, Vec<String>)> {
     let mut files = Vec::new();
+    let mut dropped = Vec::new();
     for f in figs.iter_mut() {
-        for (k, layout) in [render::Layout::Wide, render::Layout::Narrow].into_iter().enumerate() {
-            let (svg, w, h) = render::render(f, layout);
-            f.sizes[k] = (w, h);
-            let pdf = pdf::pdf(&svg).map_err(|e| crate::error::Error::not_physical(format!("{}: the PDF: {e}", f.stem)))?;
+        for (k, layout) in [render::Layout::Wide, render::Layout::Narrow]
+            .into_iter()
+            .enumerate()
+        {
+            let r = render::render(f, layout);
+            f.sizes[k] = r.size;
+            for d in r.dropped {
+                dropped.push(format!("{} ({layout:?}): {d}", f.stem));
+            }
+            let svg = r.svg;
+            let pdf = pdf::pdf(&svg).map_err(|e| {
+                crate::error::Error::not_physical(format!("{}: the PDF: {e}", f.stem))
+            })?;
             let (svg_p, pdf_p) = (
-                if k == 0 { page::figure_path(f) } else { page::narrow_path(f) },
+                if k == 0 {
+                    page::figure_path(f)
+                } else {
+                    page::narrow_path(f)
+                },
                 page::pdf_path(f, k == 1),
             );
             files.push((svg_p.into(), svg.into_bytes()));
@@ -366,22 +450,32 @@ fn figure_files(figs: &mut [model::Figure]) -> Result<Vec<File>> {
             files.push((c.into(), csv::figure(f).into_bytes()));
         }
     }
-    Ok(files)
+    Ok((files, dropped))
 }
 
 /// The page in order: the sections with their tables and figures, then the
 /// notes and the data files.
-fn page_blocks(figs: &[model::Figure], tabs: &tables::Tables, ftable: page::Table) -> Vec<page::Block> {
+fn page_blocks(
+    figs: &[model::Figure],
+    tabs: &tables::Tables,
+    ftable: page::Table,
+) -> Vec<page::Block> {
     use page::Block;
     let fig = |stem: &str| -> Vec<Block> {
-        figs.iter().filter(|f| f.stem == stem).cloned().map(Block::Figure).collect()
+        figs.iter()
+            .filter(|f| f.stem == stem)
+            .cloned()
+            .map(Block::Figure)
+            .collect()
     };
     let table = |i: usize| tabs.tables.get(i).cloned().map(Block::Table);
     let mut b = vec![Block::Heading("Sign conventions".into())];
     b.extend(fig("conventions"));
     b.push(Block::Heading("Separation in every contact model".into()));
     b.extend((0..2).filter_map(table));
-    b.push(Block::Heading("The main case: both contacts rolling".into()));
+    b.push(Block::Heading(
+        "The main case: both contacts rolling".into(),
+    ));
     for s in ["main_motion", "main_forces"] {
         b.extend(fig(s));
     }
@@ -416,8 +510,15 @@ fn data_files(figs: &[model::Figure], tabs: &tables::Tables) -> page::Section {
         .iter()
         .map(|t| (t.csv.clone(), format!("{}: {}", t.csv, t.title)))
         .collect();
-    links.push(("friction-events.csv".into(), "friction-events.csv: the events of the main case with Coulomb friction".into()));
-    links.push(("plane.csv".into(), "plane.csv: θₛ at every point of the parameter plane computed for the figures and tables".into()));
+    links.push((
+        "friction-events.csv".into(),
+        "friction-events.csv: the events of the main case with Coulomb friction".into(),
+    ));
+    links.push((
+        "plane.csv".into(),
+        "plane.csv: θₛ at every point of the parameter plane computed for the figures and tables"
+            .into(),
+    ));
     for f in figs {
         if let Some(c) = page::csv_path(f) {
             links.push((c.clone(), format!("{c}: the data of “{}”", f.title)));

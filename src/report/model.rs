@@ -366,12 +366,17 @@ pub struct RefLine {
     pub color: Rgb,
     /// Style.
     pub dash: Dash,
-    /// Label written beside the line where free (empty: none).
+    /// Label (empty: none): a vertical line's is written beside the line
+    /// inside the plot where free; a horizontal line's in the margin right
+    /// of the plot at the line's height (labels there are stacked apart, so
+    /// none is ever left out).
     pub label: String,
     /// Hover text.
     pub title: String,
     /// Digits of its position.
     pub digits: Digits,
+    /// Its CSV key (ASCII; empty: made from the hover text).
+    pub key: String,
 }
 
 impl RefLine {
@@ -386,6 +391,7 @@ impl RefLine {
             title: label.clone(),
             label,
             digits: Digits::Double,
+            key: String::new(),
         }
     }
 
@@ -400,6 +406,7 @@ impl RefLine {
             title: label.clone(),
             label,
             digits: Digits::Double,
+            key: String::new(),
         }
     }
 }
@@ -419,7 +426,8 @@ pub struct Band {
 /// a filled contour plot).
 #[derive(Debug, Clone)]
 pub struct Patch {
-    /// Outline (data; x already log10 where the axis is logarithmic).
+    /// Outline in chart coordinates (log10 of the value on a logarithmic
+    /// axis).
     pub outline: Vec<(f64, f64)>,
     /// Fill.
     pub color: Rgb,
@@ -461,7 +469,13 @@ impl LegendEntry {
     }
 
     /// A marker sample.
-    pub fn marker(label: impl Into<String>, color: Rgb, shape: Shape, filled: bool, order: u32) -> Self {
+    pub fn marker(
+        label: impl Into<String>,
+        color: Rgb,
+        shape: Shape,
+        filled: bool,
+        order: u32,
+    ) -> Self {
         LegendEntry {
             label: label.into(),
             color,
@@ -498,6 +512,14 @@ pub struct Panel {
     pub yq: Quantity,
     /// Logarithmic x axis.
     pub xlog: bool,
+    /// Logarithmic y axis.
+    pub ylog: bool,
+    /// Grid lines at the ticks (false for maps, whose cells fill the plot).
+    pub grid: bool,
+    /// The curves' names (their `direct` labels) written in the margin right
+    /// of the plot at the height of each curve's end, instead of in the
+    /// legend (for curves that all end at the right edge).
+    pub names_right: bool,
     /// Fixed x range (None: the data's, padded).
     pub xrange: Option<(f64, f64)>,
     /// Fixed y range.
@@ -524,6 +546,9 @@ impl Panel {
             xq,
             yq,
             xlog: false,
+            ylog: false,
+            grid: true,
+            names_right: false,
             xrange: None,
             yrange: None,
             series: Vec::new(),
@@ -648,6 +673,12 @@ impl RefLine {
     pub fn verified(mut self, d: Digits, title: impl Into<String>) -> Self {
         self.digits = d;
         self.title = title.into();
+        self
+    }
+
+    /// With a CSV key.
+    pub fn key(mut self, k: impl Into<String>) -> Self {
+        self.key = k.into();
         self
     }
 }

@@ -81,10 +81,13 @@ fn esc_inline(s: &str) -> String {
     out
 }
 
-/// A code span: MathML where it is an equation, else <code>.
+/// A code span: MathML where it is an equation, plain text where it is
+/// prose with symbols, else <code>.
 fn code_or_math(part: &str) -> String {
     if super::math::is_equation(part) {
         super::math::mathml(part)
+    } else if super::math::is_prose(part) {
+        format!("<q>{}</q>", esc(part))
     } else {
         format!("<code>{}</code>", esc(part))
     }
@@ -132,7 +135,14 @@ pub fn markdown(title: &str, intro: &[String], blocks: &[Block], pages: &Pages) 
         s.push_str("Other pages: ");
         let links: Vec<String> = pages
             .iter()
-            .map(|(f, t)| format!("[{t}]({})", f.trim_end_matches(".html").to_string() + ".md"))
+            .map(|(f, t)| {
+                // a page rendered from a Markdown document links to that document
+                let target = match super::DOCUMENTS.iter().find(|d| d.1 == f) {
+                    Some(d) => d.0.to_string(),
+                    None => f.clone(),
+                };
+                format!("[{t}]({target})")
+            })
             .collect();
         s.push_str(&links.join(", "));
         s.push_str(".\n\n");
@@ -235,8 +245,8 @@ fn section_md(s: &mut String, sec: &Section) {
 
 /// The page's style: readable from phone width (400 px) to desktop; numbers
 /// in tables monospace, at the text's size, right-aligned on the decimal
-/// point; on narrow screens each table row becomes a block of labelled
-/// values, so that nothing scrolls sideways.
+/// point; on narrow screens each table row becomes a block of values, each
+/// beside its column's name, so that nothing scrolls sideways.
 pub const CSS: &str = "\
 *{box-sizing:border-box}\
 body{font-family:'DejaVu Sans',Verdana,Arial,sans-serif;max-width:1240px;margin:0 auto;padding:0.5em 1em 3em 1em;line-height:1.5;color:#111;font-size:16px;overflow-wrap:break-word}\
@@ -244,7 +254,7 @@ h1{font-size:1.55em;line-height:1.25}h2{margin-top:2em;border-bottom:1px solid #
 code{font-family:'DejaVu Sans Mono',Menlo,Consolas,monospace;font-size:0.92em}\
 pre{overflow-x:auto;background:#f6f6f6;padding:0.5em}\
 figure{margin:1em 0 2.2em 0}figure h3{margin-top:0}\
-object.fig{display:block;width:100%;height:auto;border:1px solid #ddd;background:#fff}object.one{max-width:820px}\
+object.fig{display:block;width:100%;height:auto;border:1px solid #ddd;background:#fff}object.one{max-width:560px}\
 object.narrow{display:none}\
 figcaption{font-size:0.95em;color:#222;margin-top:0.5em}figcaption .data{display:inline-block}\
 .scroll{overflow-x:auto;max-width:100%}\
@@ -255,16 +265,17 @@ nav ul{padding-left:1.2em}nav li{margin:0.1em 0}\
 details>summary{cursor:pointer;list-style-position:outside}details>summary h2{display:inline-block;margin:1.2em 0 0.3em 0;border:none}\
 details{border-top:1px solid #ccc;margin-top:1em}\
 .eq{display:inline}.eq math{font-size:1.05em;margin-right:0.25em}\
+.eq :is(msub,msup,msubsup,munder,mover,munderover)>:not(:first-child){font-size:max(0.71em,11px)}\
 p.data{font-size:0.95em;margin-top:-1em}\
 @media (max-width:700px){\
 body{padding:0.3em 0.6em 2em 0.6em;font-size:15px}\
 object.wide{display:none}object.narrow{display:block}\
 table.data,table.data tbody,table.data tr,table.data td{display:block;width:100%}\
 table.data thead{display:none}\
-table.data tr{border:1px solid #ccc;margin:0 0 0.8em 0;padding:0.2em 0}\
-table.data td{border:none;padding:1px 8px;text-align:left;white-space:normal}\
-table.data td::before{content:attr(data-label);display:block;font-family:'DejaVu Sans',Verdana,sans-serif;font-size:0.85em;color:#555}\
-table.data td.num code,table.data td.num{white-space:normal;word-break:break-all}\
+table.data tr{border:1px solid #ccc;margin:0 0 0.6em 0;padding:0.15em 0}\
+table.data td{display:grid;grid-template-columns:minmax(6em,36%) minmax(0,1fr);column-gap:0.6em;align-items:baseline;border:none;padding:1px 8px;text-align:left;white-space:normal}\
+table.data td::before{content:attr(data-label);font-family:'DejaVu Sans',Verdana,sans-serif;font-size:0.85em;color:#555}\
+table.data td.num code,table.data td.num{white-space:normal;overflow-wrap:anywhere}\
 }";
 
 /// The head of an HTML page.
@@ -358,7 +369,14 @@ fn figure_html(f: &Figure) -> String {
             t = esc(&f.title)
         )
     };
-    s.push_str(&obj(&figure_path(f), "wide", f.sizes[0]));
+    // a figure one journal column wide in both layouts (the diagram) is
+    // shown at a column's size on a wide screen too
+    let wide_class = if f.sizes[0].0 < 300.0 {
+        "wide one"
+    } else {
+        "wide"
+    };
+    s.push_str(&obj(&figure_path(f), wide_class, f.sizes[0]));
     s.push_str(&obj(&narrow_path(f), "narrow", f.sizes[1]));
     s.push_str(&format!("<figcaption>{}", esc_inline(&f.caption)));
     let mut links = Vec::new();
@@ -781,7 +799,7 @@ mod tests {
         );
         assert!(h.contains("<li>Two</li>\n</ol>"), "{h}");
         assert!(h.contains("<ul>\n<li>a</li>\n<li>b</li>\n</ul>"));
-        assert!(h.contains("<td>a|b</td>"));
+        assert!(h.contains(">a|b</td>"), "{h}");
     }
 
     #[test]

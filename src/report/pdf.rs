@@ -17,7 +17,8 @@ fn fonts() -> Arc<usvg::fontdb::Database> {
     .clone()
 }
 
-/// The PDF of an SVG (1 SVG unit = 1 pt).
+/// The PDF of an SVG whose width and height are in pt: the page is that
+/// size.
 pub fn pdf(svg: &str) -> Result<Vec<u8>, String> {
     let opt = usvg::Options {
         fontdb: fonts(),
@@ -28,7 +29,9 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>, String> {
     svg2pdf::to_pdf(
         &tree,
         svg2pdf::ConversionOptions::default(),
-        svg2pdf::PageOptions { dpi: 72.0 },
+        // usvg reads the SVG's size in pt as CSS pixels (96 per inch):
+        // at 96 dpi the page is the SVG's print size again
+        svg2pdf::PageOptions { dpi: 96.0 },
     )
     .map_err(|e| format!("{e:?}"))
 }

@@ -10,7 +10,7 @@ use super::axes::{self, clip_polyline, Axis};
 use super::canvas::{hex, n, svg_document, xml, Canvas, Doc, Rgb, S};
 use super::labels::{self, text_box, Obstacles, Rect};
 use super::legend;
-use super::model::{Dash, Figure, Panel, Series, Shape};
+use super::model::{Figure, Panel, RefLine, Series, Shape};
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
@@ -90,31 +90,66 @@ fn panel_axes(fig: &Figure, layout: Layout) -> Vec<(Axis, Axis)> {
         Layout::Narrow => 1,
     };
     let pw = layout.width() / cols as f64;
-    let xt = ((pw - 40.0) / 38.0).clamp(3.0, 7.0) as usize;
+    let xt = ((pw - 40.0) / 38.0).clamp(4.0, 7.0) as usize;
     fig.panels
         .iter()
         .map(|p| {
-            let xd = if fig.share_x { ux } else { axes::data_range(p, true) };
-            let yd = if fig.share_y { uy } else { axes::data_range(p, false) };
-            let xf = if fig.share_x && p.xrange.is_none() { None } else { p.xrange };
-            let yf = if fig.share_y && p.yrange.is_none() { None } else { p.yrange };
+            let xd = if fig.share_x {
+                ux
+            } else {
+                axes::data_range(p, true)
+            };
+            let yd = if fig.share_y {
+                uy
+            } else {
+                axes::data_range(p, false)
+            };
+            let xf = if fig.share_x && p.xrange.is_none() {
+                None
+            } else {
+                p.xrange
+            };
+            let yf = if fig.share_y && p.yrange.is_none() {
+                None
+            } else {
+                p.yrange
+            };
             let x = if p.xlog {
                 axes::logarithmic(xf.or(if fig.share_x { ux } else { None }), xd, xf.is_none())
             } else {
                 axes::linear(xf, xd, xt)
             };
-            let y = axes::linear(yf, yd, 5);
+            let y = if p.ylog {
+                axes::logarithmic(yf.or(if fig.share_y { uy } else { None }), yd, yf.is_none())
+            } else {
+                axes::linear(yf, yd, 5)
+            };
             (x, y)
         })
         .collect()
 }
 
-/// Renders `fig` in `layout`: the SVG and its size in pt.
-pub fn render(fig: &Figure, layout: Layout) -> (String, f64, f64) {
+/// A figure drawn in one layout.
+#[derive(Debug, Clone)]
+pub struct Rendered {
+    /// The SVG document.
+    pub svg: String,
+    /// Width and height in pt.
+    pub size: (f64, f64),
+    /// Direct labels, notes and event labels left out for want of a free
+    /// place (the legend and the hover texts still carry them).
+    pub dropped: Vec<String>,
+}
+
+/// Renders `fig` in `layout`.
+pub fn render(fig: &Figure, layout: Layout) -> Rendered {
     if let Some((wide, narrow)) = &fig.raw {
         let s = if layout == Layout::Wide { wide } else { narrow };
-        let (w, h) = svg_size(s);
-        return (s.clone(), w, h);
+        return Rendered {
+            svg: s.clone(),
+            size: svg_size(s),
+            dropped: Vec::new(),
+        };
     }
     let w = layout.width();
     let cols = match layout {
@@ -133,7 +168,26 @@ pub fn render(fig: &Figure, layout: Layout) -> (String, f64, f64) {
     let doc = Rc::new(RefCell::new(Doc::default()));
     {
         let root = Canvas::new(doc.clone(), w, h).into_drawing_area();
+        let margins = label_margins(fig);
         let all_axes = panel_axes(fig, layout);
+        // the room for tick labels and axis titles: the widest of each
+        // column and row, so that the frames of a column (and of a row) line up
+        let own: Vec<(f64, f64)> = fig
+            .panels
+            .iter()
+            .zip(&all_axes)
+            .map(|(p, ax)| label_areas(ax, p))
+            .collect();
+        let areas: Vec<(f64, f64)> = (0..own.len())
+            .map(|k| {
+                let col = (0..own.len()).filter(|j| j % cols == k % cols);
+                let row = (0..own.len()).filter(|j| j / cols == k / cols);
+                (
+                    col.map(|j| own[j].0).fold(0.0, f64::max),
+                    row.map(|j| own[j].1).fold(0.0, f64::max),
+                )
+            })
+            .collect();
         let pw = w / cols as f64;
         for (k, (p, ax)) in fig.panels.iter().zip(&all_axes).enumerate() {
             let (r, c) = (k / cols, k % cols);
@@ -141,7 +195,7 @@ pub fn render(fig: &Figure, layout: Layout) -> (String, f64, f64) {
                 ((c as f64 * pw * S) as i32, (r as f64 * ph * S) as i32),
                 ((pw * S) as u32, (ph * S) as u32),
             );
-            draw_panel(&root, &area, &doc, p, ax);
+            draw_panel(&root, &area, &doc, p, ax, margins, areas[k]);
         }
         let top = rows as f64 * ph;
         legend::draw(&root, &doc, &entries, &leg, top);
@@ -150,7 +204,12 @@ pub fn render(fig: &Figure, layout: Layout) -> (String, f64, f64) {
         }
     }
     let body = std::mem::take(&mut doc.borrow_mut().body);
-    (svg_document(w, h, &body), w, h)
+    let dropped = std::mem::take(&mut doc.borrow_mut().dropped);
+    Rendered {
+        svg: svg_document(w, h, &body),
+        size: (w, h),
+        dropped,
+    }
 }
 
 /// The width and height of an SVG's root (pt).
@@ -160,23 +219,58 @@ pub fn svg_size(svg: &str) -> (f64, f64) {
         svg.find(&pat)
             .and_then(|i| {
                 let rest = &svg[i + pat.len()..];
-                rest[..rest.find('"')?].parse::<f64>().ok()
+                rest[..rest.find('"')?]
+                    .trim_end_matches("pt")
+                    .parse::<f64>()
+                    .ok()
             })
             .unwrap_or(100.0)
     };
     (attr("width"), attr("height"))
 }
 
+/// The strip over every plot for the labels of vertical reference lines,
+/// and the margin right of every plot for those of horizontal ones (pt):
+/// the same in every panel of a figure, so that panels side by side keep
+/// their frames aligned.
+fn label_margins(fig: &Figure) -> (f64, f64) {
+    let lines = || fig.panels.iter().flat_map(|p| &p.lines);
+    let strip = if lines().any(|l| l.vertical && !l.label.is_empty()) {
+        LABEL * 1.3
+    } else {
+        0.0
+    };
+    let names = fig
+        .panels
+        .iter()
+        .filter(|p| p.names_right)
+        .flat_map(|p| p.series.iter().filter_map(|s| s.direct.as_ref()));
+    let gutter = lines()
+        .filter(|l| !l.vertical && !l.label.is_empty())
+        .map(|l| &l.label)
+        .chain(names)
+        .map(|t| super::canvas::text_width(t, LABEL) + 4.0)
+        .fold(0.0, f64::max);
+    (strip, gutter)
+}
+
 /// Room for the y tick labels and title, and the x ones (pt).
 fn label_areas(ax: &(Axis, Axis), p: &Panel) -> (f64, f64) {
-    let yw = ax
-        .1
-        .texts
-        .iter()
-        .map(|t| super::canvas::text_width(t, TICK))
-        .fold(0.0, f64::max);
-    let ytitle = if p.yq.label.is_empty() { 0.0 } else { AXIS * 1.3 };
-    let xtitle = if p.xq.label.is_empty() { 0.0 } else { AXIS * 1.3 };
+    let yw =
+        ax.1.texts
+            .iter()
+            .map(|t| super::canvas::text_width(t, TICK))
+            .fold(0.0, f64::max);
+    let ytitle = if p.yq.label.is_empty() {
+        0.0
+    } else {
+        AXIS * 1.3
+    };
+    let xtitle = if p.xq.label.is_empty() {
+        0.0
+    } else {
+        AXIS * 1.3
+    };
     (yw + 6.0 + ytitle + 2.0, TICK * 1.2 + 5.0 + xtitle + 2.0)
 }
 
@@ -226,13 +320,20 @@ fn draw_panel(
     doc: &Rc<RefCell<Doc>>,
     p: &Panel,
     ax: &(Axis, Axis),
+    margins: (f64, f64),
+    (ylab, xlab): (f64, f64),
 ) {
-    let (ylab, xlab) = label_areas(ax, p);
     let (x, y) = ax;
-    let top = if p.title.is_empty() { 6.0 } else { TITLE * 1.6 + 2.0 };
+    let (strip, gutter) = margins;
+    let top = strip
+        + if p.title.is_empty() {
+            6.0
+        } else {
+            TITLE * 1.6 + 2.0
+        };
     let built = ChartBuilder::on(area)
         .margin_top((top * S) as i32)
-        .margin_right((7.0 * S) as i32)
+        .margin_right(((7.0 + gutter) * S) as i32)
         .margin_left((2.0 * S) as i32)
         .x_label_area_size((xlab * S) as i32)
         .y_label_area_size((ylab * S) as i32)
@@ -262,7 +363,11 @@ fn draw_panel(
     let yf = |v: &f64| tick_for(y, *v);
     let _ = chart
         .configure_mesh()
-        .bold_line_style(GRID.stroke_width(width(0.4)))
+        .bold_line_style(if p.grid {
+            GRID.stroke_width(width(0.4))
+        } else {
+            TRANSPARENT.stroke_width(0)
+        })
         .light_line_style(TRANSPARENT)
         .axis_style(INK.stroke_width(width(0.6)))
         .set_all_tick_mark_size((2.5 * S) as i32)
@@ -284,7 +389,7 @@ fn draw_panel(
     if !p.title.is_empty() {
         own_text(
             doc,
-            ((plot.0 + plot.1) / 2.0, plot.2 - 4.0),
+            ((plot.0 + plot.1) / 2.0, plot.2 - 4.0 - strip),
             &p.title,
             TITLE,
             "middle",
@@ -305,7 +410,7 @@ fn draw_panel(
         .series
         .iter()
         .map(|s| {
-            let pts: Vec<(f64, f64)> = s.points.iter().map(|&(a, b)| (x.c(a), b)).collect();
+            let pts: Vec<(f64, f64)> = s.points.iter().map(|&(a, b)| (x.c(a), y.c(b))).collect();
             if s.drawn {
                 clip_polyline(&pts, x.range.0, x.range.1, y.range.0, y.range.1)
             } else {
@@ -331,10 +436,11 @@ fn draw_panel(
             }
             ((cx, y.range.0), (cx, y.range.1))
         } else {
-            if l.at < y.range.0 || l.at > y.range.1 {
+            let cy = y.c(l.at);
+            if cy < y.range.0 || cy > y.range.1 {
                 continue;
             }
-            ((x.range.0, l.at), (x.range.1, l.at))
+            ((x.range.0, cy), (x.range.1, cy))
         };
         doc.borrow_mut().set("r", l.dash.array(), &l.title);
         let _ = chart.draw_series(std::iter::once(PathElement::new(
@@ -351,7 +457,11 @@ fn draw_panel(
     // inline labels (contour levels) cut a gap into their own line
     let mut inline_texts = Vec::new();
     for (i, s) in p.series.iter().enumerate() {
-        let Some(t) = s.direct.as_ref().filter(|_| s.width < 0.9 && s.key.starts_with("contour")) else {
+        let Some(t) = s
+            .direct
+            .as_ref()
+            .filter(|_| s.width < 0.9 && s.key.starts_with("contour"))
+        else {
             continue;
         };
         let own: Vec<Vec<(f64, f64)>> = px_pieces[i].clone();
@@ -362,19 +472,36 @@ fn draw_panel(
             .flat_map(|l| {
                 let m = l.len() / 2;
                 let order: Vec<usize> = (0..l.len())
-                    .map(|k| if k % 2 == 0 { m + k / 2 } else { m.saturating_sub(k / 2 + 1) })
+                    .map(|k| {
+                        if k % 2 == 0 {
+                            m + k / 2
+                        } else {
+                            m.saturating_sub(k / 2 + 1)
+                        }
+                    })
                     .filter(|&j| j < l.len())
                     .collect();
                 order
                     .into_iter()
-                    .map(|j| (l[j].0, l[j].1 + (super::canvas::ascent() - super::canvas::descent()) * LABEL / 2.0, "middle"))
+                    .map(|j| {
+                        (
+                            l[j].0,
+                            l[j].1
+                                + (super::canvas::ascent() - super::canvas::descent()) * LABEL
+                                    / 2.0,
+                            "middle",
+                        )
+                    })
                     .collect::<Vec<_>>()
             })
             .collect();
         if let Some(pl) = others.place(t, LABEL, &cands) {
             let b = text_box(pl.0, pl.1, t, LABEL, pl.2);
             obst.take(b);
-            px_pieces[i] = px_pieces[i].iter().flat_map(|l| cut(l, grow(b, 1.0))).collect();
+            px_pieces[i] = px_pieces[i]
+                .iter()
+                .flat_map(|l| cut(l, grow(b, 1.0)))
+                .collect();
             inline_texts.push((pl, t.clone(), s.color));
         }
     }
@@ -383,28 +510,58 @@ fn draw_panel(
         if !s.drawn {
             continue;
         }
-        let title = if s.label.is_empty() { s.key.clone() } else { s.label.replace('\n', " ") };
+        let title = if s.label.is_empty() {
+            s.key.clone()
+        } else {
+            s.label.replace('\n', " ")
+        };
         doc.borrow_mut().set("c", s.dash.array(), &title);
         for piece in ps {
-            let pts: Vec<(i32, i32)> = piece.iter().map(|&(a, b)| ((a * S).round() as i32, (b * S).round() as i32)).collect();
-            let _ = root.draw(&PathElement::new(pts, rgb(s.color).stroke_width(width(s.width))));
+            let pts: Vec<(i32, i32)> = piece
+                .iter()
+                .map(|&(a, b)| ((a * S).round() as i32, (b * S).round() as i32))
+                .collect();
+            let _ = root.draw(&PathElement::new(
+                pts,
+                rgb(s.color).stroke_width(width(s.width)),
+            ));
         }
     }
     for (pl, t, c) in &inline_texts {
         own_text(doc, (pl.0, pl.1), t, LABEL, pl.2, darker(*c), true);
     }
     // markers: end markers, event markers, periodic markers where free
-    let mut marks: Vec<((f64, f64), Shape, Rgb, bool, String, Option<String>)> = Vec::new();
+    let mut marks: Vec<Mark> = Vec::new();
     for s in p.series.iter().filter(|s| s.drawn) {
-        if let (Some(t), Some(&(a, b))) = (&s.end, s.points.iter().rev().find(|q| q.0.is_finite() && q.1.is_finite())) {
+        if let (Some(t), Some(&(a, b))) = (
+            &s.end,
+            s.points
+                .iter()
+                .rev()
+                .find(|q| q.0.is_finite() && q.1.is_finite()),
+        ) {
             if inside(x, y, a, b) {
-                marks.push((to_pt(&chart, x.c(a), b), s.shape.unwrap_or(Shape::Circle), s.color, false, t.clone(), None));
+                marks.push((
+                    to_pt(&chart, x.c(a), y.c(b)),
+                    s.shape.unwrap_or(Shape::Circle),
+                    s.color,
+                    false,
+                    t.clone(),
+                    None,
+                ));
             }
         }
     }
     for m in &p.markers {
         if inside(x, y, m.at.0, m.at.1) {
-            marks.push((to_pt(&chart, x.c(m.at.0), m.at.1), m.shape, m.color, m.filled, m.title.clone(), m.label.clone()));
+            marks.push((
+                to_pt(&chart, x.c(m.at.0), y.c(m.at.1)),
+                m.shape,
+                m.color,
+                m.filled,
+                m.title.clone(),
+                m.label.clone(),
+            ));
         }
     }
     let taken: Vec<(f64, f64)> = marks.iter().map(|m| m.0).collect();
@@ -412,9 +569,16 @@ fn draw_panel(
         let Some(shape) = s.shape else { continue };
         let last = s.points.len().saturating_sub(1);
         for (i, &(a, b)) in s.points.iter().enumerate() {
-            if i >= s.offset && (i - s.offset) % s.every == 0 && i + s.every / 2 < last && inside(x, y, a, b) {
-                let q = to_pt(&chart, x.c(a), b);
-                if taken.iter().all(|t| (t.0 - q.0).hypot(t.1 - q.1) > 3.0 * MARK_R) {
+            if i >= s.offset
+                && (i - s.offset) % s.every == 0
+                && i + s.every / 2 < last
+                && inside(x, y, a, b)
+            {
+                let q = to_pt(&chart, x.c(a), y.c(b));
+                if taken
+                    .iter()
+                    .all(|t| (t.0 - q.0).hypot(t.1 - q.1) > 3.0 * MARK_R)
+                {
                     marks.push((q, shape, s.color, false, s.label.clone(), None));
                 }
             }
@@ -423,51 +587,126 @@ fn draw_panel(
     for m in &marks {
         let r = if m.3 { MARK_R * 1.1 } else { MARK_R };
         draw_marker(root, doc, "m", m.0, m.1, r, m.2, m.3, &m.4);
-        obst.take((m.0 .0 - r - 0.6, m.0 .0 + r + 0.6, m.0 .1 - r - 0.6, m.0 .1 + r + 0.6));
+        obst.take((
+            m.0 .0 - r - 0.6,
+            m.0 .0 + r + 0.6,
+            m.0 .1 - r - 0.6,
+            m.0 .1 + r + 0.6,
+        ));
     }
     // labels: events, reference lines, curves' ends, notes
     for m in &marks {
         if let Some(l) = &m.5 {
-            if let Some(pl) = obst.place(l, LABEL, &labels::around(m.0 .0, m.0 .1, MARK_R + 2.0, LABEL)) {
-                own_text(doc, (pl.0, pl.1), l, LABEL, pl.2, (0, 0, 0), true);
+            match obst.place(
+                l,
+                LABEL,
+                &labels::around(m.0 .0, m.0 .1, MARK_R + 2.0, LABEL),
+            ) {
+                Some(pl) => own_text(doc, (pl.0, pl.1), l, LABEL, pl.2, (0, 0, 0), true),
+                None => doc.borrow_mut().dropped.push(l.clone()),
             }
         }
     }
-    for (l, line) in &ref_px {
-        if l.label.is_empty() {
-            continue;
-        }
-        let cands = if l.vertical {
-            labels::down_vertical(line[0].0, plot.2, plot.3, LABEL)
-        } else {
-            labels::along_horizontal(line[0].1, plot.0, plot.1, LABEL)
-        };
-        if let Some(pl) = obst.place(&l.label, LABEL, &cands) {
-            own_text(doc, (pl.0, pl.1), &l.label, LABEL, pl.2, l.color, true);
+    let over: Vec<(f64, &RefLine)> = ref_px
+        .iter()
+        .filter(|(l, _)| l.vertical && !l.label.is_empty())
+        .map(|(l, line)| (line[0].0, *l))
+        .collect();
+    let widths: Vec<f64> = over
+        .iter()
+        .map(|(_, l)| super::canvas::text_width(&l.label, LABEL))
+        .collect();
+    let xs: Vec<f64> = over.iter().map(|o| o.0).collect();
+    let baseline = plot.2 - 2.0 - super::canvas::descent() * LABEL;
+    for ((_, l), cx) in over
+        .iter()
+        .zip(labels::spread(&xs, &widths, plot.0, plot.1 + 6.0))
+    {
+        own_text(
+            doc,
+            (cx, baseline),
+            &l.label,
+            LABEL,
+            "middle",
+            darker(l.color),
+            false,
+        );
+    }
+    // in the margin right of the plot: horizontal lines' labels, and the
+    // curves' names where the panel puts them there, each at its height
+    let mut side: Vec<(f64, &str, Rgb)> = ref_px
+        .iter()
+        .filter(|(l, _)| !l.vertical && !l.label.is_empty())
+        .map(|(l, line)| (line[0].1, l.label.as_str(), darker(l.color)))
+        .collect();
+    if p.names_right {
+        for (s, ps) in p.series.iter().zip(&px_pieces) {
+            if let (Some(t), Some(&end)) = (&s.direct, ps.last().and_then(|l| l.last())) {
+                side.push((end.1, t.as_str(), darker(s.color)));
+            }
         }
     }
+    let ys: Vec<f64> = side.iter().map(|s| s.0).collect();
+    for ((_, t, c), by) in side
+        .iter()
+        .zip(labels::stack(&ys, plot.2, plot.3 + 4.0, LABEL))
+    {
+        own_text(doc, (plot.1 + 3.0, by), t, LABEL, "start", *c, false);
+    }
+    // curves' names at their ends: every curve of the panel or none (the
+    // legend names them all), never a few of them
+    let mut trial = obst.clone();
+    let mut named = Vec::new();
+    let mut missing = Vec::new();
     for (s, ps) in p.series.iter().zip(&px_pieces) {
-        let Some(t) = s.direct.as_ref().filter(|_| !(s.width < 0.9 && s.key.starts_with("contour"))) else {
+        let Some(t) = s
+            .direct
+            .as_ref()
+            .filter(|_| !is_contour(s) && !p.names_right)
+        else {
             continue;
         };
         let Some(last) = ps.last() else { continue };
         let &(ex, ey) = last.last().unwrap_or(&(0.0, 0.0));
         let mut cands = labels::around(ex, ey, MARK_R + 2.5, LABEL);
         cands.extend(labels::along(last, 12, LABEL));
-        if let Some(pl) = obst.place(t, LABEL, &cands) {
-            own_text(doc, (pl.0, pl.1), t, LABEL, pl.2, darker(s.color), true);
+        match trial.place(t, LABEL, &cands) {
+            Some(pl) => named.push((pl, t.clone(), s.color)),
+            None => missing.push(t.clone()),
         }
     }
+    if missing.is_empty() {
+        obst = trial;
+        for (pl, t, c) in named {
+            own_text(doc, (pl.0, pl.1), &t, LABEL, pl.2, darker(c), true);
+        }
+    } else {
+        doc.borrow_mut().dropped.push(format!(
+            "the curves' names ({} of {} fit)",
+            named.len(),
+            named.len() + missing.len()
+        ));
+    }
     for note in &p.notes {
-        if let Some(pl) = obst.place(note, LABEL, &labels::corners_then_grid(plot, LABEL)) {
-            own_text(doc, (pl.0, pl.1), note, LABEL, pl.2, (40, 40, 40), true);
+        match obst.place(note, LABEL, &labels::corners_then_grid(plot, LABEL)) {
+            Some(pl) => own_text(doc, (pl.0, pl.1), note, LABEL, pl.2, (40, 40, 40), true),
+            None => doc.borrow_mut().dropped.push(note.clone()),
         }
     }
 }
 
+/// A marker to draw: its centre (pt), shape, colour, filled, hover text and
+/// label.
+type Mark = ((f64, f64), Shape, Rgb, bool, String, Option<String>);
+
 fn inside(x: &Axis, y: &Axis, a: f64, b: f64) -> bool {
-    let c = x.c(a);
-    c.is_finite() && b.is_finite() && c >= x.range.0 && c <= x.range.1 && b >= y.range.0 && b <= y.range.1
+    let (c, d) = (x.c(a), y.c(b));
+    c.is_finite()
+        && d.is_finite()
+        && c >= x.range.0
+        && c <= x.range.1
+        && d >= y.range.0
+        && d <= y.range.1
 }
 
 /// The plot area (pt) of a chart.
@@ -595,7 +834,11 @@ pub fn draw_marker(
         Shape::Triangle | Shape::TriangleDown => {
             let s = if shape == Shape::Triangle { 1.0 } else { -1.0 };
             let a = r * 1.15;
-            vec![(0.0, -s * a), (a * 0.866, s * a * 0.5), (-a * 0.866, s * a * 0.5)]
+            vec![
+                (0.0, -s * a),
+                (a * 0.866, s * a * 0.5),
+                (-a * 0.866, s * a * 0.5),
+            ]
         }
         Shape::Diamond => {
             let a = r * 1.2;
@@ -604,24 +847,31 @@ pub fn draw_marker(
         _ => Vec::new(),
     };
     let _ = match shape {
-        Shape::Circle => root.draw(&(EmptyElement::at(at) + Circle::new((0, 0), width(r), fill) + Circle::new((0, 0), width(r), stroke))),
+        Shape::Circle => root.draw(
+            &(EmptyElement::at(at)
+                + Circle::new((0, 0), width(r), fill)
+                + Circle::new((0, 0), width(r), stroke)),
+        ),
         Shape::Cross => {
             let a = u(r * 0.85);
             let st = rgb(color).stroke_width(width(1.0));
-            root.draw(&(EmptyElement::at(at) + PathElement::new(vec![(-a, -a), (a, a)], st) + PathElement::new(vec![(-a, a), (a, -a)], st)))
+            root.draw(
+                &(EmptyElement::at(at)
+                    + PathElement::new(vec![(-a, -a), (a, a)], st)
+                    + PathElement::new(vec![(-a, a), (a, -a)], st)),
+            )
         }
         _ => {
             let pts: Vec<(i32, i32)> = outline.iter().map(|&(a, b)| (u(a), u(b))).collect();
             let mut closed = pts.clone();
             closed.push(pts[0]);
-            root.draw(&(EmptyElement::at(at) + Polygon::new(pts, fill) + PathElement::new(closed, stroke)))
+            root.draw(
+                &(EmptyElement::at(at)
+                    + Polygon::new(pts, fill)
+                    + PathElement::new(closed, stroke)),
+            )
         }
     };
-}
-
-/// Hollow or filled: the legend's marker sample.
-pub fn legend_dash(d: Dash) -> &'static str {
-    d.array()
 }
 
 /// Whether a series is a contour line (drawn thin, labelled on the line).

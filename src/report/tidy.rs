@@ -10,12 +10,15 @@ use super::page::Table;
 pub fn sig_digits(s: &str) -> usize {
     let m = s.split(['e', 'E']).next().unwrap_or("");
     let digits: String = m.chars().filter(|c| c.is_ascii_digit()).collect();
-    digits.trim_start_matches('0').len().max(usize::from(digits.chars().all(|c| c == '0') && !digits.is_empty()))
+    digits.trim_start_matches('0').len().max(usize::from(
+        digits.chars().all(|c| c == '0') && !digits.is_empty(),
+    ))
 }
 
 /// A model's row name (`floor roll, contact slip`) as a case.
 fn model_case(name: &str) -> String {
-    name.replace("floor ", "floor=").replace(", contact ", ";contact=")
+    name.replace("floor ", "floor=")
+        .replace(", contact ", ";contact=")
 }
 
 fn ascii(s: &str) -> String {
@@ -26,16 +29,34 @@ fn ascii(s: &str) -> String {
 pub fn table_records(t: &Table) -> Vec<Record> {
     let mut out = Vec::new();
     for row in &t.rows {
-        let cell = |c: usize| row.get(c).and_then(|x| x.strip_prefix('=')).map(str::to_string);
+        let cell = |c: usize| {
+            row.get(c)
+                .and_then(|x| x.strip_prefix('='))
+                .map(str::to_string)
+        };
         let cols: Vec<(usize, String, &str, &str)> = match t.id.as_str() {
             "separation-top" => vec![
                 (2, model_case(&row[0]) + ";theta0=0", "theta_s", "rad"),
-                (3, model_case(&row[0]) + ";theta0=0", "theta_s_rounded", "deg"),
-                (5, model_case(&row[0]) + ";theta0=0", "theta_s_closed_form", "rad"),
+                (
+                    3,
+                    model_case(&row[0]) + ";theta0=0",
+                    "theta_s_rounded",
+                    "deg",
+                ),
+                (
+                    5,
+                    model_case(&row[0]) + ";theta0=0",
+                    "theta_s_closed_form",
+                    "rad",
+                ),
                 (7, model_case(&row[0]) + ";theta0=0", "F21_at_s", "m1*g"),
             ],
             "separation-start" => {
-                let case = format!("{};theta0={}", model_case(&row[0]), cell(1).unwrap_or_default());
+                let case = format!(
+                    "{};theta0={}",
+                    model_case(&row[0]),
+                    cell(1).unwrap_or_default()
+                );
                 vec![
                     (2, case.clone(), "theta_s", "rad"),
                     (3, case.clone(), "t_s", "tau"),
@@ -58,28 +79,51 @@ pub fn table_records(t: &Table) -> Vec<Record> {
                 FORCE_ANGLES
                     .iter()
                     .enumerate()
-                    .map(|(i, a)| (i + 1, format!("floor=roll;contact=roll;theta0=0;theta={a}"), q, u))
+                    .map(|(i, a)| {
+                        (
+                            i + 1,
+                            format!("floor=roll;contact=roll;theta0=0;theta={a}"),
+                            q,
+                            u,
+                        )
+                    })
                     .collect()
             }
             "friction" => {
-                let case = format!("floor=roll;contact=roll;theta0=0;mu={}", cell(0).unwrap_or_default());
+                let case = format!(
+                    "floor=roll;contact=roll;theta0=0;mu={}",
+                    cell(0).unwrap_or_default()
+                );
                 vec![
                     (1, case.clone(), "theta_slip_floor", "rad"),
                     (2, case.clone(), "theta_slip_contact", "rad"),
                     (4, case, "theta_s", "rad"),
                 ]
             }
-            "plane" => {
+            "plane-points" => {
                 let k2 = cell(0).unwrap_or_default();
-                let mut v: Vec<(usize, String, &str, &str)> = PLANE_TABLE_RATIOS
+                PLANE_TABLE_RATIOS
                     .iter()
                     .enumerate()
-                    .map(|(i, r)| (i + 1, format!("floor=roll;m2_over_m1={r};k2={k2}"), "theta_s", "rad"))
-                    .collect();
-                let n = PLANE_TABLE_RATIOS.len();
-                v.push((n + 1, format!("floor=fixed;m2_over_m1=1;k2={k2}"), "theta_s", "rad"));
-                v.push((n + 2, format!("floor=fixed;k2={k2}"), "theta_s_closed_form", "rad"));
-                v
+                    .map(|(i, r)| {
+                        (
+                            i + 1,
+                            format!("floor=roll;contact=roll;m2_over_m1={r};k2={k2}"),
+                            "theta_s",
+                            "rad",
+                        )
+                    })
+                    .collect()
+            }
+            "plane-fixed" => {
+                let case = format!(
+                    "floor=fixed;contact=roll;k2={}",
+                    cell(0).unwrap_or_default()
+                );
+                vec![
+                    (1, case.clone(), "theta_s", "rad"),
+                    (2, case, "theta_s_closed_form", "rad"),
+                ]
             }
             "friction-events" => {
                 let case = format!(
@@ -113,7 +157,12 @@ pub fn table_records(t: &Table) -> Vec<Record> {
 }
 
 /// `plane.csv`: every point of the parameter plane computed.
-pub fn plane_records(plane: &std::collections::BTreeMap<super::data::PlaneKey, crate::error::Result<crate::numeric::verify::Verified>>) -> Vec<Record> {
+pub fn plane_records(
+    plane: &std::collections::BTreeMap<
+        super::data::PlaneKey,
+        crate::error::Result<crate::numeric::verify::Verified>,
+    >,
+) -> Vec<Record> {
     plane
         .iter()
         .filter_map(|(k, v)| {
@@ -123,7 +172,10 @@ pub fn plane_records(plane: &std::collections::BTreeMap<super::data::PlaneKey, c
                 super::data::FloorKey::Fixed => "fixed",
             };
             Some(super::csv::verified(
-                &format!("floor={floor};contact=roll;m2_over_m1={};k2={};k1=1/2", k.ratio, k.k2),
+                &format!(
+                    "floor={floor};contact=roll;m2_over_m1={};k2={};k1=1/2",
+                    k.ratio, k.k2
+                ),
                 "theta_s",
                 "rad",
                 v,

@@ -1,8 +1,8 @@
 //! Trajectories sampled at their events: a grid of times plus, for every
 //! event, a time just before and just after it (10⁻⁹ τ away, far inside
-//! the digits a figure shows and far outside the event's uncertainty at
-//! the plotted digits), so that every curve reaches each event from both
-//! sides and breaks there.
+//! the digits a figure shows; farther where the event's time is verified to
+//! so few digits that its uncertainty comes near that: [`gap`]), so that
+//! every curve reaches each event from both sides and breaks there.
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
@@ -11,8 +11,23 @@ use crate::motion::{Kind, COLUMNS};
 use crate::oracle::{self, Answer, Options};
 use rug::{Integer, Rational};
 
-/// How far before and after an event its two samples lie (τ).
+/// How far before and after an event its two samples lie (τ), at least
+/// (see [`gap`]).
 pub const EVENT_GAP: f64 = 1e-9;
+
+/// How far from an event time verified as `t` its two samples lie: 10⁻⁹ τ,
+/// or 10⁻ᵏ τ with k the largest power that keeps them at least ten units of
+/// the time's last verified digit away (so that a sample is on its side of
+/// the event whichever way the printed digits were rounded).
+pub fn gap(t: &crate::numeric::verify::Verified) -> Rational {
+    let x = t.value.to_f64().abs().max(1e-300);
+    let last = x.log10().floor() as i64 - i64::from(t.digits) + 1;
+    let k = (-(last + 1)).clamp(1, 9);
+    Rational::from((
+        Integer::from(1),
+        Integer::from(Integer::u_pow_u(10, k as u32)),
+    ))
+}
 
 /// One event of a track.
 #[derive(Debug, Clone)]
@@ -47,6 +62,12 @@ impl Track {
     /// of different phases (the line breaks at every phase boundary).
     pub fn col(&self, name: &str) -> (Vec<(f64, f64)>, Vec<String>) {
         let i = COLUMNS.iter().position(|c| *c == name).unwrap_or(0);
+        self.map(|r| r[i])
+    }
+
+    /// A function of the row (its values in [`COLUMNS`] order) as (t,
+    /// value) points, broken at every phase boundary like [`Track::col`].
+    pub fn map(&self, f: impl Fn(&[f64]) -> f64) -> (Vec<(f64, f64)>, Vec<String>) {
         let mut pts = Vec::new();
         let mut ph = Vec::new();
         for (k, r) in self.rows.iter().enumerate() {
@@ -54,7 +75,7 @@ impl Track {
                 pts.push((f64::NAN, f64::NAN));
                 ph.push(String::new());
             }
-            pts.push((r[0], r[i]));
+            pts.push((r[0], f(r)));
             ph.push(self.phases[k].clone());
         }
         (pts, ph)
@@ -103,7 +124,6 @@ pub fn track(model: &Model, opts: &Options, n: usize, until: Option<Kind>) -> Re
     }
     .ok_or_else(|| Error::not_physical("the motion has no event to end the figure at"))?;
     let t_end = evs[last_ev].t;
-    let gap = Rational::from((1, 1_000_000_000));
     let exact_of = |v: &crate::numeric::verify::Verified| -> Result<Rational> {
         Exact::parse("t", &v.text, false)?
             .as_rational()
@@ -113,9 +133,10 @@ pub fn track(model: &Model, opts: &Options, n: usize, until: Option<Kind>) -> Re
     let mut times: Vec<Rational> = Vec::new();
     for (k, e) in answer.events.iter().enumerate().take(last_ev + 1) {
         let te = exact_of(&e.t)?;
-        times.push(Rational::from(&te - &gap));
+        let g = gap(&e.t);
+        times.push(Rational::from(&te - &g));
         if k < last_ev {
-            times.push(Rational::from(&te + &gap));
+            times.push(Rational::from(&te + &g));
         }
     }
     let n = n.max(2);
@@ -143,4 +164,28 @@ pub fn track(model: &Model, opts: &Options, n: usize, until: Option<Kind>) -> Re
         events,
         answer,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn samples_keep_clear_of_an_event_s_last_digit() {
+        let v = |text: &str, digits: u32| crate::numeric::verify::Verified {
+            name: "t".into(),
+            value: rug::Float::with_val(64, rug::Float::parse(text).expect("number")),
+            text: text.into(),
+            digits,
+            err_bound: rug::Float::with_val(64, 0),
+            precs: (64, 128),
+        };
+        // 12 digits of t = 4.156…: the last digit is 1e-11, the gap 1e-9
+        assert_eq!(
+            gap(&v("4.15605677802", 12)),
+            Rational::from((1, 1_000_000_000))
+        );
+        // 8 digits: the last digit is 1e-7, the gap 1e-6
+        assert_eq!(gap(&v("4.1560568", 8)), Rational::from((1, 1_000_000)));
+    }
 }
