@@ -13,6 +13,11 @@ desktop width (1400 px) it checks that
 - nothing overflows horizontally (document width <= viewport width);
 - the smallest text drawn in a visible figure is at least 7.5 px on screen and
   the page's own text at least 11 px;
+- no text in a visible figure overlaps another text, a curve or reference
+  line (elements of class `c` and `r`, sampled along their length), a marker
+  (class `m`), or crosses the frame of a plot (class `frame`): every text is
+  wholly inside a plot or wholly outside it. Boxes are the browser's own
+  (getBBox through getCTM); a tolerance of 0.25 pt at print size;
 
 and writes full-page screenshots (PNG) of index.html at both widths into the
 screenshots directory (default REPORT_DIR/screenshots); with --tiles also
@@ -20,8 +25,10 @@ screen-sized pieces of them (index-WIDTH-NN.png) for reading.
 
 It talks to Chromium over the DevTools protocol on a pipe
 (--remote-debugging-pipe): Python's standard library only, no driver to install.
-Chromium is `$CHROMIUM`, else `chromium` or `chromium-browser` on PATH; if none
-is found the check FAILS (exit 2) — it never passes without a browser.
+Chromium is `$CHROMIUM`, else `chromium` or `chromium-browser` on PATH, else the
+one Playwright downloads (`pip install playwright && playwright install --with-deps
+chromium`, found under ~/.cache/ms-playwright); if none is found the check FAILS
+(exit 2) — it never passes without a browser.
 Exit 0: all checks pass; 1: a check failed (each failure printed); 2: no browser.
 """
 
@@ -70,6 +77,11 @@ def find_chromium():
         p = shutil.which(name)
         if p:
             return p
+    # the Chromium that `playwright install chromium` downloads
+    cache = Path(os.environ.get("PLAYWRIGHT_BROWSERS_PATH", Path.home() / ".cache" / "ms-playwright"))
+    for p in sorted(cache.glob("chromium-*/chrome-linux*/chrome"), reverse=True):
+        if p.is_file():
+            return str(p)
     return None
 
 
@@ -148,8 +160,57 @@ class Browser:
             self.proc.kill()
 
 
+READY = r"""
+(() => [...document.querySelectorAll('object')]
+  .filter(o => o.offsetParent !== null)
+  .every(o => o.contentDocument && o.contentDocument.documentElement
+              && o.contentDocument.readyState === 'complete'))()
+"""
+
 PROBE = r"""
 (() => {
+  // the box of an element in the figure's viewport (px), through its CTM
+  const boxOf = el => {
+    const b = el.getBBox(), m = el.getCTM();
+    const pts = [[b.x, b.y], [b.x + b.width, b.y], [b.x, b.y + b.height], [b.x + b.width, b.y + b.height]]
+      .map(([x, y]) => [m.a * x + m.c * y + m.e, m.b * x + m.d * y + m.f]);
+    const xs = pts.map(p => p[0]), ys = pts.map(p => p[1]);
+    return {x0: Math.min(...xs), x1: Math.max(...xs), y0: Math.min(...ys), y1: Math.max(...ys)};
+  };
+  const meets = (a, b, tol) => a.x0 + tol < b.x1 && b.x0 + tol < a.x1 && a.y0 + tol < b.y1 && b.y0 + tol < a.y1;
+  const within = (a, b, tol) => a.x0 >= b.x0 - tol && a.x1 <= b.x1 + tol && a.y0 >= b.y0 - tol && a.y1 <= b.y1 + tol;
+  const overlaps = (d, scale) => {
+    const tol = 0.25 * scale;
+    const texts = [...d.querySelectorAll('text')].filter(t => t.textContent.trim())
+      .map(t => ({s: t.textContent.trim(), b: boxOf(t)}));
+    const lines = [...d.querySelectorAll('.c, .r')].map(el => {
+      const m = el.getCTM(), n = el.getTotalLength(), pts = [];
+      const step = Math.max(0.2, n / 4000);
+      for (let l = 0; l <= n; l += step) {
+        const p = el.getPointAtLength(l);
+        pts.push([m.a * p.x + m.c * p.y + m.e, m.b * p.x + m.d * p.y + m.f]);
+      }
+      return {what: el.classList.contains('r') ? 'reference line' : 'curve',
+              title: (el.querySelector('title') || {}).textContent || '', pts};
+    });
+    const marks = [...d.querySelectorAll('.m')].map(el => ({title: (el.querySelector('title') || {}).textContent || '', b: boxOf(el)}));
+    const frames = [...d.querySelectorAll('.frame')].map(boxOf);
+    const bad = [];
+    texts.forEach((t, i) => {
+      for (let j = i + 1; j < texts.length; j++)
+        if (meets(t.b, texts[j].b, tol)) bad.push(`text "${t.s}" overlaps text "${texts[j].s}"`);
+      const inner = {x0: t.b.x0 + tol, x1: t.b.x1 - tol, y0: t.b.y0 + tol, y1: t.b.y1 - tol};
+      for (const l of lines)
+        if (l.pts.some(([x, y]) => x > inner.x0 && x < inner.x1 && y > inner.y0 && y < inner.y1)) {
+          bad.push(`text "${t.s}" overlaps the ${l.what} "${l.title.slice(0, 50)}"`);
+        }
+      for (const m of marks)
+        if (meets(t.b, m.b, tol)) bad.push(`text "${t.s}" overlaps the marker "${m.title.slice(0, 50)}"`);
+      for (const f of frames)
+        if (meets(t.b, f, tol) && !within(t.b, f, tol)) bad.push(`text "${t.s}" crosses a plot's frame`);
+    });
+    return bad;
+  };
   const out = {failures: [], links: [], minFigText: 1e9, minPageText: 1e9};
   const vw = Math.min(window.innerWidth, __WIDTH__);
   const docW = Math.max(document.documentElement.scrollWidth, document.body.scrollWidth);
@@ -196,6 +257,11 @@ PROBE = r"""
       const px = fs * scale;
       if (px < out.minFigText) { out.minFigText = px; out.minFigWhere = o.getAttribute('data'); }
     }
+    // overlaps: texts against texts, curves, markers and frames
+    const bad = overlaps(d, scale);
+    for (const b of bad.slice(0, 8)) out.failures.push(`overlap in ${o.getAttribute('data')}: ${b}`);
+    if (bad.length > 8) out.failures.push(`overlap in ${o.getAttribute('data')}: ${bad.length - 8} more`);
+    out.overlapChecked = (out.overlapChecked || 0) + 1;
   }
   out.figures = figs;
   for (const img of document.querySelectorAll('img')) {
@@ -237,6 +303,14 @@ def check_page(b, url, width, shot=None):
     b.events.clear()
     b.send("Page.navigate", {"url": url}, session=s)
     b.wait_event("Page.loadEventFired", timeout=120)
+    # the figures are <object>s, each a document of its own: wait until every
+    # shown one has loaded (a busy machine can be slower than the page's load event)
+    deadline = time.time() + 60
+    while time.time() < deadline:
+        r = b.send("Runtime.evaluate", {"expression": READY, "returnByValue": True}, session=s)
+        if r.get("result", {}).get("value"):
+            break
+        time.sleep(0.2)
     time.sleep(0.3)
     r = b.send(
         "Runtime.evaluate",
@@ -290,7 +364,11 @@ def check_page(b, url, width, shot=None):
                     base64.b64decode(img["data"])
                 )
     b.send("Target.closeTarget", {"targetId": t["targetId"]})
-    info = {"figures": probe.get("figures", 0), "minFigText": probe.get("minFigText")}
+    info = {
+        "figures": probe.get("figures", 0),
+        "minFigText": probe.get("minFigText"),
+        "overlapChecked": probe.get("overlapChecked", 0),
+    }
     return failures, probe.get("links", []), info
 
 
@@ -337,7 +415,7 @@ def main():
                     )
                     print(
                         f"check_browser: {rel} at {w} px: {info['figures']} figures shown{smallest}, "
-                        f"{len(f)} problems"
+                        f"{info['overlapChecked']} checked for overlaps, {len(f)} problems"
                     )
                     failures += [f"{rel} at {w} px: {x}" for x in f]
                     for link in links:

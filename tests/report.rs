@@ -184,22 +184,22 @@ fn two_runs_write_the_same_bytes() {
     }
 }
 
-/// Reads `separation.csv` into rows keyed by (floor, contact, theta0).
-fn separation_rows(dir: &Path) -> BTreeMap<(String, String, String), Vec<String>> {
-    let text = std::fs::read_to_string(dir.join("separation.csv")).expect("separation.csv");
+/// The records of a tidy CSV (`case,point,phase,quantity,unit,value,digits`)
+/// keyed by (case, quantity): (value, digits).
+fn tidy(dir: &Path, name: &str) -> BTreeMap<(String, String), (String, String)> {
+    let text = std::fs::read_to_string(dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
     let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
     assert_eq!(
-        header[..5],
-        ["floor", "contact", "theta0", "digits", "theta_s"]
+        lines.next(),
+        Some("case,point,phase,quantity,unit,value,digits"),
+        "{name}: header"
     );
     let mut out = BTreeMap::new();
     for l in lines {
-        // the closed-form column is quoted and may hold commas; the first five are plain
-        let cells: Vec<String> = l.splitn(6, ',').map(|s| s.to_string()).collect();
+        let c: Vec<&str> = l.split(',').collect();
         out.insert(
-            (cells[0].clone(), cells[1].clone(), cells[2].clone()),
-            cells,
+            (c[0].to_string(), c[3].to_string()),
+            (c[5].to_string(), c[6].to_string()),
         );
     }
     out
@@ -212,7 +212,8 @@ fn round(x: &Float, digits: u32) -> String {
 #[test]
 fn tables_agree_with_the_closed_forms() {
     let dir = shared_report();
-    let rows = separation_rows(dir);
+    let mut rows = tidy(dir, "separation-top.csv");
+    rows.extend(tidy(dir, "separation-start.csv"));
     let html = std::fs::read_to_string(dir.join("index.html")).expect("index.html");
     let p = 400;
     let pi = Float::with_val(p, Constant::Pi);
@@ -254,17 +255,19 @@ fn tables_agree_with_the_closed_forms() {
         ),
     ];
     for ((f, c, t0), expected, what) in cases {
-        let key = (f.to_string(), c.to_string(), t0.to_string());
-        let row = rows
+        let key = (
+            format!("floor={f};contact={c};theta0={t0}"),
+            "theta_s".to_string(),
+        );
+        let (value, digits) = rows
             .get(&key)
             .unwrap_or_else(|| panic!("no row for {key:?}"));
-        let digits: u32 = row[3].parse().expect("digits");
+        let digits: u32 = digits.parse().expect("digits");
         assert!(digits >= 20, "{key:?}: only {digits} digits");
         let want = round(&expected, digits);
         assert_eq!(
-            row[4], want,
-            "{key:?} ({what}): table says {}, closed form {want}",
-            row[4]
+            *value, want,
+            "{key:?} ({what}): table says {value}, closed form {want}"
         );
         assert!(
             html.contains(&want),
@@ -273,18 +276,20 @@ fn tables_agree_with_the_closed_forms() {
     }
 
     // the parameter plane: the fixed lower cylinder against arccos(2/(3 + k2))
-    let plane = std::fs::read_to_string(dir.join("plane.csv")).expect("plane.csv");
     let mut checked = 0;
-    for l in plane.lines().skip(1) {
-        let c: Vec<&str> = l.split(',').collect();
-        if c[0] != "fixed" || c[5] != "20" {
+    for ((case, q), (value, digits)) in tidy(dir, "plane.csv") {
+        if !case.starts_with("floor=fixed;") || q != "theta_s" || digits != "20" {
             continue;
         }
-        let k = cylroll::exact::Exact::parse("k2", c[3], false)
+        let k2 = case
+            .split(';')
+            .find_map(|kv| kv.strip_prefix("k2="))
+            .expect("k2");
+        let k = cylroll::exact::Exact::parse("k2", k2, false)
             .expect("k2")
             .to_float(p);
         let want = round(&acos(Float::with_val(p, 2u32) / (k + 3u32)), 20);
-        assert_eq!(c[6], want, "fixed lower cylinder, k2 = {}", c[3]);
+        assert_eq!(value, want, "fixed lower cylinder, k2 = {k2}");
         assert!(html.contains(&want), "index.html lacks {want}");
         checked += 1;
     }

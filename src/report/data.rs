@@ -39,7 +39,7 @@ pub fn paper_ref(v: (Floor, Contact)) -> &'static str {
 }
 
 /// The start angle of the time plots and its text.
-pub const THETA0_TIME: &str = "1/100";
+pub const THETA0_TIME: &str = "1/10";
 /// Starts of the separation table: the limit from rest at the top, and two
 /// small angles (from rest).
 pub const TABLE_STARTS: [&str; 3] = ["0", "1/100", "1/20"];
@@ -89,26 +89,15 @@ fn below(x: f64) -> Rational {
     Rational::from((Integer::from(n.max(0)), Integer::from(1_000_000)))
 }
 
-/// A decimal with 5 decimals just below `x` (≥ 0): ⌊x·10⁵⌋/10⁵, less 10⁻⁵
-/// when that would not be below `x`.
-fn below_5(x: f64) -> Rational {
-    let scaled = x * 1e5;
-    let mut n = scaled.floor() as i64;
-    if n as f64 >= scaled && n > 0 {
-        n -= 1;
-    }
-    Rational::from((Integer::from(n.max(0)), Integer::from(100_000)))
-}
-
-/// Trajectory of one variant from rest at θ0 = [`THETA0_TIME`], at
-/// `points + 1` equally spaced times from 0 to just before t_s.
+/// The motion of one variant from rest at θ0 = [`THETA0_TIME`], sampled
+/// at its events (the main case to its first impact, the others to their
+/// separation).
 #[derive(Debug, Clone)]
 pub struct TimeCurve {
-    /// Separation (at the plot digits).
-    pub sep: Separation,
-    /// Rows in [`crate::oracle::TRAJECTORY_COLUMNS`] order.
-    pub rows: Vec<Vec<f64>>,
-    /// Points that could not be verified (time, error), left out.
+    /// The track.
+    pub track: super::track::Track,
+    /// Points that could not be verified (none: the trajectory is verified
+    /// whole or not at all).
     pub skipped: Vec<(String, String)>,
 }
 
@@ -120,6 +109,8 @@ pub struct ThetaCurve {
     pub sep: Separation,
     /// Rows: θ, then the [`crate::oracle::FORCE_KEYS`] values.
     pub rows: Vec<Vec<f64>>,
+    /// The branch point θ* (None: the motion is unique up to θs).
+    pub star: Option<f64>,
     /// Points that could not be verified (θ, error), left out.
     pub skipped: Vec<(String, String)>,
 }
@@ -181,7 +172,7 @@ impl Job {
 }
 
 enum Out {
-    Time(Result<TimeCurve>),
+    Time(Box<Result<TimeCurve>>),
     Theta(Result<ThetaCurve>),
     Sep(Result<Separation>),
     Forces(Vec<Result<Vec<Verified>>>),
@@ -204,6 +195,10 @@ pub struct Data {
     pub mu: Vec<Result<Separation>>,
     /// θs at every parameter-plane point asked for.
     pub plane: std::collections::BTreeMap<PlaneKey, Result<Verified>>,
+    /// Digits verified for the plotted points.
+    pub plot_digits: u32,
+    /// Digits of the tables.
+    pub table_digits: u32,
 }
 
 /// Runs `f` on every job on `threads` threads; results in job order.
@@ -334,41 +329,26 @@ pub fn text_f64(text: &str) -> f64 {
 }
 
 fn time_curve(v: usize, cfg: &Config, pb: &ProgressBar) -> Result<TimeCurve> {
-    let model = variant_model(VARIANTS[v], THETA0_TIME)?;
-    let mut o = Oracle::new(&model, cfg.plot_digits)?;
-    let sep = o.separation()?;
-    pb.inc(1);
-    let ts = sep
-        .t_s
-        .as_ref()
-        .ok_or_else(|| Error::not_physical("no finite separation time"))?
-        .value
-        .to_f64();
-    let n = cfg.time_points.max(1);
-    let mut rows = Vec::new();
-    let mut skipped = Vec::new();
-    for i in 0..=n {
-        // times with at most 5 decimals, the last just before t_s: short
-        // decimals are exact inputs the trajectory echoes as they are
-        let t = below_5(ts * i as f64 / n as f64);
-        let te = Exact::rational(t);
-        match o.trajectory(std::slice::from_ref(&te)) {
-            Ok(r) => {
-                if let Some(row) = r.first() {
-                    rows.push(row.iter().map(|x| x.value.to_f64()).collect());
-                }
-            }
-            Err(e) => skipped.push((te.to_string(), e.to_string())),
-        }
-        pb.inc(1);
-    }
-    Ok(TimeCurve { sep, rows, skipped })
+    let model = crate::model::Model::from_ideal(&variant_model(VARIANTS[v], THETA0_TIME)?);
+    let opts = crate::oracle::Options::digits(cfg.plot_digits);
+    let until = if v == 0 {
+        None
+    } else {
+        Some(crate::motion::Kind::Separation)
+    };
+    let track = super::track::track(&model, &opts, cfg.time_points, until)?;
+    pb.inc(cfg.time_points as u64 + 2);
+    Ok(TimeCurve {
+        track,
+        skipped: Vec::new(),
+    })
 }
 
 fn theta_curve(v: usize, cfg: &Config, pb: &ProgressBar) -> Result<ThetaCurve> {
     let model = variant_model(VARIANTS[v], "0")?;
     let mut o = Oracle::new(&model, cfg.plot_digits)?;
     let sep = o.separation()?;
+    let star = o.branch_point(&sep.theta_s)?.map(|v| v.value.to_f64());
     pb.inc(1);
     let end = below(sep.theta_s.value.to_f64());
     let n = cfg.theta_points.max(1);
@@ -386,12 +366,17 @@ fn theta_curve(v: usize, cfg: &Config, pb: &ProgressBar) -> Result<ThetaCurve> {
         }
         pb.inc(1);
     }
-    Ok(ThetaCurve { sep, rows, skipped })
+    Ok(ThetaCurve {
+        sep,
+        rows,
+        star,
+        skipped,
+    })
 }
 
 fn run_job(job: &Job, cfg: &Config, pb: &ProgressBar) -> Out {
     match job {
-        Job::Time(v) => Out::Time(time_curve(*v, cfg, pb)),
+        Job::Time(v) => Out::Time(Box::new(time_curve(*v, cfg, pb))),
         Job::Theta(v) => Out::Theta(theta_curve(*v, cfg, pb)),
         Job::Sep(v, th0) => {
             let r = variant_model(VARIANTS[*v], th0)
@@ -474,11 +459,13 @@ pub fn compute(cfg: &Config, pb: &ProgressBar, show: bool) -> Result<Data> {
         forces: Vec::new(),
         mu: Vec::new(),
         plane: std::collections::BTreeMap::new(),
+        plot_digits: cfg.plot_digits,
+        table_digits: cfg.digits,
     };
     let mut key_iter = keys.into_iter();
     for (job, out) in jobs.iter().zip(outs) {
         match (job, out) {
-            (Job::Time(_), Out::Time(t)) => data.time.push(t),
+            (Job::Time(_), Out::Time(t)) => data.time.push(*t),
             (Job::Theta(_), Out::Theta(t)) => data.theta.push(t),
             (Job::Sep(v, _), Out::Sep(s)) => data.sep[*v].push(s),
             (Job::Forces, Out::Forces(f)) => data.forces = f,

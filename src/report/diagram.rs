@@ -4,11 +4,16 @@
 //! `mechanics`: x right, y up, θ clockwise from the vertical, φ₁ clockwise,
 //! φ₂ − θ counter-clockwise, F₂₁ along (cos θ, −sin θ) on cylinder 2).
 
-use super::plot::{xml, Figure, FONT, PALETTE};
+use super::canvas::{xml, FONT};
+use super::model::{Figure, PALETTE};
 use std::fmt::Write as _;
 
-/// Size of the drawing in px.
+/// Size of the drawing in its own units (the viewBox).
 pub const SIZE: (u32, u32) = (560, 640);
+
+/// Its width at print size: one journal column, 85 mm, in pt (every text
+/// is at least 17 units, 7.3 pt there).
+pub const PRINT_W: f64 = 85.0 / 25.4 * 72.0;
 
 fn hex(c: (u8, u8, u8)) -> String {
     format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
@@ -75,7 +80,9 @@ pub fn svg() -> String {
     let mut d = D { s: String::new() };
     let _ = writeln!(
         d.s,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\" font-size=\"16\">"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}pt\" height=\"{}pt\" viewBox=\"0 0 {w} {h}\" font-family=\"{FONT}\" font-size=\"17\">",
+        super::canvas::n(PRINT_W),
+        super::canvas::n(PRINT_W * h / w)
     );
     d.s.push_str("<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n");
     arrow_heads(&mut d);
@@ -93,8 +100,8 @@ pub fn svg() -> String {
     let o = (40.0, 60.0);
     d.arrow(o, (o.0 + 50.0, o.1), "#000", "ak", "x", 1.5);
     d.arrow(o, (o.0, o.1 - 45.0), "#000", "ak", "y", 1.5);
-    d.text(o.0 + 56.0, o.1 + 5.0, "x", "#000", "start", 16.0);
-    d.text(o.0, o.1 - 50.0, "y", "#000", "middle", 16.0);
+    d.text(o.0 + 56.0, o.1 + 5.0, "x", "#000", "start", 17.0);
+    d.text(o.0, o.1 - 50.0, "y", "#000", "middle", 17.0);
     key(&mut d);
     d.s.push_str("</svg>\n");
     d.s
@@ -156,8 +163,8 @@ fn cylinders(d: &mut D, c1: (f64, f64), c2: (f64, f64), r: f64) {
             c.1
         );
     }
-    d.text(c1.0 - r - 8.0, c1.1 + 70.0, "1", "#000", "end", 18.0);
-    d.text(c2.0 + r * 0.8, c2.1 - r * 0.8, "2", "#000", "start", 18.0);
+    d.text(c1.0 - r - 8.0, c1.1 + 70.0, "1", "#000", "end", 19.0);
+    d.text(c2.0 + r * 0.8, c2.1 - r * 0.8, "2", "#000", "start", 19.0);
 }
 
 /// θ, φ1 and φ2 − θ as arcs with their names.
@@ -253,7 +260,7 @@ fn forces(d: &mut D, fp: (f64, f64), p: (f64, f64), th: f64) {
         let tip = (from.0 + len * dir.0, from.1 + len * dir.1);
         let color = hex(PALETTE[i]);
         d.arrow(from, tip, &color, &format!("a{i}"), title, 3.0);
-        d.text(tip.0 + off.0, tip.1 + off.1, name, &color, anchor, 18.0);
+        d.text(tip.0 + off.0, tip.1 + off.1, name, &color, anchor, 19.0);
     }
     let _ = writeln!(
         d.s,
@@ -278,7 +285,7 @@ fn key(d: &mut D) {
     for (i, l) in lines.iter().enumerate() {
         let _ = writeln!(
             d.s,
-            "<text x=\"{kx}\" y=\"{}\" font-size=\"15\" fill=\"#000\"{}>{}</text>",
+            "<text x=\"{kx}\" y=\"{}\" font-size=\"17\" fill=\"#000\"{}>{}</text>",
             466.0 + 21.0 * i as f64,
             if i == 0 { " font-weight=\"bold\"" } else { "" },
             xml(l)
@@ -286,18 +293,17 @@ fn key(d: &mut D) {
     }
 }
 
-/// The diagram as a figure of the report (the same drawing in both layouts).
+/// The diagram as a figure of the report (one column, 85 mm, in both
+/// layouts).
 pub fn figure() -> Figure {
     let mut f = Figure::new(
-        "conventions.svg",
-        "Sign conventions: angles and forces in their positive directions".into(),
-        SIZE,
-        (1, 1),
+        "conventions",
+        "Sign conventions: angles and forces in their positive directions",
         Vec::new(),
-        0,
+        1,
     );
-    f.raw_svg = Some(svg());
-    f.csv = Some(String::new());
+    let svg = svg();
+    f.raw = Some((svg.clone(), svg));
     f.caption = "The two cylinders with θ, φ₁, φ₂ and the four contact forces drawn in their positive directions (x right, y up). \
                  θ is the line of centres measured clockwise from the vertical; φ₁ is cylinder 1's clockwise rotation; φ₂ is the \
                  paper's angle (eq. 2), so φ₂ − θ is cylinder 2's counter-clockwise rotation. F₁ and N₁ are the floor's force on \

@@ -1,7 +1,7 @@
 //! Tables and the pages (README.md, index.html, and Markdown documents such
 //! as `audit.md` rendered as HTML pages of the report).
 
-use super::plot::Figure;
+use super::model::Figure;
 
 /// A table with a caption, rendered to Markdown and HTML alike.
 #[derive(Debug, Clone)]
@@ -17,6 +17,8 @@ pub struct Table {
     /// Rows of cells; a cell starting with `=` is a number (monospace,
     /// aligned on the decimal point).
     pub rows: Vec<Vec<String>>,
+    /// Its numbers as CSV (file name in the report's directory; empty: none).
+    pub csv: String,
 }
 
 /// A text section (heading and paragraphs or a list).
@@ -65,12 +67,13 @@ pub fn esc(s: &str) -> String {
         .replace('"', "&quot;")
 }
 
-/// HTML-escaped text with `code` spans turned into <code> elements.
+/// HTML-escaped text with `code` spans turned into <code> elements (or
+/// MathML where they are equations).
 fn esc_inline(s: &str) -> String {
     let mut out = String::new();
     for (i, part) in s.split('`').enumerate() {
         if i % 2 == 1 {
-            out.push_str(&format!("<code>{}</code>", esc(part)));
+            out.push_str(&code_or_math(part));
         } else {
             out.push_str(&esc(part));
         }
@@ -78,33 +81,44 @@ fn esc_inline(s: &str) -> String {
     out
 }
 
-/// Path of a figure relative to the pages.
-pub fn figure_path(f: &Figure) -> String {
-    format!("figures/{}", f.file)
+/// A code span: MathML where it is an equation, plain text where it is
+/// prose with symbols, else <code>.
+fn code_or_math(part: &str) -> String {
+    if super::math::is_equation(part) {
+        super::math::mathml(part)
+    } else if super::math::is_prose(part) {
+        format!("<q>{}</q>", esc(part))
+    } else {
+        format!("<code>{}</code>", esc(part))
+    }
 }
 
-/// Path of a figure's narrow layout (None: the figure has one layout).
-pub fn narrow_path(f: &Figure) -> Option<String> {
-    if f.raw_svg.is_some() {
-        None
+/// Path of a figure (wide layout, 178 mm) relative to the pages.
+pub fn figure_path(f: &Figure) -> String {
+    format!("figures/{}.svg", f.stem)
+}
+
+/// Path of a figure's narrow layout (85 mm).
+pub fn narrow_path(f: &Figure) -> String {
+    format!("figures/{}.narrow.svg", f.stem)
+}
+
+/// Path of a figure's PDF (`narrow`: the 85 mm one).
+pub fn pdf_path(f: &Figure, narrow: bool) -> String {
+    if narrow {
+        format!("figures/{}.narrow.pdf", f.stem)
     } else {
-        Some(format!(
-            "figures/{}.narrow.svg",
-            f.file.trim_end_matches(".svg")
-        ))
+        format!("figures/{}.pdf", f.stem)
     }
 }
 
 /// Path of a figure's data (None: a drawing without data).
 pub fn csv_path(f: &Figure) -> Option<String> {
-    match &f.csv {
-        Some(c) if c.is_empty() => None,
-        _ => Some(format!("figures/{}", f.csv_file())),
-    }
+    f.raw.is_none().then(|| format!("figures/{}.csv", f.stem))
 }
 
 fn fig_id(f: &Figure) -> String {
-    format!("fig-{}", f.file.trim_end_matches(".svg").replace('_', "-"))
+    format!("fig-{}", f.stem.replace('_', "-"))
 }
 
 /// Other pages of the report, linked from the index: (file, title).
@@ -121,7 +135,14 @@ pub fn markdown(title: &str, intro: &[String], blocks: &[Block], pages: &Pages) 
         s.push_str("Other pages: ");
         let links: Vec<String> = pages
             .iter()
-            .map(|(f, t)| format!("[{t}]({})", f.trim_end_matches(".html").to_string() + ".md"))
+            .map(|(f, t)| {
+                // a page rendered from a Markdown document links to that document
+                let target = match super::DOCUMENTS.iter().find(|d| d.1 == f) {
+                    Some(d) => d.0.to_string(),
+                    None => f.clone(),
+                };
+                format!("[{t}]({target})")
+            })
             .collect();
         s.push_str(&links.join(", "));
         s.push_str(".\n\n");
@@ -180,6 +201,9 @@ fn table_md(s: &mut String, t: &Table) {
     for r in &t.rows {
         s.push_str(&row(r));
     }
+    if !t.csv.is_empty() {
+        s.push_str(&format!("\n[the table as CSV]({})\n", t.csv));
+    }
     s.push('\n');
 }
 
@@ -195,12 +219,10 @@ fn figure_md(s: &mut String, f: &Figure) {
     if let Some(c) = csv_path(f) {
         extra.push(format!("[data (CSV)]({c})"));
     }
-    if let Some(n) = narrow_path(f) {
-        extra.push(format!("[narrow layout]({n})"));
-    }
-    if !extra.is_empty() {
-        s.push_str(&format!(" {}", extra.join(" · ")));
-    }
+    extra.push(format!("[PDF 178 mm]({})", pdf_path(f, false)));
+    extra.push(format!("[PDF 85 mm]({})", pdf_path(f, true)));
+    extra.push(format!("[85 mm layout]({})", narrow_path(f)));
+    s.push_str(&format!(" {}", extra.join(" · ")));
     s.push_str("\n\n");
 }
 
@@ -223,8 +245,8 @@ fn section_md(s: &mut String, sec: &Section) {
 
 /// The page's style: readable from phone width (400 px) to desktop; numbers
 /// in tables monospace, at the text's size, right-aligned on the decimal
-/// point; on narrow screens each table row becomes a block of labelled
-/// values, so that nothing scrolls sideways.
+/// point; on narrow screens each table row becomes a block of values, each
+/// beside its column's name, so that nothing scrolls sideways.
 pub const CSS: &str = "\
 *{box-sizing:border-box}\
 body{font-family:'DejaVu Sans',Verdana,Arial,sans-serif;max-width:1240px;margin:0 auto;padding:0.5em 1em 3em 1em;line-height:1.5;color:#111;font-size:16px;overflow-wrap:break-word}\
@@ -232,7 +254,7 @@ h1{font-size:1.55em;line-height:1.25}h2{margin-top:2em;border-bottom:1px solid #
 code{font-family:'DejaVu Sans Mono',Menlo,Consolas,monospace;font-size:0.92em}\
 pre{overflow-x:auto;background:#f6f6f6;padding:0.5em}\
 figure{margin:1em 0 2.2em 0}figure h3{margin-top:0}\
-object.fig{display:block;width:100%;height:auto;border:1px solid #ddd;background:#fff}object.one{max-width:820px}\
+object.fig{display:block;width:100%;height:auto;border:1px solid #ddd;background:#fff}object.one{max-width:560px}\
 object.narrow{display:none}\
 figcaption{font-size:0.95em;color:#222;margin-top:0.5em}figcaption .data{display:inline-block}\
 .scroll{overflow-x:auto;max-width:100%}\
@@ -240,16 +262,21 @@ table{border-collapse:collapse;margin:0.5em 0 1.5em 0;font-size:0.95em}\
 th,td{border:1px solid #ccc;padding:3px 8px;text-align:left;vertical-align:top}th{background:#f3f3f3}\
 td.num{text-align:right;font-family:'DejaVu Sans Mono',Menlo,Consolas,monospace;font-size:0.95em;white-space:pre}\
 nav ul{padding-left:1.2em}nav li{margin:0.1em 0}\
+details>summary{cursor:pointer;list-style-position:outside}details>summary h2{display:inline-block;margin:1.2em 0 0.3em 0;border:none}\
+details{border-top:1px solid #ccc;margin-top:1em}\
+.eq{display:inline}.eq math{font-size:1.05em;margin-right:0.25em}\
+.eq :is(msub,msup,msubsup,munder,mover,munderover)>:not(:first-child){font-size:max(0.71em,11px)}\
+p.data{font-size:0.95em;margin-top:-1em}\
 @media (max-width:700px){\
 body{padding:0.3em 0.6em 2em 0.6em;font-size:15px}\
 object.wide{display:none}object.narrow{display:block}\
 table.data,table.data tbody,table.data tr,table.data td{display:block;width:100%}\
 table.data thead{display:none}\
-table.data tr{border:1px solid #ccc;margin:0 0 0.8em 0;padding:0.2em 0}\
-table.data td{border:none;padding:1px 8px;text-align:left;white-space:normal}\
-table.data td::before{content:attr(data-label);display:block;font-family:'DejaVu Sans',Verdana,sans-serif;font-size:0.85em;color:#555}\
-table.data td.num code,table.data td.num{white-space:normal;word-break:break-all}\
-.md table{display:block;overflow-x:auto}}";
+table.data tr{border:1px solid #ccc;margin:0 0 0.6em 0;padding:0.15em 0}\
+table.data td{display:grid;grid-template-columns:minmax(6em,36%) minmax(0,1fr);column-gap:0.6em;align-items:baseline;border:none;padding:1px 8px;text-align:left;white-space:normal}\
+table.data td::before{content:attr(data-label);font-family:'DejaVu Sans',Verdana,sans-serif;font-size:0.85em;color:#555}\
+table.data td.num code,table.data td.num{white-space:normal;overflow-wrap:anywhere}\
+}";
 
 /// The head of an HTML page.
 pub fn head(title: &str) -> String {
@@ -322,38 +349,49 @@ fn table_html(t: &Table) -> String {
         s.push_str("</tr>\n");
     }
     s.push_str("</tbody></table></div>\n");
+    if !t.csv.is_empty() {
+        s.push_str(&format!(
+            "<p class=\"data\"><a href=\"{}\">the table as CSV</a></p>\n",
+            esc(&t.csv)
+        ));
+    }
     s
 }
 
 fn figure_html(f: &Figure) -> String {
     let id = fig_id(f);
     let mut s = format!("<figure id=\"{id}\">\n<h3>{}</h3>\n", esc(&f.title));
-    let obj = |path: &str, class: &str, w: u32, h: u32| {
+    let obj = |path: &str, class: &str, (w, h): (f64, f64)| {
         format!(
-            "<object class=\"fig {class}\" type=\"image/svg+xml\" data=\"{p}\" style=\"aspect-ratio:{w}/{h}\" aria-label=\"{t}\">\
-             <img src=\"{p}\" alt=\"{t}\" width=\"{w}\" height=\"{h}\" style=\"width:100%;height:auto\"></object>\n",
+            "<object class=\"fig {class}\" type=\"image/svg+xml\" data=\"{p}\" style=\"aspect-ratio:{w:.2}/{h:.2}\" aria-label=\"{t}\">\
+             <img src=\"{p}\" alt=\"{t}\" style=\"width:100%;height:auto\"></object>\n",
             p = esc(path),
             t = esc(&f.title)
         )
     };
-    let class = if narrow_path(f).is_some() {
-        "wide"
+    // a figure one journal column wide in both layouts (the diagram) is
+    // shown at a column's size on a wide screen too
+    let wide_class = if f.sizes[0].0 < 300.0 {
+        "wide one"
     } else {
-        "one"
+        "wide"
     };
-    s.push_str(&obj(&figure_path(f), class, f.size.0, f.size.1));
-    if let Some(n) = narrow_path(f) {
-        let (w, h) = super::plot::narrow_size(f);
-        s.push_str(&obj(&n, "narrow", w, h));
-    }
+    s.push_str(&obj(&figure_path(f), wide_class, f.sizes[0]));
+    s.push_str(&obj(&narrow_path(f), "narrow", f.sizes[1]));
     s.push_str(&format!("<figcaption>{}", esc_inline(&f.caption)));
     let mut links = Vec::new();
     if let Some(c) = csv_path(f) {
         links.push(format!("<a href=\"{}\">data (CSV)</a>", esc(&c)));
     }
     links.push(format!(
-        "<a href=\"{}\">SVG</a> (hover a curve or marker for its values)",
-        esc(&figure_path(f))
+        "PDF for print: <a href=\"{}\">178 mm</a>, <a href=\"{}\">85 mm</a>",
+        esc(&pdf_path(f, false)),
+        esc(&pdf_path(f, true))
+    ));
+    links.push(format!(
+        "SVG: <a href=\"{}\">178 mm</a>, <a href=\"{}\">85 mm</a> (hover a curve or marker for its values)",
+        esc(&figure_path(f)),
+        esc(&narrow_path(f))
     ));
     s.push_str(&format!(
         " <span class=\"data\">{}</span></figcaption>\n</figure>\n",
@@ -376,7 +414,7 @@ pub fn html(title: &str, intro: &[String], blocks: &[Block], pages: &Pages) -> S
             .collect();
         s.push_str(&format!("<p>Other pages: {}.</p>\n", links.join(", ")));
     }
-    s.push_str("<nav><ul>\n");
+    s.push_str("<nav><h2>Contents</h2><ul>\n");
     let mut open = false;
     for b in blocks {
         let item = match b {
@@ -394,7 +432,11 @@ pub fn html(title: &str, intro: &[String], blocks: &[Block], pages: &Pages) -> S
                 if open {
                     s.push_str("</ul></li>\n");
                 }
-                s.push_str(&format!("<li><b>{}</b><ul>\n", esc(h)));
+                s.push_str(&format!(
+                    "<li><a href=\"#{}\"><b>{}</b></a><ul>\n",
+                    section_id(h),
+                    esc(h)
+                ));
                 open = true;
                 None
             }
@@ -409,9 +451,20 @@ pub fn html(title: &str, intro: &[String], blocks: &[Block], pages: &Pages) -> S
         s.push_str("</ul></li>\n");
     }
     s.push_str("</ul></nav>\n");
+    let mut open_section = false;
     for b in blocks {
         match b {
-            Block::Heading(h) => s.push_str(&format!("<h2>{}</h2>\n", esc(h))),
+            Block::Heading(h) => {
+                if open_section {
+                    s.push_str("</details>\n");
+                }
+                s.push_str(&format!(
+                    "<details open id=\"{}\"><summary><h2>{}</h2></summary>\n",
+                    section_id(h),
+                    esc(h)
+                ));
+                open_section = true;
+            }
             Block::Table(t) => s.push_str(&table_html(t)),
             Block::Figure(f) => s.push_str(&figure_html(f)),
             Block::Section(sec) => {
@@ -436,18 +489,31 @@ pub fn html(title: &str, intro: &[String], blocks: &[Block], pages: &Pages) -> S
             }
         }
     }
+    if open_section {
+        s.push_str("</details>\n");
+    }
     s.push_str("</body>\n</html>\n");
     s
 }
 
+/// The anchor of a section heading.
+fn section_id(h: &str) -> String {
+    let id: String = super::model::ascii_key(&h.to_lowercase())
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
+        .collect();
+    format!("sec-{}", id.trim_matches('-'))
+}
+
 // ------------------------------------------------------------ Markdown
 
-/// Inline Markdown: `code`, **bold**, *emphasis*, [text](link).
+/// Inline Markdown: `code` (MathML where it is an equation), **bold**,
+/// *emphasis*, [text](link).
 fn md_inline(s: &str) -> String {
     let mut out = String::new();
     for (i, part) in s.split('`').enumerate() {
         if i % 2 == 1 {
-            out.push_str(&format!("<code>{}</code>", esc(part)));
+            out.push_str(&code_or_math(part));
             continue;
         }
         let mut t = esc(part);
@@ -569,15 +635,16 @@ fn md_table(lines: &[&str], mut i: usize, body: &mut String) -> usize {
         rows.push(md_row(lines[i]));
         i += 1;
     }
-    body.push_str("<table>\n<thead><tr>");
+    body.push_str("<table class=\"data\">\n<thead><tr>");
     for h in &header {
         body.push_str(&format!("<th>{}</th>", md_inline(h)));
     }
     body.push_str("</tr></thead>\n<tbody>\n");
     for r in rows {
         body.push_str("<tr>");
-        for c in r {
-            body.push_str(&format!("<td>{}</td>", md_inline(&c)));
+        for (k, c) in r.iter().enumerate() {
+            let label = header.get(k).map(|h| esc(h)).unwrap_or_default();
+            body.push_str(&format!("<td data-label=\"{label}\">{}</td>", md_inline(c)));
         }
         body.push_str("</tr>\n");
     }
@@ -732,7 +799,7 @@ mod tests {
         );
         assert!(h.contains("<li>Two</li>\n</ol>"), "{h}");
         assert!(h.contains("<ul>\n<li>a</li>\n<li>b</li>\n</ul>"));
-        assert!(h.contains("<td>a|b</td>"));
+        assert!(h.contains(">a|b</td>"), "{h}");
     }
 
     #[test]
@@ -743,6 +810,7 @@ mod tests {
             intro: String::new(),
             header: vec!["a".into()],
             rows: vec![vec![num("1.25")], vec![num("-10.5")], vec![num("3")]],
+            csv: String::new(),
         };
         let h = table_html(&t);
         assert!(h.contains(">1.25</td>"), "{h}");

@@ -90,16 +90,12 @@ fn degrees(v: &Verified) -> String {
     num(format!("{:.6}", v.value.to_f64().to_degrees()))
 }
 
-/// All tables, and the lines of `separation.csv` and `plane.csv`.
+/// All tables, the notes and the problems met.
 pub struct Tables {
     /// Tables in page order.
     pub tables: Vec<Table>,
     /// Findings and problems, as page text.
     pub notes: Section,
-    /// `separation.csv`.
-    pub separation_csv: String,
-    /// `plane.csv`.
-    pub plane_csv: String,
     /// Problems worth a line in the run's summary.
     pub problems: Vec<String>,
 }
@@ -119,6 +115,7 @@ fn table(
         intro,
         header,
         rows,
+        csv: format!("{id}.csv"),
     }
 }
 
@@ -163,7 +160,7 @@ impl Builder<'_> {
     }
 }
 
-/// One separation: the cells of tables 1 and 2 and a line of `separation.csv`.
+/// One separation: the cells of tables 1 and 2.
 struct SepCells {
     theta: String,
     ts: String,
@@ -194,7 +191,6 @@ impl Builder<'_> {
         th0: &str,
         s: &Separation,
         cf: &Option<(String, Float)>,
-        csv: &mut String,
     ) -> SepCells {
         let (cf_text, agree) = match cf {
             Some((_, val)) => {
@@ -211,24 +207,6 @@ impl Builder<'_> {
             None => ("—".to_string(), "—".to_string()),
         };
         let f21 = extra(s, "F21_at_s");
-        let agrees_csv = match cf {
-            None => "",
-            Some(_) if agree.starts_with("yes") => "yes",
-            Some(_) => "no",
-        };
-        csv.push_str(&format!(
-            "{},{},{},{},{},{},{},\"{}\",{},{}\n",
-            v.0,
-            v.1,
-            th0,
-            s.theta_s.digits,
-            s.theta_s.text,
-            s.t_s.as_ref().map(|t| t.text.as_str()).unwrap_or("inf"),
-            f21.map(|f| f.text.as_str()).unwrap_or("0"),
-            cf.as_ref().map(|c| c.0.as_str()).unwrap_or(""),
-            cf_text.trim_start_matches('='),
-            agrees_csv,
-        ));
         SepCells {
             theta: num(&s.theta_s.text),
             ts: match &s.t_s {
@@ -242,18 +220,15 @@ impl Builder<'_> {
         }
     }
 
-    /// Tables 1 (from the top) and 2 (from small starts), and `separation.csv`.
-    fn separation(&mut self) -> Result<(Table, Table, String)> {
+    /// Tables 1 (from the top) and 2 (from small starts).
+    fn separation(&mut self) -> Result<(Table, Table)> {
         let d = self.cfg.digits;
-        let mut csv = String::from(
-            "floor,contact,theta0,digits,theta_s,t_s,F21_at_s,closed_form,closed_form_value,agrees\n",
-        );
         let (mut top, mut start) = (Vec::new(), Vec::new());
         for (vi, v) in VARIANTS.iter().enumerate() {
             for (si, th0) in TABLE_STARTS.iter().enumerate() {
                 let cf = closed_form(*v, th0)?;
                 let c = match self.data.sep.get(vi).and_then(|s| s.get(si)) {
-                    Some(Ok(s)) => self.sep_cells(*v, th0, s, &cf, &mut csv),
+                    Some(Ok(s)) => self.sep_cells(*v, th0, s, &cf),
                     Some(Err(e)) => {
                         self.problems
                             .push(format!("{} from theta0 = {th0}: {e}", variant_name(*v)));
@@ -305,7 +280,7 @@ impl Builder<'_> {
             cols(["contact model", "θ₀ [rad]", "θₛ [rad]", "tₛ [τ]", "closed form", "closed form value", "agrees"]),
             start,
         );
-        Ok((t1, t2, csv))
+        Ok((t1, t2))
     }
 
     /// Table 3: the forces of the main case at chosen angles.
@@ -421,7 +396,7 @@ impl Builder<'_> {
     }
 
     /// Table 5: θs at chosen points of the parameter plane.
-    fn plane(&mut self) -> Result<Table> {
+    fn plane(&mut self) -> Table {
         let td = self.cfg.plane_table_digits;
         let mut rows = Vec::new();
         for k2 in PLANE_K2 {
@@ -436,52 +411,52 @@ impl Builder<'_> {
                 let what = || format!("plane m₂/m₁ = {r}, k2 = {k2}");
                 row.push(self.cell(self.data.plane.get(&key), what, |v| num(&v.text)));
             }
-            row.extend(self.fixed_cells(k2)?);
             rows.push(row);
         }
         let ratios = PLANE_TABLE_RATIOS.iter().map(|r| format!("m₂/m₁ = {r}"));
-        let fixed = [
-            "fixed lower cylinder (oracle)",
-            "arccos(2/(3 + k₂))",
-            "agrees",
-        ]
-        .map(String::from);
-        Ok(table(
-            "plane",
+        table(
+            "plane-points",
             "θₛ at chosen points of the parameter plane",
             format!(
                 "θₛ [rad] with both contacts rolling, from rest at the top, m₁ = r₁ = r₂ = g = 1, k₁ = 1/2, for \
-                 several mass ratios m₂/m₁ and k₂ ({td} verified digits), and for a fixed lower cylinder ({} verified \
-                 digits) next to its closed form, eq. (36). As m₂/m₁ → 0 the lower cylinder stops moving and θₛ tends \
-                 to the fixed-lower value.",
+                 several mass ratios m₂/m₁ and k₂ ({td} verified digits). As m₂/m₁ → 0 the lower cylinder stops \
+                 moving and θₛ tends to the held-lower value of the next table."
+            ),
+            cols(["k₂".to_string()].into_iter().chain(ratios)),
+            rows,
+        )
+    }
+
+    /// Table 6: a held lower cylinder's θs against its closed form.
+    fn plane_fixed(&mut self) -> Result<Table> {
+        let mut rows = Vec::new();
+        for k2 in PLANE_K2 {
+            let mut row = vec![num(k2)];
+            row.extend(self.fixed_cells(k2)?);
+            rows.push(row);
+        }
+        Ok(table(
+            "plane-fixed",
+            "θₛ of a held lower cylinder against its closed form",
+            format!(
+                "The lower cylinder held fixed, the contact rolling, from rest at the top: the oracle's θₛ [rad] \
+                 ({} verified digits) next to the closed form arccos(2/(3 + k₂)) of eq. (36), evaluated \
+                 independently and rounded to the same digits.",
                 self.cfg.digits
             ),
-            cols(["k₂".to_string()].into_iter().chain(ratios).chain(fixed)),
+            cols(["k₂", "θₛ, oracle", "arccos(2/(3 + k₂))", "agrees"]),
             rows,
         ))
     }
 
-    /// `plane.csv`: every point computed.
-    fn plane_csv(&mut self) -> String {
-        let mut csv = String::from("floor,contact,m2_over_m1,k2,k1,digits,theta_s\n");
-        for (k, v) in &self.data.plane {
-            let floor = match k.floor {
-                FloorKey::Roll => "roll",
-                FloorKey::Fixed => "fixed",
-            };
-            let val = v.as_ref().map_or("not verified", |v| v.text.as_str());
-            csv.push_str(&format!(
-                "{floor},roll,{},{},0.5,{},{val}\n",
-                k.ratio, k.k2, k.digits
-            ));
-        }
+    /// Points of the parameter plane that could not be verified, as a problem.
+    fn plane_failures(&mut self) {
         let failed = self.data.plane.values().filter(|v| v.is_err()).count();
         if failed > 0 {
             self.problems.push(format!(
                 "{failed} parameter-plane points could not be verified and are left out of the figures"
             ));
         }
-        csv
     }
 
     /// Points of a variant's curves that could not be verified or computed,
@@ -561,7 +536,7 @@ impl Builder<'_> {
             paragraphs: vec![format!(
                 "What the oracle found for each contact model, started from rest at the top (the limit θ₀ → 0+, where the \
                  time to separation is infinite), with its verified values rounded here to 6 decimals (to {} digits in \
-                 `separation.csv` and from `cylroll separation`). Forces are in units of m₁g. Any point that could not be \
+                 `separation-top.csv` and from `cylroll separation`). Forces are in units of m₁g. Any point that could not be \
                  verified is listed here too.",
                 self.cfg.digits
             )],
@@ -601,17 +576,16 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
         cfg,
         problems: Vec::new(),
     };
-    let (t1, t2, separation_csv) = b.separation()?;
+    let (t1, t2) = b.separation()?;
     let t3 = b.forces();
     let t4 = b.friction();
-    let t5 = b.plane()?;
-    let plane_csv = b.plane_csv();
+    let t5 = b.plane();
+    let t6 = b.plane_fixed()?;
+    b.plane_failures();
     let notes = b.notes();
     Ok(Tables {
-        tables: vec![t1, t2, t3, t4, t5],
+        tables: vec![t1, t2, t3, t4, t5, t6],
         notes,
-        separation_csv,
-        plane_csv,
         problems: b.problems,
     })
 }
@@ -619,7 +593,7 @@ pub fn tables(data: &Data, cfg: &Config) -> Result<Tables> {
 /// A verified value rounded for prose.
 fn r6(v: &Verified) -> String {
     let x = v.value.to_f64();
-    super::plot::minus(&format!("{x:.6}"))
+    super::model::minus(&format!("{x:.6}"))
 }
 
 /// Plain words for the oracle's technical names in a note it wrote.
