@@ -215,7 +215,7 @@ fn intro(cfg: &Config) -> Vec<String> {
             "Units and conventions: unless said otherwise m₁ = m₂ = r₁ = r₂ = g = 1 and k₁ = k₂ = 1/2 (identical \
              solid cylinders); time in units of {} and forces in units of m₁g (so N₁ = 2 and N₁₂ = 1 at rest at \
              the top); angles in radians (degrees in parentheses). θ is the line of centres measured clockwise from the vertical; φ₁ the clockwise rotation of \
-             cylinder 1; φ₂ the paper's angle (eq. 2). F₁, N₁: the floor's force on cylinder 1 (the holder's when \
+             cylinder 1; φ₂ the paper's angle (eq. 2) counted from the start (φ₂ = 0 at t = 0; the paper's is φ₂ − r₁θ₀/r₂). F₁, N₁: the floor's force on cylinder 1 (the holder's when \
              it is fixed); F₂₁: the friction force of cylinder 1 on cylinder 2; N₁₂: the normal force between the \
              cylinders, which vanishes at separation θₛ. A start from rest exactly at the top takes infinitely \
              long, so the plots against time start from rest at θ₀ = {}; the plots against θ and the main tables \
