@@ -164,6 +164,8 @@ READY = r"""
 (() => [...document.querySelectorAll('object')]
   .filter(o => o.offsetParent !== null)
   .every(o => o.contentDocument && o.contentDocument.documentElement
+              // not the about:blank placeholder an <object> holds before its SVG
+              && o.contentDocument.documentElement.tagName.toLowerCase() === 'svg'
               && o.contentDocument.readyState === 'complete'))()
 """
 

@@ -350,3 +350,59 @@ fn the_golden_files_carry_the_branch_point_of_the_independent_derivation() {
     }
     assert!(seen >= 8, "only {seen} golden cases with a branch point");
 }
+
+/// `--rigorous`: θ* and t* of every ideal case with a branch point are
+/// enclosed (the sign change of the free normal acceleration proved, and
+/// proved to come before θs), each enclosure contains the independent
+/// derivation's value, and proves every digit asked.
+#[test]
+fn the_branch_point_of_the_ideal_models_is_proved_and_contains_the_independent_value() {
+    use cylroll::oracle::ideal::Oracle as Ideal;
+    let fx = fixture();
+    let mut seen = 0;
+    for (case, t) in fx.iter() {
+        let Some(t) = t.as_table() else { continue };
+        let Some(model) = t.get("model").and_then(|m| m.as_str()) else {
+            continue;
+        };
+        let m = model_of(model);
+        let Some(ideal) = m.ideal() else { continue };
+        if s(t, "theta_star") == "none" {
+            continue;
+        }
+        seen += 1;
+        let mut o = Ideal::new(&ideal, DIGITS).unwrap();
+        let th_s = o.separation_angle().unwrap();
+        let start = o.branch_point(&th_s).unwrap().expect("a branch point");
+        let p = cylroll::numeric::bits_for_digits(DIGITS) + 32;
+        let (ths, _) = o.rigorous_separation(p).unwrap();
+        let (th, tt) = o
+            .rigorous_branch_point(&start.value, &ths.iv, p)
+            .unwrap_or_else(|e| panic!("[{case}] {e}"));
+        let want = Float::with_val(P, Float::parse(s(t, "theta_star")).unwrap());
+        assert!(
+            th.iv.contains(&Float::with_val(th.iv.prec(), &want)),
+            "[{case}] theta* enclosure {:?} misses {want}",
+            th.iv
+        );
+        assert!(
+            th.shown.digits >= DIGITS,
+            "[{case}] {} digits",
+            th.shown.digits
+        );
+        assert!(th.iv.hi < ths.iv.lo, "[{case}] theta* not before theta_s");
+        let tt = tt.unwrap_or_else(|e| panic!("[{case}] t*: {e}"));
+        let want_t = Float::with_val(P, Float::parse(s(t, "t_star")).unwrap());
+        assert!(
+            tt.iv.contains(&Float::with_val(tt.iv.prec(), &want_t)),
+            "[{case}] t* enclosure {:?} misses {want_t}",
+            tt.iv
+        );
+        assert!(
+            tt.shown.digits >= DIGITS,
+            "[{case}] t*: {} digits",
+            tt.shown.digits
+        );
+    }
+    assert!(seen >= 6, "only {seen} ideal cases with a branch point");
+}

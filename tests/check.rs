@@ -1,4 +1,7 @@
-//! `cylroll check`: an honest f64 integrator passes, a perturbed one fails.
+//! `cylroll check`: an honest f64 integrator passes, a perturbed one fails;
+//! the oracle's own golden files pass; a wrong value or mode fails at its
+//! column and row, in its phase; a candidate that parts at the branch point
+//! is judged against the part branch; refusals name the file and the row.
 
 use assert_cmd::Command;
 use std::fmt::Write;
@@ -88,11 +91,514 @@ fn malformed_candidates_are_named() {
         ("t,theta\n0,abc\n", "not a number"),
         ("t,theta\n0,0.05,1\n", "fields"),
         ("t,theta\n0,nan\n", "not finite"),
-        ("t,theta\n100,1\n", "after the first impact"),
+        ("t,theta\n100,1\n", "every row, from row 1, is after it"),
+        ("t,theta\n0,0.05\n1,abc\n", "row 2, column theta"),
+        ("t,theta\n0,0.05\n1,1/3\n", "row 2, column theta"),
+        (
+            "t,theta\n0,0.05\n0.5,0.05\n0.25,0.05\n",
+            "row 3: t = 0.25 is before",
+        ),
+        ("t,theta\n-1,0.05\n", "row 1: t = -1 is before the start"),
     ] {
         let out = run(csv, &[]);
         assert_eq!(out.status.code(), Some(2), "{csv:?}");
         let err = String::from_utf8_lossy(&out.stderr);
-        assert!(err.contains(needle), "{csv:?}: {err}");
+        // the file is named, and the row where one is at fault
+        assert!(
+            err.contains(needle) && err.contains("cand.csv"),
+            "{csv:?}: {err}"
+        );
     }
+}
+
+/// Runs `cylroll check FILE ARGS…` from the repository.
+fn check_file(path: &std::path::Path, args: &[&str]) -> std::process::Output {
+    Command::cargo_bin("cylroll")
+        .unwrap()
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .arg("check")
+        .arg(path)
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn json(out: &std::process::Output) -> serde_json::Value {
+    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "{e}: {}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        )
+    })
+}
+
+fn golden_names() -> Vec<String> {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/golden/cases");
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| {
+            let p = e.unwrap().path();
+            (p.extension()? == "toml").then(|| p.file_stem()?.to_str().map(String::from))?
+        })
+        .collect();
+    names.sort();
+    names
+}
+
+fn golden_csv(name: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("golden/data/{name}.csv"))
+}
+
+#[test]
+fn every_golden_file_passes_its_own_case_mode_column_included() {
+    let names = golden_names();
+    assert!(names.len() >= 19, "{names:?}");
+    for name in &names {
+        let out = check_file(&golden_csv(name), &["--case", name, "--format", "json"]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{name}: {}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v = json(&out);
+        assert_eq!(v["verdict"], "pass", "{name}");
+        // every column of the schema is judged, the mode column too
+        let cols: Vec<&str> = v["columns"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c["column"].as_str().unwrap())
+            .collect();
+        assert_eq!(cols.len(), 21, "{name}: {cols:?}");
+        assert_eq!(cols.last(), Some(&"mode"), "{name}");
+        // every phase passes, and every event the candidate's rows bracket
+        assert!(v["phases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|p| p["passed"] == true));
+        assert!(v["events"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|e| e["passed"] != false && e["kind"] != "spurious"));
+        // a file that parts at the end of the closed branch is judged on it
+        assert!(v["branch"]["lawful"] == true, "{name}");
+        assert_ne!(v["branch"]["followed"], "part", "{name}: {}", v["branch"]);
+    }
+    // the example, and the same model as a parameter file
+    for args in [
+        ["--case", "main_mu_0_3"],
+        ["--params", "golden/cases/main_mu_0_3.toml"],
+    ] {
+        let out = check_file(&golden_csv("main_mu_0_3"), &args);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains("phase 2 stick/slip+"), "{text}");
+        assert!(text.contains("slip_onset"), "{text}");
+    }
+}
+
+/// The golden CSV of `name` with one cell changed by `f` (row is 1-based).
+fn edited(name: &str, row: usize, column: &str, f: impl Fn(&str) -> String) -> tempfile::TempDir {
+    let text = std::fs::read_to_string(golden_csv(name)).unwrap();
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    let k = lines[0].split(',').position(|c| c == column).unwrap();
+    let mut cells: Vec<String> = lines[row].split(',').map(String::from).collect();
+    cells[k] = f(&cells[k]);
+    lines[row] = cells.join(",");
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("cand.csv"), lines.join("\n") + "\n").unwrap();
+    dir
+}
+
+#[test]
+fn a_perturbed_column_fails_at_its_column_row_and_phase() {
+    // x2 at row 12 (t = 1.60325, sticking) of main_mu_0_3, off by 1e-6 relative
+    let dir = edited("main_mu_0_3", 12, "x2", |c| {
+        format!("{:e}", c.parse::<f64>().unwrap() * (1.0 + 1e-6))
+    });
+    let out = check_file(
+        &dir.path().join("cand.csv"),
+        &["--case", "main_mu_0_3", "--format", "json"],
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let v = json(&out);
+    assert_eq!(v["verdict"], "fail");
+    assert_eq!(v["first_failure"]["column"], "x2");
+    assert_eq!(v["first_failure"]["row"], "12");
+    assert_eq!(v["first_failure"]["t"], "1.60325");
+    let x2 = v["columns"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["column"] == "x2")
+        .unwrap();
+    assert_eq!(x2["failures"], "1");
+    // the column's tolerance: rtol 1e-8, atol 1e-10 x its scale r = 2
+    assert_eq!(x2["rtol"], "1e-8");
+    assert_eq!(x2["atol"], "2.000e-10");
+    // the failure is in the first phase (sticking); the others pass
+    let phases = v["phases"].as_array().unwrap();
+    assert_eq!(phases[0]["mode"], "stick/stick");
+    assert_eq!(phases[0]["passed"], false);
+    assert!(
+        phases[1..].iter().all(|p| p["passed"] == true),
+        "{phases:?}"
+    );
+    assert_eq!(x2["phases"][0]["failures"], "1");
+    assert_eq!(x2["phases"][1]["failures"], "0");
+    // a per-column tolerance lets it through
+    let out = check_file(
+        &dir.path().join("cand.csv"),
+        &["--case", "main_mu_0_3", "--tol", "x2=1e-5"],
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+}
+
+#[test]
+fn a_wrong_mode_fails_at_its_row_and_as_an_event() {
+    // row 5 (t = 0.583) says flight where the contacts stick
+    let dir = edited("main_mu_0_3", 5, "mode", |_| "flight".into());
+    let out = check_file(
+        &dir.path().join("cand.csv"),
+        &["--case", "main_mu_0_3", "--format", "json"],
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let v = json(&out);
+    assert_eq!(v["first_failure"]["column"], "mode");
+    assert_eq!(v["first_failure"]["row"], "5");
+    assert_eq!(v["first_failure"]["candidate"], "flight");
+    assert_eq!(v["first_failure"]["oracle"], "stick/stick");
+    // its changes of mode are events the reference does not have
+    let spurious: Vec<&serde_json::Value> = v["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["kind"] == "spurious")
+        .collect();
+    assert_eq!(spurious.len(), 2, "{}", v["events"]);
+    assert_eq!(spurious[0]["mode"], "flight");
+    assert_eq!(spurious[0]["passed"], false);
+    // a slip onset at the wrong row: the mode column and the event fail
+    let dir = edited("main_mu_0_3", 29, "mode", |_| "stick/slip+".into());
+    let out = check_file(&dir.path().join("cand.csv"), &["--case", "main_mu_0_3"]);
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("FAIL: first at row 29 (t = 4.081), column mode"),
+        "{text}"
+    );
+}
+
+/// The main case (identical solid cylinders, both rolling, from rest at
+/// θ0 = 1/20) as an engine that parts where parting first becomes lawful:
+/// classical RK4 of eq. (23) while the free relative normal acceleration
+/// r θ̇² − g cos θ of the released cylinders is negative, then the flight of
+/// the released bodies in closed form. `part_at_theta` parts instead where θ
+/// reaches that angle. Rows every 1/64 (exact decimals) up to `t_last`, with
+/// the columns t, theta, theta_dot, y2 and mode.
+///
+/// The flight, derived here: with φ1 cyclic and at rest at the start, p_φ1 = 0
+/// gives cylinder 1's rolling rate ω1 = θ̇ (1 − 2 cos θ)/3 (clockwise, r1 = 1),
+/// its centre V1 = (ω1, 0) kept after parting (a free rolling cylinder), and
+/// cylinder 2's centre V2 = V1 + r θ̇ (cos θ, −sin θ) (r = 2), ballistic after
+/// parting (g = 1); θ in flight is the direction of the line of centres.
+fn parting_engine(part_at_theta: Option<f64>, t_last: f64) -> String {
+    let (g, r) = (1.0f64, 2.0f64);
+    let h = 1.0 / 4096.0;
+    let f = |y: (f64, f64)| (y.1, accel(y.0, y.1));
+    let rk4 = |y: (f64, f64), h: f64| {
+        let k1 = f(y);
+        let k2 = f((y.0 + h / 2.0 * k1.0, y.1 + h / 2.0 * k1.1));
+        let k3 = f((y.0 + h / 2.0 * k2.0, y.1 + h / 2.0 * k2.1));
+        let k4 = f((y.0 + h * k3.0, y.1 + h * k3.1));
+        (
+            y.0 + h / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0),
+            y.1 + h / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1),
+        )
+    };
+    // parting: the first zero of this function of the closed state
+    let part = |y: (f64, f64)| match part_at_theta {
+        Some(a) => y.0 - a,
+        None => r * y.1 * y.1 - g * y.0.cos(),
+    };
+    let mut out = String::from("t,theta,theta_dot,y2,mode\n");
+    let per_row = 64; // 1/64 per row, 1/4096 per step
+    let mut y = (0.05f64, 0.0f64);
+    let mut n = 0usize;
+    let mut parted: Option<(f64, (f64, f64))> = None;
+    loop {
+        let t = n as f64 * h;
+        if t > t_last {
+            break;
+        }
+        if parted.is_none() {
+            let next = rk4(y, h);
+            if part(y) < 0.0 && part(next) >= 0.0 {
+                // the zero inside the step, by bisection on RK4 sub-steps
+                let (mut a, mut b) = (0.0, h);
+                for _ in 0..60 {
+                    let m = 0.5 * (a + b);
+                    if part(rk4(y, m)) < 0.0 {
+                        a = m;
+                    } else {
+                        b = m;
+                    }
+                }
+                parted = Some((t + b, rk4(y, b)));
+            }
+        }
+        if n % per_row == 0 {
+            let t_text = format!("{}", (n / per_row) as f64 / 64.0);
+            match parted {
+                Some((tp, (th, thd))) if t >= tp => {
+                    // the flight from the parting state
+                    let w1 = thd * (1.0 - 2.0 * th.cos()) / 3.0;
+                    let (vx2, vy2) = (w1 + r * thd * th.cos(), -r * thd * th.sin());
+                    let tau = t - tp;
+                    let dx = r * th.sin() + (vx2 - w1) * tau;
+                    let dy = r * th.cos() + vy2 * tau - 0.5 * g * tau * tau;
+                    let (dvx, dvy) = (vx2 - w1, vy2 - g * tau);
+                    let theta = dx.atan2(dy);
+                    let theta_dot = (dy * dvx - dx * dvy) / (dx * dx + dy * dy);
+                    writeln!(
+                        out,
+                        "{t_text},{theta:e},{theta_dot:e},{:e},flight",
+                        1.0 + dy
+                    )
+                    .unwrap();
+                }
+                _ => {
+                    let y2 = 1.0 + r * y.0.cos();
+                    writeln!(out, "{t_text},{:e},{:e},{y2:e},stick/stick", y.0, y.1).unwrap();
+                }
+            }
+        }
+        if parted.is_none() || t < parted.unwrap().0 {
+            y = rk4(y, h);
+        }
+        n += 1;
+    }
+    assert!(parted.is_some(), "the engine never parts");
+    out
+}
+
+#[test]
+fn a_candidate_that_parts_at_the_branch_point_is_judged_on_the_part_branch() {
+    // up to t = 7.0, before the part branch's first impact (7.084)
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    std::fs::write(&path, parting_engine(None, 7.0)).unwrap();
+    let tol = ["--rtol", "1e-7", "--atol", "1e-9", "--format", "json"];
+    let args = |extra: &[&'static str]| {
+        let mut a = vec!["--case", "main_roll_roll"];
+        a.extend_from_slice(&tol);
+        a.extend_from_slice(extra);
+        a
+    };
+    let out = check_file(&path, &args(&[]));
+    let v = json(&out);
+    assert_eq!(out.status.code(), Some(0), "{v:#}");
+    assert_eq!(v["branch"]["requested"], "auto");
+    assert_eq!(v["branch"]["followed"], "part", "{}", v["branch"]);
+    assert_eq!(v["branch"]["parting"]["found_by"], "mode");
+    // θ* as `cylroll separation` reports it (theta_indeterminate), inside the
+    // candidate's bracket: the event is matched with no error
+    let sep = Command::cargo_bin("cylroll")
+        .unwrap()
+        .args(["separation", "--params", "golden/cases/main_roll_roll.toml"])
+        .args(["--digits", "20", "--format", "json"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let sep = json(&sep);
+    let star = sep["theta_indeterminate"].as_str().unwrap();
+    assert_eq!(v["branch"]["window"]["theta_indeterminate"], star);
+    let star: f64 = star.parse().unwrap();
+    let theta = &v["branch"]["parting"]["theta"];
+    let (a, b): (f64, f64) = (
+        theta[0].as_str().unwrap().parse().unwrap(),
+        theta[1].as_str().unwrap().parse().unwrap(),
+    );
+    assert!(a < star && star < b, "{a} {star} {b}");
+    let ev = v["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|e| e["mode"] == "flight" && e["passed"] == true)
+        .unwrap_or_else(|| panic!("{}", v["events"]));
+    assert_eq!(ev["error"], "0.000e0");
+    // the same rows judged against the closed branch fail in the flight
+    let out = check_file(&path, &args(&["--branch", "stay"]));
+    assert_eq!(out.status.code(), Some(1));
+    let v = json(&out);
+    let last = v["phases"].as_array().unwrap().last().unwrap().clone();
+    assert_eq!(last["mode"], "flight");
+    assert_eq!(last["passed"], false);
+    // and --branch part agrees with auto
+    let out = check_file(&path, &args(&["--branch", "part"]));
+    assert_eq!(out.status.code(), Some(0));
+}
+
+#[test]
+fn a_candidate_that_parts_inside_the_window_or_before_it_is_judged_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    // inside the window [0.963, 1.048], at θ = 1: the reference that parts at
+    // the angle its flight rows fit, found to ~1e-12, and it passes
+    std::fs::write(&path, parting_engine(Some(1.0), 7.0)).unwrap();
+    let out = check_file(
+        &path,
+        &[
+            "--case",
+            "main_roll_roll",
+            "--rtol",
+            "1e-7",
+            "--atol",
+            "1e-9",
+            "--format",
+            "json",
+        ],
+    );
+    let v = json(&out);
+    assert_eq!(out.status.code(), Some(0), "{v:#}");
+    let followed = v["branch"]["followed"].as_str().unwrap();
+    let at: f64 = followed.strip_prefix("part-at ").unwrap().parse().unwrap();
+    assert!((at - 1.0).abs() < 1e-9, "{followed}");
+    assert!(v["branch"]["why"]
+        .as_str()
+        .unwrap()
+        .contains("inside the window"));
+    // before the branch point: not lawful, a failure whatever the values
+    std::fs::write(&path, parting_engine(Some(0.8), 6.0)).unwrap();
+    let out = check_file(
+        &path,
+        &[
+            "--case",
+            "main_roll_roll",
+            "--rtol",
+            "1",
+            "--atol",
+            "1",
+            "--format",
+            "json",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let v = json(&out);
+    assert_eq!(v["branch"]["lawful"], false);
+    assert!(
+        v["branch"]["why"]
+            .as_str()
+            .unwrap()
+            .contains("before the branch point"),
+        "{}",
+        v["branch"]
+    );
+}
+
+#[test]
+fn rows_after_the_end_of_the_model_are_reported_not_refused() {
+    // main_roll_roll ends with the impact at t = 7.0982
+    let csv = "t,theta\n0,0.05\n7.5,1\n8,1\n";
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    std::fs::write(&path, csv).unwrap();
+    let out = check_file(&path, &["--case", "main_roll_roll", "--format", "json"]);
+    assert_eq!(out.status.code(), Some(0));
+    let v = json(&out);
+    assert_eq!(v["rows"], "3");
+    assert_eq!(v["rows_after_end"], "2");
+    assert_eq!(v["first_after_end"]["row"], "2");
+    assert_eq!(v["first_after_end"]["t"], "7.5");
+    assert_eq!(v["end"]["event"], "impact");
+    let out = check_file(&path, &["--case", "main_roll_roll"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("2 row(s) after the end of the model (the impact at t = 7.098"),
+        "{text}"
+    );
+    // refused on request, naming the file and the row
+    let out = check_file(&path, &["--case", "main_roll_roll", "--past-end", "refuse"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("cand.csv") && err.contains("row 2: t = 7.5 is after the end"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_rtol_finer_than_the_oracle_digits_is_refused_and_a_verdict_on_its_bound_left_open() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    std::fs::write(&path, "t,theta\n0,0.05\n").unwrap();
+    for (args, needle) in [
+        (vec!["--rtol", "1e-19"], "invalid rtol = \"1e-19\""),
+        (
+            vec!["--rtol", "1e-25", "--digits", "20"],
+            "give --digits 27 or more",
+        ),
+        (
+            vec!["--tol", "theta=1e-30"],
+            "invalid tol = \"theta=1e-30\"",
+        ),
+    ] {
+        let mut a = vec!["--case", "main_roll_roll"];
+        a.extend(args);
+        let out = check_file(&path, &a);
+        assert_eq!(out.status.code(), Some(2), "{a:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains(needle) && err.contains("20 significant digits"),
+            "{err}"
+        );
+    }
+    // the same rtol with the digits to judge it
+    let out = check_file(
+        &path,
+        &[
+            "--case",
+            "main_roll_roll",
+            "--rtol",
+            "1e-25",
+            "--digits",
+            "27",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(0));
+    // a zero tolerance: the oracle's value is known to within its error
+    // bound only, so equality is a verdict left open (exit 3), not a pass
+    let out = check_file(
+        &path,
+        &[
+            "--case",
+            "main_roll_roll",
+            "--rtol",
+            "0",
+            "--atol",
+            "0",
+            "--format",
+            "json",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(3));
+    let v = json(&out);
+    assert_eq!(v["verdict"], "undecided");
+    assert_eq!(v["first_undecided"]["row"], "1");
+    assert_eq!(v["first_failure"], serde_json::Value::Null);
 }

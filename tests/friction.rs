@@ -1315,3 +1315,50 @@ fn energy_balance_note_keeps_its_exponent_at_many_digits() {
         .unwrap_or_else(|| panic!("{note}"));
     assert!(exp > 352, "{note}");
 }
+
+/// A large μ at a rolling contact slips just before N12 = 0: |F21| = μ N12
+/// at θs − δ with δ ≈ |F21(θs)| / (μ |dN12/dθ(θs)|), and here (the main case)
+/// no mode with the contact closed is consistent there, so the contact opens
+/// at once: θs(μ) = θs(∞) − δ. The slope is taken from the rolling model's
+/// forces (N12 at θs − 10⁻¹⁵ over 10⁻¹⁵), the θs(μ) from the
+/// frictional motion; the pair of cone roots ~1/μ apart around N12 = 0 must
+/// not be merged however large μ is (a 64-bit isolation merged them from
+/// μ ≈ 10⁹ on and printed the rolling θs as verified).
+#[test]
+fn a_large_mu_opens_the_contact_one_over_mu_before_the_rolling_separation() {
+    let num = |args: &[&str], key: &str| -> Float {
+        let mut a = args.to_vec();
+        a.extend_from_slice(&["--theta0", "0.1", "--digits", "45", "--format", "json"]);
+        let (code, out, err) = cli(&a);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        f(v[key].as_str().unwrap_or_else(|| panic!("{key} in {out}")))
+    };
+    let ths = num(&["separation"], "theta_s");
+    // one-sided (N12(θs) = 0; θs itself rounded to 45 digits may lie past it)
+    let h = Float::with_val(300, 1e-15f64);
+    let at = |x: &Float| x.to_string_radix(10, Some(45));
+    let before = Float::with_val(300, &ths - Float::with_val(300, 1e-40f64));
+    let f21 = num(&["forces", "--theta", &at(&before)], "F21");
+    let n_lo = num(
+        &["forces", "--theta", &at(&Float::with_val(300, &ths - &h))],
+        "N12",
+    );
+    let slope = Float::with_val(300, &n_lo / &h);
+    let c = Float::with_val(300, f21.abs()) / Float::with_val(300, slope.abs());
+    for (mu, tol) in [
+        ("1e9", 1e-7),
+        ("1e12", 1e-10),
+        ("1e20", 1e-12),
+        ("1e30", 1e-12),
+    ] {
+        let th = num(&["separation", "--mu", mu], "theta_s");
+        let delta =
+            Float::with_val(300, &ths - &th) * Float::with_val(300, Float::parse(mu).unwrap());
+        let rel = (Float::with_val(300, &delta / &c) - 1u32).abs().to_f64();
+        assert!(
+            rel < tol,
+            "mu = {mu}: theta_s = {th}, (theta_s(inf) - theta_s) mu = {delta} vs {c} (rel {rel:e})"
+        );
+    }
+}

@@ -791,3 +791,82 @@ fn json_types_the_lower_bounds() {
     let j: serde_json::Value = serde_json::from_slice(&ok.stdout).unwrap();
     assert!(j.get("lower_bounds").is_none());
 }
+
+/// A closed standard output (`>&-`) is exit 4 with a one-line error before
+/// anything is computed, while `> /dev/null` is an ordinary exit 0; a
+/// friction coefficient `S,K` is one quoted CSV field.
+#[test]
+fn a_closed_stdout_is_exit_4_and_csv_fields_are_quoted() {
+    let bin = assert_cmd::cargo::cargo_bin("cylroll");
+    let run = |redirect: &str| {
+        std::process::Command::new("sh")
+            .arg("-c")
+            .arg(format!("exec \"$0\" separation --digits 5 {redirect}"))
+            .arg(&bin)
+            .output()
+            .unwrap()
+    };
+    let closed = run(">&-");
+    assert_eq!(closed.status.code(), Some(4));
+    let err = String::from_utf8_lossy(&closed.stderr);
+    assert!(
+        err.contains("standard output") && err.contains("closed"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert_eq!(run("> /dev/null").status.code(), Some(0));
+    let out = cyl()
+        .args(["separation", "--theta0", "0.1", "--mu-contact", "0.5,0.4"])
+        .args(["--digits", "10", "--format", "csv"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let line = text.lines().find(|l| l.starts_with("mu_contact,")).unwrap();
+    assert_eq!(line, "mu_contact,\"0.5,0.4\",,");
+}
+
+/// A message quotes a computed value only to the digits its working
+/// precision holds: at `--digits 1` the first impact of the frictional main
+/// case (t = 5.8383755173628516…) and the ideal θs (1.0507720620185…) are
+/// quoted after "≈" with every printed digit correct.
+#[test]
+fn messages_print_only_digits_the_computation_holds() {
+    for (args, truth) in [
+        (
+            &[
+                "trajectory",
+                "--theta0",
+                "0.1",
+                "--mu",
+                "0.3",
+                "--times",
+                "100.5",
+            ][..],
+            5.838_375_517_362_852,
+        ),
+        (
+            &["trajectory", "--theta0", "0.1", "--times", "100.5"][..],
+            5.933_362_444_395_921,
+        ),
+        (
+            &["time", "--theta0", "0.1", "--to", "1.1"][..],
+            1.050_772_062_018_511,
+        ),
+    ] {
+        let out = cyl().args(args).args(["--digits", "1"]).output().unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        let quoted = err
+            .split('≈')
+            .nth(1)
+            .and_then(|r| r.split_whitespace().next())
+            .unwrap_or_else(|| panic!("{err}"));
+        let v: f64 = quoted.parse().unwrap();
+        let decimals = quoted.split('.').nth(1).map_or(0, str::len) as i32;
+        assert!(
+            (v - truth).abs() <= 0.5 * 10f64.powi(-decimals) * 1.0001,
+            "{args:?}: quoted {quoted}, true {truth}: {err}"
+        );
+    }
+}

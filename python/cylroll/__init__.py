@@ -21,8 +21,9 @@ The pieces:
   :meth:`Model.time`, :meth:`Model.forces`, :meth:`Model.trajectory`;
 - :class:`Value`, :class:`Separation`, :class:`Event`, :class:`Forces`,
   :class:`Trajectory` — the answers (exact decimal text, NumPy arrays);
-- :func:`check` / :func:`cylroll.testing.assert_matches_oracle` — judge
-  another program's table;
+- :func:`check` / :func:`cylroll.testing.assert_conforms` — judge another
+  program's table (per column, phase, event and branch; the scoring of
+  ``cylroll check``);
 - :mod:`cylroll.golden` — the curated cases by name;
 - the exceptions :class:`InvalidParameterError` and :class:`NotPhysicalError`
   (both ``ValueError``), :class:`VerificationError`, :class:`InputFileError`,
@@ -34,7 +35,8 @@ rung or integration step.
 """
 
 from . import _cylroll
-from ._check import CheckReport, ColumnStats, FirstFailure, check
+from ._check import (BranchReport, CheckReport, ColumnStats, EventVerdict, FirstFailure, Phase,
+                     PhaseStats, check)
 from ._errors import (CylrollError, InputFileError, InternalError, InvalidParameterError,
                       NotPhysicalError, VerificationError)
 from ._model import FRICTION_KEYS, MAX_DIGITS, MODEL_KEYS, Model
@@ -51,7 +53,8 @@ FORCE_KEYS = tuple(_cylroll.FORCE_KEYS)
 
 __all__ = [
     "Model", "Value", "Separation", "Event", "Forces", "Trajectory", "Enclosure",
-    "check", "CheckReport", "ColumnStats", "FirstFailure",
+    "check", "CheckReport", "ColumnStats", "PhaseStats", "FirstFailure", "Phase",
+    "EventVerdict", "BranchReport",
     "CylrollError", "InvalidParameterError", "NotPhysicalError", "VerificationError",
     "InputFileError", "InternalError",
     "golden", "testing",

@@ -1,28 +1,70 @@
-"""``cylroll.check``: hold another program's table against the oracle."""
+"""``cylroll.check``: hold another program's table against the oracle.
+
+The scoring is the command line's (``cylroll check``), done by the same Rust
+core: per-column tolerances, a verdict per phase of the reference, per event
+(when the candidate has a ``mode`` column) and per branch where the motion is
+not unique. The report's attribute names are the keys of
+``cylroll check --format json``.
+"""
 
 from __future__ import annotations
 
 import csv
 import io
+import json
 import os
-from typing import Any, List, Mapping, NamedTuple, Optional, Tuple, Union
+from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
 
 from . import _cylroll
 from ._model import Model, _digits
 
-__all__ = ["check", "CheckReport", "ColumnStats", "FirstFailure"]
+__all__ = ["check", "CheckReport", "ColumnStats", "PhaseStats", "FirstFailure", "Phase",
+           "EventVerdict", "BranchReport"]
 
 #: Columns that are not numbers: compared as text (the phase of each row).
 _TEXT = ("mode",)
 
 
+def _num(x: Any) -> Any:
+    """A JSON number, or the string ``inf``/``nan`` the report uses for a
+    non-finite one, as a float."""
+    if isinstance(x, str):
+        return float(x)
+    return x
+
+
+class PhaseStats(NamedTuple):
+    """One column's statistics over one phase of the reference."""
+
+    #: largest |candidate − oracle| in the phase
+    max_abs: float
+    #: the time where it occurs
+    max_abs_t: str
+    #: largest |err| / limit in the phase (inf for a row in another mode)
+    worst_err_over_limit: float
+    #: rows out of tolerance (``mode``: rows in another mode)
+    failures: int
+    #: values whose verdict the oracle's error bound leaves open
+    undecided: int
+    #: no failure and nothing undecided in the phase
+    passed: bool
+
+
 class ColumnStats(NamedTuple):
-    """Per-column statistics of a check."""
+    """Per-column statistics of a check (the keys of the JSON report)."""
 
     #: column name
-    name: str
+    column: str
+    #: the relative tolerance applied (None for ``mode``)
+    rtol: Optional[float]
+    #: the absolute tolerance applied, in the column's own units (None for ``mode``)
+    atol: Optional[float]
+    #: the column's natural scale (the default atol is ``atol`` times it)
+    scale: Optional[float]
+    #: whether ``tol=`` set this column's tolerance
+    tol_set: bool
     #: largest |candidate − oracle|
     max_abs: float
     #: the time where it occurs (as the candidate wrote it)
@@ -32,13 +74,22 @@ class ColumnStats(NamedTuple):
     max_rel: Optional[float]
     #: the time where it occurs
     max_rel_t: str
+    #: largest |candidate − oracle| / (atol + rtol·|oracle|): above 1 fails
+    worst_err_over_limit: float
+    #: which term of that limit was the larger where it occurs: ``"atol"``
+    #: (an oracle value near 0), ``"rtol"``, or ``"mode"``
+    worst_bound: str
     #: rows out of tolerance
     failures: int
-    #: largest |candidate − oracle| / (atol + rtol·|oracle|): above 1 fails
-    worst_ratio: float
-    #: which term of that limit was the larger where it occurs: ``"atol"``
-    #: (an oracle value near 0) or ``"rtol"``
-    worst_bound: str
+    #: values whose verdict the oracle's error bound leaves open
+    undecided: int
+    #: per phase of :attr:`CheckReport.phases`, in order
+    phases: List[PhaseStats]
+
+    @property
+    def name(self) -> str:
+        """The column name (an alias of :attr:`column`)."""
+        return self.column
 
 
 class FirstFailure(NamedTuple):
@@ -52,43 +103,174 @@ class FirstFailure(NamedTuple):
     column: str
     #: the candidate's value as written
     candidate: str
-    #: the oracle's value (verified digits)
+    #: the oracle's value (verified digits; for ``mode`` the reference's mode)
     oracle: str
     #: the limit atol + rtol·|oracle| it exceeded
     limit: float
-    #: which term of the limit was the larger: ``"atol"`` or ``"rtol"``
+    #: which term of the limit was the larger: ``"atol"``, ``"rtol"`` or ``"mode"``
     bound: str
 
 
-class CheckReport:
-    """The verdict of :func:`check`.
+class Phase(NamedTuple):
+    """A phase of the reference on the candidate's rows: consecutive rows the
+    reference puts in one mode."""
 
-    ``passed``: every value within tolerance; ``columns``: a
-    :class:`ColumnStats` per judged column (in the candidate's order, without
-    ``t``); ``first_failure``: a :class:`FirstFailure` or ``None``; ``case``,
-    ``rows``, ``rtol``, ``atol``, ``digits`` (of the oracle values compared
-    against). ``str(report)`` is the command line's table.
+    #: 1-based number
+    phase: int
+    #: the reference's mode (``stick/stick``, ``stick/slip+``, ``flight``, …)
+    mode: str
+    #: time of its first row
+    t_first: str
+    #: time of its last row
+    t_last: str
+    #: its rows
+    rows: int
+    #: 1-based candidate row of its first row
+    row_first: int
+    #: and of its last
+    row_last: int
+    #: every column certainly within tolerance there
+    passed: bool
+    #: ``pass``, ``fail`` or ``undecided``
+    verdict: str
+
+
+class EventVerdict(NamedTuple):
+    """The verdict on one event of the reference, or on a change of mode of
+    the candidate the reference does not have (``kind`` ``spurious``)."""
+
+    #: ``slip_onset``, ``stick``, ``separation``, ``impact``, …, ``spurious``
+    kind: str
+    #: ``floor`` or ``contact``, where the event concerns one
+    contact: Optional[str]
+    #: the mode entered (``-`` at the end of the model)
+    mode: str
+    #: the reference's ``{"t", "theta"}`` (verified digits), None for ``spurious``
+    reference: Optional[Dict[str, str]]
+    #: the candidate's transition matched with it: ``{"from", "to", "rows",
+    #: "t", "theta"}`` (its last row in the old mode and first in the new)
+    candidate: Optional[Dict[str, Any]]
+    #: the error in θ: the oracle's θ at the nearer end of the candidate's
+    #: bracket minus the event's (0 when the event lies inside it)
+    error: Optional[float]
+    #: the verdict; None where the event is not judged
+    passed: Optional[bool]
+    #: why, in words
+    why: str
+
+
+class BranchReport(NamedTuple):
+    """The branch judged against where the motion is not unique."""
+
+    #: ``auto``, ``stay``, ``part`` or ``part-at θ``
+    requested: str
+    #: the branch followed (``stay``, ``part``, ``part-at θ``)
+    followed: str
+    #: why, in words (under ``auto``: where the candidate parted)
+    why: str
+    #: False when the candidate parted where the rigid-body motion may not
+    lawful: bool
+    #: ``{"theta_indeterminate", "theta_s"}``: where parting is lawful (None
+    #: where the motion is unique)
+    window: Optional[Dict[str, str]]
+    #: where the candidate parted (``found_by``, ``rows``, ``t``, ``theta``),
+    #: when ``auto`` looked for it and found it
+    parting: Optional[Dict[str, Any]]
+
+
+def _first(d: Optional[Mapping[str, Any]]) -> Optional[FirstFailure]:
+    if d is None:
+        return None
+    return FirstFailure(row=d["row"], t=d["t"], column=d["column"], candidate=d["candidate"],
+                        oracle=d["oracle"], limit=_num(d["limit"]), bound=d["bound"])
+
+
+def _column(c: Mapping[str, Any]) -> ColumnStats:
+    phases = [PhaseStats(max_abs=_num(p["max_abs"]), max_abs_t=p["max_abs_t"],
+                         worst_err_over_limit=_num(p["worst_err_over_limit"]),
+                         failures=p["failures"], undecided=p["undecided"], passed=p["passed"])
+              for p in c["phases"]]
+    return ColumnStats(
+        column=c["column"], rtol=c["rtol"], atol=_num(c["atol"]), scale=_num(c["scale"]),
+        tol_set=c["tol_set"], max_abs=_num(c["max_abs"]), max_abs_t=c["max_abs_t"],
+        max_rel=None if c["max_rel"] is None else _num(c["max_rel"]), max_rel_t=c["max_rel_t"],
+        worst_err_over_limit=_num(c["worst_err_over_limit"]), worst_bound=c["worst_bound"],
+        failures=c["failures"], undecided=c["undecided"], phases=phases)
+
+
+class CheckReport:
+    """The verdict of :func:`check`; the attributes are the keys of
+    ``cylroll check --format json`` (numbers as numbers).
+
+    ``passed`` (every value certainly within tolerance, every judged event
+    within ``event_tol``, the branch lawful), ``verdict`` (``"pass"``,
+    ``"fail"``, or ``"undecided"``: nothing fails but a value lies within
+    the oracle's error bound of its limit), ``columns`` (a
+    :class:`ColumnStats` per judged column, in the candidate's order, without
+    ``t``), ``phases`` (:class:`Phase`), ``events`` (:class:`EventVerdict`),
+    ``branch`` (:class:`BranchReport`), ``first_failure`` and
+    ``first_undecided`` (:class:`FirstFailure` or ``None``), ``case``,
+    ``rows``, ``rows_after_end`` and ``first_after_end`` (rows after the end
+    of the model, left out), ``end``, ``rtol``, ``atol``, ``event_tol``,
+    ``oracle_digits``; ``report`` is the whole JSON object as a dict.
+    ``str(report)`` is the command line's table.
     """
 
     def __init__(self, d: Mapping[str, Any]) -> None:
-        self.case: str = d["case"]
-        self.rtol: float = d["rtol"]
-        self.atol: float = d["atol"]
-        self.rows: int = d["rows"]
-        self.digits: int = d["digits"]
-        self.passed: bool = d["passed"]
-        self.columns: List[ColumnStats] = [ColumnStats(*c) for c in d["columns"]]
-        ff = d["first_failure"]
-        self.first_failure: Optional[FirstFailure] = None if ff is None else FirstFailure(*ff)
+        r = json.loads(d["report"])
+        self.report: Dict[str, Any] = r
+        self.case: str = r["case"]
+        self.passed: bool = bool(d["passed"])
+        self.verdict: str = d["verdict"]
+        self.rows: int = r["rows"]
+        self.rows_after_end: int = r["rows_after_end"]
+        self.first_after_end: Optional[Dict[str, Any]] = r["first_after_end"]
+        self.end: Optional[Dict[str, str]] = r["end"]
+        self.rtol: float = r["rtol"]
+        self.atol: float = r["atol"]
+        self.event_tol: float = r["event_tol"]
+        self.oracle_digits: int = r["oracle_digits"]
+        b = r["branch"]
+        self.branch = BranchReport(requested=b["requested"], followed=b["followed"],
+                                   why=b["why"], lawful=b["lawful"], window=b["window"],
+                                   parting=b["parting"])
+        self.phases: List[Phase] = [Phase(**p) for p in r["phases"]]
+        self.columns: List[ColumnStats] = [_column(c) for c in r["columns"]]
+        self.events_judged: bool = r["events_judged"]
+        self.events: List[EventVerdict] = [
+            EventVerdict(kind=e["kind"], contact=e["contact"], mode=e["mode"],
+                         reference=e["reference"], candidate=e["candidate"],
+                         error=None if e["error"] is None else _num(e["error"]),
+                         passed=e["passed"], why=e["why"])
+            for e in r["events"]]
+        self.transitions: int = r["transitions"]
+        self.first_failure: Optional[FirstFailure] = _first(r["first_failure"])
+        self.first_undecided: Optional[FirstFailure] = _first(r["first_undecided"])
         self.text: str = d["text"]
+
+    @property
+    def digits(self) -> int:
+        """The oracle's significant digits (an alias of :attr:`oracle_digits`)."""
+        return self.oracle_digits
 
     def column(self, name: str) -> ColumnStats:
         """The statistics of one column."""
         for c in self.columns:
-            if c.name == name:
+            if c.column == name:
                 return c
         raise KeyError(f"no column {name!r} was judged; judged: "
-                       f"{', '.join(c.name for c in self.columns)}")
+                       f"{', '.join(c.column for c in self.columns)}")
+
+    def event(self, kind: str, contact: Optional[str] = None) -> Optional[EventVerdict]:
+        """The first event verdict of that kind (and contact), or None."""
+        for e in self.events:
+            if e.kind == kind and (contact is None or e.contact == contact):
+                return e
+        return None
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The JSON report as a dict (numbers as numbers)."""
+        return dict(self.report)
 
     def __str__(self) -> str:
         return self.text.rstrip("\n")
@@ -104,14 +286,14 @@ def _cell(name: str, x: Any) -> str:
         raise TypeError(f"column {name}: a bool is not a number")
     if isinstance(x, (int, np.integer)):
         return str(int(x))
-    # the shortest decimal that reads back as the same float
+    # the shortest decimal that reads back as the same float (inf and nan
+    # are refused by the core, with the row named)
     return repr(float(x))
 
 
 def _from_mapping(cand: Any) -> Tuple[List[str], List[List[str]]]:
     names = [str(k) for k in cand.keys()]
     cols = []
-    keep = []
     for k, name in zip(cand.keys(), names):
         col = cand[k]
         arr = col.to_numpy() if hasattr(col, "to_numpy") else np.asarray(col)
@@ -119,26 +301,35 @@ def _from_mapping(cand: Any) -> Tuple[List[str], List[List[str]]]:
             arr = arr.reshape(1)
         if arr.ndim != 1:
             raise ValueError(f"column {name}: expected a 1-d array, got shape {arr.shape}")
-        keep.append(name)
         if name in _TEXT:
             cols.append([str(x).strip() for x in arr.tolist()])
         else:
             cols.append([_cell(name, x) for x in arr.tolist()])
     n = {len(c) for c in cols}
     if len(n) > 1:
-        lens = ", ".join(f"{k}: {len(c)}" for k, c in zip(keep, cols))
+        lens = ", ".join(f"{k}: {len(c)}" for k, c in zip(names, cols))
         raise ValueError(f"the columns have different lengths ({lens})")
-    rows = [list(r) for r in zip(*cols)]
-    return keep, rows
+    return names, [list(r) for r in zip(*cols)]
 
 
-def _from_csv(path: str) -> Tuple[List[str], List[List[str]]]:
-    with open(path, newline="") as f:
-        rows = [r for r in csv.reader(f) if any(c.strip() for c in r)]
-    if not rows:
-        return [], []
-    head = [c.strip() for c in rows[0]]
-    return head, [[r[i] if i < len(r) else "" for i in range(len(head))] for r in rows[1:]]
+def _csv_text(names: List[str], rows: List[List[str]]) -> str:
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(names)
+    w.writerows(rows)
+    return buf.getvalue()
+
+
+def _tols(tol: Optional[Mapping[str, Any]]) -> List[Tuple[str, float, Optional[float]]]:
+    out = []
+    for column, v in (tol or {}).items():
+        if isinstance(v, (tuple, list)):
+            if len(v) != 2:
+                raise ValueError(f"tol[{column!r}]: expected rtol or (rtol, atol), got {v!r}")
+            out.append((str(column), float(v[0]), None if v[1] is None else float(v[1])))
+        else:
+            out.append((str(column), float(v), None))
+    return out
 
 
 def check(
@@ -147,48 +338,73 @@ def check(
     *,
     rtol: float = 1e-8,
     atol: float = 1e-10,
+    tol: Optional[Mapping[str, Union[float, Tuple[float, Optional[float]]]]] = None,
+    branch: str = "auto",
+    part_at: Optional[Union[str, float]] = None,
+    event_tol: Optional[float] = None,
     digits: int = 20,
+    past_end: str = "report",
 ) -> CheckReport:
-    """Judges another program's table against the oracle.
+    """Judges another program's table against the oracle: the command line's
+    ``cylroll check``, by the same scoring core.
 
     ``candidate``: a mapping of column name -> 1-d array (a ``dict`` of
     NumPy arrays, a pandas ``DataFrame``) or the path of a CSV file with a
     header row. Columns are matched by name: any subset of the oracle's
     (``t, theta, theta_dot, theta_ddot, phi1, phi2, x1, x2, y2, x1_dot,
     phi1_dot, x2_dot, y2_dot, phi2_dot, F1, N1, F21, N12, s1, s12, work``);
-    ``t`` is required; a ``mode`` column (``"stick/stick"``, ``"flight"``,
-    …) is compared with the oracle's phase of each row. The oracle is evaluated at the candidate's
-    own times (no interpolation); a float time is read as the decimal it
-    prints as.
+    ``t`` is required, the rows in time order; a ``mode`` column
+    (``"stick/stick"``, ``"flight"``, …) is compared with the reference's
+    mode of each row, and its changes are judged as events. The oracle is
+    evaluated at the candidate's own times (no interpolation); a float time
+    is read as the decimal it prints as.
 
     ``case``: a golden case by name (``cylroll.golden.names()``) or a
     :class:`Model`.
 
     A value fails when \\|candidate − oracle\\| > atol + rtol·\\|oracle\\|
-    (numpy's ``isclose`` rule), the oracle at ``digits`` significant digits.
-    Returns a :class:`CheckReport`; raises ``ValueError`` for a malformed
-    candidate (an unknown column, no ``t``, a cell that is not a number) and
+    (numpy's ``isclose`` rule), the oracle at ``digits`` significant digits;
+    ``atol`` is in units of each column's natural scale (time sqrt(r/g),
+    lengths r, velocities sqrt(g r), forces (m1 + m2) g, work m2 g r).
+    ``tol={"theta": 1e-3, "N12": (1e-2, 1e-4)}`` sets a column's rtol, and
+    its atol in the column's own units. An rtol finer than ``digits`` can
+    judge (below 10^(2 − digits)) is refused; a value within the oracle's
+    error bound of its limit is *undecided* (``verdict``), never judged on
+    unverified digits.
+
+    ``branch``: where the motion is not unique (between the branch point θ*
+    and θs), ``"auto"`` judges the candidate against the branch it took (it
+    parted at θ*: ``part``; at θs: ``stay``; inside: parting at its own
+    angle; before θ*: not lawful, a failure), or ``"stay"`` / ``"part"``;
+    ``part_at`` an angle. ``event_tol``: the tolerance of an event in radians
+    of θ (default 1e-3). ``past_end``: rows after the end of the model (the
+    first impact) are left out and reported (``"report"``) or refused
+    (``"refuse"``).
+
+    Returns a :class:`CheckReport`; raises :class:`InvalidParameterError`
+    (a ``ValueError``) for a malformed candidate, naming the row, and
     :class:`VerificationError` as the oracle can.
     """
-    if isinstance(candidate, (str, os.PathLike)):
-        source = os.fspath(candidate)
-        names, rows = _from_csv(source)
-    elif hasattr(candidate, "keys"):
-        source = "candidate"
-        names, rows = _from_mapping(candidate)
-    else:
-        raise TypeError("candidate: expected a CSV path, a dict of arrays or a DataFrame, "
-                        f"got {type(candidate).__name__}")
-    buf = io.StringIO()
-    buf.write(",".join(names) + "\n")
-    for r in rows:
-        buf.write(",".join(r) + "\n")
     if isinstance(case, Model):
         case_name, pairs = "model", case.to_dict()
     elif isinstance(case, str):
         case_name, pairs = case, None
     else:
         raise TypeError(f"case: expected a golden case name or a Model, got {type(case).__name__}")
-    d = _cylroll.check(buf.getvalue(), source, case_name, pairs, float(rtol), float(atol),
-                       _digits(digits))
+    if isinstance(candidate, (str, os.PathLike)):
+        text, path, source = None, os.fspath(candidate), os.fspath(candidate)
+    elif hasattr(candidate, "keys"):
+        names, rows = _from_mapping(candidate)
+        text, path, source = _csv_text(names, rows), None, "candidate"
+    else:
+        raise TypeError("candidate: expected a CSV path, a dict of arrays or a DataFrame, "
+                        f"got {type(candidate).__name__}")
+    if not isinstance(branch, str):
+        raise TypeError(f"branch: expected 'auto', 'stay' or 'part', got {type(branch).__name__}")
+    if part_at is not None and not isinstance(part_at, str):
+        part_at = repr(float(part_at))
+    d = _cylroll.check(text, path, source, case_name, pairs, float(rtol), float(atol),
+                       _tols(tol), branch, part_at,
+                       None if event_tol is None else float(event_tol), _digits(digits),
+                       str(past_end))
     return CheckReport(d)

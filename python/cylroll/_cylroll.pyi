@@ -41,13 +41,19 @@ def trajectory(
     part_at: Optional[str] = ...,
 ) -> _Answer: ...
 def check(
-    csv: str,
+    csv: Optional[str],
+    path: Optional[str],
     source: str,
     case_name: str,
     pairs: Optional[Dict[str, str]],
     rtol: float,
     atol: float,
+    tols: List[Tuple[str, float, Optional[float]]],
+    branch: str,
+    part_at: Optional[str],
+    event_tol: Optional[float],
     digits: int,
+    past_end: str,
 ) -> Dict[str, object]: ...
 def enclose(
     pairs: Dict[str, str], digits: int, what: str, theta: Optional[str] = ...

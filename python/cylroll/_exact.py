@@ -49,17 +49,22 @@ def exact_text(name: str, x: Any, allow_float: bool = False) -> str:
             return format(x, "f")
         return _fraction_text(Fraction(x))
     if isinstance(x, numbers.Integral):
-        return str(int(x))
+        n = int(x)
+        # str() of an int beyond 4300 digits raises Python's own ValueError;
+        # Decimal(n) converts without that limit, exactly
+        return format(Decimal(n), "f") if n.bit_length() > 13_000 else str(n)
     if isinstance(x, (float, numbers.Real)):
+        f = float(x)
+        if not math.isfinite(f):
+            # 'nan'/'inf' as text are refused too (except a friction
+            # coefficient's 'inf'): no spelling to suggest
+            raise _invalid(name, x, "must be a finite number")
         if not allow_float:
             raise TypeError(
                 f"{name}: a float ({x!r}) is not exact; pass a str such as {repr(str(x))}, "
-                "an int, a Fraction or a Decimal, or allow_float=True to take the float's "
-                "exact binary value"
+                "an int, a Fraction or a Decimal (Model(..., allow_float=True) takes a "
+                "float's exact binary value)"
             )
-        f = float(x)
-        if not math.isfinite(f):
-            raise _invalid(name, x, "must be a finite number")
         return _fraction_text(Fraction(f))
     raise TypeError(
         f"{name}: expected str, int, Fraction or Decimal (or float with allow_float=True), "

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numbers
 import os
 from fractions import Fraction
 from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
@@ -20,12 +21,19 @@ MAX_DIGITS: int = _cylroll.MAX_DIGITS
 Mu = Union[Number, Tuple[Number, Number], None]
 
 
+def _count(name: str, x: Any, hi: int) -> int:
+    """A count (digits, steps): an ``int`` or any integer type (numpy's
+    included); a float, even 5.0, is refused as the wrong type."""
+    if isinstance(x, bool) or not isinstance(x, numbers.Integral):
+        raise TypeError(f"{name}: expected an int (or a numpy integer), got {type(x).__name__}")
+    x = int(x)
+    if not 1 <= x <= hi:
+        raise _invalid(name, x, f"must be between 1 and {hi}")
+    return x
+
+
 def _digits(digits: Any) -> int:
-    if isinstance(digits, bool) or not isinstance(digits, int):
-        raise TypeError(f"digits: expected an int, got {type(digits).__name__}")
-    if not 1 <= digits <= MAX_DIGITS:
-        raise _invalid("digits", digits, f"must be between 1 and {MAX_DIGITS}")
-    return digits
+    return _count("digits", digits, MAX_DIGITS)
 
 
 class Model:
@@ -258,7 +266,8 @@ class Model:
         """Proved enclosures (the command line's ``--rigorous``).
 
         ``what="separation"``: ``theta_s`` and, when finite and enclosed,
-        ``t_s``; ``what="time"`` with ``theta``: ``t``; ``what="forces"``
+        ``t_s``, and where the motion is not unique the branch point
+        ``theta_indeterminate``, ``t_indeterminate``; ``what="time"`` with ``theta``: ``t``; ``what="forces"``
         with ``theta``: the forces, rates and needed friction that can be
         enclosed. With friction only ``what="separation"``, from a start where
         both contacts stick: where sticking ends, ``theta_slip_onset`` and
@@ -334,9 +343,9 @@ class Model:
         if times is None:
             if t_end is None or steps is None:
                 raise TypeError("trajectory() needs times, or t_end and steps")
-            if isinstance(steps, bool) or not isinstance(steps, int) or not 1 <= steps <= 100_000:
-                raise _invalid("steps", steps, "must be between 1 and 100000")
-            te = exact_text("t_end", t_end)
+            steps = _count("steps", steps, 100_000)
+            # a time like every other: a float is read as the decimal it prints as
+            te = time_text("t_end", t_end)
             if _to_fraction(te) <= 0:
                 raise _invalid("t_end", te, "must be > 0")
             texts = [_grid_point(te, i, steps) for i in range(steps + 1)]

@@ -459,7 +459,7 @@ fn enclosure(v: &cylroll::oracle::rigorous::Proved, digits: u32) -> Enclosure {
 }
 
 /// `enclose`: proved enclosures (`--rigorous`) of the ideal models'
-/// `separation` (θs, t_s), `time` (t) or `forces` at `theta`, and with
+/// `separation` (θs, t_s, and θ*, t* where the motion is not unique), `time` (t) or `forces` at `theta`, and with
 /// friction of where sticking ends (`separation`: θ and t of the first slip
 /// onset, or θs and t_s when the contact opens there); a quantity that
 /// cannot be enclosed is left out (its verified value is elsewhere).
@@ -502,6 +502,14 @@ fn enclose(
         };
         let mut o = Oracle::new(&ideal, digits)?;
         let th = theta.map(|t| parse_angle("theta", &t)).transpose()?;
+        // the branch point's verified angle, the start of its proof (the
+        // command line's separation --rigorous encloses it too)
+        let branch_start = if th.is_none() {
+            let ths = o.separation_angle()?;
+            o.branch_point(&ths)?.map(|v| v.value)
+        } else {
+            None
+        };
         // the command line's retry: twice the precision where digits fall
         // short, the first result kept if the second fails
         let proved = cylroll::oracle::rigorous::prove_with(
@@ -510,7 +518,16 @@ fn enclose(
                 Ok(match &th {
                     None => {
                         let (a, b) = o.rigorous_separation(p)?;
-                        std::iter::once(a).chain(b.ok()).collect()
+                        // θ*, t* where the motion is not unique (left out
+                        // when the proof does not close, like every value)
+                        let star = match &branch_start {
+                            Some(start) => match o.rigorous_branch_point(start, &a.iv, p) {
+                                Ok((th, t)) => std::iter::once(th).chain(t.ok()).collect(),
+                                Err(_) => Vec::new(),
+                            },
+                            None => Vec::new(),
+                        };
+                        std::iter::once(a).chain(b.ok()).chain(star).collect()
                     }
                     Some(t) if what == "time" => vec![o.rigorous_time(t, p)?],
                     Some(t) => o.rigorous_forces(t, p)?.into_iter().flatten().collect(),
@@ -527,33 +544,57 @@ fn enclose(
     })
 }
 
-/// The one call into the library's candidate judge (`cylroll check`).
+/// The one call into the library's candidate judge (`cylroll check`): the
+/// candidate as CSV text or a file path (read twice where the branch is
+/// found from it), the limits built from the keyword arguments.
 fn run_check(
-    csv: &str,
+    csv: Option<String>,
+    path: Option<String>,
     source: &str,
     case: &Case,
-    rtol: f64,
-    atol: f64,
-    digits: u32,
+    lim: &cylroll::check::Limits,
 ) -> cylroll::Result<CheckReport> {
-    cylroll::check::check(csv, source, case, rtol, atol, digits)
+    match (csv, path) {
+        (Some(text), _) => {
+            let src = cylroll::check::Text {
+                text: &text,
+                name: source.to_string(),
+            };
+            cylroll::check::check_source(&src, case, lim)
+        }
+        (None, Some(p)) => cylroll::check::check_source(&cylroll::check::File::new(p), case, lim),
+        (None, None) => Err(Error::invalid("candidate", "", "give CSV text or a path")),
+    }
 }
 
-/// `check`: judges candidate CSV text against a golden case (by name) or a
-/// model (key/value pairs); returns the report as a dict.
+/// A tolerance override (column, rtol, atol or None) as the library's.
+type TolOverride = (String, f64, Option<f64>);
+
+/// `check`: judges a candidate (CSV text, or the path of a CSV file)
+/// against a golden case (by name) or a model (key/value pairs) with the
+/// command line's scoring core; returns `{"report": JSON text with numbers,
+/// "text": the table, "passed": bool, "verdict": "pass" | "fail" |
+/// "undecided"}`.
 #[pyfunction]
-#[pyo3(signature = (csv, source, case_name, pairs, rtol, atol, digits))]
+#[pyo3(signature = (csv, path, source, case_name, pairs, rtol, atol, tols, branch, part_at, event_tol, digits, past_end))]
 #[allow(clippy::too_many_arguments)]
 fn check<'py>(
     py: Python<'py>,
-    csv: String,
+    csv: Option<String>,
+    path: Option<String>,
     source: String,
     case_name: String,
     pairs: Option<Pairs>,
     rtol: f64,
     atol: f64,
+    tols: Vec<TolOverride>,
+    branch: String,
+    part_at: Option<String>,
+    event_tol: Option<f64>,
     digits: u32,
+    past_end: String,
 ) -> PyResult<Bound<'py, PyDict>> {
+    use cylroll::check::{BranchRequest, Limits, Override, PastEnd};
     let rep = detached(py, move || {
         let (pairs, description, steps) = match pairs {
             Some(p) => (p, String::new(), 40),
@@ -566,46 +607,42 @@ fn check<'py>(
             model,
             steps,
         };
-        run_check(&csv, &source, &case, rtol, atol, digits)
+        let mut lim = Limits::new(rtol, atol, digits);
+        lim.tols = tols
+            .into_iter()
+            .map(|(column, rtol, atol)| {
+                let spec = match atol {
+                    Some(a) => format!("{column}={rtol:e},{a:e}"),
+                    None => format!("{column}={rtol:e}"),
+                };
+                // the command line's reading: a known column, finite numbers >= 0
+                cylroll::check::parse_override(&spec).map(|_| Override { column, rtol, atol })
+            })
+            .collect::<cylroll::Result<_>>()?;
+        lim.branch = match (part_at, branch.as_str()) {
+            (Some(a), _) => BranchRequest::PartAt(Exact::parse("part_at", &a, true)?),
+            (None, "auto") => BranchRequest::Auto,
+            (None, "stay") => BranchRequest::Stay,
+            (None, "part") => BranchRequest::Part,
+            (None, other) => {
+                return Err(Error::invalid(
+                    "branch",
+                    other,
+                    "expected 'auto' (the branch the candidate took), 'stay' or 'part'",
+                ))
+            }
+        };
+        if let Some(e) = event_tol {
+            lim.event_tol = e;
+        }
+        lim.past_end = PastEnd::parse("past_end", &past_end)?;
+        run_check(csv, path, &source, &case, &lim)
     })?;
     let d = PyDict::new(py);
-    d.set_item("case", &rep.case)?;
-    d.set_item("rtol", rep.rtol)?;
-    d.set_item("atol", rep.atol)?;
-    d.set_item("rows", rep.rows)?;
-    d.set_item("digits", rep.digits)?;
     d.set_item("passed", rep.passed())?;
+    d.set_item("verdict", rep.verdict())?;
     d.set_item("text", rep.text())?;
-    #[allow(clippy::type_complexity)]
-    let cols: Vec<(String, f64, String, Option<f64>, String, usize, f64, String)> = rep
-        .columns
-        .iter()
-        .map(|c| {
-            (
-                c.name.clone(),
-                c.max_abs,
-                c.max_abs_t.clone(),
-                c.max_rel,
-                c.max_rel_t.clone(),
-                c.failures,
-                c.worst_ratio,
-                c.worst_bound.to_string(),
-            )
-        })
-        .collect();
-    d.set_item("columns", cols)?;
-    let first = rep.first_failure.as_ref().map(|f| {
-        (
-            f.row,
-            f.t.clone(),
-            f.column.clone(),
-            f.candidate.clone(),
-            f.oracle.clone(),
-            f.limit,
-            f.bound.to_string(),
-        )
-    });
-    d.set_item("first_failure", first)?;
+    d.set_item("report", rep.value(false).to_string())?;
     Ok(d)
 }
 

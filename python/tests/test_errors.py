@@ -140,3 +140,27 @@ def test_gil_is_released():
         stop.set()
         th.join()
     assert counter[0] > 1000
+
+
+def test_accepted_types_are_one_consistent_set():
+    """Counts (digits, steps) are ints or numpy integers, a float count is the
+    wrong type (not an out-of-range value); times, t_end included, may be
+    floats (their shortest decimal); a huge int is exact, not Python's
+    4300-digit error; a non-finite float is refused as such."""
+    import numpy as np
+    m = cylroll.Model(theta0="1/10")
+    a = m.trajectory([1], digits=np.int64(10))
+    b = m.trajectory([1], digits=10)
+    assert a.rows[0][1].text == b.rows[0][1].text
+    with pytest.raises(TypeError, match="steps: expected an int"):
+        m.trajectory(t_end=1, steps=5.0)
+    with pytest.raises(TypeError, match="digits: expected an int"):
+        m.separation(digits=10.0)
+    t = m.trajectory(t_end=5.0, steps=np.int32(2), digits=10)
+    assert [r[0].text for r in t.rows] == ["0", "2.5", "5"]
+    big = cylroll.Model(m1=10**5000 + 7)
+    assert big.params["m1"].endswith("007") and len(big.params["m1"]) == 5001
+    with pytest.raises(cylroll.InvalidParameterError, match="finite"):
+        cylroll.Model(m1=float("nan"), allow_float=True)
+    with pytest.raises(cylroll.InvalidParameterError, match="finite"):
+        cylroll.Model(m1=float("nan"))

@@ -24,7 +24,8 @@ def test_theta_s_is_pi_over_3_to_all_digits():
         assert sep.theta_s.digits == digits
         assert sep.t_s is None          # infinite from rest at the top
         assert sep.theta_s.err < Decimal(10) ** (-digits)
-        assert sep.events == [] and sep.start_mode is None and not sep.friction
+        # no event has a finite time; both contacts roll (stick) from the start
+        assert sep.events == [] and sep.start_mode == "stick/stick" and not sep.friction
 
 
 @pytest.mark.parametrize("k2, cos_s", [("0", Fraction(2, 3)), ("1/2", Fraction(4, 7)),
@@ -277,8 +278,10 @@ def test_at_separation_the_contact_friction_is_only_bounded_below():
 
 def test_enclosures_contain_the_closed_forms_and_the_verified_values():
     # theta_s = pi/3 for identical solid cylinders from the top: proved
-    (th,) = cylroll.Model().enclose("separation", digits=40)
+    # (and the branch point theta_indeterminate: from the top t* is infinite)
+    th, star = cylroll.Model().enclose("separation", digits=40)
     assert th.name == "theta_s" and th.digits == 40
+    assert star.name == "theta_indeterminate" and star.interval()[1] < th.interval()[0]
     with localcontext() as ctx:
         ctx.prec = 80
         assert pi(80) / 3 in th
@@ -319,3 +322,16 @@ def test_where_sticking_ends_is_enclosed_with_friction():
     # a start that slips at once has nothing enclosed, and says so
     with pytest.raises(cylroll.NotPhysicalError, match="nothing is enclosed"):
         cylroll.Model(theta0="1/10", mu_contact="0.001").enclose("separation")
+
+
+def test_the_branch_point_is_enclosed():
+    """θ* of the main case from θ0 = 1/10 (0.96571317498136093557878…, an
+    independent Newton–Euler derivation: tests/fixtures/branch_independent.toml)
+    lies inside its proved enclosure, which comes before θs's."""
+    enc = {e.name: e for e in cylroll.Model(theta0="1/10").enclose("separation", digits=30)}
+    star = enc["theta_indeterminate"]
+    assert Decimal("0.9657131749813609355787809944794260198402") in star
+    assert star.digits == 30 and "t_indeterminate" in enc
+    lo_s, _ = enc["theta_s"].interval()
+    _, hi_star = star.interval()
+    assert hi_star < lo_s

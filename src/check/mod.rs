@@ -1,49 +1,169 @@
-//! `cylroll check`: hold another program's CSV against the oracle.
+//! `cylroll check`: hold another program's table against the oracle — the
+//! one scoring core of the command line's `check`, Python's `cylroll.check`
+//! and the engine-conformance scorecard.
 //!
 //! The candidate's columns are matched by header (any subset of the golden
-//! columns; `t` is required); the oracle is evaluated at the candidate's own
-//! times (no interpolation of either side). A value fails when
-//! |candidate − oracle| > atol + rtol·|oracle| (numpy's `isclose` rule).
+//! columns and `mode`; `t` is required); the oracle is evaluated at the
+//! candidate's own times (no interpolation of either side), in chunks of
+//! [`CHUNK_ROWS`] rows. A value fails when |candidate − oracle| > atol +
+//! rtol·|oracle| (numpy's `isclose` rule), with a tolerance per column
+//! ([`tol`]: atol in units of the column's natural scale unless `--tol` sets
+//! it). The verdict comes
+//!
+//! - per column (the largest errors and where, the first failing row);
+//! - per phase of the reference (a new phase each time the mode of the
+//!   oracle's rows changes: `stick/stick`, `stick/slip+`, `flight`, …);
+//! - per event, when the candidate has a `mode` column: its transitions
+//!   (the last row in the old mode, the first in the new) are matched with
+//!   the reference's events entering the same mode, in order; the error is
+//!   in θ: the oracle's θ at the nearer end of the candidate's bracket minus
+//!   the event's θ (0 when the event lies inside the bracket), judged against
+//!   `event_tol` (radians; default [`DEFAULT_EVENT_TOL`]);
+//! - per branch where the motion is not unique ([`branch`]): under `auto`
+//!   the candidate is read twice, first to find where it parted, then
+//!   judged against the lawful branch it took (or failed where it parted
+//!   where the rigid-body motion may not).
+
+pub mod branch;
+mod events;
+pub mod read;
+mod render;
+pub mod tol;
+
+pub use branch::{BranchReport, Parting, Request as BranchRequest};
+pub use read::{File, Source, Text, MAX_LINE_BYTES};
+pub use tol::{parse_override, Override, Tol};
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::golden::Case;
+use crate::motion::Branch;
 use crate::oracle::{Options, Row};
+use read::{Cell, Rows};
 use rug::Float;
-use serde_json::{json, Value};
-use std::io::{BufRead, Read};
-
-/// One candidate cell: (golden column index, its text, its value; NaN for
-/// the `mode` column's text).
-type Cell = (usize, String, f64);
 
 /// The columns a candidate may have: every trajectory column and `mode`.
-fn known_columns() -> Vec<&'static str> {
+pub fn known_columns() -> Vec<&'static str> {
     let mut k = crate::motion::COLUMNS.to_vec();
     k.push("mode");
     k
 }
 
 /// The index of the `mode` column in [`known_columns`].
-const MODE: usize = crate::motion::COLUMNS.len();
+pub const MODE: usize = crate::motion::COLUMNS.len();
 
-/// The full column lists of the first golden schema: a candidate whose
-/// header is exactly one of them is read as schema 1 (φ2 of a rolling
-/// contact in the paper's gauge, r1 θ0/r2 below today's).
-const V1_HEADERS: [&str; 2] = [
-    "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12",
-    "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12,s1,s12,work,mode",
-];
+/// The index of `theta` in [`crate::motion::COLUMNS`].
+const THETA: usize = 1;
+
+/// The smallest nonzero rtol the oracle's `digits` significant digits can
+/// judge: 10^(2 − digits) (a d-digit value is good to 10^(1 − d) relative at
+/// worst; a tolerance ten times that keeps the verdict off its last digit).
+pub fn finest_rtol(digits: u32) -> f64 {
+    10f64.powi(2 - digits as i32)
+}
 
 /// Rows evaluated by the oracle at once: memory stays bounded by this many
 /// rows whatever the candidate's length.
 pub const CHUNK_ROWS: usize = 4096;
 
-/// Longest line of a candidate, in bytes.
-pub const MAX_LINE_BYTES: u64 = 1 << 16;
-
 /// Default largest number of data rows.
 pub const DEFAULT_MAX_ROWS: usize = 1_000_000;
+
+/// Default tolerance of an event, in radians of θ: about what a time-stepper
+/// at dt = 1e-3 resolves in the built-in cases (θ̇ dt ≈ 5e-4 near their
+/// events). An event whose reference time lies inside the candidate's
+/// bracket passes whatever the tolerance.
+pub const DEFAULT_EVENT_TOL: f64 = 1e-3;
+
+/// Candidate transitions (changes of its `mode`) kept for matching; more
+/// are counted.
+pub const MAX_TRANSITIONS: usize = 10_000;
+
+/// What to do with candidate rows after the end of the model on the branch
+/// followed (its first impact or a lift-off), where the reference ends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PastEnd {
+    /// Leave them out, count them and report the first (`rows_after_end`):
+    /// an engine that runs on past the impact is judged up to it.
+    #[default]
+    Report,
+    /// Refuse the candidate, naming the first such row.
+    Refuse,
+}
+
+impl PastEnd {
+    /// `report` or `refuse`.
+    pub fn parse(name: &str, text: &str) -> Result<Self> {
+        match text.trim() {
+            "report" => Ok(PastEnd::Report),
+            "refuse" => Ok(PastEnd::Refuse),
+            _ => Err(crate::error::Error::invalid(
+                name,
+                text,
+                "expected 'report' (leave rows after the end of the model out and report them) \
+                 or 'refuse' (refuse the candidate)",
+            )),
+        }
+    }
+}
+
+/// The tolerances and limits of a check.
+#[derive(Debug, Clone)]
+pub struct Limits {
+    /// Relative tolerance of every column.
+    pub rtol: f64,
+    /// Absolute tolerance of every column, in units of its natural scale.
+    pub atol: f64,
+    /// Per-column overrides (`--tol COLUMN=RTOL[,ATOL]`).
+    pub tols: Vec<Override>,
+    /// Significant digits of the oracle values.
+    pub digits: u32,
+    /// Largest number of data rows accepted.
+    pub max_rows: usize,
+    /// The candidate's schema: 1 (φ2 in the paper's gauge), 2, or `None`
+    /// (2, unless the header is exactly a full schema-1 column list).
+    pub schema: Option<u32>,
+    /// The branch to judge against.
+    pub branch: BranchRequest,
+    /// Tolerance of an event, in radians of θ.
+    pub event_tol: f64,
+    /// Rows after the end of the model.
+    pub past_end: PastEnd,
+}
+
+impl Limits {
+    /// `rtol`, `atol` (in units of each column's scale) and `digits`; the
+    /// defaults otherwise (auto branch, [`DEFAULT_EVENT_TOL`],
+    /// [`DEFAULT_MAX_ROWS`]).
+    pub fn new(rtol: f64, atol: f64, digits: u32) -> Self {
+        Limits {
+            rtol,
+            atol,
+            tols: Vec::new(),
+            digits,
+            max_rows: DEFAULT_MAX_ROWS,
+            schema: None,
+            branch: BranchRequest::Auto,
+            event_tol: DEFAULT_EVENT_TOL,
+            past_end: PastEnd::Refuse,
+        }
+    }
+}
+
+/// One column's statistics over one phase.
+#[derive(Debug, Clone, Default)]
+pub struct PhaseColumn {
+    /// Largest absolute error (0 for `mode`).
+    pub max_abs: f64,
+    /// Time where it occurs (`-` before any row).
+    pub max_abs_t: String,
+    /// Rows exceeding the tolerance (`mode`: rows in another mode).
+    pub failures: usize,
+    /// Largest |err| / limit there.
+    pub worst_ratio: f64,
+    /// Values whose verdict the oracle's error bound leaves open.
+    pub undecided: usize,
+}
 
 /// Per-column statistics.
 #[derive(Debug, Clone)]
@@ -66,9 +186,17 @@ pub struct ColumnStats {
     pub worst_bound: &'static str,
     /// Rows exceeding the tolerance.
     pub failures: usize,
+    /// Values whose verdict is open: |err| is within the oracle's error
+    /// bound of the limit, so the verdict would rest on unverified digits.
+    pub undecided: usize,
+    /// The tolerance applied (None for `mode`).
+    pub tol: Option<Tol>,
+    /// Per phase of [`CheckReport::phases`], in order.
+    pub phases: Vec<PhaseColumn>,
 }
 
-/// The first value out of tolerance.
+/// The first value out of tolerance (or, for [`CheckReport::first_undecided`],
+/// whose verdict is open).
 #[derive(Debug, Clone)]
 pub struct FirstFailure {
     /// 1-based data row of the candidate file.
@@ -83,8 +211,88 @@ pub struct FirstFailure {
     pub oracle: String,
     /// The limit atol + rtol·|oracle| it exceeded.
     pub limit: f64,
-    /// Which term of the limit was the larger (`"atol"` or `"rtol"`).
+    /// Which term of the limit was the larger (`"atol"` or `"rtol"`; `"mode"`).
     pub bound: &'static str,
+}
+
+/// A phase of the reference on the candidate's grid: consecutive rows the
+/// oracle puts in the same mode.
+#[derive(Debug, Clone)]
+pub struct PhaseInfo {
+    /// The mode tag (`stick/slip+`, `flight`).
+    pub tag: String,
+    /// Time of its first and last row.
+    pub t_first: String,
+    /// Time of its last row.
+    pub t_last: String,
+    /// Those times as f64.
+    pub t_first_f: f64,
+    /// The last time as f64.
+    pub t_last_f: f64,
+    /// 1-based candidate rows of its first and last row.
+    pub row_first: usize,
+    /// Its last row.
+    pub row_last: usize,
+    /// Rows in it.
+    pub rows: usize,
+}
+
+/// A change of the candidate's `mode` between two consecutive rows.
+#[derive(Debug, Clone)]
+pub struct Transition {
+    /// The mode left.
+    pub from: String,
+    /// The mode entered.
+    pub to: String,
+    /// 1-based rows: the last in the old mode, the first in the new.
+    pub rows: (usize, usize),
+    /// Their times (as the candidate wrote them, read exactly).
+    pub t: (String, String),
+    /// Those times as f64.
+    pub t_f: (f64, f64),
+    /// The oracle's θ there (on the branch followed).
+    pub theta: (f64, f64),
+}
+
+/// The verdict on one event of the reference (or one transition of the
+/// candidate the reference does not have).
+#[derive(Debug, Clone)]
+pub struct EventVerdict {
+    /// `slip_onset`, `separation`, …; `spurious` for a transition of the
+    /// candidate the reference does not have.
+    pub kind: String,
+    /// `floor` or `contact`, where the event concerns one.
+    pub contact: Option<String>,
+    /// The mode entered (`flight`, `stick/slip+`; `-` at the end of the model).
+    pub mode: String,
+    /// The reference's time and θ (verified digits; None for `spurious`).
+    pub reference: Option<(String, String)>,
+    /// The same as f64.
+    pub reference_f: Option<(f64, f64)>,
+    /// The candidate's transition matched with it.
+    pub candidate: Option<Transition>,
+    /// The error in θ (see the module's documentation).
+    pub error: Option<f64>,
+    /// The verdict (None: not judged).
+    pub passed: Option<bool>,
+    /// Why, in words.
+    pub why: String,
+}
+
+/// The events' verdicts.
+#[derive(Debug, Clone, Default)]
+pub struct Events {
+    /// Whether the events were judged (the candidate has a `mode` column).
+    pub judged: bool,
+    /// A note (why they are not judged).
+    pub note: String,
+    /// The reference's events in order (then the candidate's unmatched
+    /// transitions).
+    pub list: Vec<EventVerdict>,
+    /// The candidate's transitions (changes of mode).
+    pub transitions: usize,
+    /// Unmatched transitions not listed (beyond the first 20).
+    pub unlisted: usize,
 }
 
 /// The verdict on a candidate file.
@@ -92,123 +300,89 @@ pub struct FirstFailure {
 pub struct CheckReport {
     /// The case checked against.
     pub case: String,
-    /// Relative tolerance.
+    /// Relative tolerance of the columns not set by `--tol`.
     pub rtol: f64,
-    /// Absolute tolerance.
+    /// Absolute tolerance of those columns, in units of each column's scale.
     pub atol: f64,
+    /// Tolerance of an event, radians of θ.
+    pub event_tol: f64,
     /// Data rows read.
     pub rows: usize,
+    /// Rows left out after the end of the model ([`PastEnd::Report`]).
+    pub rows_after_end: usize,
+    /// The first of them: its row and time.
+    pub first_after_end: Option<(usize, String)>,
+    /// The end of the model on the branch followed: the event (`impact`,
+    /// `lift_off`) and its time (verified digits).
+    pub end: Option<(String, String)>,
+    /// The first value whose verdict is open (see [`ColumnStats::undecided`]).
+    pub first_undecided: Option<FirstFailure>,
     /// Column statistics in the candidate's column order (without `t`).
     pub columns: Vec<ColumnStats>,
     /// The first failing value, if any.
     pub first_failure: Option<FirstFailure>,
     /// Significant digits of the oracle values used.
     pub digits: u32,
+    /// The branch followed and why.
+    pub branch: BranchReport,
+    /// The reference's phases on the candidate's grid.
+    pub phases: Vec<PhaseInfo>,
+    /// The events.
+    pub events: Events,
 }
 
 impl CheckReport {
-    /// Whether every value is within tolerance.
+    /// Whether every value is within tolerance (certainly: no verdict left
+    /// open by the oracle's error bound), every judged event within
+    /// `event_tol` and the branch lawful.
     pub fn passed(&self) -> bool {
-        self.first_failure.is_none()
+        self.failed_definitely().is_none() && self.first_undecided.is_none()
     }
 
-    /// A plain-text table.
-    pub fn text(&self) -> String {
-        let mut s = format!(
-            "# cylroll check against case {} ({} rows; oracle at {} digits; fail if |err| > {:e} + {:e}*|oracle|)\n",
-            self.case, self.rows, self.digits, self.atol, self.rtol
-        );
-        s.push_str(&format!(
-            "{:<11} {:>10} {:>12} {:>10} {:>12} {:>10} {:>5} {:>9}\n",
-            "column", "max_abs", "at_t", "max_rel", "at_t", "err/limit", "bound", "failures"
-        ));
-        for c in &self.columns {
-            s.push_str(&format!(
-                "{:<11} {:>10.3e} {:>12} {:>10} {:>12} {:>10.3e} {:>5} {:>9}\n",
-                c.name,
-                c.max_abs,
-                c.max_abs_t,
-                rel_text(c.max_rel),
-                c.max_rel_t,
-                c.worst_ratio,
-                c.worst_bound,
-                c.failures
-            ));
+    /// Whether something certainly fails: a value, an event or the branch
+    /// (its name); None otherwise.
+    pub fn failed_definitely(&self) -> Option<&'static str> {
+        if self.first_failure.is_some() {
+            Some("value")
+        } else if !self.branch.lawful {
+            Some("branch")
+        } else if self.events.list.iter().any(|e| e.passed == Some(false)) {
+            Some("event")
+        } else {
+            None
         }
-        match &self.first_failure {
-            None => s.push_str("PASS: every value within tolerance\n"),
-            Some(f) => s.push_str(&format!(
-                "FAIL: first at row {} (t = {}), column {}: candidate {} vs oracle {}; |err| > {:.3e} ({} decides)\n",
-                f.row, f.t, f.column, f.candidate, f.oracle, f.limit, f.bound
-            )),
-        }
-        s
     }
 
-    /// One CSV row per compared column, then a `result` row.
-    pub fn csv(&self) -> String {
-        let mut s = String::from(
-            "column,max_abs,max_abs_t,max_rel,max_rel_t,worst_err_over_limit,worst_bound,failures\n",
-        );
-        for c in &self.columns {
-            s.push_str(&format!(
-                "{},{:.3e},{},{},{},{:.3e},{},{}\n",
-                c.name,
-                c.max_abs,
-                c.max_abs_t,
-                rel_text(c.max_rel),
-                c.max_rel_t,
-                c.worst_ratio,
-                c.worst_bound,
-                c.failures
-            ));
+    /// The command line's exit status: 0 passed, 1 something fails, 3 no
+    /// failure but a verdict the oracle's digits leave open.
+    pub fn exit_code(&self) -> i32 {
+        if self.failed_definitely().is_some() {
+            1
+        } else if self.first_undecided.is_some() {
+            3
+        } else {
+            0
         }
-        s
     }
 
-    /// A JSON object (numbers as decimal strings).
-    pub fn json(&self) -> String {
-        let cols: Vec<Value> = self
-            .columns
-            .iter()
-            .map(|c| {
-                json!({
-                    "column": c.name,
-                    "max_abs": format!("{:.3e}", c.max_abs),
-                    "max_abs_t": c.max_abs_t,
-                    "max_rel": c.max_rel.map(|r| format!("{r:.3e}")),
-                    "max_rel_t": c.max_rel_t,
-                    "worst_err_over_limit": format!("{:.3e}", c.worst_ratio),
-                    "worst_bound": c.worst_bound,
-                    "failures": c.failures.to_string(),
-                })
-            })
-            .collect();
-        let first = self.first_failure.as_ref().map(|f| {
-            json!({"row": f.row.to_string(), "t": f.t, "column": f.column, "candidate": f.candidate,
-                   "oracle": f.oracle, "limit": format!("{:.3e}", f.limit), "bound": f.bound})
-        });
-        let v = json!({
-            "case": self.case,
-            "passed": self.passed(),
-            "rows": self.rows.to_string(),
-            "rtol": format!("{:e}", self.rtol),
-            "atol": format!("{:e}", self.atol),
-            "oracle_digits": self.digits.to_string(),
-            "columns": cols,
-            "first_failure": first,
-        });
-        serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
+    /// Whether phase `k` passes (every column certainly within tolerance there).
+    pub fn phase_passed(&self, k: usize) -> bool {
+        self.columns.iter().all(|c| {
+            c.phases
+                .get(k)
+                .is_none_or(|p| p.failures == 0 && p.undecided == 0)
+        })
+    }
+
+    /// A column's statistics.
+    pub fn column(&self, name: &str) -> Option<&ColumnStats> {
+        self.columns.iter().find(|c| c.name == name)
     }
 }
 
-/// `max_rel` as text: `-` where undefined.
-fn rel_text(r: Option<f64>) -> String {
-    r.map_or("-".into(), |r| format!("{r:.3e}"))
-}
-
-/// Checks the CSV text `csv` (read from `source`, for messages) against `case`
-/// ([`check_reader`] with the default row limit).
+/// Checks the CSV text `csv` (named `source` in messages) against `case`
+/// with one rtol, atol (in units of each column's scale) and the defaults
+/// otherwise ([`Limits::new`]).
 pub fn check(
     csv: &str,
     source: &str,
@@ -217,366 +391,481 @@ pub fn check(
     atol: f64,
     digits: u32,
 ) -> Result<CheckReport> {
-    let lim = Limits {
-        rtol,
-        atol,
-        digits,
-        max_rows: DEFAULT_MAX_ROWS,
-        schema: None,
+    let src = Text {
+        text: csv,
+        name: source.to_string(),
     };
-    check_reader(std::io::Cursor::new(csv.as_bytes()), source, case, &lim)
+    check_source(&src, case, &Limits::new(rtol, atol, digits))
 }
 
-/// The tolerances and limits of a check.
-#[derive(Debug, Clone, Copy)]
-pub struct Limits {
-    /// Relative tolerance.
-    pub rtol: f64,
-    /// Absolute tolerance.
-    pub atol: f64,
-    /// Significant digits of the oracle values.
-    pub digits: u32,
-    /// Largest number of data rows accepted.
-    pub max_rows: usize,
-    /// The candidate's schema: 1 (φ2 in the paper's gauge), 2, or `None`
-    /// (2, unless the header is exactly a full schema-1 column list).
-    pub schema: Option<u32>,
+/// The previous row of pass 2 (for the candidate's transitions).
+struct Prev {
+    row: usize,
+    t: String,
+    t_f: f64,
+    mode: Option<String>,
+    theta: f64,
 }
 
-/// Reads one line of at most [`MAX_LINE_BYTES`] (without its line end);
-/// `None` at the end of the input.
-fn next_line<R: BufRead>(r: &mut R, buf: &mut Vec<u8>, source: &str) -> Result<Option<String>> {
-    buf.clear();
-    let n = r
-        .by_ref()
-        .take(MAX_LINE_BYTES + 1)
-        .read_until(b'\n', buf)
-        .map_err(|e| Error::invalid("candidate", source, format!("cannot be read: {e}")))?;
-    if n == 0 {
-        return Ok(None);
+/// The state of pass 2.
+struct Judge<'a> {
+    tols: &'a [Tol],
+    phi2_shift: Float,
+    stats: Vec<ColumnStats>,
+    first: Option<FirstFailure>,
+    first_undecided: Option<FirstFailure>,
+    phases: Vec<PhaseInfo>,
+    transitions: Vec<Transition>,
+    n_transitions: usize,
+    prev: Option<Prev>,
+    mode_at: Option<usize>,
+}
+
+/// A chunk of candidate rows: (row, t, cells).
+type Chunk = Vec<(usize, Exact, Vec<Cell>)>;
+
+/// An error of the oracle on a chunk of rows, naming the candidate and the
+/// row (the row whose time the message quotes, else the chunk's rows).
+fn at_rows(e: Error, source: &str, chunk: &Chunk) -> Error {
+    let (first, last) = (
+        chunk.first().map_or(0, |c| c.0),
+        chunk.last().map_or(0, |c| c.0),
+    );
+    let rows = |value: &str| {
+        chunk
+            .iter()
+            .find(|c| c.1.to_string() == value)
+            .map_or(format!("rows {first}-{last}"), |c| format!("row {}", c.0))
+    };
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            allowed,
+        } => Error::InvalidParameter {
+            name: format!("{name} (candidate {source}, {})", rows(&value)),
+            value,
+            allowed,
+        },
+        Error::NotPhysical { what } => Error::NotPhysical {
+            what: format!("candidate {source}, rows {first}-{last}: {what}"),
+        },
+        Error::NotConverged {
+            quantity,
+            requested,
+            reached,
+            detail,
+        } => Error::NotConverged {
+            quantity: format!("candidate {source}, rows {first}-{last}: {quantity}"),
+            requested,
+            reached,
+            detail,
+        },
+        other => other,
     }
-    if buf.len() as u64 > MAX_LINE_BYTES {
+}
+
+/// Checks the candidate `src` against `case` with the tolerances and limits
+/// `lim`: under [`BranchRequest::Auto`] where the motion is not unique the
+/// candidate is read twice (first to find where it parted), else once; the
+/// oracle is evaluated in chunks of [`CHUNK_ROWS`] rows, so memory does not
+/// grow with the number of rows.
+///
+/// Errors (each naming the candidate, and the row where one is at fault): a
+/// malformed candidate (header, fields, numbers, times before 0 or out of
+/// order), more rows than `lim.max_rows`, a tolerance that is negative or
+/// not finite, names a column the candidate lacks or is tighter than the
+/// oracle's digits can judge ([`finest_rtol`]), nothing to compare, rows after the
+/// end of the model under [`PastEnd::Refuse`] (or every row after it), a
+/// failure of the oracle.
+pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<CheckReport> {
+    let digits = lim.digits;
+    let tols = tol::tolerances(&case.model, lim.rtol, lim.atol, &lim.tols)?;
+    if !lim.event_tol.is_finite() || lim.event_tol < 0.0 {
         return Err(Error::invalid(
-            "candidate",
-            source,
-            format!("has a line longer than {MAX_LINE_BYTES} bytes"),
+            "event-tol",
+            lim.event_tol,
+            "must be a finite number >= 0 (radians of theta)",
         ));
     }
-    let text = std::str::from_utf8(buf)
-        .map_err(|_| Error::invalid("candidate", source, "is not UTF-8 text"))?;
-    Ok(Some(text.trim_end_matches(['\n', '\r']).to_string()))
-}
-
-/// Checks the CSV read from `reader` (named `source` in messages) against
-/// `case`, in chunks of [`CHUNK_ROWS`] rows: memory does not grow with the
-/// number of rows.
-///
-/// Errors: a malformed candidate (header, fields, numbers), more rows than
-/// `lim.max_rows`, nothing to compare, times the oracle refuses.
-pub fn check_reader<R: BufRead>(
-    mut reader: R,
-    source: &str,
-    case: &Case,
-    lim: &Limits,
-) -> Result<CheckReport> {
-    let (rtol, atol, digits) = (lim.rtol, lim.atol, lim.digits);
-    for (name, v) in [("rtol", rtol), ("atol", atol)] {
-        if !v.is_finite() || v < 0.0 {
-            return Err(Error::invalid(name, v, "must be a finite number >= 0"));
+    // the header first: a malformed candidate is refused before any oracle work
+    let header = Rows::open(src, case, lim)?.header;
+    for o in &lim.tols {
+        let gi = crate::motion::COLUMNS.iter().position(|c| *c == o.column);
+        if !gi.is_some_and(|g| header.has(g)) {
+            return Err(Error::invalid(
+                "tol",
+                format!("{}={}", o.column, o.rtol),
+                format!(
+                    "names a column the candidate {} does not have (its columns: {})",
+                    src.name(),
+                    header.cols.join(", ")
+                ),
+            ));
         }
     }
-    let mut buf = Vec::new();
-    let header = loop {
-        match next_line(&mut reader, &mut buf, source)? {
-            None => {
-                return Err(Error::invalid(
-                    "candidate",
-                    source,
-                    "is empty; expected a header row",
-                ))
-            }
-            Some(l) if l.trim().is_empty() => continue,
-            Some(l) => break crate::model::input::strip_bom(&l).to_string(),
+    // a relative tolerance finer than the oracle's digits would judge
+    // against digits nobody verified
+    let finest = finest_rtol(digits);
+    for (gi, t) in tols.iter().enumerate().skip(1) {
+        if header.has(gi) && t.rtol > 0.0 && t.rtol < finest * (1.0 - 1e-9) {
+            let (name, value) = if t.set {
+                (
+                    "tol",
+                    format!("{}={:e}", crate::motion::COLUMNS[gi], t.rtol),
+                )
+            } else {
+                ("rtol", format!("{:e}", t.rtol))
+            };
+            let need = (2.0 - t.rtol.log10()).ceil() as u32;
+            return Err(Error::invalid(
+                name,
+                value,
+                format!(
+                    "is tighter than the oracle's {digits} significant digits can judge (a \
+                     {digits}-digit value is good to 1e{} relative): give --digits {need} or \
+                     more, or an rtol of at least 1e{}",
+                    1 - digits as i32,
+                    2 - digits as i32
+                ),
+            ));
         }
+    }
+    let opts = |branch: Branch| Options {
+        digits,
+        branch,
+        method: crate::motion::Method::Auto,
     };
-    let cols: Vec<String> = header
-        .split(',')
-        .map(|c| c.trim().trim_matches('"').to_string())
-        .collect();
-    let known = known_columns();
-    let schema1 = lim.schema == Some(1)
-        || (lim.schema.is_none() && V1_HEADERS.contains(&cols.join(",").as_str()));
-    // φ2 of schema 1: the paper's gauge for a contact that starts rolling
-    let phi2_shift = if schema1 && *case.model.contact() != crate::model::Law::Frictionless {
-        let pr = case.model.params();
-        let th0 = case.model.start().theta0.to_float(256);
-        Float::with_val(256, &pr.r1) * th0 / Float::with_val(256, &pr.r2)
+    let stay = crate::oracle::separation(&case.model, &opts(Branch::Stay))?;
+    let branch = branch::decide(src, case, lim, &stay, &tols)?;
+    let followed = if branch.followed == Branch::Stay {
+        stay
     } else {
-        Float::new(256)
+        crate::oracle::separation(&case.model, &opts(branch.followed.clone()))?
     };
-    let mut idx = Vec::new();
-    for c in &cols {
-        match known.iter().position(|g| g == c) {
-            Some(i) => idx.push(i),
-            None => {
-                return Err(Error::invalid(
-                    "candidate",
-                    source,
-                    format!("unknown column {c:?}; allowed: {}", known.join(", ")),
-                ))
+    let end_event = followed.events.iter().find(|e| e.phase.is_none());
+    let end = end_event.map(|e| (e.kind.name().to_string(), e.t.text.clone()));
+    // a row is after the end when its time exceeds the end's by more than
+    // the end's error bound; nearer ones are the oracle's to place
+    let t_end = end_event.map(|e| {
+        let p = e.t.value.prec();
+        Float::with_val(p, &e.t.value + &e.t.err_bound)
+    });
+
+    let mut rows = Rows::open(src, case, lim)?;
+    let h = rows.header.clone();
+    let mut judge = Judge {
+        tols: &tols,
+        phi2_shift: h.phi2_shift.clone(),
+        stats: h
+            .cols
+            .iter()
+            .zip(&h.idx)
+            .filter(|(c, _)| c.as_str() != "t")
+            .map(|(c, &gi)| ColumnStats {
+                name: c.clone(),
+                max_abs: 0.0,
+                max_abs_t: "-".into(),
+                max_rel: None,
+                max_rel_t: "-".into(),
+                worst_ratio: 0.0,
+                worst_bound: "-",
+                failures: 0,
+                undecided: 0,
+                tol: (gi != MODE).then(|| tols[gi]),
+                phases: Vec::new(),
+            })
+            .collect(),
+        first: None,
+        first_undecided: None,
+        phases: Vec::new(),
+        transitions: Vec::new(),
+        n_transitions: 0,
+        prev: None,
+        mode_at: h.idx.iter().filter(|&&i| i != 0).position(|&i| i == MODE),
+    };
+    let mut after_end = 0usize;
+    let mut first_after_end: Option<(usize, String)> = None;
+    let mut chunk: Chunk = Vec::with_capacity(CHUNK_ROWS);
+    let trajectory_opts = opts(branch.followed.clone());
+    let flush = |chunk: &mut Chunk, judge: &mut Judge| -> Result<()> {
+        if chunk.is_empty() {
+            return Ok(());
+        }
+        crate::cancel::check()?;
+        let times: Vec<Exact> = chunk.iter().map(|d| d.1.clone()).collect();
+        let orows = crate::oracle::trajectory(&case.model, &times, &trajectory_opts)
+            .map_err(|e| at_rows(e, src.name(), chunk))?
+            .rows;
+        for ((row, t, vals), orow) in chunk.iter().zip(&orows) {
+            judge.row(*row, t, vals, orow)?;
+        }
+        chunk.clear();
+        Ok(())
+    };
+    while let Some((row, t, cells)) = rows.next_row()? {
+        if let (Some(te), Some((kind, te_text))) = (&t_end, &end) {
+            if t.to_float(te.prec()) > *te {
+                if lim.past_end == PastEnd::Refuse {
+                    return Err(read::refuse(
+                        src.name(),
+                        format!(
+                            "row {row}: t = {t} is after the end of the model (the {kind} at t = \
+                             {te_text} on the {} branch), where the reference ends (past-end \
+                             'report' leaves such rows out and reports them)",
+                            branch.followed.name()
+                        ),
+                    ));
+                }
+                after_end += 1;
+                if first_after_end.is_none() {
+                    first_after_end = Some((row, t.to_string()));
+                }
+                continue;
             }
         }
+        chunk.push((row, t, cells));
+        if chunk.len() == CHUNK_ROWS {
+            flush(&mut chunk, &mut judge)?;
+        }
     }
-    let t_col = cols
-        .iter()
-        .position(|c| c == "t")
-        .ok_or_else(|| Error::invalid("candidate", source, "needs a column named t"))?;
-    if cols.len() < 2 {
-        return Err(Error::invalid(
-            "candidate",
-            source,
+    flush(&mut chunk, &mut judge)?;
+    let n_rows = rows.rows;
+    if n_rows == 0 {
+        return Err(read::refuse(src.name(), "has no data rows"));
+    }
+    if n_rows == after_end {
+        let (kind, te) = end.clone().unwrap_or_default();
+        return Err(read::refuse(
+            src.name(),
             format!(
-                "has only the column t: nothing to compare (add any of {})",
-                known[1..].join(", ")
+                "has no row before the end of the model (the {kind} at t = {te}): every row, \
+                 from row 1, is after it"
             ),
         ));
     }
-    let mut stats: Vec<ColumnStats> = cols
-        .iter()
-        .filter(|c| c.as_str() != "t")
-        .map(|c| ColumnStats {
-            name: c.clone(),
-            max_abs: 0.0,
-            max_abs_t: "-".into(),
-            max_rel: None,
-            max_rel_t: "-".into(),
-            worst_ratio: 0.0,
-            worst_bound: "-",
-            failures: 0,
-        })
-        .collect();
-    let mut first = None;
-    let mut rows = 0usize;
-    let mut chunk: Vec<(Exact, Vec<Cell>)> = Vec::with_capacity(CHUNK_ROWS);
-    loop {
-        let line = next_line(&mut reader, &mut buf, source)?;
-        let done = line.is_none();
-        if let Some(line) = line {
-            if line.trim().is_empty() {
-                continue;
-            }
-            rows += 1;
-            if rows > lim.max_rows {
-                return Err(Error::invalid(
-                    "candidate",
-                    source,
-                    format!(
-                        "has more than {} data rows (raise --max-rows, at most 100000000)",
-                        lim.max_rows
-                    ),
-                ));
-            }
-            chunk.push(parse_row(&line, rows, &cols, &idx, t_col, source)?);
-        }
-        if chunk.len() == CHUNK_ROWS || (done && !chunk.is_empty()) {
-            let times: Vec<Exact> = chunk.iter().map(|d| d.0.clone()).collect();
-            let orows =
-                crate::oracle::trajectory(&case.model, &times, &Options::digits(digits))?.rows;
-            let row0 = rows - chunk.len();
-            for (r, ((t, vals), orow)) in chunk.iter().zip(&orows).enumerate() {
-                compare_row(
-                    row0 + r + 1,
-                    t,
-                    vals,
-                    orow,
-                    (rtol, atol),
-                    &phi2_shift,
-                    &mut stats,
-                    &mut first,
-                )?;
-            }
-            chunk.clear();
-        }
-        if done {
-            break;
-        }
-    }
-    if rows == 0 {
-        return Err(Error::invalid("candidate", source, "has no data rows"));
-    }
+    let events = events::judge(
+        &followed,
+        &judge.transitions,
+        judge.n_transitions,
+        judge.mode_at.is_some(),
+        &judge.phases,
+        lim.event_tol,
+    );
     Ok(CheckReport {
         case: case.name.clone(),
-        rtol,
-        atol,
-        rows,
-        columns: stats,
-        first_failure: first,
+        rtol: lim.rtol,
+        atol: lim.atol,
+        event_tol: lim.event_tol,
+        rows: n_rows,
+        rows_after_end: after_end,
+        first_after_end,
+        end,
+        first_undecided: judge.first_undecided,
+        columns: judge.stats,
+        first_failure: judge.first,
         digits,
+        branch,
+        phases: judge.phases,
+        events,
     })
 }
 
-/// One data row (1-based `row`) parsed against the header.
-fn parse_row(
-    line: &str,
-    row: usize,
-    cols: &[String],
-    idx: &[usize],
-    t_col: usize,
-    source: &str,
-) -> Result<(Exact, Vec<Cell>)> {
-    let cells: Vec<&str> = line.split(',').map(|c| c.trim()).collect();
-    if cells.len() != cols.len() {
-        return Err(Error::invalid(
-            "candidate",
-            source,
-            format!(
-                "row {row} has {} fields, the header {}",
-                cells.len(),
-                cols.len()
-            ),
-        ));
-    }
-    let t = Exact::parse("t", cells[t_col], false).map_err(|_| {
-        Error::invalid(
-            "candidate",
-            source,
-            format!(
-                "row {row}: t = {:?} is not a number",
-                crate::error::shorten(cells[t_col])
-            ),
-        )
-    })?;
-    let mut vals = Vec::with_capacity(cells.len() - 1);
-    for (k, cell) in cells.iter().enumerate() {
-        if k == t_col {
-            continue;
-        }
-        if idx[k] == MODE {
-            vals.push((MODE, cell.to_string(), f64::NAN));
-            continue;
-        }
-        let v: f64 = cell.parse().map_err(|_| {
-            Error::invalid(
-                "candidate",
-                source,
-                format!(
-                    "row {row}, column {}: {:?} is not a number",
-                    cols[k],
-                    crate::error::shorten(cell)
-                ),
-            )
-        })?;
-        if !v.is_finite() {
-            return Err(Error::invalid(
-                "candidate",
-                source,
-                format!("row {row}, column {}: {cell} is not finite", cols[k]),
-            ));
-        }
-        vals.push((idx[k], cell.to_string(), v));
-    }
-    Ok((t, vals))
-}
-
-/// Holds one row against the oracle's, updating the statistics.
-#[allow(clippy::too_many_arguments)]
-fn compare_row(
-    row: usize,
-    t: &Exact,
-    vals: &[Cell],
-    orow: &Row,
-    (rtol, atol): (f64, f64),
-    phi2_shift: &Float,
-    stats: &mut [ColumnStats],
-    first: &mut Option<FirstFailure>,
-) -> Result<()> {
-    let p = 128;
-    for (j, (gi, text, _)) in vals.iter().enumerate() {
-        if *gi == MODE {
-            // the phase: the same mode, or flight
-            let tag = orow.phase.tag();
-            let st = &mut stats[j];
-            let same = text.trim() == tag;
-            if !same {
-                st.failures += 1;
-                st.worst_ratio = f64::INFINITY;
-                st.worst_bound = "mode";
-                if st.max_abs_t == "-" {
-                    st.max_abs_t = t.to_string();
-                }
-                if first.is_none() {
-                    *first = Some(FirstFailure {
-                        row,
-                        t: t.to_string(),
-                        column: st.name.clone(),
-                        candidate: text.clone(),
-                        oracle: tag,
-                        limit: 0.0,
-                        bound: "mode",
-                    });
-                }
-            } else if st.worst_bound == "-" {
-                st.worst_bound = "mode";
-            }
-            continue;
-        }
-        let o = &orow.values[*gi];
-        let mut cand = Exact::parse("value", text, false)?.to_float(p);
-        if crate::motion::COLUMNS[*gi] == "phi2" {
-            cand += phi2_shift;
-        }
-        // a value printed as 0 is 0 to the verified accuracy: compare
-        // with 0 (and no relative error), not with its unverified digits
-        let ov = if o.digits == 0 && o.text == "0" {
-            Float::new(p)
-        } else {
-            Float::with_val(p, &o.value)
-        };
-        let err = Float::with_val(p, &cand - &ov).abs();
-        let mag = Float::with_val(p, ov.abs_ref());
-        let abs = err.to_f64();
-        let st = &mut stats[j];
-        if abs > st.max_abs || st.max_abs_t == "-" {
-            st.max_abs = abs;
-            st.max_abs_t = t.to_string();
-        }
-        if !mag.is_zero() {
-            let rel = Float::with_val(p, &err / &mag).to_f64();
-            if st.max_rel.is_none_or(|m| rel > m) {
-                st.max_rel = Some(rel);
-                st.max_rel_t = t.to_string();
-            }
-        }
-        let rel_term = Float::with_val(p, &mag * rtol);
-        let bound = if rel_term > atol { "rtol" } else { "atol" };
-        let limit = rel_term + atol;
-        let ratio = if limit.is_zero() {
-            if err.is_zero() {
-                0.0
-            } else {
-                f64::INFINITY
-            }
-        } else {
-            Float::with_val(p, &err / &limit).to_f64()
-        };
-        if ratio > st.worst_ratio || st.worst_bound == "-" {
-            st.worst_ratio = ratio;
-            st.worst_bound = bound;
-        }
-        if err > limit {
-            st.failures += 1;
-            if first.is_none() {
-                *first = Some(FirstFailure {
-                    row,
-                    t: t.to_string(),
-                    column: st.name.clone(),
-                    candidate: text.clone(),
-                    oracle: o.text.clone(),
-                    limit: limit.to_f64(),
-                    bound,
+impl Judge<'_> {
+    /// Holds one row against the oracle's, updating the statistics, the
+    /// phases and the candidate's transitions.
+    fn row(&mut self, row: usize, t: &Exact, vals: &[Cell], orow: &Row) -> Result<()> {
+        let p = 128;
+        let tag = orow.phase.tag();
+        let t_text = t.to_string();
+        let t_f = t.to_f64();
+        // the reference's phases on the candidate's grid
+        if self.phases.last().is_none_or(|ph| ph.tag != tag) {
+            self.phases.push(PhaseInfo {
+                tag: tag.clone(),
+                t_first: t_text.clone(),
+                t_last: t_text.clone(),
+                t_first_f: t_f,
+                t_last_f: t_f,
+                row_first: row,
+                row_last: row,
+                rows: 0,
+            });
+            for st in &mut self.stats {
+                st.phases.push(PhaseColumn {
+                    max_abs: 0.0,
+                    max_abs_t: "-".into(),
+                    failures: 0,
+                    worst_ratio: 0.0,
+                    undecided: 0,
                 });
             }
         }
+        let k = self.phases.len() - 1;
+        {
+            let ph = &mut self.phases[k];
+            ph.t_last = t_text.clone();
+            ph.t_last_f = t_f;
+            ph.row_last = row;
+            ph.rows += 1;
+        }
+        let theta = orow.values[THETA].value.to_f64();
+        // the candidate's transitions
+        let mode = self.mode_at.map(|m| vals[m].1.clone());
+        if let (Some(pr), Some(m)) = (&self.prev, &mode) {
+            if let Some(pm) = &pr.mode {
+                if pm != m {
+                    self.n_transitions += 1;
+                    if self.transitions.len() < MAX_TRANSITIONS {
+                        self.transitions.push(Transition {
+                            from: pm.clone(),
+                            to: m.clone(),
+                            rows: (pr.row, row),
+                            t: (pr.t.clone(), t_text.clone()),
+                            t_f: (pr.t_f, t_f),
+                            theta: (pr.theta, theta),
+                        });
+                    }
+                }
+            }
+        }
+        self.prev = Some(Prev {
+            row,
+            t: t_text.clone(),
+            t_f,
+            mode,
+            theta,
+        });
+        for (j, (gi, text, _)) in vals.iter().enumerate() {
+            let st = &mut self.stats[j];
+            if *gi == MODE {
+                // the phase: the same mode, or flight
+                if text.trim() != tag {
+                    st.failures += 1;
+                    st.phases[k].failures += 1;
+                    st.worst_ratio = f64::INFINITY;
+                    st.phases[k].worst_ratio = f64::INFINITY;
+                    st.worst_bound = "mode";
+                    if st.max_abs_t == "-" {
+                        st.max_abs_t = t_text.clone();
+                    }
+                    if st.phases[k].max_abs_t == "-" {
+                        st.phases[k].max_abs_t = t_text.clone();
+                    }
+                    if self.first.is_none() {
+                        self.first = Some(FirstFailure {
+                            row,
+                            t: t_text.clone(),
+                            column: st.name.clone(),
+                            candidate: text.clone(),
+                            oracle: tag.clone(),
+                            limit: 0.0,
+                            bound: "mode",
+                        });
+                    }
+                } else if st.worst_bound == "-" {
+                    st.worst_bound = "mode";
+                }
+                continue;
+            }
+            let tol = self.tols[*gi];
+            let o = &orow.values[*gi];
+            let mut cand = Exact::parse(&st.name, text, false)?.to_float(p);
+            if crate::motion::COLUMNS[*gi] == "phi2" {
+                cand += &self.phi2_shift;
+            }
+            // a value printed as 0 is 0 to the verified accuracy: compare
+            // with 0 (and no relative error), not with its unverified digits
+            let ov = if o.digits == 0 && o.text == "0" {
+                Float::new(p)
+            } else {
+                Float::with_val(p, &o.value)
+            };
+            let err = Float::with_val(p, &cand - &ov).abs();
+            let mag = Float::with_val(p, ov.abs_ref());
+            let abs = err.to_f64();
+            if abs > st.max_abs || st.max_abs_t == "-" {
+                st.max_abs = abs;
+                st.max_abs_t = t_text.clone();
+            }
+            let pc = &mut st.phases[k];
+            if abs > pc.max_abs || pc.max_abs_t == "-" {
+                pc.max_abs = abs;
+                pc.max_abs_t = t_text.clone();
+            }
+            if !mag.is_zero() {
+                let rel = Float::with_val(p, &err / &mag).to_f64();
+                if st.max_rel.is_none_or(|m| rel > m) {
+                    st.max_rel = Some(rel);
+                    st.max_rel_t = t_text.clone();
+                }
+            }
+            let rel_term = Float::with_val(p, &mag * tol.rtol);
+            let bound = if rel_term > tol.atol { "rtol" } else { "atol" };
+            let limit = rel_term + tol.atol;
+            let ratio = if limit.is_zero() {
+                if err.is_zero() {
+                    0.0
+                } else {
+                    f64::INFINITY
+                }
+            } else {
+                Float::with_val(p, &err / &limit).to_f64()
+            };
+            if ratio > st.worst_ratio || st.worst_bound == "-" {
+                st.worst_ratio = ratio;
+                st.worst_bound = bound;
+            }
+            if ratio > st.phases[k].worst_ratio {
+                st.phases[k].worst_ratio = ratio;
+            }
+            // the oracle's value is within its error bound of the truth: a
+            // verdict is certain only when |err| is farther than that from
+            // the limit
+            let u = Float::with_val(p, &o.err_bound);
+            let certain_fail = Float::with_val(p, &err - &u) > limit;
+            let certain_pass = Float::with_val(p, &err + &u) <= limit;
+            let failure = || FirstFailure {
+                row,
+                t: t_text.clone(),
+                column: st.name.clone(),
+                candidate: text.clone(),
+                oracle: o.text.clone(),
+                limit: limit.to_f64(),
+                bound,
+            };
+            if certain_fail {
+                if self.first.is_none() {
+                    self.first = Some(failure());
+                }
+                st.failures += 1;
+                st.phases[k].failures += 1;
+            } else if !certain_pass {
+                if self.first_undecided.is_none() {
+                    self.first_undecided = Some(failure());
+                }
+                st.undecided += 1;
+                st.phases[k].undecided += 1;
+            }
+        }
+        Ok(())
     }
-    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_column_indices_name_their_columns() {
+        assert_eq!(crate::motion::COLUMNS[THETA], "theta");
+        assert_eq!(crate::motion::COLUMNS[17], "N12");
+        assert_eq!(known_columns()[MODE], "mode");
+    }
+
+    #[test]
+    fn the_finest_rtol_follows_the_digits() {
+        assert_eq!(finest_rtol(20), 1e-18);
+        assert_eq!(finest_rtol(2), 1.0);
+    }
 }

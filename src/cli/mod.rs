@@ -71,18 +71,42 @@ pub enum Command {
         dir: std::path::PathBuf,
     },
     /// Judge another program's CSV against the oracle (exit 1 if a tolerance is exceeded)
+    #[command(group(clap::ArgGroup::new("reference").required(true).args(["case", "params"])))]
     Check {
         /// The candidate CSV (header row with golden column names; t required)
         candidate: std::path::PathBuf,
         /// The golden case it simulates (a file stem of golden/cases)
         #[arg(long)]
-        case: String,
-        /// Relative tolerance (>= 0)
+        case: Option<String>,
+        /// Or the model it simulates, as a parameter file (the keys of --params; a golden case
+        /// file is one)
+        #[arg(long)]
+        params: Option<std::path::PathBuf>,
+        /// Relative tolerance of every column (>= 0)
         #[arg(long, default_value_t = 1e-8, allow_hyphen_values = true, value_parser = tol_arg)]
         rtol: f64,
-        /// Absolute tolerance (>= 0)
+        /// Absolute tolerance of every column (>= 0), in units of the column's natural scale
+        /// (time sqrt(r/g), lengths r, velocities sqrt(g r), forces (m1+m2) g, work m2 g r)
         #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true, value_parser = tol_arg)]
         atol: f64,
+        /// One column's tolerance, COLUMN=RTOL[,ATOL] (ATOL in the column's own units); repeatable
+        #[arg(long = "tol", value_name = "COLUMN=RTOL[,ATOL]", allow_hyphen_values = true, value_parser = tol_override_arg)]
+        tols: Vec<cylroll::check::Override>,
+        /// The branch to judge against where the motion is not unique: auto (the one the
+        /// candidate took: it parted at theta* -> part, at the closed branch's end -> stay,
+        /// inside the window -> part there; before theta* fails), stay or part
+        #[arg(long, value_enum, default_value_t = CheckBranchArg::Auto, conflicts_with = "part_at")]
+        branch: CheckBranchArg,
+        /// Judge against the reference that parts where theta reaches this angle (inside the window)
+        #[arg(long, allow_hyphen_values = true)]
+        part_at: Option<String>,
+        /// Tolerance of an event (slip onset, parting, ...), in radians of theta [default: 1e-3]
+        #[arg(long, allow_hyphen_values = true, value_parser = tol_arg)]
+        event_tol: Option<f64>,
+        /// Rows after the end of the model (the first impact): report (left out, counted, the
+        /// first named) or refuse (exit 2)
+        #[arg(long, value_enum, default_value_t = PastEndArg::Report)]
+        past_end: PastEndArg,
         /// Significant digits of the oracle values compared against, 1 to 2000
         #[arg(long, default_value_t = 20, allow_hyphen_values = true, value_parser = digits_arg)]
         digits: u32,
@@ -137,6 +161,21 @@ pub enum Command {
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum BranchArg {
+    Stay,
+    Part,
+}
+
+/// `check --past-end`.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum PastEndArg {
+    Report,
+    Refuse,
+}
+
+/// `check --branch`.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum CheckBranchArg {
+    Auto,
     Stay,
     Part,
 }
@@ -245,6 +284,14 @@ fn rows_arg(s: &str) -> std::result::Result<usize, String> {
 /// `--schema`: 1 or 2.
 fn schema_arg(s: &str) -> std::result::Result<u32, String> {
     int_arg(s, 1, 2).map(|v| v as u32)
+}
+
+/// `--tol COLUMN=RTOL[,ATOL]`.
+fn tol_override_arg(s: &str) -> std::result::Result<cylroll::check::Override, String> {
+    cylroll::check::parse_override(s).map_err(|e| match e {
+        Error::InvalidParameter { allowed, .. } => allowed,
+        other => other.to_string(),
+    })
 }
 
 /// A tolerance: a finite number >= 0.
@@ -415,34 +462,63 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
         Command::Check {
             candidate,
             case,
+            params,
             rtol,
             atol,
+            tols,
+            branch,
+            part_at,
+            event_tol,
+            past_end,
             digits,
             max_rows,
             golden,
             schema,
             format,
         } => {
-            let case = cylroll::golden::find_case(&golden, &case)?;
-            let source = candidate.display().to_string();
-            let file = std::fs::File::open(&candidate).map_err(|e| {
-                Error::invalid("candidate", &source, format!("cannot be read: {e}"))
-            })?;
-            let lim = cylroll::check::Limits {
-                rtol,
-                atol,
-                digits,
-                max_rows,
-                schema,
+            use cylroll::check::BranchRequest;
+            let case = match (case, params) {
+                (Some(name), _) => cylroll::golden::find_case(&golden, &name)?,
+                (None, Some(path)) => {
+                    let table = input::read_toml(&path, "params")?;
+                    let (pairs, description, steps) =
+                        cylroll::golden::case_parts(&table).map_err(|e| in_file(e, &path))?;
+                    let model = input::model_from_pairs(&pairs).map_err(|e| in_file(e, &path))?;
+                    cylroll::golden::Case {
+                        name: path.display().to_string(),
+                        description,
+                        model,
+                        steps,
+                    }
+                }
+                (None, None) => unreachable!("clap requires --case or --params"),
             };
-            let rep =
-                cylroll::check::check_reader(std::io::BufReader::new(file), &source, &case, &lim)?;
+            let branch = match (part_at, branch) {
+                (Some(a), _) => BranchRequest::PartAt(Exact::parse("part-at", &a, true)?),
+                (None, CheckBranchArg::Auto) => BranchRequest::Auto,
+                (None, CheckBranchArg::Stay) => BranchRequest::Stay,
+                (None, CheckBranchArg::Part) => BranchRequest::Part,
+            };
+            let mut lim = cylroll::check::Limits::new(rtol, atol, digits);
+            lim.tols = tols;
+            lim.max_rows = max_rows;
+            lim.schema = schema;
+            lim.branch = branch;
+            if let Some(e) = event_tol {
+                lim.event_tol = e;
+            }
+            lim.past_end = match past_end {
+                PastEndArg::Report => cylroll::check::PastEnd::Report,
+                PastEndArg::Refuse => cylroll::check::PastEnd::Refuse,
+            };
+            let src = cylroll::check::File::new(&candidate);
+            let rep = cylroll::check::check_source(&src, &case, &lim)?;
             let out = match format {
                 Format::Json => rep.json(),
                 Format::Csv => rep.csv(),
                 Format::Text => rep.text(),
             };
-            return Ok((out, if rep.passed() { 0 } else { 1 }));
+            return Ok((out, rep.exit_code()));
         }
         Command::Audit { equation, out } => {
             return cylroll::audit::run(equation.as_deref(), &out).map(|s| (s, 0))
@@ -532,6 +608,14 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
 
 /// Entry point used by `main`: prints or reports the error, returns the exit code.
 pub fn main_with(args: Vec<String>) -> i32 {
+    // a closed standard output (`>&-`): Rust's runtime reopens a closed
+    // descriptor 1 on /dev/null (read-write) before main, so the answer
+    // would vanish with exit 0. A shell's `> /dev/null` opens it write-only;
+    // read-write /dev/null on descriptor 1 is the runtime's replacement.
+    if stdout_was_closed() {
+        eprintln!("error: cannot write standard output: it is closed (nothing was computed)");
+        return 4;
+    }
     let cli = match Cli::try_parse_from(args) {
         Ok(c) => c,
         Err(e) => {
@@ -558,6 +642,25 @@ pub fn main_with(args: Vec<String>) -> i32 {
             e.exit_code()
         }
     }
+}
+
+/// Whether descriptor 1 is the runtime's stand-in for a closed standard
+/// output: /dev/null opened read-write (Linux: /proc/self/fd and fdinfo).
+fn stdout_was_closed() -> bool {
+    #[cfg(target_os = "linux")]
+    {
+        let target = std::fs::read_link("/proc/self/fd/1");
+        if target.is_ok_and(|t| t == std::path::Path::new("/dev/null")) {
+            let info = std::fs::read_to_string("/proc/self/fdinfo/1").unwrap_or_default();
+            let flags = info
+                .lines()
+                .find_map(|l| l.strip_prefix("flags:"))
+                .and_then(|f| u32::from_str_radix(f.trim(), 8).ok());
+            // O_ACCMODE = 3, O_RDWR = 2
+            return flags.is_some_and(|f| f & 3 == 2);
+        }
+    }
+    false
 }
 
 /// A message on one line: clap's multi-line errors (tip, usage) joined, the

@@ -87,6 +87,7 @@ pub fn separation(model: &Model, ans: &mut Answer) {
     });
     match res {
         Ok((th, ts)) => {
+            branch_point(&ideal, &th, ans);
             attach(ans, "theta_s", Some(th));
             if has_ts {
                 match ts {
@@ -102,11 +103,57 @@ pub fn separation(model: &Model, ans: &mut Answer) {
             enclosure_why(&e)
         )),
     }
-    ans.notes.push(
-        "--rigorous encloses theta_s and t_s of the closed branch; the other values are verified \
-         only"
-            .into(),
-    );
+    let what = if ans
+        .proved
+        .get(
+            ans.values
+                .iter()
+                .position(|v| v.name == "theta_indeterminate")
+                .unwrap_or(usize::MAX),
+        )
+        .is_some_and(Option::is_some)
+    {
+        "theta_s and t_s of the closed branch and the branch point theta_indeterminate, \
+         t_indeterminate"
+    } else {
+        "theta_s and t_s of the closed branch"
+    };
+    ans.notes.push(format!(
+        "--rigorous encloses {what}; the other values are verified only"
+    ));
+}
+
+/// θ*, t* of an ideal model, proved beside the proved θs.
+fn branch_point(ideal: &cylroll::model::Ideal, theta_s: &Proved, ans: &mut Answer) {
+    let Some(start) = ans.value("theta_indeterminate").map(|v| v.value.clone()) else {
+        return;
+    };
+    let digits = ans.digits;
+    let has_t = ans.value("t_indeterminate").is_some();
+    let res = Oracle::new(ideal, digits).and_then(|mut o| {
+        prove_with(
+            digits,
+            |p| o.rigorous_branch_point(&start, &theta_s.iv, p),
+            |(th, t)| th.shown.digits < digits || t.as_ref().is_ok_and(|t| t.shown.digits < digits),
+        )
+    });
+    match res {
+        Ok((th, t)) => {
+            attach(ans, "theta_indeterminate", Some(th));
+            if has_t {
+                match t {
+                    Ok(t) => attach(ans, "t_indeterminate", Some(t)),
+                    Err(why) => ans.notes.push(format!(
+                        "t_indeterminate is not enclosed ({why}): verified digits only"
+                    )),
+                }
+            }
+        }
+        Err(e) => ans.notes.push(format!(
+            "theta_indeterminate is not enclosed ({}): verified digits only",
+            enclosure_why(&e)
+        )),
+    }
 }
 
 /// t(θ) of an ideal model.

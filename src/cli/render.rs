@@ -367,6 +367,12 @@ fn csv(a: &Answer) -> String {
         ("mu_contact", m.contact().mu_text()),
         ("branch", a.branch.name()),
     ] {
+        // "S,K" (static, kinetic) holds a comma: quoted (RFC 4180)
+        let v = if v.contains(',') {
+            format!("\"{v}\"")
+        } else {
+            v.to_string()
+        };
         out.push_str(&format!("{k},{v},,{tail}\n"));
     }
     if let Some(sm) = a.start_mode {

@@ -58,6 +58,11 @@ pub fn rule(n: usize, p: u32) -> Arc<Rule> {
         return r.clone();
     }
     let r = Arc::new(Rule::new(n, p));
+    if crate::cancel::cancelled() {
+        // possibly cut short (see Rule::new): never cached; the caller's
+        // next check ends the computation
+        return r;
+    }
     let mut c = cache.lock().unwrap_or_else(|e| e.into_inner());
     if c.len() >= CACHED_RULES {
         c.remove(0);
@@ -145,6 +150,10 @@ impl Rule {
         let mut odd = Float::new(q);
         let mut t = Float::new(q);
         for j in 0..=m / 2 {
+            if j % 64 == 0 && crate::cancel::cancelled() {
+                // cancelled: the rule is left unfinished and is not cached
+                break;
+            }
             even.assign(0);
             odd.assign(0);
             for (i, ak) in a.iter().enumerate() {
@@ -196,7 +205,11 @@ impl Rule {
         let h = b.sub(a).mul(&half);
         let mid = a.add(b).mul(&half);
         let mut sum = Iv::int(p, 0);
-        for (z, w) in self.nodes.iter().zip(&self.weights) {
+        for (j, (z, w)) in self.nodes.iter().zip(&self.weights).enumerate() {
+            if j % 64 == 0 && crate::cancel::cancelled() {
+                // cancelled: the caller's next check ends the computation
+                break;
+            }
             let x = mid.add(&h.mul(z));
             sum = sum.add(&w.mul(&g(&x)?));
         }
@@ -278,7 +291,7 @@ pub fn ellipse_max(rho: f64, mut box_bound: impl FnMut(&Cx) -> Option<Float>) ->
             continue;
         }
         boxes += 1;
-        if boxes > MAX_BOXES {
+        if boxes > MAX_BOXES || crate::cancel::cancelled() {
             return None;
         }
         let z = Cx {

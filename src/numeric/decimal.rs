@@ -132,6 +132,17 @@ pub fn short(x: &Float) -> String {
     }
 }
 
+/// A value computed at its own working precision, for a message: the
+/// significant digits that precision carries with a margin for the
+/// integration's error (40 bits), between 3 and 17; messages print it after
+/// "≈" (a message never prints digits the computation cannot hold).
+pub fn approx_text(x: &Float) -> String {
+    let digits = ((f64::from(x.prec()) - 40.0) * std::f64::consts::LOG10_2)
+        .floor()
+        .clamp(3.0, 17.0) as u32;
+    to_sig(x, digits)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -612,7 +612,48 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
             ])
         })?;
         values.extend(extra);
-        values.extend(o.friction_needed(theta)?);
+        // the most friction needed so far is ill-conditioned as N12 -> 0
+        // (|F21|/N12 grows without bound): where it cannot reach the digits
+        // asked, it is given with the digits it does verify, not dropped
+        // with the whole answer
+        match o.friction_needed(theta) {
+            Ok(v) => values.extend(v),
+            Err(e) => {
+                let (quantity, got) = match &e {
+                    Error::NotConverged {
+                        quantity, reached, ..
+                    } => (
+                        quantity.clone(),
+                        reached
+                            .split_whitespace()
+                            .next()
+                            .and_then(|n| n.parse::<u32>().ok())
+                            .unwrap_or(0),
+                    ),
+                    _ => return Err(e),
+                };
+                if got == 0 {
+                    return Err(e);
+                }
+                // fewer digits at lower working precisions may verify fewer
+                // still: step down until the ladder agrees
+                let mut d = got;
+                let (got, v) = loop {
+                    match Oracle::new(&ideal, d).and_then(|mut o| o.friction_needed(theta)) {
+                        Ok(v) => break (d, v),
+                        Err(Error::NotConverged { .. }) if d > 1 => d = (d * 2 / 3).max(1),
+                        Err(_) => return Err(e),
+                    }
+                };
+                values.extend(v);
+                ans.notes.push(format!(
+                    "the most friction needed so far (theta_mu_*_max, mu_*_max) is given to {got} \
+                     digits only, not the {digits} asked: {quantity}, the friction a rolling \
+                     contact needs, |F|/N, grows without bound as N -> 0, and the two working \
+                     precisions agree no further here"
+                ));
+            }
+        }
         ans.values = values;
         ans.phase = Some(Phase::Contact(mode));
         ans.routes.push(motion::Route::Energy);

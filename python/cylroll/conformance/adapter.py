@@ -121,7 +121,7 @@ def mu_pair(text: Optional[str]) -> Tuple[float, float]:
 
 def case_params(model: Any, name: Optional[str] = None) -> Dict[str, Any]:
     """The parameters an adapter builds from, out of a :class:`cylroll.Model`
-    (``model.params`` and ``model.friction``), as floats:
+    (``model.params``: the law keywords and coefficient texts), as floats:
 
     ``m1, m2, r1, r2, k1, k2, g, theta0, thetadot0, omega0``; ``floor``: one of
     ``"roll"`` (no slip), ``"slip"`` (frictionless), ``"fixed"`` (cylinder 1
@@ -133,20 +133,24 @@ def case_params(model: Any, name: Optional[str] = None) -> Dict[str, Any]:
     out: Dict[str, Any] = {k: parse_exact(p[k]) for k in
                            ("m1", "m2", "r1", "r2", "k1", "k2", "g", "theta0",
                             "thetadot0", "omega0")}
-    fr = model.friction
     floor, contact = p["floor"], p["contact"]
-    mf = (math.inf, math.inf) if floor == "roll" else (0.0, 0.0)
-    mc = (math.inf, math.inf) if contact == "roll" else (0.0, 0.0)
-    if fr is not None:
-        if floor == "roll" and fr.get("mu_floor") not in (None, "inf"):
-            mf = mu_pair(fr["mu_floor"])
-            floor = "coulomb" if 0 < mf[0] < math.inf else ("slip" if mf[0] == 0 else "roll")
-        if contact == "roll" and fr.get("mu_contact") not in (None, "inf"):
-            mc = mu_pair(fr["mu_contact"])
-            contact = ("coulomb" if 0 < mc[0] < math.inf
-                       else ("slip" if mc[0] == 0 else "roll"))
-    out.update(floor=floor, contact=contact, mu_floor=None if floor == "fixed" else mf,
-               mu_contact=mc, name=name or "model")
+
+    def law(which: str, keyword: str) -> Optional[Tuple[float, float]]:
+        # the model's own law keyword and coefficient text (``params``
+        # carries both for every law: "roll"/"inf", "slip"/"0", "coulomb"/"0.5,0.3")
+        text = p.get(which)
+        if keyword == "fixed" or text in (None, "none"):
+            return None
+        if keyword == "roll":
+            return (math.inf, math.inf)
+        if keyword == "slip":
+            return (0.0, 0.0)
+        return mu_pair(text)
+
+    mf = law("mu_floor", floor)
+    mc = law("mu_contact", contact)
+    out.update(floor=floor, contact=contact, mu_floor=mf, mu_contact=mc,
+               name=name or "model")
     return out
 
 

@@ -153,15 +153,32 @@ def phi2_start(case: str) -> float:
     return float(model(case).trajectory([0], digits=DIGITS).column("phi2")[0])
 
 
-def check_table(case: str, table: Dict[str, np.ndarray], rtol: float = 1e-3,
-                atol: float = 1e-6) -> Dict[str, Any]:
-    """``cylroll.check`` of an engine table (columns in the reference's names,
-    times within :func:`t_max`): passed, and per column the largest absolute
-    error and where."""
-    rep = cylroll.check(table, model(case), rtol=rtol, atol=atol, digits=12)
-    return dict(passed=rep.passed, rtol=rtol, atol=atol,
-                columns={c.name: dict(max_abs=c.max_abs, at=c.max_abs_t, failures=c.failures)
-                         for c in rep.columns})
+def check_table(case: str, table: Dict[str, np.ndarray], branch: Branch = "stay",
+                rtol: float = 1e-3, atol: float = 1e-3, event_tol: float = 1e-2,
+                digits: int = 12) -> Dict[str, Any]:
+    """The scoring core of ``cylroll check`` (:func:`cylroll.check`) on an
+    engine table (columns in the reference's names) against the reference on
+    ``branch``: the verdict, and per column and per phase of the reference the
+    largest absolute error and where (``atol`` in units of each column's
+    scale; rows after the end of the motion are left out and counted)."""
+    if isinstance(branch, str):
+        kw: Dict[str, Any] = dict(branch=branch)
+    else:
+        kw = dict(part_at=repr(float(branch)))
+    rep = cylroll.check(table, model(case), rtol=rtol, atol=atol, event_tol=event_tol,
+                        digits=digits, **kw)
+    ff = rep.first_failure
+    return dict(
+        verdict=rep.verdict, passed=rep.passed, rtol=rtol, atol=atol,
+        branch=rep.branch.followed, rows=rep.rows, rows_after_end=rep.rows_after_end,
+        columns={c.column: dict(max_abs=c.max_abs, at=c.max_abs_t, failures=c.failures)
+                 for c in rep.columns},
+        phases=[dict(mode=ph.mode, t_first=float(ph.t_first), t_last=float(ph.t_last),
+                     rows=ph.rows, passed=ph.passed,
+                     max_abs={c.column: c.phases[k].max_abs for c in rep.columns})
+                for k, ph in enumerate(rep.phases)],
+        first_failure=None if ff is None else dict(row=ff.row, t=float(ff.t), column=ff.column,
+                                                   candidate=ff.candidate, oracle=ff.oracle))
 
 
 def package_version() -> str:

@@ -13,10 +13,13 @@ from typing import Any, Callable, Dict, List, Optional, Sequence
 
 import numpy as np
 
+import cylroll
+
 from . import reference
 from .runner import RunResult, observed_order, run_case
 
-__all__ = ["BATTERY", "TOLERANCES", "QUANTITIES", "score_case", "scorecard", "write"]
+__all__ = ["BATTERY", "TOLERANCES", "CORE_TOLERANCES", "QUANTITIES", "score_case", "scorecard",
+           "write"]
 
 #: The default battery: rolling, Coulomb at three μ (slip then flight; the
 #: contact opening at the cone), frictionless, a held lower cylinder.
@@ -33,6 +36,10 @@ TOLERANCES: Dict[str, float] = dict(
     contact_losses=0,        # spurious contact losses before the parting
     energy_increase=1e-3,    # max (E − E0) / (m2 g r) before the parting
 )
+
+#: The tolerances of ``cylroll check``'s scoring core in each run (``check``):
+#: rtol, atol in units of each column's scale, events in radians of θ.
+CORE_TOLERANCES: Dict[str, float] = dict(rtol=1e-3, atol=1e-3, event_tol=1e-2)
 
 #: Quantities compared with the reference (the forces only where the engine exposes them).
 QUANTITIES = ("theta", "theta_dot", "x1", "x1_dot", "phi1", "phi1_dot", "phi2", "phi2_dot",
@@ -107,6 +114,24 @@ def _compare(case: str, run: RunResult, phases: Dict[str, tuple], t_hi: float,
     return errors
 
 
+def _core_check(case: str, run: RunResult, t_hi: float, max_rows: int,
+                branch: Any) -> Dict[str, Any]:
+    """``cylroll check``'s scoring core on the run's rows (those before
+    ``t_hi`` where every compared quantity is finite), on the branch judged
+    against: its verdict per phase of the reference and the first failing
+    row, at :data:`CORE_TOLERANCES`."""
+    idx = _subsample(run.t, t_hi, max_rows)
+    cols = [q for q in QUANTITIES if q in reference.COLUMNS and
+            not (q in FORCES and not run.has_forces[0 if q in ("F1", "N1") else 1])]
+    table = {"t": run.t[idx], **{q: run.q[q][idx] for q in cols}}
+    ok = np.all([np.isfinite(table[q]) for q in cols], axis=0)
+    table = {k: v[ok] for k, v in table.items()}
+    try:
+        return reference.check_table(case, table, branch, **CORE_TOLERANCES)
+    except cylroll.CylrollError as e:
+        return dict(error=str(e))
+
+
 def _events(run: RunResult, ref_events: List[Dict[str, Any]]) -> List[Dict[str, Any]]:
     out = []
     firsts: Dict[tuple, Dict[str, Any]] = {}
@@ -173,6 +198,7 @@ def score_case(adapter: Any, case: str, dts: Sequence[float],
                     cone_violation=m["cone_violation"], penetration=m["penetration"],
                     energy=m["energy"], forces_exposed=dict(floor=run.has_forces[0],
                                                             contact=run.has_forces[1]))
+        item["check"] = _core_check(case, run, t_hi, max_rows, ref_branch)
         if note:
             item["note"] = note
         runs.append(item)
@@ -294,7 +320,7 @@ def scorecard(adapter: Any, cases: Sequence[str], dts: Sequence[float],
                     settings={k: v for k, v in (getattr(adapter, "settings", {}) or {}).items()
                               if k != "dt"}),
         reference=dict(package="cylroll", version=reference.package_version()),
-        dts=list(dts), tolerances=TOLERANCES, cases=out_cases,
+        dts=list(dts), tolerances=TOLERANCES, core_tolerances=CORE_TOLERANCES, cases=out_cases,
         passed=all(ch["pass"] for c in out_cases for ch in c["checks"]),
         wall_seconds=round(time.perf_counter() - t0, 2)))
 
@@ -341,6 +367,22 @@ def to_html(card: Dict[str, Any]) -> str:
             h.append(f"<tr><td style='text-align:left'>{q}</td><td>{_fmt(c['order'].get(q))}</td>"
                      + "".join(f"<td>{_fmt(r['errors'].get(q, {}).get(ph))}</td>"
                                for r in c["runs"] for ph in phs) + "</tr>")
+        h.append("</table><table><tr><th>dt</th><th>cylroll check (per phase of the "
+                 "reference)</th><th>first failure</th></tr>")
+        for r in c["runs"]:
+            ck = r.get("check") or {}
+            if "error" in ck:
+                h.append(f"<tr><td>{_fmt(r['dt'])}</td><td style='text-align:left'>"
+                         f"{_fmt(ck['error'])}</td><td>–</td></tr>")
+                continue
+            phs = "; ".join(f"{_fmt(p['mode'])}: {'pass' if p['passed'] else 'fail'}"
+                            for p in ck.get("phases", []))
+            ff = ck.get("first_failure")
+            first = "–" if ff is None else (f"row {_fmt(ff['row'])} (t = {_fmt(ff['t'])}), "
+                                            f"{_fmt(ff['column'])}")
+            cls = "pass" if ck.get("passed") else "fail"
+            h.append(f"<tr class='{cls}'><td>{_fmt(r['dt'])}</td><td style='text-align:left'>"
+                     f"{_fmt(ck.get('verdict'))}: {phs}</td><td>{first}</td></tr>")
         h.append("</table><table><tr><th>dt</th><th>event</th><th>engine θ</th>"
                  "<th>reference θ</th><th>error</th></tr>")
         for r in c["runs"]:

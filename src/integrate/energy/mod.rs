@@ -269,9 +269,12 @@ impl Route {
         let (ds, _) = self.delta_s(p)?;
         let th_s = Float::with_val(p, th0.to_float(p) + &ds);
         let range = format!(
-            "must lie in the motion, between theta0 = {} and the separation angle theta_s = {}",
+            "must lie in the motion, between theta0 = {} and the separation angle theta_s ≈ {}",
             self.model.start().theta0,
-            crate::numeric::decimal::to_sig(&self.odd(th_s), 12)
+            crate::numeric::decimal::approx_text(&Float::with_val(
+                p.min(ds.prec()),
+                self.odd(th_s)
+            ))
         );
         if d.is_sign_negative() && !d.is_zero() {
             return Err(Error::invalid(

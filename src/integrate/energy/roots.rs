@@ -106,16 +106,35 @@ impl Route {
             let d = &self.engine(ISO)?.dynm;
             (d.c0.clone(), N12Poly::a_h(d))
         };
-        let th0 = self.work.start().theta0.to_float(ISO);
-        let c_end = Float::with_val(ISO, &th0 + Float::with_val(ISO, delta_end)).cos();
-        let lo = Float::with_val(ISO, &c_end).max(&Float::with_val(ISO, -1));
-        let roots = poly::sign_change_roots(&hp.at(&a_h, ISO), &lo, &c0);
+        // isolation at 64 bits plus the coefficients' magnitude: a cone
+        // polynomial carries μ², and for a large μ its two roots around
+        // N12 = 0 lie ~1/μ apart with |P| = O(1) between them, a dip that
+        // 64-bit Horner sums of O(μ²) terms cannot see (the pair would be
+        // merged and the slip onset missed)
+        let iso = isolation_bits(&hp.at(&a_h, ISO));
+        // the end of the range at the precision it is known to (a root ~1/μ
+        // before θs must not fall outside a 64-bit rounding of cos θs)
+        let ep = iso.max(delta_end.prec());
+        let th0 = self.work.start().theta0.to_float(ep);
+        let c_end = Float::with_val(ep, &th0 + delta_end).cos();
+        let c0 = Float::with_val(iso, &c0);
+        let lo = Float::with_val(iso, &c_end).max(&Float::with_val(iso, -1));
+        let a_hi = if iso > ISO {
+            N12Poly::a_h(&Dyn::new(&self.work, &self.red, iso)?)
+        } else {
+            a_h
+        };
+        let roots = poly::sign_change_roots(&hp.at(&a_hi, iso), &lo, &c0);
         let Some(start) = roots.into_iter().rev().find(|c| *c < c0 && *c > lo) else {
             return Ok(None);
         };
-        let a_hp = N12Poly::a_h(&Dyn::new(&self.work, &self.red, p + 16)?);
-        let coef = hp.at(&a_hp, p + 16);
-        let (c, eps) = poly::refine_root(name, &coef, &start, p)?;
+        // refined with the same extra bits: near the root the polynomial is
+        // a difference of terms of the coefficients' size
+        let extra = iso - ISO;
+        let a_hp = N12Poly::a_h(&Dyn::new(&self.work, &self.red, p + 16 + extra)?);
+        let coef = hp.at(&a_hp, p + 16 + extra);
+        let (c, eps) = poly::refine_root(name, &coef, &start, p + extra)?;
+        let c = Float::with_val(p, &c);
         let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
         // dθ = −dc / sin θ, sin θ = √(1 − c²) (> 0 on (0, π)); ×(1 + 2^-16)
         let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
@@ -125,4 +144,25 @@ impl Route {
         let th0p = self.work.start().theta0.to_float(p);
         Ok(Some((Float::with_val(p, th - th0p), err)))
     }
+}
+
+/// The precision at which the sign changes of a polynomial with these
+/// coefficients are isolated: 64 bits, plus the binary magnitude of the sum
+/// of the coefficients' absolute values above 1 (Horner's rounding error at
+/// c in [−1, 1] is about that sum times 2^−prec), so that a dip of order 1
+/// between two close roots keeps its sign. Capped at 64 + 8192 bits.
+fn isolation_bits(coef: &[Float]) -> u32 {
+    let sum: f64 = coef.iter().map(|c| c.to_f64().abs()).sum();
+    let extra = if sum.is_finite() && sum > 1.0 {
+        sum.log2().ceil() as u32
+    } else if sum.is_finite() {
+        0
+    } else {
+        // beyond f64: the largest exponent
+        coef.iter()
+            .filter_map(|c| c.get_exp())
+            .max()
+            .map_or(0, |e| e.max(0) as u32 + 8)
+    };
+    ISO + extra.min(8192)
 }

@@ -82,6 +82,10 @@ pub(super) fn first_bracket(
     let mut first_point = true;
     let points = nodes.iter().copied().zip(vals).chain([(len, end)]);
     for (s, g) in points {
+        if crate::cancel::cancelled() {
+            // the caller's next check ends the computation
+            return None;
+        }
         let sf = s.to_f64();
         if !first_point {
             for i in 1..=BETWEEN {

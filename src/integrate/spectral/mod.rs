@@ -242,9 +242,10 @@ pub fn run(
             .map(|k| per_node.iter().map(|v| v[k].clone()).collect())
             .collect();
         let end_vals: Vec<Float> = watch_values(events.iter().map(|e| &e.watch), &end_smp);
+        crate::cancel::check()?;
         let brackets: Vec<Option<(Float, Float)>> = (0..events.len())
             .map(|k| {
-                if events[k].terminal {
+                if events[k].terminal && !crate::cancel::cancelled() {
                     let c64 = coeffs64(&node_vals[k], &cos64);
                     let at: Vec<&Float> = pc.nodes.iter().map(|(s, _)| s).collect();
                     first_bracket(
@@ -260,6 +261,7 @@ pub fn run(
                 }
             })
             .collect();
+        crate::cancel::check()?;
         let earliest = brackets
             .iter()
             .flatten()

@@ -142,6 +142,7 @@ pub(super) fn attempt(
     let mut parts = Vec::with_capacity(n);
     let mut qp = q0.to_vec();
     for s in &pts {
+        crate::cancel::check()?;
         parts.push(probe(sys, &mut qp, &theta_at(th0, dir, m, s))?);
         *evals += 2;
     }
@@ -164,6 +165,7 @@ pub(super) fn attempt(
         .zip(&dth)
         .map(|((_, b), d)| Float::with_val(p, &b.qdd[ith] * d) * 2u32)
         .collect();
+    crate::cancel::check()?;
     let gfit = ChebFit::from_values(&zero, len, su.roots, p, &g);
     if !within(&gfit, su.tol, &inv_len, &mut used) {
         return Ok(Attempt::Shorter);
@@ -184,6 +186,7 @@ pub(super) fn attempt(
         (2, Some(r)) => r,
         _ => su.roots,
     };
+    crate::cancel::check()?;
     let jfit = ChebFit::from_values(&hz, &hl, hroots, hp, &j);
     let uscale = Float::with_val(p, su.sc.ts.square_ref()).recip() * &inv_len;
     if !within(&jfit, su.tol, &uscale, &mut used) {
@@ -206,6 +209,7 @@ pub(super) fn attempt(
         .iter()
         .map(|x| Float::with_val(p, x.sqrt_ref()).recip() * m)
         .collect();
+    crate::cancel::check()?;
     let rfit = ChebFit::from_values(&zero, len, su.roots, p, &rate);
     let tfloor = Float::with_val(p, &su.sc.ts * &inv_len);
     if !within(&rfit, su.tol, &tfloor, &mut used) {
@@ -245,6 +249,7 @@ pub(super) fn attempt(
         })
         .collect();
     for &i in &su.moving {
+        crate::cancel::check()?;
         let f: Vec<Float> = (0..n)
             .map(|k| {
                 let (a, b) = &parts[k];
@@ -277,6 +282,7 @@ pub(super) fn attempt(
         })
         .collect();
     for &i in &su.moving {
+        crate::cancel::check()?;
         let f: Vec<Float> = (0..n)
             .map(|k| Float::with_val(p, &vnodes[k][i] * &rate[k]))
             .collect();

@@ -38,10 +38,16 @@
 //!   built from the rolling model's closed forms; it is isolated like θs
 //!   ([`Oracle::rigorous_stick_end`]), and t to it follows by the quadrature.
 //!
+//! - θ*, the branch point (where parting first becomes lawful while the
+//!   cylinders press): the first sign change of the free relative normal
+//!   acceleration times K², a polynomial in c like N12·K², enclosed the same
+//!   way and proved to come before θs ([`Oracle::rigorous_branch_point`]).
+//!
 //! Everything else (the integrated friction phases, a start from rest
 //! exactly at the top, angles beyond 2π/3 for t) is not enclosed and says
 //! so.
 
+mod branch;
 mod rows;
 mod stick;
 mod theta_s;

@@ -161,6 +161,7 @@ fn integrate_piece(
     let (m64, h64) = (a64.add(&b64).mul(&half), b64.sub(&a64).mul(&half));
     let mut best: Option<(f64, Float, usize)> = None;
     for frac in [0.95, 0.85, 0.7, 0.5, 0.3, 0.15] {
+        crate::cancel::check()?;
         let rho = 1.0 + (rho_max - 1.0) * frac;
         if rho <= 1.0 + 1e-6 || !rho.is_finite() {
             break;
@@ -196,8 +197,11 @@ fn integrate_piece(
         ));
     }
     let rule = ccrig::rule(ccrig::round_n(n), p);
+    crate::cancel::check()?;
     let (ai, bi) = (Iv::rational(p, a), Iv::rational(p, b));
     let q = rule.apply(&ai, &bi, |x| ig.eval(x))?;
+    // a cancelled rule or sum is cut short: never returned as a proof
+    crate::cancel::check()?;
     let h_hi = Float::with_val_round(64, &h64.hi, Round::Up).0;
     let bound = ccrig::truncation_bound(&h_hi, &m, rho, rule.n);
     let bound = Float::with_val_round(p, &bound, Round::Up).0;

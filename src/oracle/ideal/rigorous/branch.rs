@@ -1,0 +1,99 @@
+//! θ* proved: the branch point of an ideal model, where parting first
+//! becomes lawful while the cylinders press on each other.
+//!
+//! Along the closed motion the free relative normal acceleration times K² is
+//! Π(c) = r·H·K − g·c·K² (c = cos θ, H = A_H − 2(g/r)c): a polynomial in c
+//! whose coefficients are exact rationals and powers of A_H (an interval).
+//! The verified answer decides that Π < 0 at θ0 and that it changes sign
+//! before θs; the proof encloses the first sign change exactly as θs is
+//! enclosed: Π(c_lo) > 0 > Π(c_hi) at two points around the root (Newton at
+//! the working precision from the verified root), and Π < 0 on
+//! (c_hi, cos θ0] (the positivity proof of −Π), so by the intermediate value
+//! theorem the first zero of Π after θ0 has cos θ* in [c_lo, c_hi]. The
+//! enclosure must lie strictly before the proved θs (otherwise the two
+//! coincide within the proof and nothing is claimed), and t* follows by the
+//! proved quadrature.
+
+use super::theta_s::positive_above;
+use super::{Oracle, Proved};
+use crate::error::Result;
+use crate::numeric::interval::{not_enclosed, Iv};
+use rug::float::Round;
+use rug::Float;
+
+impl Oracle {
+    /// The coefficients of Π(c) (the free normal acceleration times K²) as
+    /// intervals at `p` bits (A_H enclosed).
+    fn free_normal_interval_coefficients(&mut self, p: u32) -> Vec<Iv> {
+        let k = self.consts(p);
+        let hp = self.route.free_normal_poly();
+        let a_h = k.h0.add(&k.gr.mul(&k.th0.cos()).mul(&Iv::int(p, 2)));
+        let n = hp.parts.iter().map(Vec::len).max().unwrap_or(0);
+        let mut out = vec![Iv::int(p, 0); n];
+        let mut pow = Iv::int(p, 1);
+        for part in &hp.parts {
+            for (i, q) in part.iter().enumerate() {
+                out[i] = out[i].add(&pow.mul_q(q));
+            }
+            pow = pow.mul(&a_h);
+        }
+        out
+    }
+
+    /// θ* (user's frame) and, when finite, t* proved at `p` bits, given the
+    /// verified θ* (`start`, user's frame) and the proved θs.
+    ///
+    /// Errors: the signs, the negativity before the root or the order
+    /// θ* < θs could not be proved at this precision.
+    pub fn rigorous_branch_point(
+        &mut self,
+        start: &Float,
+        theta_s: &Iv,
+        p: u32,
+    ) -> Result<(Proved, std::result::Result<Proved, String>)> {
+        use crate::numeric::poly;
+        let coef = self.free_normal_interval_coefficients(p);
+        let neg: Vec<Iv> = coef.iter().map(Iv::neg).collect();
+        let mids: Vec<Float> = coef.iter().map(|c| c.mid_rad().0).collect();
+        let c_start = Float::with_val(p, start.clone().abs()).cos();
+        let (c_star, eps0) = poly::refine_root("theta_indeterminate", &mids, &c_start, p)
+            .unwrap_or_else(|_| (c_start.clone(), Float::with_val(p, 1e-12)));
+        let c0 = self.consts(p).th0.cos();
+        let mut eps = Float::with_val(p, eps0 * 4u32);
+        let min_eps = Float::with_val(p, 1u32) >> (p as i32 - 8);
+        if eps < min_eps {
+            eps = min_eps;
+        }
+        for _ in 0..24 {
+            let lo = Float::with_val_round(p, &c_star - &eps, Round::Down).0;
+            let hi = Float::with_val_round(p, &c_star + &eps, Round::Up).0;
+            let plo = Iv::horner(&coef, &Iv::point(p, &lo));
+            let phi = Iv::horner(&coef, &Iv::point(p, &hi));
+            if plo.is_positive() && phi.is_negative() && positive_above(&neg, &hi, &c0.hi)? {
+                let th = Iv::new(lo, hi).acos()?;
+                let s = theta_s.abs();
+                if th.hi >= s.lo {
+                    return Err(not_enclosed(
+                        "theta_indeterminate: the order theta* < theta_s could not be proved",
+                    ));
+                }
+                let user = self.odd_iv(th);
+                let t = if self.route.work.starts_at_equilibrium() {
+                    Err("t_indeterminate is infinite".to_string())
+                } else {
+                    let w = self.odd_iv(user.clone());
+                    self.rigorous_time_iv(&w, p).map_err(|e| e.to_string())
+                };
+                let digits = self.digits;
+                return Ok((
+                    Proved::new("theta_indeterminate", user, digits),
+                    t.map(|t| Proved::new("t_indeterminate", t, digits)),
+                ));
+            }
+            eps <<= 2u32;
+        }
+        Err(not_enclosed(
+            "theta_indeterminate: the sign change of the free normal acceleration could not be proved",
+        ))
+    }
+}
