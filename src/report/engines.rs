@@ -75,7 +75,17 @@ fn text(v: Option<&Value>) -> String {
         Some(Value::String(s)) => s.clone(),
         Some(Value::Bool(b)) => if *b { "yes" } else { "no" }.into(),
         Some(Value::Number(n)) => match n.as_f64() {
-            Some(x) if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e5) => format!("{x:.3e}"),
+            Some(0.0) => "0".into(),
+            Some(x) if x.abs() < 1e-3 || x.abs() >= 1e5 => {
+                // four significant digits, trailing zeros of the mantissa dropped
+                let s = format!("{x:.3e}");
+                match s.split_once('e') {
+                    Some((m, e)) if m.contains('.') => {
+                        format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
+                    }
+                    _ => s,
+                }
+            }
             Some(x) if x.fract() != 0.0 => format!("{}", (x * 1e4).round() / 1e4),
             _ => n.to_string(),
         },
@@ -266,7 +276,7 @@ mod tests {
             r#"{"schema": "cylroll-conformance/0",
                 "engine": {"name": "toy", "version": "1.2", "settings": {}},
                 "reference": {"package": "cylroll", "version": "0.1.0"},
-                "dts": [0.002, 0.001], "passed": false,
+                "dts": [0.002, 0.0005], "passed": false,
                 "cases": [{"case": "main_mu_10",
                            "branch_point": {"theta": 0.9657, "t": 5.05},
                            "branch_taken": "part",
@@ -288,8 +298,9 @@ mod tests {
             "toy 1.2",
             "main_mu_10",
             "the engine took the <strong>part</strong> branch",
-            "2.700e-4",
+            "2.7e-4",
             "some checks fail",
+            "0.002, 5e-4",
             "commit 0123456789ab of 2025-02-03",
             "golden/engines/toy/scorecard.json",
         ] {
