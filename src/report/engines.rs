@@ -152,22 +152,22 @@ pub fn page(cards: &[Card], root_shown: &str, report_stamp: &str) -> String {
         // the scorecard's own stamp where it records one, else its commit
         let date = stamp(j, &["date", "created", "generated", "timestamp"]);
         let commit = stamp(j, &["commit", "git_commit", "reference_commit"]);
-        let (date, commit) = match (date, commit, &c.committed) {
-            (None, None, Some(g)) => ("committed".to_string(), format!("commit {g}")),
-            (None, None, None) => ("no date recorded".to_string(), "not committed".to_string()),
-            (d, k, _) => (
+        let stamp = match (date, commit, &c.committed) {
+            (None, None, Some(g)) => format!("committed in {g}"),
+            (None, None, None) => "not committed, no date recorded".to_string(),
+            (d, k, _) => format!(
+                "{}, {}",
                 d.unwrap_or_else(|| "no date recorded".into()),
-                k.unwrap_or_else(|| "no commit recorded".into()),
+                k.unwrap_or_else(|| "no commit recorded".into())
             ),
         };
         let passed = j.get("passed").and_then(Value::as_bool);
         s.push_str(&format!(
-            "<p>Scorecard <code>{}/{}/scorecard.json</code> (schema {}): {}, {}; reference {} {}; time steps {}; {}.</p>\n",
+            "<p>Scorecard <code>{}/{}/scorecard.json</code> (schema {}): {}; reference {} {}; time steps {}; {}.</p>\n",
             esc(root_shown),
             esc(&c.dir),
             esc(&text(j.get("schema"))),
-            esc(&date),
-            esc(&commit),
+            esc(&stamp),
             esc(&text(j.get("reference").and_then(|r| r.get("package")))),
             esc(&text(j.get("reference").and_then(|r| r.get("version")))),
             esc(&j.get("dts").and_then(Value::as_array).map(|a| a.iter().map(|x| text(Some(x))).collect::<Vec<_>>().join(", ")).unwrap_or_else(|| "–".into())),
@@ -301,7 +301,7 @@ mod tests {
             "2.7e-4",
             "some checks fail",
             "0.002, 5e-4",
-            "commit 0123456789ab of 2025-02-03",
+            "committed in 0123456789ab of 2025-02-03",
             "golden/engines/toy/scorecard.json",
         ] {
             assert!(p.contains(want), "{want} missing from {p}");
