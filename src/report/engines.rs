@@ -75,7 +75,17 @@ fn text(v: Option<&Value>) -> String {
         Some(Value::String(s)) => s.clone(),
         Some(Value::Bool(b)) => if *b { "yes" } else { "no" }.into(),
         Some(Value::Number(n)) => match n.as_f64() {
-            Some(x) if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e5) => format!("{x:.3e}"),
+            Some(0.0) => "0".into(),
+            Some(x) if x.abs() < 1e-3 || x.abs() >= 1e5 => {
+                // four significant digits, trailing zeros of the mantissa dropped
+                let s = format!("{x:.3e}");
+                match s.split_once('e') {
+                    Some((m, e)) if m.contains('.') => {
+                        format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
+                    }
+                    _ => s,
+                }
+            }
             Some(x) if x.fract() != 0.0 => format!("{}", (x * 1e4).round() / 1e4),
             _ => n.to_string(),
         },
@@ -142,22 +152,22 @@ pub fn page(cards: &[Card], root_shown: &str, report_stamp: &str) -> String {
         // the scorecard's own stamp where it records one, else its commit
         let date = stamp(j, &["date", "created", "generated", "timestamp"]);
         let commit = stamp(j, &["commit", "git_commit", "reference_commit"]);
-        let (date, commit) = match (date, commit, &c.committed) {
-            (None, None, Some(g)) => ("committed".to_string(), format!("commit {g}")),
-            (None, None, None) => ("no date recorded".to_string(), "not committed".to_string()),
-            (d, k, _) => (
+        let stamp = match (date, commit, &c.committed) {
+            (None, None, Some(g)) => format!("committed in {g}"),
+            (None, None, None) => "not committed, no date recorded".to_string(),
+            (d, k, _) => format!(
+                "{}, {}",
                 d.unwrap_or_else(|| "no date recorded".into()),
-                k.unwrap_or_else(|| "no commit recorded".into()),
+                k.unwrap_or_else(|| "no commit recorded".into())
             ),
         };
         let passed = j.get("passed").and_then(Value::as_bool);
         s.push_str(&format!(
-            "<p>Scorecard <code>{}/{}/scorecard.json</code> (schema {}): {}, {}; reference {} {}; time steps {}; {}.</p>\n",
+            "<p>Scorecard <code>{}/{}/scorecard.json</code> (schema {}): {}; reference {} {}; time steps {}; {}.</p>\n",
             esc(root_shown),
             esc(&c.dir),
             esc(&text(j.get("schema"))),
-            esc(&date),
-            esc(&commit),
+            esc(&stamp),
             esc(&text(j.get("reference").and_then(|r| r.get("package")))),
             esc(&text(j.get("reference").and_then(|r| r.get("version")))),
             esc(&j.get("dts").and_then(Value::as_array).map(|a| a.iter().map(|x| text(Some(x))).collect::<Vec<_>>().join(", ")).unwrap_or_else(|| "–".into())),
@@ -266,7 +276,7 @@ mod tests {
             r#"{"schema": "cylroll-conformance/0",
                 "engine": {"name": "toy", "version": "1.2", "settings": {}},
                 "reference": {"package": "cylroll", "version": "0.1.0"},
-                "dts": [0.002, 0.001], "passed": false,
+                "dts": [0.002, 0.0005], "passed": false,
                 "cases": [{"case": "main_mu_10",
                            "branch_point": {"theta": 0.9657, "t": 5.05},
                            "branch_taken": "part",
@@ -288,9 +298,10 @@ mod tests {
             "toy 1.2",
             "main_mu_10",
             "the engine took the <strong>part</strong> branch",
-            "2.700e-4",
+            "2.7e-4",
             "some checks fail",
-            "commit 0123456789ab of 2025-02-03",
+            "0.002, 5e-4",
+            "committed in 0123456789ab of 2025-02-03",
             "golden/engines/toy/scorecard.json",
         ] {
             assert!(p.contains(want), "{want} missing from {p}");

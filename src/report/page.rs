@@ -270,6 +270,7 @@ p.data{font-size:0.95em;margin-top:-1em}\
 @media (max-width:700px){\
 body{padding:0.3em 0.6em 2em 0.6em;font-size:15px}\
 object.wide{display:none}object.narrow{display:block}\
+details>summary{list-style-position:inside;margin:1.2em 0 0.3em 0}details>summary h2{display:inline}\
 table.data,table.data tbody,table.data tr,table.data td{display:block;width:100%}\
 table.data thead{display:none}\
 table.data tr{border:1px solid #ccc;margin:0 0 0.6em 0;padding:0.15em 0}\
