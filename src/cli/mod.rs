@@ -2,6 +2,7 @@
 
 mod prove;
 mod render;
+mod stream;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use cylroll::error::{Error, Result};
@@ -12,6 +13,7 @@ use cylroll::motion::Branch;
 use cylroll::oracle::{self, Options};
 use rug::Rational;
 use std::io::Write;
+use stream::Output;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -456,9 +458,11 @@ fn trajectory_times(
 }
 
 /// Runs the command and returns the text to print on standard output.
-pub fn run(cli: Cli) -> Result<(String, i32)> {
+pub fn run(cli: Cli) -> Result<(Output, i32)> {
     let (common, answer) = match cli.command {
-        Command::Golden { dir } => return cylroll::golden::write_all(&dir).map(|s| (s, 0)),
+        Command::Golden { dir } => {
+            return cylroll::golden::write_all(&dir).map(|s| (Output::Text(s), 0))
+        }
         Command::Check {
             candidate,
             case,
@@ -518,13 +522,13 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 Format::Csv => rep.csv(),
                 Format::Text => rep.text(),
             };
-            return Ok((out, rep.exit_code()));
+            return Ok((Output::Text(out), rep.exit_code()));
         }
         Command::Audit { equation, out } => {
-            return cylroll::audit::run(equation.as_deref(), &out).map(|s| (s, 0))
+            return cylroll::audit::run(equation.as_deref(), &out).map(|s| (Output::Text(s), 0))
         }
         Command::Report { out, quiet } => {
-            return cylroll::report::run(&out, !quiet).map(|s| (s, 0))
+            return cylroll::report::run(&out, !quiet).map(|s| (Output::Text(s), 0))
         }
         Command::Verify {
             digits,
@@ -541,7 +545,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                     ));
                 }
                 return cylroll::stack::stack_report(&spec, digits, format == Format::Json)
-                    .map(|s| (s, 0));
+                    .map(|s| (Output::Text(s), 0));
             }
             let rep = cylroll::crosscheck::verify_report(digits)?;
             if timings {
@@ -552,7 +556,7 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
                 Format::Json => rep.json(),
                 Format::Csv => rep.csv(),
             };
-            return Ok((out, 0));
+            return Ok((Output::Text(out), 0));
         }
         Command::Separation { common } => {
             let model = common.model()?;
@@ -596,14 +600,11 @@ pub fn run(cli: Cli) -> Result<(String, i32)> {
             let model = common.model()?;
             let opts = common.options()?;
             prove::supported(&common, &model)?;
-            let mut ans = oracle::trajectory(&model, &times, &opts)?;
-            if common.rigorous {
-                prove::trajectory(&model, &times, &mut ans);
-            }
-            (common, ans)
+            let out = stream::trajectory(&model, &times, &opts, common.rigorous, common.format)?;
+            return Ok((out, 0));
         }
     };
-    Ok((render::render(answer, common.format), 0))
+    Ok((Output::Text(render::render(answer, common.format)), 0))
 }
 
 /// Entry point used by `main`: prints or reports the error, returns the exit code.
@@ -631,7 +632,7 @@ pub fn main_with(args: Vec<String>) -> i32 {
     match run(cli) {
         Ok((out, code)) => {
             let mut so = std::io::stdout().lock();
-            if let Err(e) = so.write_all(out.as_bytes()).and_then(|_| so.flush()) {
+            if let Err(e) = out.write_to(&mut so).and_then(|_| so.flush()) {
                 eprintln!("error: cannot write standard output: {e}");
                 return 4;
             }

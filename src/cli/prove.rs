@@ -210,49 +210,83 @@ pub fn forces(model: &Model, theta: &Exact, ans: &mut Answer) {
     }
 }
 
-/// The rows of an ideal model in the closed branch (the flight is verified
-/// only).
-pub fn trajectory(model: &Model, times: &[Exact], ans: &mut Answer) {
-    let digits = ans.digits;
-    let Some(ideal) = model.ideal() else { return };
-    let mut o = match Oracle::new(&ideal, digits) {
-        Ok(o) => o,
-        Err(e) => {
-            ans.notes.push(format!(
-                "the rows are not enclosed ({}): verified digits only",
-                enclosure_why(&e)
-            ));
+/// The rows of an ideal model in the closed branch enclosed, block after
+/// block of a trajectory (the flight is verified only).
+#[derive(Default)]
+pub struct RowsProof {
+    oracle: Option<Oracle>,
+    /// Why the enclosures stopped (then no later row is enclosed).
+    failed: Option<String>,
+    /// Rows in flight (verified only).
+    flight: usize,
+    /// Some row was enclosed.
+    proved: bool,
+}
+
+impl RowsProof {
+    /// Encloses the rows of `ans` (a block of a trajectory at `times`).
+    pub fn block(&mut self, model: &Model, times: &[Exact], ans: &mut Answer) {
+        let digits = ans.digits;
+        if self.failed.is_some() {
             return;
         }
-    };
-    let mut rows = Vec::new();
-    let mut flight = 0;
-    for (t, row) in times.iter().zip(&ans.rows) {
-        if row.phase.is_flight() {
-            flight += 1;
-            rows.push(Vec::new());
-            continue;
-        }
-        match prove_with(digits, |p| o.rigorous_row(t, p), |v| proves_less(v, digits)) {
-            Ok(r) => rows.push(r),
-            Err(e) => {
-                ans.notes.push(format!(
-                    "the rows are not enclosed (t = {t}: {}): verified digits only",
-                    enclosure_why(&e)
-                ));
-                return;
+        let Some(ideal) = model.ideal() else { return };
+        if self.oracle.is_none() {
+            match Oracle::new(&ideal, digits) {
+                Ok(o) => self.oracle = Some(o),
+                Err(e) => {
+                    self.failed = Some(format!(
+                        "the rows are not enclosed ({}): verified digits only",
+                        enclosure_why(&e)
+                    ));
+                    return;
+                }
             }
         }
+        let Some(o) = self.oracle.as_mut() else {
+            return;
+        };
+        let mut rows = Vec::new();
+        for (t, row) in times.iter().zip(&ans.rows) {
+            if row.phase.is_flight() {
+                self.flight += 1;
+                rows.push(Vec::new());
+                continue;
+            }
+            match prove_with(digits, |p| o.rigorous_row(t, p), |v| proves_less(v, digits)) {
+                Ok(r) => {
+                    self.proved = true;
+                    rows.push(r)
+                }
+                Err(e) => {
+                    self.failed = Some(format!(
+                        "the rows from t = {t} on are not enclosed ({}): verified digits only",
+                        enclosure_why(&e)
+                    ));
+                    break;
+                }
+            }
+        }
+        ans.proved_rows = rows;
     }
-    if flight > 0 {
-        ans.notes.push(format!(
-            "--rigorous: the {flight} row(s) in flight are verified only (not enclosed)"
-        ));
+
+    /// The notes on the enclosures, added to the answer's.
+    pub fn notes(&self, ans: &mut Answer) {
+        if let Some(f) = &self.failed {
+            ans.notes.push(f.clone());
+        }
+        if self.flight > 0 {
+            ans.notes.push(format!(
+                "--rigorous: the {} row(s) in flight are verified only (not enclosed)",
+                self.flight
+            ));
+        }
+        if self.proved {
+            ans.notes.push(
+                "--rigorous encloses the columns t ... y2 and F1 ... N12 of the rows before \
+                 separation; the velocities, slip speeds and work are verified only"
+                    .into(),
+            );
+        }
     }
-    ans.notes.push(
-        "--rigorous encloses the columns t ... y2 and F1 ... N12 of the rows before separation; \
-         the velocities, slip speeds and work are verified only"
-            .into(),
-    );
-    ans.proved_rows = rows;
 }

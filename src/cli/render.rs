@@ -12,11 +12,171 @@ pub fn render(mut a: Answer, format: Format) -> String {
     // a finding is stated once, however many routes reached it
     let mut seen = std::collections::HashSet::new();
     a.notes.retain(|n| seen.insert(n.clone()));
+    if a.question == Question::Trajectory {
+        let mut stats = RowStats::default();
+        stats.add(&a);
+        let mut out = rows_text(&a, format, true);
+        let rows = std::mem::take(&mut out);
+        let (head, tail) = table_parts(&a, format, &stats);
+        out.push_str(&head);
+        out.push_str(&rows);
+        out.push_str(&tail);
+        return out;
+    }
     match format {
-        Format::Text => text(&a),
-        Format::Json => json_text(&a),
+        Format::Text => text(&a, None),
+        Format::Json => json_text(&a, None).0,
         Format::Csv => csv(&a),
     }
+}
+
+/// What the text before and after a trajectory's rows says of all of them:
+/// per column, the fewest digits verified, the largest error bound, the
+/// cells printed 0 only to within a bound, the fewest digits proved.
+#[derive(Default)]
+pub struct RowStats {
+    /// Rows seen.
+    pub rows: usize,
+    digits: Vec<Option<u32>>,
+    err: Vec<Option<rug::Float>>,
+    zeros: Vec<(usize, Option<rug::Float>)>,
+    /// Per proved column (in the order first met): the fewest digits.
+    proved: Vec<(String, u32)>,
+    /// The fewest digits of a proved cell not printed 0.
+    least_proved: Option<u32>,
+    /// Some rows were proved (`--rigorous`).
+    proved_any: bool,
+}
+
+impl RowStats {
+    /// Adds the rows of `a` (a trajectory, or a block of one).
+    pub fn add(&mut self, a: &Answer) {
+        let n = cylroll::motion::COLUMNS.len();
+        if self.digits.is_empty() {
+            self.digits = vec![None; n];
+            self.err = vec![None; n];
+            self.zeros = vec![(0, None); n];
+        }
+        for r in &a.rows {
+            self.rows += 1;
+            for (j, v) in r.values.iter().enumerate().take(n) {
+                if v.digits > 0 {
+                    self.digits[j] = Some(self.digits[j].map_or(v.digits, |d| d.min(v.digits)));
+                } else if v.text == "0" && !v.err_bound.is_zero() {
+                    let z = &mut self.zeros[j];
+                    z.0 += 1;
+                    if z.1.as_ref().is_none_or(|w| v.err_bound > *w) {
+                        z.1 = Some(v.err_bound.clone());
+                    }
+                }
+                if self.err[j].as_ref().is_none_or(|e| v.err_bound > *e) {
+                    self.err[j] = Some(v.err_bound.clone());
+                }
+            }
+        }
+        self.proved_any |= !a.proved_rows.is_empty();
+        for row in &a.proved_rows {
+            for p in row {
+                match self.proved.iter_mut().find(|(c, _)| *c == p.name) {
+                    Some((_, d)) => *d = (*d).min(p.shown.digits),
+                    None => self.proved.push((p.name.clone(), p.shown.digits)),
+                }
+                if p.shown.text != "0" {
+                    self.least_proved = Some(
+                        self.least_proved
+                            .map_or(p.shown.digits, |d| d.min(p.shown.digits)),
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A trajectory's text before its rows and after them, for the rows that
+/// `stats` summarises (`a`'s own rows are not printed).
+pub fn table_parts(a: &Answer, format: Format, stats: &RowStats) -> (String, String) {
+    let mut a2 = a.clone();
+    let mut seen = std::collections::HashSet::new();
+    a2.notes.retain(|n| seen.insert(n.clone()));
+    a2.rows = Vec::new();
+    a2.proved_rows = Vec::new();
+    match format {
+        Format::Text => {
+            let all = text(&a2, Some(stats));
+            let cut = all.find(ROWS_MARK).unwrap_or(all.len());
+            let tail = all[cut..].replacen(ROWS_MARK, "", 1);
+            (all[..cut].to_string(), tail)
+        }
+        Format::Json => json_text(&a2, Some(stats)),
+        Format::Csv => (csv(&a2), String::new()),
+    }
+}
+
+/// Where the rows go in the text form.
+const ROWS_MARK: &str = "\u{0}ROWS\u{0}";
+
+/// The rows of `a` in `format`, as they stand between the two parts of
+/// [`table_parts`]; `first`: these are the first rows of the table (JSON
+/// separates rows by commas).
+pub fn rows_text(a: &Answer, format: Format, first: bool) -> String {
+    let mut out = String::new();
+    for i in 0..a.rows.len() {
+        match format {
+            Format::Text => {
+                out.push_str(&row_texts(a, i).join("\t"));
+                out.push('\n');
+            }
+            Format::Csv => {
+                out.push_str(&row_texts(a, i).join(","));
+                out.push('\n');
+            }
+            Format::Json => {
+                if !(first && i == 0) {
+                    out.push(',');
+                }
+                out.push('\n');
+                let pretty = serde_json::to_string_pretty(&row_json(a, i)).unwrap_or_default();
+                for (k, line) in pretty.lines().enumerate() {
+                    if k > 0 {
+                        out.push('\n');
+                    }
+                    out.push_str("    ");
+                    out.push_str(line);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Row `i` of `a` as a JSON object.
+fn row_json(a: &Answer, i: usize) -> Value {
+    let r = &a.rows[i];
+    let mut row = Map::new();
+    let mut zeros = Map::new();
+    let mut enc = Map::new();
+    for v in &r.values {
+        match proved_cell(a, i, &v.name) {
+            Some(p) => {
+                row.insert(v.name.clone(), p.shown.text.clone().into());
+                enc.insert(v.name.clone(), enclosure_json(p, a.digits));
+            }
+            None => {
+                row.insert(v.name.clone(), v.text.clone().into());
+            }
+        }
+        if v.digits == 0 && v.text == "0" && !v.err_bound.is_zero() {
+            zeros.insert(v.name.clone(), v.err_text().into());
+        }
+    }
+    row.insert("mode".into(), r.phase.tag().into());
+    if !zeros.is_empty() {
+        row.insert("zero_within".into(), zeros.into());
+    }
+    if !enc.is_empty() {
+        row.insert("enclosures".into(), enc.into());
+    }
+    row.into()
 }
 
 /// The table's columns: every column and `mode`.
@@ -62,7 +222,7 @@ fn laws_line(a: &Answer) -> String {
     s
 }
 
-fn text(a: &Answer) -> String {
+fn text(a: &Answer, stats: Option<&RowStats>) -> String {
     let mut out = String::new();
     out.push_str(&format!(
         "# cylroll {} — {}\n",
@@ -138,27 +298,17 @@ fn text(a: &Answer) -> String {
             }
         ));
     }
-    if a.question == Question::Trajectory {
+    if let (Question::Trajectory, Some(stats)) = (a.question, stats) {
         out.push_str(&columns().join("\t"));
         out.push('\n');
-        for i in 0..a.rows.len() {
-            out.push_str(&row_texts(a, i).join("\t"));
-            out.push('\n');
-        }
-        if !a.proved_rows.is_empty() {
-            let least = a
-                .proved_rows
-                .iter()
-                .flatten()
-                .filter(|v| v.shown.text != "0")
-                .map(|v| v.shown.digits)
-                .min()
-                .unwrap_or(a.digits);
+        out.push_str(ROWS_MARK);
+        if stats.proved_any {
+            let least = stats.least_proved.unwrap_or(a.digits);
             out.push_str(&format!(
                 "note: --rigorous: every enclosed cell shows the digits its interval enclosure proves (at least {least} significant digits)\n"
             ));
         }
-        for z in zero_cells(a) {
+        for z in zero_cells(stats) {
             out.push_str(&format!("note: {z}\n"));
         }
     }
@@ -184,7 +334,7 @@ fn enclosure_json(pv: &Proved, digits: u32) -> Value {
     json!({"mid": mid, "rad": rad})
 }
 
-fn json_text(a: &Answer) -> String {
+fn json_text(a: &Answer, stats: Option<&RowStats>) -> (String, String) {
     let mut o = Map::new();
     o.insert("command".into(), a.question.name().into());
     let mut m = Map::new();
@@ -250,7 +400,8 @@ fn json_text(a: &Answer) -> String {
     if !lower.is_empty() {
         o.insert("lower_bounds".into(), lower.into());
     }
-    if a.question == Question::Trajectory {
+    let stats = stats.filter(|_| a.question == Question::Trajectory);
+    if let Some(stats) = stats {
         let cols = columns();
         o.insert(
             "columns".into(),
@@ -259,72 +410,28 @@ fn json_text(a: &Answer) -> String {
                 .collect::<Vec<_>>()
                 .into(),
         );
+        o.insert("rows".into(), ROWS_MARK.into());
         let n = cols.len() - 1;
-        let mut col_digits: Vec<Option<u32>> = vec![None; n];
-        let mut col_err: Vec<Option<rug::Float>> = vec![None; n];
-        let rows_json: Vec<Value> = a
-            .rows
-            .iter()
-            .enumerate()
-            .map(|(i, r)| {
-                let mut row = Map::new();
-                let mut zeros = Map::new();
-                let mut enc = Map::new();
-                for (j, v) in r.values.iter().enumerate() {
-                    match proved_cell(a, i, &v.name) {
-                        Some(p) => {
-                            row.insert(v.name.clone(), p.shown.text.clone().into());
-                            enc.insert(v.name.clone(), enclosure_json(p, a.digits));
-                        }
-                        None => {
-                            row.insert(v.name.clone(), v.text.clone().into());
-                        }
-                    }
-                    if v.digits > 0 {
-                        col_digits[j] = Some(col_digits[j].map_or(v.digits, |d| d.min(v.digits)));
-                    } else if v.text == "0" && !v.err_bound.is_zero() {
-                        zeros.insert(v.name.clone(), v.err_text().into());
-                    }
-                    if col_err[j].as_ref().is_none_or(|e| v.err_bound > *e) {
-                        col_err[j] = Some(v.err_bound.clone());
-                    }
-                }
-                row.insert("mode".into(), r.phase.tag().into());
-                if !zeros.is_empty() {
-                    row.insert("zero_within".into(), zeros.into());
-                }
-                if !enc.is_empty() {
-                    row.insert("enclosures".into(), enc.into());
-                }
-                row.into()
-            })
-            .collect();
-        o.insert("rows".into(), rows_json.into());
         for (j, c) in cols.iter().take(n).enumerate() {
             verified.insert(
                 c.to_string(),
-                col_digits[j]
+                stats
+                    .digits
+                    .get(j)
+                    .copied()
+                    .flatten()
                     .map_or("0".to_string(), |d| d.to_string())
                     .into(),
             );
-            if let Some(e) = &col_err[j] {
+            if let Some(Some(e)) = stats.err.get(j) {
                 errs.insert(c.to_string(), cylroll::numeric::decimal::short(e).into());
             }
         }
-        if let Some(first) = a.proved_rows.iter().find(|r| !r.is_empty()) {
-            for v in first {
-                let d = a
-                    .proved_rows
-                    .iter()
-                    .filter_map(|r| r.iter().find(|p| p.name == v.name))
-                    .map(|p| p.shown.digits)
-                    .min()
-                    .unwrap_or(0);
-                rig.insert(v.name.clone(), d.to_string().into());
-            }
+        for (name, d) in &stats.proved {
+            rig.insert(name.clone(), d.to_string().into());
         }
     }
-    if !a.proved.is_empty() || !a.proved_rows.is_empty() {
+    if !a.proved.is_empty() || stats.is_some_and(|s| s.proved_any) {
         o.insert("digits_rigorous".into(), rig.into());
         if !encl.is_empty() {
             o.insert("enclosures".into(), encl.into());
@@ -340,7 +447,23 @@ fn json_text(a: &Answer) -> String {
             .collect::<Vec<_>>()
             .into(),
     );
-    serde_json::to_string_pretty(&Value::Object(o)).unwrap_or_default() + "\n"
+    let all = serde_json::to_string_pretty(&Value::Object(o)).unwrap_or_default() + "\n";
+    // the rows go where their mark is, between "[" and "]"
+    let mark = serde_json::to_string(ROWS_MARK).unwrap_or_default();
+    match all.find(&mark) {
+        Some(k) => {
+            let close = if stats.is_some_and(|s| s.rows > 0) {
+                "\n  ]"
+            } else {
+                "]"
+            };
+            (
+                format!("{}[", &all[..k]),
+                format!("{close}{}", &all[k + mark.len()..]),
+            )
+        }
+        None => (all, String::new()),
+    }
 }
 
 fn csv(a: &Answer) -> String {
@@ -348,10 +471,6 @@ fn csv(a: &Answer) -> String {
     if a.question == Question::Trajectory {
         out.push_str(&columns().join(","));
         out.push('\n');
-        for i in 0..a.rows.len() {
-            out.push_str(&row_texts(a, i).join(","));
-            out.push('\n');
-        }
         return out;
     }
     let rigorous = !a.proved.is_empty();
@@ -447,21 +566,10 @@ fn csv(a: &Answer) -> String {
 
 /// Per column, the cells printed 0 that are 0 only to within an absolute
 /// bound: one sentence per such column, naming the largest bound.
-fn zero_cells(a: &Answer) -> Vec<String> {
+fn zero_cells(stats: &RowStats) -> Vec<String> {
     let mut out = Vec::new();
     for (j, c) in cylroll::motion::COLUMNS.iter().enumerate() {
-        let mut n = 0;
-        let mut worst: Option<&rug::Float> = None;
-        for r in &a.rows {
-            let v = &r.values[j];
-            if v.text == "0" && !v.err_bound.is_zero() {
-                n += 1;
-                if worst.is_none_or(|w| v.err_bound > *w) {
-                    worst = Some(&v.err_bound);
-                }
-            }
-        }
-        if let Some(w) = worst {
+        if let Some((n, Some(w))) = stats.zeros.get(j) {
             out.push(format!(
                 "{n} value(s) of {c} printed 0 are zero only to within an absolute bound, |{c}| <= {}",
                 cylroll::numeric::decimal::short(w)

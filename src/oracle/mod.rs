@@ -162,6 +162,42 @@ fn empty_answer(question: Question, model: &Model, opts: &Options) -> Answer {
     }
 }
 
+/// The note on the energy balance of a dissipative motion.
+fn energy_note(drift: &Float) -> String {
+    format!(
+        "energy balance E(0) - E(t) = W(t) (W: work of sliding friction) held to {} of m2 g r along the motion",
+        crate::numeric::decimal::short(drift)
+    )
+}
+
+/// The first of `times` that [`trajectory`] refuses on its own (a time past
+/// the end of the motion), found by bisection on single times (the refused
+/// ones are those past the end: a tail of the ascending times), with its
+/// error.
+fn first_refused_time(model: &Model, times: &[Exact], opts: &Options) -> Option<Error> {
+    let refused = |i: usize| match trajectory_block(model, &times[i..=i], opts) {
+        Err(e @ Error::InvalidParameter { .. }) => Some(e),
+        _ => None,
+    };
+    let mut err = refused(times.len() - 1)?;
+    let (mut lo, mut hi) = (0usize, times.len() - 1);
+    if let Some(e) = refused(0) {
+        return Some(e);
+    }
+    // times[lo] accepted, times[hi] refused
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        match refused(mid) {
+            Some(e) => {
+                hi = mid;
+                err = e;
+            }
+            None => lo = mid,
+        }
+    }
+    Some(err)
+}
+
 /// The notes every motion answer carries: the energy balance where work
 /// was dissipated, the routes, the window where parting was lawful.
 fn motion_notes(first: &Motion, opts: &Options) -> Vec<String> {
@@ -175,10 +211,7 @@ fn motion_notes(first: &Motion, opts: &Options) -> Vec<String> {
             .iter()
             .any(|e| e.at.work.is_sign_positive() && !e.at.work.is_zero());
     if dissipative {
-        notes.push(format!(
-            "energy balance E(0) - E(t) = W(t) (W: work of sliding friction) held to {} of m2 g r along the motion",
-            crate::numeric::decimal::short(&first.energy_drift)
-        ));
+        notes.push(energy_note(&first.energy_drift));
     }
     if first.events.iter().any(|e| e.kind == Kind::Indeterminate) {
         let on = match &opts.branch {
@@ -701,6 +734,76 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
 /// Errors: a negative or descending time; a time after the end of the
 /// model; see [`motion::run`].
 pub fn trajectory(model: &Model, times: &[Exact], opts: &Options) -> Result<Answer> {
+    let (mut ans, row_notes, _) = trajectory_block(model, times, opts)?;
+    ans.notes.extend(row_notes);
+    Ok(ans)
+}
+
+/// [`trajectory`] computed `block` rows at a time, so that memory stays
+/// bounded however many times are asked: each block is a trajectory of its
+/// own (the motion integrated to the block's last time at both working
+/// precisions) and is handed to `sink` with its rows; the answer returned
+/// carries everything but the rows — the events and notes of the motion to
+/// the last time (those of the last block), followed by the notes on rows of
+/// every block.
+///
+/// Errors: as [`trajectory`], and whatever `sink` returns.
+pub fn trajectory_in_blocks(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+    block: usize,
+    mut sink: impl FnMut(&[Exact], Answer) -> Result<()>,
+) -> Result<Answer> {
+    check_digits(opts.digits)?;
+    check_times(times)?;
+    let block = block.max(1);
+    let chunks: Vec<&[Exact]> = times.chunks(block).collect();
+    // the last block first: it follows the motion to the last time, so a
+    // time past the end (or any other refusal of the motion) is found
+    // before the other blocks are computed
+    let Some((last, rest)) = chunks.split_last() else {
+        return trajectory(model, times, opts);
+    };
+    let (last_ans, last_notes, last_drift) = match trajectory_block(model, last, opts) {
+        Ok(b) => b,
+        Err(e @ Error::InvalidParameter { .. }) if !rest.is_empty() => {
+            return Err(first_refused_time(model, times, opts).unwrap_or(e))
+        }
+        Err(e) => return Err(e),
+    };
+    let mut row_notes = Vec::new();
+    let mut drift = last_drift.clone();
+    for chunk in rest {
+        crate::cancel::check()?;
+        let (ans, notes, d) = trajectory_block(model, chunk, opts)?;
+        row_notes.extend(notes);
+        if d > drift {
+            drift = d;
+        }
+        sink(chunk, ans)?;
+    }
+    row_notes.extend(last_notes);
+    let mut head = last_ans.clone();
+    // the energy balance as held over every block's rows
+    let (was, is) = (energy_note(&last_drift), energy_note(&drift));
+    for n in head.notes.iter_mut().filter(|n| **n == was) {
+        n.clone_from(&is);
+    }
+    head.rows = Vec::new();
+    head.proved_rows = Vec::new();
+    sink(last, last_ans)?;
+    head.notes.extend(row_notes);
+    Ok(head)
+}
+
+/// [`trajectory`]'s answer, its notes on single rows (a time that cannot be
+/// told apart from an event's) apart.
+fn trajectory_block(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+) -> Result<(Answer, Vec<String>, Float)> {
     check_digits(opts.digits)?;
     check_times(times)?;
     if model.starts_at_equilibrium() {
@@ -741,10 +844,11 @@ pub fn trajectory(model: &Model, times: &[Exact], opts: &Options) -> Result<Answ
         .collect();
     ans.events = events_of(&first, &ev_vals);
     ans.rows = ladder::rows_of(&first, table);
+    let mut row_notes = Vec::new();
     for &(i, k) in &runs.at_events {
         ans.rows[i].at_event = Some(k);
         let e = &first.events[k];
-        ans.notes.push(format!(
+        row_notes.push(format!(
             "t = {} cannot be told apart from the {} at t = {} (not even at {} bits): its row is \
              the state at the event (positions and velocities are continuous there; the \
              forces and accelerations are those of the phase before)",
@@ -758,7 +862,7 @@ pub fn trajectory(model: &Model, times: &[Exact], opts: &Options) -> Result<Answ
     ans.end = first.end;
     ans.routes = first.routes.clone();
     ans.notes = motion_notes(&first, opts);
-    Ok(ans)
+    Ok((ans, row_notes, first.energy_drift.clone()))
 }
 
 /// θ alone at `times`, verified like [`trajectory`]'s `theta` column but
