@@ -65,6 +65,10 @@ pub enum Command {
         /// Number of intervals of the grid 0, t_end/N, ..., t_end (1 to 100000)
         #[arg(long, requires = "t_end", allow_hyphen_values = true, value_parser = steps_arg)]
         steps: Option<u32>,
+        /// The columns to print, in this order (comma-separated; default all):
+        /// t, theta, theta_dot, ..., work, mode. `t,theta` computes theta alone
+        #[arg(long)]
+        columns: Option<String>,
     },
     /// Render every golden case (golden/cases/*.toml) into golden/data/<case>.json and .csv
     Golden {
@@ -595,12 +599,24 @@ pub fn run(cli: Cli) -> Result<(Output, i32)> {
             times_file,
             t_end,
             steps,
+            columns,
         } => {
+            let columns = match columns {
+                Some(c) => oracle::parse_columns(&c)?,
+                None => oracle::all_columns(),
+            };
             let times = trajectory_times(times, times_file, t_end, steps)?;
             let model = common.model()?;
             let opts = common.options()?;
             prove::supported(&common, &model)?;
-            let out = stream::trajectory(&model, &times, &opts, common.rigorous, common.format)?;
+            let out = stream::trajectory(
+                &model,
+                &times,
+                &opts,
+                &columns,
+                common.rigorous,
+                common.format,
+            )?;
             return Ok((out, 0));
         }
     };

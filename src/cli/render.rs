@@ -37,6 +37,8 @@ pub fn render(mut a: Answer, format: Format) -> String {
 pub struct RowStats {
     /// Rows seen.
     pub rows: usize,
+    /// The numeric columns.
+    names: Vec<String>,
     digits: Vec<Option<u32>>,
     err: Vec<Option<rug::Float>>,
     zeros: Vec<(usize, Option<rug::Float>)>,
@@ -51,7 +53,8 @@ pub struct RowStats {
 impl RowStats {
     /// Adds the rows of `a` (a trajectory, or a block of one).
     pub fn add(&mut self, a: &Answer) {
-        let n = cylroll::motion::COLUMNS.len();
+        let n = value_columns(a).len();
+        self.names = value_columns(a);
         if self.digits.is_empty() {
             self.digits = vec![None; n];
             self.err = vec![None; n];
@@ -76,7 +79,7 @@ impl RowStats {
         }
         self.proved_any |= !a.proved_rows.is_empty();
         for row in &a.proved_rows {
-            for p in row {
+            for p in row.iter().filter(|p| self.names.contains(&p.name)) {
                 match self.proved.iter_mut().find(|(c, _)| *c == p.name) {
                     Some((_, d)) => *d = (*d).min(p.shown.digits),
                     None => self.proved.push((p.name.clone(), p.shown.digits)),
@@ -155,7 +158,12 @@ fn row_json(a: &Answer, i: usize) -> Value {
     let mut row = Map::new();
     let mut zeros = Map::new();
     let mut enc = Map::new();
-    for v in &r.values {
+    let cols = columns(a);
+    let mode_at = cols.iter().position(|c| c == "mode");
+    for (j, v) in r.values.iter().enumerate() {
+        if mode_at == Some(j) {
+            row.insert("mode".into(), r.phase.tag().into());
+        }
         match proved_cell(a, i, &v.name) {
             Some(p) => {
                 row.insert(v.name.clone(), p.shown.text.clone().into());
@@ -169,7 +177,9 @@ fn row_json(a: &Answer, i: usize) -> Value {
             zeros.insert(v.name.clone(), v.err_text().into());
         }
     }
-    row.insert("mode".into(), r.phase.tag().into());
+    if mode_at.is_some_and(|k| k >= r.values.len()) {
+        row.insert("mode".into(), r.phase.tag().into());
+    }
     if !zeros.is_empty() {
         row.insert("zero_within".into(), zeros.into());
     }
@@ -179,11 +189,20 @@ fn row_json(a: &Answer, i: usize) -> Value {
     row.into()
 }
 
-/// The table's columns: every column and `mode`.
-fn columns() -> Vec<&'static str> {
-    let mut c = cylroll::motion::COLUMNS.to_vec();
-    c.push("mode");
-    c
+/// The table's columns, in order: those asked (every column and `mode`
+/// unless `--columns` chose).
+fn columns(a: &Answer) -> Vec<String> {
+    if a.columns.is_empty() {
+        cylroll::oracle::all_columns()
+    } else {
+        a.columns.clone()
+    }
+}
+
+/// The table's numeric columns (all but `mode`), in order: the values of
+/// each row.
+fn value_columns(a: &Answer) -> Vec<String> {
+    columns(a).into_iter().filter(|c| c != "mode").collect()
 }
 
 /// The proved cell of a row's column, if the row is enclosed.
@@ -196,16 +215,22 @@ fn proved_cell<'a>(a: &'a Answer, row: usize, col: &str) -> Option<&'a Proved> {
 /// The text of each cell of row `i` (proved digits where enclosed).
 fn row_texts(a: &Answer, i: usize) -> Vec<String> {
     let r = &a.rows[i];
-    let mut out: Vec<String> = r
-        .values
+    let mut vals = r.values.iter();
+    columns(a)
         .iter()
-        .map(|v| match proved_cell(a, i, &v.name) {
-            Some(p) => p.shown.text.clone(),
-            None => v.text.clone(),
+        .map(|c| {
+            if c == "mode" {
+                return r.phase.tag();
+            }
+            match vals.next() {
+                Some(v) => match proved_cell(a, i, &v.name) {
+                    Some(p) => p.shown.text.clone(),
+                    None => v.text.clone(),
+                },
+                None => String::new(),
+            }
         })
-        .collect();
-    out.push(r.phase.tag());
-    out
+        .collect()
 }
 
 fn laws_line(a: &Answer) -> String {
@@ -299,7 +324,7 @@ fn text(a: &Answer, stats: Option<&RowStats>) -> String {
         ));
     }
     if let (Question::Trajectory, Some(stats)) = (a.question, stats) {
-        out.push_str(&columns().join("\t"));
+        out.push_str(&columns(a).join("\t"));
         out.push('\n');
         out.push_str(ROWS_MARK);
         if stats.proved_any {
@@ -402,17 +427,16 @@ fn json_text(a: &Answer, stats: Option<&RowStats>) -> (String, String) {
     }
     let stats = stats.filter(|_| a.question == Question::Trajectory);
     if let Some(stats) = stats {
-        let cols = columns();
         o.insert(
             "columns".into(),
-            cols.iter()
-                .map(|c| Value::from(*c))
+            columns(a)
+                .into_iter()
+                .map(Value::from)
                 .collect::<Vec<_>>()
                 .into(),
         );
         o.insert("rows".into(), ROWS_MARK.into());
-        let n = cols.len() - 1;
-        for (j, c) in cols.iter().take(n).enumerate() {
+        for (j, c) in value_columns(a).iter().enumerate() {
             verified.insert(
                 c.to_string(),
                 stats
@@ -469,7 +493,7 @@ fn json_text(a: &Answer, stats: Option<&RowStats>) -> (String, String) {
 fn csv(a: &Answer) -> String {
     let mut out = String::new();
     if a.question == Question::Trajectory {
-        out.push_str(&columns().join(","));
+        out.push_str(&columns(a).join(","));
         out.push('\n');
         return out;
     }
@@ -568,7 +592,7 @@ fn csv(a: &Answer) -> String {
 /// bound: one sentence per such column, naming the largest bound.
 fn zero_cells(stats: &RowStats) -> Vec<String> {
     let mut out = Vec::new();
-    for (j, c) in cylroll::motion::COLUMNS.iter().enumerate() {
+    for (j, c) in stats.names.iter().enumerate() {
         if let Some((n, Some(w))) = stats.zeros.get(j) {
             out.push(format!(
                 "{n} value(s) of {c} printed 0 are zero only to within an absolute bound, |{c}| <= {}",

@@ -139,13 +139,14 @@ pub fn trajectory(
     model: &Model,
     times: &[Exact],
     opts: &Options,
+    columns: &[String],
     rigorous: bool,
     format: Format,
 ) -> Result<Output> {
     let mut stats = RowStats::default();
     let mut spill = Spill::new();
     let mut rigor = prove::RowsProof::default();
-    let mut head = oracle::trajectory_in_blocks(model, times, opts, block_rows(), |t, mut a| {
+    let mut head = oracle::trajectory_in_blocks(model, times, opts, columns, block_rows(), |t, mut a| {
         if rigorous {
             rigor.block(model, t, &mut a);
         }

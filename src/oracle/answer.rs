@@ -84,6 +84,10 @@ pub struct Answer {
     pub values: Vec<Verified>,
     /// Proved enclosures of values (`--rigorous`), parallel to `values`.
     pub proved: Vec<Option<Proved>>,
+    /// The columns of the rows, in order (`trajectory`): names of
+    /// [`crate::motion::COLUMNS`] and `mode` (the phase of the row); each
+    /// row's `values` are the numeric ones, in this order.
+    pub columns: Vec<String>,
     /// The rows (`trajectory`).
     pub rows: Vec<Row>,
     /// Proved enclosures of rows (`--rigorous`, ideal models).

@@ -154,6 +154,7 @@ fn empty_answer(question: Question, model: &Model, opts: &Options) -> Answer {
         end: None,
         values: Vec::new(),
         proved: Vec::new(),
+        columns: Vec::new(),
         rows: Vec::new(),
         proved_rows: Vec::new(),
         phase: None,
@@ -174,8 +175,13 @@ fn energy_note(drift: &Float) -> String {
 /// the end of the motion), found by bisection on single times (the refused
 /// ones are those past the end: a tail of the ascending times), with its
 /// error.
-fn first_refused_time(model: &Model, times: &[Exact], opts: &Options) -> Option<Error> {
-    let refused = |i: usize| match trajectory_block(model, &times[i..=i], opts) {
+fn first_refused_time(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+    columns: &[String],
+) -> Option<Error> {
+    let refused = |i: usize| match trajectory_block(model, &times[i..=i], opts, columns) {
         Err(e @ Error::InvalidParameter { .. }) => Some(e),
         _ => None,
     };
@@ -734,7 +740,51 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
 /// Errors: a negative or descending time; a time after the end of the
 /// model; see [`motion::run`].
 pub fn trajectory(model: &Model, times: &[Exact], opts: &Options) -> Result<Answer> {
-    let (mut ans, row_notes, _) = trajectory_block(model, times, opts)?;
+    trajectory_of(model, times, opts, &all_columns())
+}
+
+/// Every column of a trajectory: [`motion::COLUMNS`] and `mode`.
+pub fn all_columns() -> Vec<String> {
+    let mut c: Vec<String> = motion::COLUMNS.iter().map(|s| s.to_string()).collect();
+    c.push("mode".into());
+    c
+}
+
+/// The columns named in `text` (comma-separated names of
+/// [`motion::COLUMNS`] and `mode`, each at most once), in its order.
+///
+/// Errors: [`Error::InvalidParameter`] naming `columns`.
+pub fn parse_columns(text: &str) -> Result<Vec<String>> {
+    let all = all_columns();
+    let mut out: Vec<String> = Vec::new();
+    for c in text.split(',').map(str::trim) {
+        if !all.iter().any(|a| a == c) {
+            return Err(Error::invalid(
+                "columns",
+                c,
+                format!("must be among {}", all.join(", ")),
+            ));
+        }
+        if out.iter().any(|o| o == c) {
+            return Err(Error::invalid("columns", c, "must be named only once"));
+        }
+        out.push(c.to_string());
+    }
+    Ok(out)
+}
+
+/// [`trajectory`] with only `columns` (see [`parse_columns`]): the others
+/// are neither verified nor, where θ alone is asked (with `t` and `mode`),
+/// computed.
+///
+/// Errors: as [`trajectory`].
+pub fn trajectory_of(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+    columns: &[String],
+) -> Result<Answer> {
+    let (mut ans, row_notes, _) = trajectory_block(model, times, opts, columns)?;
     ans.notes.extend(row_notes);
     Ok(ans)
 }
@@ -752,6 +802,7 @@ pub fn trajectory_in_blocks(
     model: &Model,
     times: &[Exact],
     opts: &Options,
+    columns: &[String],
     block: usize,
     mut sink: impl FnMut(&[Exact], Answer) -> Result<()>,
 ) -> Result<Answer> {
@@ -763,12 +814,12 @@ pub fn trajectory_in_blocks(
     // time past the end (or any other refusal of the motion) is found
     // before the other blocks are computed
     let Some((last, rest)) = chunks.split_last() else {
-        return trajectory(model, times, opts);
+        return trajectory_of(model, times, opts, columns);
     };
-    let (last_ans, last_notes, last_drift) = match trajectory_block(model, last, opts) {
+    let (last_ans, last_notes, last_drift) = match trajectory_block(model, last, opts, columns) {
         Ok(b) => b,
         Err(e @ Error::InvalidParameter { .. }) if !rest.is_empty() => {
-            return Err(first_refused_time(model, times, opts).unwrap_or(e))
+            return Err(first_refused_time(model, times, opts, columns).unwrap_or(e))
         }
         Err(e) => return Err(e),
     };
@@ -776,7 +827,7 @@ pub fn trajectory_in_blocks(
     let mut drift = last_drift.clone();
     for chunk in rest {
         crate::cancel::check()?;
-        let (ans, notes, d) = trajectory_block(model, chunk, opts)?;
+        let (ans, notes, d) = trajectory_block(model, chunk, opts, columns)?;
         row_notes.extend(notes);
         if d > drift {
             drift = d;
@@ -803,6 +854,7 @@ fn trajectory_block(
     model: &Model,
     times: &[Exact],
     opts: &Options,
+    columns: &[String],
 ) -> Result<(Answer, Vec<String>, Float)> {
     check_digits(opts.digits)?;
     check_times(times)?;
@@ -810,28 +862,49 @@ fn trajectory_block(
         return Err(infinite(model, "every time along the motion"));
     }
     let mut ans = empty_answer(Question::Trajectory, model, opts);
+    ans.columns = columns.to_vec();
+    // the table verified: t and θ (the events' rows need them), then the
+    // other numeric columns asked, as indices of motion::COLUMNS
+    let asked: Vec<usize> = columns
+        .iter()
+        .filter_map(|c| motion::COLUMNS.iter().position(|k| k == c))
+        .collect();
+    let mut idx = vec![0usize, 1];
+    idx.extend(asked.iter().copied().filter(|&k| k > 1));
+    let theta_only = idx.len() == 2;
     let exact_t = ladder::exact_times(times);
     let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
+    runs.req.theta_only = theta_only;
     let (p1, _) = precisions(opts.digits, 0);
     let mut first = runs.at(p1, Run::Low)?;
     runs.resolve_sides(&mut first)?;
     let n_ev = first.events.len();
-    let names: Vec<String> = motion::COLUMNS.iter().map(|s| s.to_string()).collect();
+    let names: Vec<String> = idx.iter().map(|&k| motion::COLUMNS[k].to_string()).collect();
     let n_rows = times.len();
     let mut table = laddered(&mut runs, first.clone(), &names, n_rows + n_ev, |m| {
         let p = m.prec();
         let sc = ladder::column_scales(model, p);
         let mut out = Vec::new();
-        for (pt, text) in m.rows.iter().zip(&exact_t) {
-            out.extend(ladder::point_estimates(pt, &sc, text.as_ref()));
+        if theta_only {
+            for ((t, th), text) in times.iter().zip(ladder::theta_estimates(m)).zip(&exact_t) {
+                let mut te = integrated(&t.to_float(p), sc[0].clone());
+                te.exact_text = text.clone();
+                out.push(te);
+                out.push(th);
+            }
+        } else {
+            for (pt, text) in m.rows.iter().zip(&exact_t) {
+                let mut all = ladder::point_estimates(pt, &sc, text.as_ref());
+                out.extend(idx.iter().map(|&k| std::mem::replace(&mut all[k], Estimate::zero(p, Float::new(p)))));
+            }
         }
         // the events' times and angles, as rows of their own columns
         let mut ev = Vec::new();
         event_estimates(m, &mut ev);
         for pair in ev.chunks(2) {
             let mut row = vec![pair[0].clone(), pair[1].clone()];
-            for s in sc.iter().skip(2) {
-                row.push(Estimate::zero(p, s.clone()));
+            for &k in idx.iter().skip(2) {
+                row.push(Estimate::zero(p, sc[k].clone()));
             }
             out.extend(row);
         }
@@ -843,7 +916,32 @@ fn trajectory_block(
         .flat_map(|r| r.into_iter().take(2))
         .collect();
     ans.events = events_of(&first, &ev_vals);
-    ans.rows = ladder::rows_of(&first, table);
+    // each row in the order of the columns asked
+    let table: Vec<Vec<Verified>> = table
+        .into_iter()
+        .map(|row| {
+            asked
+                .iter()
+                .map(|&k| {
+                    let at = idx.iter().position(|&i| i == k).unwrap_or(0);
+                    row[at].clone()
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    ans.rows = if theta_only {
+        ladder::theta_phases(&first)
+            .into_iter()
+            .zip(table)
+            .map(|(phase, values)| Row {
+                values,
+                phase,
+                at_event: None,
+            })
+            .collect()
+    } else {
+        ladder::rows_of(&first, table)
+    };
     let mut row_notes = Vec::new();
     for &(i, k) in &runs.at_events {
         ans.rows[i].at_event = Some(k);
