@@ -146,13 +146,14 @@ pub fn trajectory(
     let mut stats = RowStats::default();
     let mut spill = Spill::new();
     let mut rigor = prove::RowsProof::default();
-    let mut head = oracle::trajectory_in_blocks(model, times, opts, columns, block_rows(), |t, mut a| {
-        if rigorous {
-            rigor.block(model, t, &mut a);
-        }
-        stats.add(&a);
-        spill.push(&rows_text(&a, format, stats.rows == a.rows.len()))
-    })?;
+    let mut head =
+        oracle::trajectory_in_blocks(model, times, opts, columns, block_rows(), |t, mut a| {
+            if rigorous {
+                rigor.block(model, t, &mut a);
+            }
+            stats.add(&a);
+            spill.push(&rows_text(&a, format, stats.rows == a.rows.len()))
+        })?;
     if rigorous {
         rigor.notes(&mut head);
     }

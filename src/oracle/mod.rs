@@ -879,7 +879,10 @@ fn trajectory_block(
     let mut first = runs.at(p1, Run::Low)?;
     runs.resolve_sides(&mut first)?;
     let n_ev = first.events.len();
-    let names: Vec<String> = idx.iter().map(|&k| motion::COLUMNS[k].to_string()).collect();
+    let names: Vec<String> = idx
+        .iter()
+        .map(|&k| motion::COLUMNS[k].to_string())
+        .collect();
     let n_rows = times.len();
     let mut table = laddered(&mut runs, first.clone(), &names, n_rows + n_ev, |m| {
         let p = m.prec();
@@ -895,7 +898,10 @@ fn trajectory_block(
         } else {
             for (pt, text) in m.rows.iter().zip(&exact_t) {
                 let mut all = ladder::point_estimates(pt, &sc, text.as_ref());
-                out.extend(idx.iter().map(|&k| std::mem::replace(&mut all[k], Estimate::zero(p, Float::new(p)))));
+                out.extend(
+                    idx.iter()
+                        .map(|&k| std::mem::replace(&mut all[k], Estimate::zero(p, Float::new(p)))),
+                );
             }
         }
         // the events' times and angles, as rows of their own columns
