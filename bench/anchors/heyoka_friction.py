@@ -38,9 +38,10 @@ imports and the sympy derivation are not counted (reported once).
 The `cylroll` commands are run as processes in the same run, CPU = user +
 system of the child (as /usr/bin/time reports it), median of repeats:
   cylroll separation --theta0 1/10 --mu-floor 0.3 --mu-contact 0.3 --digits D --format json
+  cylroll trajectory ... --times t0,t1,...,t999 --digits D --format csv --columns t,theta,mode
   cylroll trajectory ... --times t0,t1,...,t999 --digits D --format csv
-The trajectory command prints all 16 columns (the command line has no theta-only
-output): it is the cylroll side of both the theta and the rows tasks.
+The first (theta alone, no force computed) is the cylroll side of the theta task,
+the second (every column) of the rows task.
 
 Agreement: heyoka's event times and angles, its 1000 thetas and (rows) every
 column against cylroll's verified digits; digits = -log10 of the largest error
@@ -527,12 +528,15 @@ def main():
         for task in ("theta", "rows"):
             if task not in tasks or (task == "rows" and d not in rows_digits):
                 continue
-            if "trajectory_cmd" not in r:
+            # theta: `--columns t,theta,mode` (theta alone, no force); rows: every column
+            key = f"trajectory_cmd_{task}"
+            if key not in r:
+                cols = ["--columns", "t,theta,mode"] if task == "theta" else []
                 out, cc, cw, cn = cylroll_timed(["trajectory"] + CASE + ["--times", ",".join(times), "--digits", str(d),
-                                                                         "--format", "csv"], reps)
-                r["trajectory_cmd"] = dict(cylroll_cpu_s=cc, cylroll_wall_s=cw, cylroll_runs=cn)
+                                                                         "--format", "csv"] + cols, reps)
+                r[key] = dict(cylroll_cpu_s=cc, cylroll_wall_s=cw, cylroll_runs=cn)
                 traj_csv = out
-            row = dict(r["trajectory_cmd"])
+            row = dict(r[key])
             hv, err = heyoka_in_child(d, task, times_file, work, cold_reps, a.time_limit)
             if hv is None:
                 row["error"] = err

@@ -322,6 +322,7 @@ class Model:
         steps: Optional[int] = None,
         branch: str = "stay",
         part_at: Optional[Number] = None,
+        columns: Optional[Iterable[str]] = None,
     ) -> Trajectory:
         """The motion at the given times (ascending, >= 0), through every
         phase up to the first impact, for every contact law: one row per
@@ -334,6 +335,12 @@ class Model:
         decimal it prints as: ``np.linspace(0, 5, 101)`` gives 0.05, 0.1, …
         exactly), or give ``t_end`` and ``steps`` for the exact grid
         t_i = i·t_end/steps, i = 0 … steps.
+
+        ``columns`` (names among those above, e.g. ``["t", "theta"]``) keeps
+        only those columns, in that order, with the digits the full table
+        gives them; ``["t", "theta"]`` or ``["theta"]`` computes θ alone (no
+        force), several times faster with friction. The modes are always
+        given.
 
         Raises :class:`InvalidParameterError` (a time after the first impact,
         a negative time),
@@ -355,7 +362,15 @@ class Model:
             if isinstance(times, (str, bytes)):
                 raise TypeError("times: expected a sequence of numbers, got a string")
             texts = [time_text("times", t) for t in times]
-        d = _cylroll.trajectory(self._pairs, _digits(digits), texts, *_branch(branch, part_at))
+        cols = None
+        if columns is not None:
+            if isinstance(columns, (str, bytes)):
+                raise TypeError("columns: expected a sequence of column names, e.g. ['t', 'theta']")
+            names = list(columns)
+            if not names or not all(isinstance(c, str) for c in names):
+                raise _invalid("columns", repr(names), "must be a non-empty sequence of column names")
+            cols = ",".join(names)
+        d = _cylroll.trajectory(self._pairs, _digits(digits), texts, *_branch(branch, part_at), cols)
         return Trajectory._build(self, digits, d)
 
 

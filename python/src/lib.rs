@@ -405,7 +405,7 @@ fn forces<'py>(
 /// `trajectory`: the answer's dict with `columns`, `rows` (one list of
 /// values per time) and `modes` (the phase of each row).
 #[pyfunction]
-#[pyo3(signature = (pairs, digits, times, branch="stay".to_string(), part_at=None))]
+#[pyo3(signature = (pairs, digits, times, branch="stay".to_string(), part_at=None, columns=None))]
 fn trajectory<'py>(
     py: Python<'py>,
     pairs: Pairs,
@@ -413,6 +413,7 @@ fn trajectory<'py>(
     times: Vec<String>,
     branch: String,
     part_at: Option<String>,
+    columns: Option<String>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let a = detached(py, move || {
         let model = spec(&pairs)?;
@@ -423,14 +424,20 @@ fn trajectory<'py>(
         if times.is_empty() {
             return Err(Error::invalid("times", "", "give at least one time"));
         }
-        oracle::trajectory(
+        let cols = match &columns {
+            Some(c) => oracle::parse_columns(c)?,
+            None => oracle::all_columns(),
+        };
+        oracle::trajectory_of(
             &model,
             &times,
             &options(digits, &branch, part_at.as_deref())?,
+            &cols,
         )
     })?;
     let d = answer_dict(py, &a)?;
-    d.set_item("columns", motion::COLUMNS.to_vec())?;
+    let numeric: Vec<&String> = a.columns.iter().filter(|c| *c != "mode").collect();
+    d.set_item("columns", numeric)?;
     d.set_item(
         "rows",
         a.rows.iter().map(|r| values(&r.values)).collect::<Vec<_>>(),

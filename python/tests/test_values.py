@@ -229,6 +229,27 @@ def test_trajectory_table_api():
     assert [v.text for v in grid.values("t")][0] == "0"
 
 
+def test_trajectory_columns_carry_the_digits_of_the_full_table():
+    # with friction, slip onset then parting: theta alone (no force computed)
+    # and a subset in an order of its own give the full table's digits
+    m = cylroll.Model(theta0="1/10", mu="0.3")
+    times = ["0", "0.5", "2", "4.4", "4.9", "5.5"]
+    full = m.trajectory(times, digits=25)
+    for cols in (["t", "theta"], ["theta"], ["N12", "theta", "work"]):
+        part = m.trajectory(times, digits=25, columns=cols)
+        assert part.columns == cols
+        assert part.modes == full.modes
+        for c in cols:
+            assert [v.text for v in part.values(c)] == [v.text for v in full.values(c)], c
+        assert part.to_numpy().shape == (len(times), len(cols))
+    with pytest.raises(cylroll.InvalidParameterError, match="columns"):
+        m.trajectory(times, digits=10, columns=["theta", "nope"])
+    with pytest.raises(cylroll.InvalidParameterError, match="only once"):
+        m.trajectory(times, digits=10, columns=["theta", "theta"])
+    with pytest.raises(TypeError):
+        m.trajectory(times, digits=10, columns="theta")
+
+
 def test_to_pandas():
     pd = pytest.importorskip("pandas")
     m = cylroll.Model(theta0="1/10", mu_contact="0.3")
