@@ -80,16 +80,31 @@ impl Error {
 /// Longest echo of a given value in a message, in characters.
 pub const ECHO_MAX: usize = 60;
 
-/// `text` cut to [`ECHO_MAX`] characters with its length noted, so that a
-/// message stays one readable line whatever was given.
+/// `text` cut to at most [`ECHO_MAX`] characters with its length noted, so
+/// that a message stays one readable line whatever was given. Shortening a
+/// shortened text changes nothing.
 pub fn shorten(text: &str) -> String {
     let n = text.chars().count();
     if n <= ECHO_MAX {
         return text.to_string();
     }
-    let head: String = text.chars().take(ECHO_MAX - 20).collect();
+    // the note "... (N characters)" is at most 27 characters for N < 10^10
+    let head: String = text.chars().take(ECHO_MAX - 30).collect();
     format!("{head}... ({n} characters)")
 }
 
 /// Result alias used throughout the crate.
 pub type Result<T> = std::result::Result<T, Error>;
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn shorten_is_bounded_and_idempotent() {
+        let long = "7".repeat(100_000);
+        let s = super::shorten(&long);
+        assert!(s.chars().count() <= super::ECHO_MAX, "{s}");
+        assert!(s.ends_with("... (100000 characters)"), "{s}");
+        assert_eq!(super::shorten(&s), s);
+        assert_eq!(super::shorten("1e3"), "1e3");
+    }
+}

@@ -9,12 +9,25 @@ use rug::{Float, Integer, Rational};
 use std::fmt;
 
 /// An exact real number `coef` or `coef·π`.
-#[derive(Debug, Clone, PartialEq)]
+///
+/// A number parsed from text keeps that text: messages quote it as it was
+/// given (`1e3`, not `1000`), bounded in length ([`fmt::Display`]); records
+/// use [`Exact::canonical`]. Two numbers are equal when their values are,
+/// whatever their texts.
+#[derive(Debug, Clone)]
 pub struct Exact {
     /// The rational coefficient.
     pub coef: Rational,
     /// Whether the number is `coef·π`.
     pub times_pi: bool,
+    /// The text it was parsed from (trimmed), if any.
+    given: Option<Box<str>>,
+}
+
+impl PartialEq for Exact {
+    fn eq(&self, other: &Self) -> bool {
+        self.coef == other.coef && (self.times_pi == other.times_pi || self.coef == 0)
+    }
 }
 
 impl Exact {
@@ -23,6 +36,7 @@ impl Exact {
         Exact {
             coef: q,
             times_pi: false,
+            given: None,
         }
     }
 
@@ -73,9 +87,36 @@ impl Exact {
             return Ok(Exact {
                 coef,
                 times_pi: true,
+                given: Some(text.trim().into()),
             });
         }
-        Ok(Exact::rational(parse_rational(&lower).ok_or_else(bad)?))
+        let mut e = Exact::rational(parse_rational(&lower).ok_or_else(bad)?);
+        e.given = Some(text.trim().into());
+        Ok(e)
+    }
+
+    /// The text the number was parsed from, if it was.
+    pub fn given(&self) -> Option<&str> {
+        self.given.as_deref()
+    }
+
+    /// Canonical exact text, whatever the number was parsed from: an exact
+    /// decimal when the rational has one (`0.3`; `1e-30` in scientific
+    /// form when that is much shorter), otherwise a fraction (`1/3`); `·pi`
+    /// forms as `2/3*pi`. For records (a model's echo); messages quote the
+    /// given text ([`fmt::Display`]).
+    pub fn canonical(&self) -> String {
+        let q = rational_text(&self.coef);
+        if self.times_pi {
+            match q.as_str() {
+                "0" => "0".into(),
+                "1" => "pi".into(),
+                "-1" => "-pi".into(),
+                _ => format!("{q}*pi"),
+            }
+        } else {
+            q
+        }
     }
 
     /// The value rounded to nearest at `prec` bits.
@@ -112,6 +153,7 @@ impl Exact {
         Exact {
             coef: Rational::from(-&self.coef),
             times_pi: self.times_pi,
+            given: None,
         }
     }
 
@@ -122,24 +164,27 @@ impl Exact {
 }
 
 impl fmt::Display for Exact {
-    /// Canonical text: an exact decimal when the rational has one (e.g. `0.3`),
-    /// otherwise a fraction (`1/3`); `·pi` forms as `2/3*pi`.
+    /// For messages: the text the number was given as (`1e3`, `pi/6`), else
+    /// its [canonical](Exact::canonical) text; a text longer than
+    /// [`crate::error::ECHO_MAX`] characters is shortened (its start, its
+    /// length), so that a message stays one readable line.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let q = rational_text(&self.coef);
-        if self.times_pi {
-            match q.as_str() {
-                "0" => write!(f, "0"),
-                "1" => write!(f, "pi"),
-                "-1" => write!(f, "-pi"),
-                _ => write!(f, "{q}*pi"),
-            }
-        } else {
-            write!(f, "{q}")
-        }
+        let text = match &self.given {
+            Some(g) => crate::error::shorten(g),
+            None => crate::error::shorten(&self.canonical()),
+        };
+        f.write_str(&text)
     }
 }
 
-/// Exact decimal text of a rational when its denominator is 2^a 5^b, else `p/q`.
+/// Longest plain decimal text before [`rational_text`] switches to the
+/// scientific form (when that is shorter).
+const PLAIN_MAX: usize = 24;
+
+/// Exact decimal text of a rational when its denominator is 2^a 5^b, else
+/// `p/q`. Plain (`0.05`, `1000`) unless that is longer than 24 characters
+/// and the scientific form is shorter (`1e-30`, `2.5e100`), so that a value
+/// such as 10^-100000 is written in a few characters, still exactly.
 pub fn rational_text(q: &Rational) -> String {
     let mut den = q.denom().clone();
     let mut twos = 0u32;
@@ -153,29 +198,59 @@ pub fn rational_text(q: &Rational) -> String {
         fives += 1;
     }
     if den != 1 {
-        return format!("{}/{}", q.numer(), q.denom());
+        return format!(
+            "{}/{}",
+            decimal_text(q.numer(), 0),
+            decimal_text(q.denom(), 0)
+        );
     }
     let k = twos.max(fives);
-    if k == 0 {
-        return q.numer().to_string();
-    }
-    let scaled = q.numer() * Integer::from(Integer::u_pow_u(10, k)) / q.denom();
-    let neg = scaled < 0;
-    let digits = Integer::from(scaled.abs_ref()).to_string();
-    let k = k as usize;
-    let padded = if digits.len() <= k {
-        format!("{}{}", "0".repeat(k + 1 - digits.len()), digits)
+    let scaled = if k == 0 {
+        q.numer().clone()
     } else {
-        digits
+        (q.numer() * Integer::from(Integer::u_pow_u(10, k))) / q.denom()
     };
-    let (int, frac) = padded.split_at(padded.len() - k);
-    let frac = frac.trim_end_matches('0');
+    decimal_text(&scaled, k as i64)
+}
+
+/// Exact text of `n`·10^-k: plain, or scientific when the plain text is
+/// longer than [`PLAIN_MAX`] characters and the scientific one shorter.
+fn decimal_text(n: &Integer, k: i64) -> String {
+    let neg = *n < 0;
     let sign = if neg { "-" } else { "" };
-    if frac.is_empty() {
-        format!("{sign}{int}")
-    } else {
-        format!("{sign}{int}.{frac}")
+    let all = Integer::from(n.abs_ref()).to_string();
+    if all == "0" {
+        return "0".into();
     }
+    // n = m·10^z with m free of trailing zeros: the value is m·10^e
+    let m = all.trim_end_matches('0');
+    let e = (all.len() - m.len()) as i64 - k;
+    let d = m.len() as i64;
+    let plain_len = if e >= 0 {
+        d + e
+    } else if d > -e {
+        d + 1
+    } else {
+        1 - e
+    };
+    let exp = e + d - 1;
+    let sci = if d == 1 {
+        format!("{m}e{exp}")
+    } else {
+        format!("{}.{}e{exp}", &m[..1], &m[1..])
+    };
+    if plain_len as usize > PLAIN_MAX && sci.len() < plain_len as usize {
+        return format!("{sign}{sci}");
+    }
+    let plain = if e >= 0 {
+        format!("{m}{}", "0".repeat(e as usize))
+    } else if d > -e {
+        let (int, frac) = m.split_at((d + e) as usize);
+        format!("{int}.{frac}")
+    } else {
+        format!("0.{}{m}", "0".repeat((-e - d) as usize))
+    };
+    format!("{sign}{plain}")
 }
 
 /// Parses `a` or `a/b` with `a`, `b` decimals.
@@ -266,13 +341,39 @@ mod tests {
 
     #[test]
     fn canonical_text() {
-        let p = |s| Exact::parse("x", s, true).unwrap().to_string();
+        let p = |s| Exact::parse("x", s, true).unwrap().canonical();
         assert_eq!(p("0.30"), "0.3");
         assert_eq!(p("1/3"), "1/3");
         assert_eq!(p("-0.05"), "-0.05");
         assert_eq!(p("9.81"), "9.81");
         assert_eq!(p("2pi/3"), "2/3*pi");
         assert_eq!(p("12"), "12");
+    }
+
+    #[test]
+    fn given_text_is_quoted_and_canonical_text_is_short() {
+        let e = Exact::parse("x", " 1e3 ", false).unwrap();
+        assert_eq!(e.to_string(), "1e3");
+        assert_eq!(e.canonical(), "1000");
+        assert_eq!(e, Exact::rational(Rational::from(1000)));
+        let c = |s| Exact::parse("x", s, true).unwrap().canonical();
+        assert_eq!(c("1e-100000"), "1e-100000");
+        assert_eq!(c("-2.50e100"), "-2.5e100");
+        assert_eq!(c("1e-5000/3"), "1/3e5000");
+        assert_eq!(c("1e-20"), "0.00000000000000000001");
+        assert_eq!(c("1e-30"), "1e-30");
+        assert_eq!(c("1.25e-3"), "0.00125");
+        assert_eq!(c("123.5"), "123.5");
+        assert_eq!(c("-0.5"), "-0.5");
+        assert_eq!(c("0"), "0");
+        assert_eq!(c("1e-4000*pi"), "1e-4000*pi");
+        // a long given text is quoted shortened, its length noted
+        let long = format!("0.{}", "1".repeat(5000));
+        let q = Exact::parse("x", &long, false).unwrap().to_string();
+        assert!(
+            q.len() <= crate::error::ECHO_MAX && q.contains("5002 characters"),
+            "{q}"
+        );
     }
 
     #[test]

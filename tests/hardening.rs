@@ -53,9 +53,16 @@ fn command_line_errors_are_one_line_with_the_allowed_range() {
     );
     one_line_error(&["separation", "--foo"], 2, &["--foo", "--help"]);
     one_line_error(&["time"], 2, &["--to"]);
+    // a value of 5000 decimals is quoted as it was given, not expanded
+    let tiny = "-1e-5000";
+    let out = cyl().args(["separation", "--k2", tiny]).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(err.len() < 300, "{} bytes: {err}", err.len());
+    assert!(err.contains("k2 = \"-1e-5000\""), "{err}");
     // a 5 KB value is echoed shortened
-    let long = "-1e-5000";
-    let out = cyl().args(["separation", "--k2", long]).output().unwrap();
+    let long = format!("-{}", "1".repeat(5000));
+    let out = cyl().args(["separation", "--k2", &long]).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2));
     assert!(err.len() < 300, "{} bytes: {err}", err.len());

@@ -222,5 +222,28 @@ pub fn model_from_pairs(vals: &Pairs) -> Result<Model> {
         thetadot0: num("thetadot0", Rational::new())?,
         omega0: num("omega0", Rational::new())?,
     };
-    Model::new(params, floor, contact, start)
+    Model::new(params, floor, contact, start).map_err(|e| as_given(e, vals))
+}
+
+/// An error about a key quoting the key's value as it was given (`-1e3`,
+/// not the rational `-1000` the check saw).
+fn as_given(e: Error, vals: &Pairs) -> Error {
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            allowed,
+        } => {
+            let value = match vals.get(&name) {
+                Some(given) => crate::error::shorten(given.trim()),
+                None => value,
+            };
+            Error::InvalidParameter {
+                name,
+                value,
+                allowed,
+            }
+        }
+        other => other,
+    }
 }

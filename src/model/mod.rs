@@ -310,9 +310,10 @@ impl Ideal {
         }
     }
 
-    /// A one-line description for messages.
+    /// A one-line description for messages (every value exact and short, a
+    /// very long one shortened: [`crate::error::shorten`]).
     pub fn describe(&self) -> String {
-        use crate::exact::rational_text as t;
+        let t = |q: &Rational| crate::error::shorten(&crate::exact::rational_text(q));
         let p = &self.params;
         format!(
             "floor={} contact={} m1={} m2={} r1={} r2={} k1={} k2={} g={} theta0={} thetadot0={} omega0={}",
@@ -325,7 +326,7 @@ impl Ideal {
             t(&p.k1),
             t(&p.k2),
             t(&p.g),
-            self.start.theta0,
+            crate::error::shorten(&self.start.theta0.canonical()),
             t(&self.start.thetadot0),
             t(&self.start.omega0)
         )
@@ -345,7 +346,7 @@ impl Ideal {
             ("k1", t(&p.k1)),
             ("k2", t(&p.k2)),
             ("g", t(&p.g)),
-            ("theta0", self.start.theta0.to_string()),
+            ("theta0", self.start.theta0.canonical()),
             ("thetadot0", t(&self.start.thetadot0)),
             ("omega0", t(&self.start.omega0)),
         ]
@@ -507,7 +508,7 @@ impl Model {
         self.sticking().direction()
     }
 
-    /// A one-line description for messages.
+    /// A one-line description for messages (long values shortened).
     pub fn describe(&self) -> String {
         let mut s = format!(
             "floor={} contact={}",
@@ -516,7 +517,7 @@ impl Model {
         );
         for (key, law) in [("mu_floor", &self.floor), ("mu_contact", &self.contact)] {
             if matches!(law, Law::Coulomb { .. }) {
-                s.push_str(&format!(" {key}={}", law.mu_text()));
+                s.push_str(&format!(" {key}={}", crate::error::shorten(&law.mu_text())));
             }
         }
         let ideal = self.sticking().describe();

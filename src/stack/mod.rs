@@ -206,7 +206,7 @@ fn describe(sm: &StackModel, tmax: &Option<Rational>) -> Vec<(String, String)> {
             "theta0".into(),
             sm.theta0
                 .iter()
-                .map(|t| t.to_string())
+                .map(|t| t.canonical())
                 .collect::<Vec<_>>()
                 .join(","),
         ),

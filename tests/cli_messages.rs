@@ -1,0 +1,96 @@
+//! Messages quote the input as it was given, name where it was given (file,
+//! entry, line, key) and print only digits that were verified.
+
+use assert_cmd::Command;
+
+fn cyl() -> Command {
+    Command::cargo_bin("cylroll").unwrap()
+}
+
+/// Runs the command, expects exit 2 and returns its one-line message.
+fn refused(args: &[&str]) -> String {
+    let out = cyl().args(args).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    err
+}
+
+fn has(err: &str, needles: &[&str]) {
+    for n in needles {
+        assert!(err.contains(n), "{n:?} is not in: {err}");
+    }
+}
+
+#[test]
+fn values_are_echoed_as_given_and_bounded() {
+    // a refusal quotes the user's text, not the rational it parsed to
+    for (flag, value) in [
+        ("--m1", "-1e3"),
+        ("--k1", "-1e-3000"),
+        ("--theta0", "2e0"),
+        ("--thetadot0", "-1e-2"),
+    ] {
+        let mut args = vec!["separation", flag, value];
+        if flag == "--thetadot0" {
+            args.extend(["--theta0", "0.1"]);
+        }
+        let err = refused(&args);
+        has(&err, &[&format!("= \"{value}\"")]);
+        assert!(err.len() < 200, "{err}");
+    }
+    let err = refused(&["time", "--theta0", "0.1", "--to", "1e1"]);
+    has(&err, &["to = \"1e1\"", "after separation"]);
+    // tiny and huge exact values are echoed in a few characters, still exactly
+    for args in [
+        ["--theta0", "1e-5000", "--m1", "1"],
+        ["--mu-contact", "1e-100000", "--theta0", "0.1"],
+    ] {
+        let (flag, value) = (args[0], args[1]);
+        let run = |format: &str| {
+            let out = cyl()
+                .arg("separation")
+                .args(args)
+                .args(["--digits", "5", "--format", format])
+                .output()
+                .unwrap();
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            String::from_utf8(out.stdout).unwrap()
+        };
+        let key = flag.trim_start_matches("--").replace('-', "_");
+        let text = run("json");
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(v["model"][&key], value);
+        assert!(text.len() < 20_000, "{} bytes", text.len());
+        let text = run("text");
+        let header = text.lines().next().unwrap();
+        assert!(header.contains(&format!("{key}={value}")), "{header}");
+        assert!(text.lines().all(|l| l.len() < 1000));
+    }
+    // the usual values keep their plain decimal form
+    let out = cyl()
+        .args([
+            "separation",
+            "--theta0",
+            "1/20",
+            "--m1",
+            "1e3",
+            "--format",
+            "json",
+        ])
+        .args(["--digits", "5"])
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["model"]["theta0"], "0.05");
+    assert_eq!(v["model"]["m1"], "1000");
+    // a long given text is shortened, its length noted
+    let long = format!("-0.{}", "1".repeat(5000));
+    let err = refused(&["separation", "--m2", &long]);
+    has(&err, &["m2", "(5003 characters)"]);
+    assert!(err.len() < 300, "{err}");
+}
