@@ -94,3 +94,106 @@ fn values_are_echoed_as_given_and_bounded() {
     has(&err, &["m2", "(5003 characters)"]);
     assert!(err.len() < 300, "{err}");
 }
+
+#[test]
+fn toml_non_finite_values_are_refused_as_the_flags_refuse_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("p.toml");
+    let path = f.to_str().unwrap();
+    let run = |text: &str| {
+        std::fs::write(&f, text).unwrap();
+        cyl()
+            .args([
+                "separation",
+                "--params",
+                path,
+                "--theta0",
+                "0.1",
+                "--digits",
+                "5",
+            ])
+            .output()
+            .unwrap()
+    };
+    let err_of = |text: &str| {
+        let out = run(text);
+        let err = String::from_utf8_lossy(&out.stderr).to_string();
+        assert_eq!(out.status.code(), Some(2), "{text}: {err}");
+        err
+    };
+    for (line, key, given) in [
+        ("mu_contact = nan", "mu_contact", "nan"),
+        ("mu_floor = -inf", "mu_floor", "-inf"),
+        ("m1 = inf", "m1", "inf"),
+        ("k2 = nan", "k2", "nan"),
+    ] {
+        let err = err_of(line);
+        // the key, the file, the value given, what is allowed
+        has(&err, &[&format!("{key} (in {path}) = \"{given}\"")]);
+        // no suggestion to write the same value as a string
+        assert!(!err.contains("as a string"), "{err}");
+        // the flag's message, word for word after the value
+        let flag = format!("--{}", key.replace('_', "-"));
+        let out = cyl()
+            .args(["separation", &flag, given, "--theta0", "0.1"])
+            .output()
+            .unwrap();
+        let flag_err = String::from_utf8_lossy(&out.stderr).to_string();
+        let tail = |e: &str| e.split_once("\": ").map(|(_, t)| t.to_string()).unwrap();
+        assert_eq!(tail(&err), tail(&flag_err), "{err} vs {flag_err}");
+    }
+    // theta0 from the file (no flag over it)
+    std::fs::write(&f, "theta0 = inf\n").unwrap();
+    let err = refused(&["separation", "--params", path]);
+    has(&err, &["theta0 (in", "\"inf\"", "pi/6"]);
+    // inf is rolling, exactly, as the flag's inf
+    let out = run("mu_floor = inf\nmu_contact = inf\n");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // a binary float is refused with the text to write instead, short
+    let err = err_of("theta0 = 1e300\n");
+    has(&err, &["theta0 (in", "= \"1e300\"", "theta0 = \"1e300\""]);
+    assert!(err.len() < 300, "{err}");
+}
+
+#[test]
+fn golden_case_files_are_parameter_files_and_unknown_keys_are_named() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let case = format!("{root}/golden/cases/main_mu_0_3.toml");
+    let out = cyl()
+        .args([
+            "separation",
+            "--params",
+            &case,
+            "--digits",
+            "5",
+            "--format",
+            "json",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["model"]["mu_contact"], "0.3");
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("p.toml");
+    std::fs::write(&f, "description = \"x\"\nsteps = 3\nmu = \"0.3\"\n").unwrap();
+    let err = refused(&["separation", "--params", f.to_str().unwrap()]);
+    has(
+        &err,
+        &[
+            &format!("params (in {})", f.display()),
+            "\"mu\"",
+            "unknown key",
+            "mu_contact",
+            "description, steps",
+        ],
+    );
+}

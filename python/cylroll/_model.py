@@ -153,8 +153,11 @@ class Model:
     def from_toml(cls, path: Union[str, "os.PathLike[str]"]) -> "Model":
         """A model from a ``--params`` TOML file: the keys of the constructor
         (``floor``, ``m1``, …, ``mu_floor``, ``mu_contact``), values as strings
-        or integers (TOML floats are binary and refused). Missing keys take
-        the defaults."""
+        or integers (TOML floats are binary and refused; ``inf`` and ``nan``
+        are read as the words). Missing keys take the defaults. A golden case
+        file (``golden/cases/*.toml``) is one: its descriptive keys
+        ``description`` and ``steps`` are accepted and ignored; any other key
+        raises :class:`cylroll.InvalidParameterError` naming it and the file."""
         return cls._from_pairs(_cylroll.read_toml(os.fspath(path)))
 
     def __setattr__(self, name: str, value: Any) -> None:

@@ -289,13 +289,11 @@ fn answer_dict<'py>(py: Python<'py>, a: &Answer) -> PyResult<Bound<'py, PyDict>>
     Ok(d)
 }
 
-/// The model keys of a TOML file (`--params` format: strings or integers).
+/// The model keys of a TOML file (`--params` format: strings or integers;
+/// a golden case file's `description` and `steps` are accepted and ignored).
 #[pyfunction]
 fn read_toml(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Pairs> {
-    direct(py, || {
-        let table = input::read_toml(&path, "params")?;
-        input::pairs_from_toml(&table, "params", &[])
-    })
+    direct(py, || input::read_params(&path))
 }
 
 /// Names of the embedded golden cases, sorted.

@@ -329,17 +329,18 @@ impl Common {
         }
     }
 
-    /// The key/value pairs from the defaults, then `--params`, then the flags.
-    fn pairs(&self) -> Result<input::Pairs> {
+    /// The key/value pairs from the defaults, then `--params`, then the
+    /// flags; and the keys whose value is the file's.
+    fn pairs(&self) -> Result<(input::Pairs, Vec<String>)> {
         let mut vals = input::Pairs::new();
         if let Some(path) = &self.params {
-            let table = input::read_toml(path, "params")?;
-            vals = input::pairs_from_toml(&table, "params", &input::CASE_KEYS)
-                .map_err(|e| in_file(e, path))?;
+            vals = input::read_params(path)?;
         }
+        let mut from_file: Vec<String> = vals.keys().cloned().collect();
         for k in MODEL_KEYS.iter().chain(FRICTION_KEYS.iter()) {
             if let Some(v) = self.flag(k) {
                 vals.insert(k.to_string(), v);
+                from_file.retain(|f| f != k);
             }
         }
         if let Some(mu) = &self.mu {
@@ -351,8 +352,9 @@ impl Common {
                 vals.insert("mu_floor".into(), mu.clone());
             }
             vals.insert("mu_contact".into(), mu.clone());
+            from_file.retain(|f| f != "mu_contact" && (held || f != "mu_floor"));
         }
-        Ok(vals)
+        Ok((vals, from_file))
     }
 
     /// The model: every contact's law from `--floor`, `--contact`,
@@ -360,10 +362,15 @@ impl Common {
     pub fn model(&self) -> Result<Model> {
         // a start at the top is the ideal models' limit θ0 → 0+ and is
         // judged by the command that runs
-        let pairs = self.pairs()?;
-        input::model_from_pairs(&pairs).map_err(|e| match &self.params {
-            Some(path) if !self.flags_given() => in_file(e, path),
-            _ => e,
+        let (pairs, from_file) = self.pairs()?;
+        input::model_from_pairs(&pairs).map_err(|e| {
+            // the file is named when the value at fault is its own
+            let file_key = matches!(&e, Error::InvalidParameter { name, .. }
+                if from_file.contains(name));
+            match &self.params {
+                Some(path) if file_key || !self.flags_given() => in_file(e, path),
+                _ => e,
+            }
         })
     }
 

@@ -76,7 +76,8 @@ pub fn law_of(vals: &Pairs, w: Which) -> Result<Law> {
     }
 }
 
-/// Keys of a golden case file besides the model's; a `--params` file may
+/// Keys of a golden case file besides the model's: `description` (one line
+/// of prose) and `steps` (intervals of its time grid). A `--params` file may
 /// carry them (so that every golden case is also a parameter file) and they
 /// are ignored there.
 pub const CASE_KEYS: [&str; 2] = ["description", "steps"];
@@ -86,7 +87,10 @@ pub type Pairs = BTreeMap<String, String>;
 
 /// The model keys of a TOML table (other keys are an error unless listed in
 /// `extra_keys`, which are skipped). Values must be strings or integers:
-/// TOML floats are binary and would not be read exactly.
+/// TOML floats are binary and would not be read exactly. The non-finite
+/// TOML floats `inf`, `-inf` and `nan` are exact words, and are read as the
+/// same text given to a flag (`mu_floor = inf` is rolling; `theta0 = inf`
+/// is refused as `--theta0 inf` is).
 pub fn pairs_from_toml(table: &toml::Table, source: &str, extra_keys: &[&str]) -> Result<Pairs> {
     let mut vals = Pairs::new();
     for (k, v) in table {
@@ -94,28 +98,33 @@ pub fn pairs_from_toml(table: &toml::Table, source: &str, extra_keys: &[&str]) -
             continue;
         }
         if !MODEL_KEYS.contains(&k.as_str()) && !FRICTION_KEYS.contains(&k.as_str()) {
+            let mut allowed = format!("{}, {}", MODEL_KEYS.join(", "), FRICTION_KEYS.join(", "));
+            if !extra_keys.is_empty() {
+                allowed.push_str(&format!(" (and {}, ignored)", extra_keys.join(", ")));
+            }
             return Err(Error::invalid(
                 source,
                 k,
-                format!(
-                    "unknown key; allowed keys: {}, {}",
-                    MODEL_KEYS.join(", "),
-                    FRICTION_KEYS.join(", ")
-                ),
+                format!("unknown key; allowed keys: {allowed}"),
             ));
         }
         let s = match v {
             toml::Value::String(s) => s.clone(),
             toml::Value::Integer(i) => i.to_string(),
+            toml::Value::Float(f) if f.is_nan() => "nan".into(),
+            toml::Value::Float(f) if f.is_infinite() => {
+                if *f > 0.0 { "inf" } else { "-inf" }.into()
+            }
             toml::Value::Float(f) => {
+                // `{:?}`: the shortest text that reads back as f (1e300, not 301 digits)
                 return Err(Error::invalid(
                     k,
-                    f,
+                    format!("{f:?}"),
                     format!(
                         "a TOML float is binary and would not be read exactly: \
-                         write it as a string ({k} = \"{f}\") or an integer"
+                         write it as a string ({k} = \"{f:?}\") or an integer"
                     ),
-                ))
+                ));
             }
             other => {
                 return Err(Error::invalid(
@@ -132,6 +141,34 @@ pub fn pairs_from_toml(table: &toml::Table, source: &str, extra_keys: &[&str]) -
         vals.insert(k.clone(), s);
     }
     Ok(vals)
+}
+
+/// The model keys of a `--params` file (a golden case file is one: its
+/// [`CASE_KEYS`] are accepted and ignored), as the command line and the
+/// Python package read it.
+///
+/// Errors: those of [`read_toml`] and [`pairs_from_toml`], a key's error
+/// naming the file.
+pub fn read_params(path: &std::path::Path) -> Result<Pairs> {
+    let table = read_toml(path, "params")?;
+    pairs_from_toml(&table, "params", &CASE_KEYS).map_err(|e| in_file(e, path))
+}
+
+/// An error about a value read from the file `path`, naming the file:
+/// `m1 (in p.toml)`.
+pub fn in_file(e: Error, path: &std::path::Path) -> Error {
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            allowed,
+        } => Error::InvalidParameter {
+            name: format!("{name} (in {})", path.display()),
+            value,
+            allowed,
+        },
+        other => other,
+    }
 }
 
 /// Largest parameter or case file read, in bytes.
