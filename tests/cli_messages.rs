@@ -23,6 +23,54 @@ fn has(err: &str, needles: &[&str]) {
 }
 
 #[test]
+fn a_refused_entry_of_a_times_file_names_the_file_the_entry_and_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("t.txt");
+    let path = f.to_str().unwrap();
+    let run = |text: &str| {
+        std::fs::write(&f, text).unwrap();
+        refused(&[
+            "trajectory",
+            "--theta0",
+            "0.1",
+            "--digits",
+            "5",
+            "--times-file",
+            path,
+        ])
+    };
+    // not a number: the fourth entry, on line 2
+    let err = run("0 0.5\n1,abc\n");
+    has(
+        &err,
+        &[
+            &format!("times-file {path}: entry 4 (line 2) = \"abc\""),
+            "exact number",
+        ],
+    );
+    // blank lines count as lines
+    let err = run("0\n\n\n-1e-3\n");
+    has(&err, &["entry 2 (line 4) = \"-1e-3\"", ">= 0"]);
+    // out of order: the entry that goes back, and the one before it as given
+    let err = run("0, 2e0\n1\n");
+    has(&err, &["entry 3 (line 2) = \"1\"", "ascending", "2e0"]);
+    // after the end of the motion (found by the oracle): quoted as given
+    let err = run("0 0.5\n\n5,1e3\n");
+    has(
+        &err,
+        &[
+            &format!("times-file {path}: entry 4 (line 3) = \"1e3\""),
+            "first impact",
+        ],
+    );
+    assert!(!err.contains("1000"), "{err}");
+    // --times names the entry too
+    let err = refused(&["trajectory", "--theta0", "0.1", "--times", "0,1e3"]);
+    has(&err, &["times: entry 2 = \"1e3\"", "first impact"]);
+    assert!(!err.contains("1000"), "{err}");
+}
+
+#[test]
 fn values_are_echoed_as_given_and_bounded() {
     // a refusal quotes the user's text, not the rational it parsed to
     for (flag, value) in [

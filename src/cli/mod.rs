@@ -397,37 +397,109 @@ impl Common {
     }
 }
 
-/// An error about a value read from a parameter file, naming the file.
-fn in_file(e: Error, path: &std::path::Path) -> Error {
-    match e {
-        Error::InvalidParameter {
-            name,
-            value,
-            allowed,
-        } => Error::InvalidParameter {
-            name: format!("{name} (in {})", path.display()),
-            value,
-            allowed,
-        },
-        other => other,
+use input::in_file;
+
+/// Where each requested time was given, for messages: the parameter
+/// (`times`, `times-file PATH`) and each entry's place in it.
+struct Origins {
+    param: String,
+    places: Vec<String>,
+}
+
+impl Origins {
+    /// The name of entry `i` in a message: `times-file t.txt: entry 3 (line 2)`.
+    fn name(&self, i: usize) -> String {
+        format!("{}: {}", self.param, self.places[i])
+    }
+
+    /// The times in order and not negative, each refusal naming its entry.
+    fn check(&self, times: &[Exact]) -> Result<()> {
+        for (i, t) in times.iter().enumerate() {
+            if t.signum() < 0 {
+                return Err(Error::invalid(
+                    &self.name(i),
+                    t,
+                    "must be >= 0 (the start is at t = 0)",
+                ));
+            }
+            if i > 0 && t.coef < times[i - 1].coef {
+                return Err(Error::invalid(
+                    &self.name(i),
+                    t,
+                    format!(
+                        "must be ascending: it is before the entry before it, {}",
+                        times[i - 1]
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// An error of the oracle about a time, naming the entry it quotes (the
+    /// first with that text: the times are ascending, so the first at fault).
+    fn locate(&self, e: Error, times: &[Exact]) -> Error {
+        match e {
+            Error::InvalidParameter {
+                name,
+                value,
+                allowed,
+            } if name == "times" => {
+                let name = match times.iter().position(|t| t.to_string() == value) {
+                    Some(i) => self.name(i),
+                    None => self.param.clone(),
+                };
+                Error::InvalidParameter {
+                    name,
+                    value,
+                    allowed,
+                }
+            }
+            other => other,
+        }
     }
 }
 
-fn parse_list(name: &str, s: &str) -> Result<Vec<Exact>> {
-    s.split(',').map(|t| Exact::parse(name, t, false)).collect()
+/// The times of `--times t1,t2,...`, each entry named by its place.
+fn parse_list(s: &str) -> Result<(Vec<Exact>, Origins)> {
+    let places: Vec<String> = (1..=s.split(',').count())
+        .map(|i| format!("entry {i}"))
+        .collect();
+    let origins = Origins {
+        param: "times".into(),
+        places,
+    };
+    let times = s
+        .split(',')
+        .enumerate()
+        .map(|(i, t)| Exact::parse(&origins.name(i), t, false))
+        .collect::<Result<Vec<_>>>()?;
+    Ok((times, origins))
 }
 
 /// Largest times file read, in bytes.
 const MAX_TIMES_FILE: u64 = 64 << 20;
 
-/// The times of a `--times-file`: separated by commas, spaces or line ends.
-fn times_file(path: &std::path::Path) -> Result<Vec<Exact>> {
+/// The times of a `--times-file`: separated by commas, spaces or line ends;
+/// a refusal of an entry names the file, the entry's number and its line.
+fn times_file(path: &std::path::Path) -> Result<(Vec<Exact>, Origins)> {
     let text = input::read_input(path, "times-file", MAX_TIMES_FILE)?;
-    let times: Vec<Exact> = text
-        .split(|c: char| c == ',' || c.is_whitespace())
-        .filter(|s| !s.is_empty())
-        .map(|t| Exact::parse("times-file", t, false))
-        .collect::<Result<_>>()?;
+    let mut origins = Origins {
+        param: format!("times-file {}", path.display()),
+        places: Vec::new(),
+    };
+    let mut times = Vec::new();
+    for (line, content) in text.split('\n').enumerate() {
+        for t in content
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|s| !s.is_empty())
+        {
+            origins
+                .places
+                .push(format!("entry {} (line {})", times.len() + 1, line + 1));
+            times.push(Exact::parse(&origins.name(times.len()), t, false)?);
+        }
+    }
     if times.is_empty() {
         return Err(Error::invalid(
             "times-file",
@@ -435,19 +507,19 @@ fn times_file(path: &std::path::Path) -> Result<Vec<Exact>> {
             "holds no times",
         ));
     }
-    Ok(times)
+    Ok((times, origins))
 }
 
-/// The times of `trajectory`.
+/// The times of `trajectory`, and where each was given (none for a grid).
 fn trajectory_times(
     times: Option<String>,
     file: Option<std::path::PathBuf>,
     t_end: Option<String>,
     steps: Option<u32>,
-) -> Result<Vec<Exact>> {
-    match (times, file, t_end, steps) {
-        (Some(list), _, _, _) => parse_list("times", &list),
-        (None, Some(path), _, _) => times_file(&path),
+) -> Result<(Vec<Exact>, Option<Origins>)> {
+    let (times, origins) = match (times, file, t_end, steps) {
+        (Some(list), _, _, _) => parse_list(&list)?,
+        (None, Some(path), _, _) => times_file(&path)?,
         (None, None, Some(te), Some(n)) => {
             if n == 0 || n > 100_000 {
                 return Err(Error::invalid("steps", n, "must be between 1 and 100000"));
@@ -456,16 +528,21 @@ fn trajectory_times(
             if te.signum() <= 0 {
                 return Err(Error::invalid("t-end", &te, "must be > 0"));
             }
-            Ok((0..=n)
+            let grid = (0..=n)
                 .map(|i| Exact::rational(&te.coef * Rational::from((i, n))))
-                .collect())
+                .collect();
+            return Ok((grid, None));
         }
-        _ => Err(Error::invalid(
-            "times",
-            "",
-            "give --times t1,t2,..., --times-file FILE or --t-end T --steps N",
-        )),
-    }
+        _ => {
+            return Err(Error::invalid(
+                "times",
+                "",
+                "give --times t1,t2,..., --times-file FILE or --t-end T --steps N",
+            ))
+        }
+    };
+    origins.check(&times)?;
+    Ok((times, Some(origins)))
 }
 
 /// Runs the command and returns the text to print on standard output.
@@ -612,7 +689,7 @@ pub fn run(cli: Cli) -> Result<(Output, i32)> {
                 Some(c) => oracle::parse_columns(&c)?,
                 None => oracle::all_columns(),
             };
-            let times = trajectory_times(times, times_file, t_end, steps)?;
+            let (times, origins) = trajectory_times(times, times_file, t_end, steps)?;
             let model = common.model()?;
             let opts = common.options()?;
             prove::supported(&common, &model)?;
@@ -623,7 +700,11 @@ pub fn run(cli: Cli) -> Result<(Output, i32)> {
                 &columns,
                 common.rigorous,
                 common.format,
-            )?;
+            )
+            .map_err(|e| match &origins {
+                Some(o) => o.locate(e, &times),
+                None => e,
+            })?;
             return Ok((out, 0));
         }
     };
