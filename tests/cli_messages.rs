@@ -245,3 +245,55 @@ fn golden_case_files_are_parameter_files_and_unknown_keys_are_named() {
         ],
     );
 }
+
+#[test]
+fn check_quotes_the_candidates_times_as_given_and_the_parting_angle_it_used() {
+    let dir = tempfile::tempdir().unwrap();
+    let params = dir.path().join("m.toml");
+    std::fs::write(&params, "theta0 = \"1/10\"\n").unwrap();
+    // a candidate that parts inside the window (at theta = 1), then one row
+    // long after the first impact
+    let out = cyl()
+        .args(["trajectory", "--theta0", "1/10", "--part-at", "1.0"])
+        .args([
+            "--t-end", "5.9", "--steps", "118", "--digits", "12", "--format", "csv",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let mut csv = String::from_utf8(out.stdout).unwrap();
+    let last = csv.lines().last().unwrap().to_string();
+    let rest = last.split_once(',').unwrap().1;
+    csv.push_str(&format!("1e2,{rest}\n"));
+    let cand = dir.path().join("c.csv");
+    std::fs::write(&cand, csv).unwrap();
+    let run = |extra: &[&str]| {
+        cyl()
+            .args(["check", cand.to_str().unwrap(), "--params"])
+            .arg(&params)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let out = run(&["--past-end", "refuse"]);
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    // the row's time as written in the file; the branch by the angle the
+    // reference parts at (the fit rounded to 10 digits, here exactly 1)
+    has(
+        &err,
+        &["row 120: t = 1e2 is after", "on the part-at 1 branch"],
+    );
+    // the end of the model: the verified digits of its time, 20 by default
+    let end = err
+        .split("at t = ")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .unwrap();
+    let digits = end.chars().filter(char::is_ascii_digit).count();
+    assert_eq!(digits, 20, "{end}");
+    assert!(end.starts_with("5.92592249153626"), "{end}");
+    let out = run(&["--format", "json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["first_after_end"]["t"], "1e2", "{v}");
+}

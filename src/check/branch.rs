@@ -329,6 +329,15 @@ pub fn decide(
         &Options::digits(lim.digits),
     )?;
     let th = |i: usize| (thetas[i].text.clone(), thetas[i].value.to_f64());
+    // for the message: at most 10 significant digits, never more than verified
+    let quote = |i: usize| {
+        let v = &thetas[i];
+        if v.digits > 10 {
+            crate::numeric::decimal::to_sig(&v.value, 10)
+        } else {
+            v.text.clone()
+        }
+    };
     let p = Parting {
         row_closed: f.row_closed,
         row_open: f.row_open,
@@ -361,8 +370,8 @@ pub fn decide(
         p.t_closed,
         p.t_open,
         p.by,
-        short(p.theta_closed.1),
-        short(p.theta_open.1)
+        quote(0),
+        quote(2)
     );
     let (d_star, d_end) = (dist(star_s), dist(end_s));
     let mid_inside = s * p.theta_mid.1 > star_s && s * p.theta_mid.1 < end_s;
@@ -454,8 +463,10 @@ pub fn decide(
         let range = (a.max(star_s), b.min(end_s));
         let fit = fit_part_at(case, range, s, &f.after, tols, shift);
         let (at, how) = match fit {
+            // the fit holds about 1e-9 of the bracket: the reference parts at
+            // the fitted angle rounded to 10 significant digits, quoted exactly
             Some((theta, d, n)) => (
-                Exact::parse("part-at", &format!("{theta:e}"), false)?,
+                Exact::rational(Exact::parse("part-at", &format!("{theta:.9e}"), false)?.coef),
                 format!(
                     "at the angle in its bracket whose flight is nearest its {n} rows from the \
                      parting on (sum of |candidate - reference| / the column's scale {d:.3e})"
@@ -550,12 +561,4 @@ fn fit_part_at(
     }
     let (x, d) = if f1 <= f2 { (x1, f1) } else { (x2, f2) };
     d.is_finite().then_some((s * x, d, rows.len()))
-}
-
-/// A short decimal for messages.
-pub fn short(x: f64) -> String {
-    format!("{x:.9}")
-        .trim_end_matches('0')
-        .trim_end_matches('.')
-        .to_string()
 }

@@ -314,7 +314,11 @@ fn parse_row(line: &str, row: usize, h: &Header, source: &str) -> Result<(Exact,
         if !v.is_finite() {
             return Err(refuse(
                 source,
-                format!("row {row}, column {}: {cell} is not finite", h.cols[k]),
+                format!(
+                    "row {row}, column {}: {:?} is not finite",
+                    h.cols[k],
+                    crate::error::shorten(cell)
+                ),
             ));
         }
         // the value is read exactly in the comparison: it must be a decimal
