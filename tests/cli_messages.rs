@@ -247,6 +247,54 @@ fn golden_case_files_are_parameter_files_and_unknown_keys_are_named() {
 }
 
 #[test]
+fn check_finds_the_built_in_cases_from_any_directory() {
+    let dir = tempfile::tempdir().unwrap();
+    // the oracle's own rows of the case, as a candidate
+    let out = cyl()
+        .current_dir(dir.path())
+        .args([
+            "trajectory",
+            "--theta0",
+            "1/20",
+            "--t-end",
+            "6",
+            "--steps",
+            "12",
+        ])
+        .args(["--digits", "25", "--format", "csv"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::write(dir.path().join("c.csv"), &out.stdout).unwrap();
+    let out = cyl()
+        .current_dir(dir.path())
+        .args(["check", "c.csv", "--case", "main_roll_roll"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{text}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("case main_roll_roll"), "{text}");
+    // an unknown name lists the built-in ones
+    let out = cyl()
+        .current_dir(dir.path())
+        .args(["check", "c.csv", "--case", "no_such_case"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    has(&err, &["no_such_case", "main_mu_0_3", "unknown case"]);
+}
+
+#[test]
 fn check_quotes_the_candidates_times_as_given_and_the_parting_angle_it_used() {
     let dir = tempfile::tempdir().unwrap();
     let params = dir.path().join("m.toml");

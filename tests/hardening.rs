@@ -164,12 +164,30 @@ fn a_failed_write_says_what_failed() {
 }
 
 #[test]
-fn check_outside_the_repository_says_where_cases_are_looked_for() {
+fn check_outside_the_repository_uses_the_built_in_cases() {
     let dir = tempfile::tempdir().unwrap();
+    // the case is built in: the refusal is the candidate's, not the case's
     let out = Command::cargo_bin("cylroll")
         .unwrap()
         .current_dir(dir.path())
         .args(["check", "x.csv", "--case", "main_roll_roll"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("x.csv") && !err.contains("case"), "{err}");
+    // --golden DIR reads DIR/cases, and says so when it is not there
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .current_dir(dir.path())
+        .args([
+            "check",
+            "x.csv",
+            "--case",
+            "main_roll_roll",
+            "--golden",
+            "golden",
+        ])
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);

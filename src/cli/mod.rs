@@ -81,7 +81,7 @@ pub enum Command {
     Check {
         /// The candidate CSV (header row with golden column names; t required)
         candidate: std::path::PathBuf,
-        /// The golden case it simulates (a file stem of golden/cases)
+        /// The golden case it simulates (one of the built-in cases: the file stems of golden/cases)
         #[arg(long)]
         case: Option<String>,
         /// Or the model it simulates, as a parameter file (the keys of --params; a golden case
@@ -119,9 +119,9 @@ pub enum Command {
         /// Largest number of data rows accepted (the candidate is read in chunks, in bounded memory)
         #[arg(long, default_value_t = 1_000_000, allow_hyphen_values = true, value_parser = rows_arg)]
         max_rows: usize,
-        /// The golden directory (case files in its cases/ folder)
-        #[arg(long, default_value = "golden")]
-        golden: std::path::PathBuf,
+        /// Read --case NAME from DIR/cases/NAME.toml instead of the built-in cases
+        #[arg(long, value_name = "DIR", requires = "case")]
+        golden: Option<std::path::PathBuf>,
         /// The candidate's schema: 1 (phi2 in the paper's gauge, the first golden schema) or 2;
         /// by default 2 unless the header is exactly a schema-1 column list
         #[arg(long, value_parser = schema_arg)]
@@ -570,7 +570,10 @@ pub fn run(cli: Cli) -> Result<(Output, i32)> {
         } => {
             use cylroll::check::BranchRequest;
             let case = match (case, params) {
-                (Some(name), _) => cylroll::golden::find_case(&golden, &name)?,
+                (Some(name), _) => match &golden {
+                    Some(dir) => cylroll::golden::find_case(dir, &name)?,
+                    None => cylroll::golden::builtin_case(&name)?,
+                },
                 (None, Some(path)) => {
                     let table = input::read_toml(&path, "params")?;
                     let (pairs, description, steps) =

@@ -117,6 +117,115 @@ pub fn case_names(golden_dir: &Path) -> Result<Vec<String>> {
         .collect())
 }
 
+/// The curated cases built into the program, (name, TOML text) sorted by
+/// name: `golden/cases/*.toml` at build time, so that `check --case NAME`
+/// works from any directory (the reference itself is computed, never read
+/// from `golden/data`).
+pub const BUILTIN: &[(&str, &str)] = &[
+    ("bobbin", include_str!("../../golden/cases/bobbin.toml")),
+    (
+        "fixed_roll",
+        include_str!("../../golden/cases/fixed_roll.toml"),
+    ),
+    (
+        "fixed_slip",
+        include_str!("../../golden/cases/fixed_slip.toml"),
+    ),
+    (
+        "heavy_upper_restick",
+        include_str!("../../golden/cases/heavy_upper_restick.toml"),
+    ),
+    (
+        "hollow_upper",
+        include_str!("../../golden/cases/hollow_upper.toml"),
+    ),
+    (
+        "main_floor_slips",
+        include_str!("../../golden/cases/main_floor_slips.toml"),
+    ),
+    (
+        "main_mu_0_3",
+        include_str!("../../golden/cases/main_mu_0_3.toml"),
+    ),
+    (
+        "main_mu_1",
+        include_str!("../../golden/cases/main_mu_1.toml"),
+    ),
+    (
+        "main_mu_10",
+        include_str!("../../golden/cases/main_mu_10.toml"),
+    ),
+    (
+        "main_roll_roll",
+        include_str!("../../golden/cases/main_roll_roll.toml"),
+    ),
+    (
+        "main_static_kinetic",
+        include_str!("../../golden/cases/main_static_kinetic.toml"),
+    ),
+    (
+        "moving_start",
+        include_str!("../../golden/cases/moving_start.toml"),
+    ),
+    (
+        "mujoco_main",
+        include_str!("../../golden/cases/mujoco_main.toml"),
+    ),
+    (
+        "roll_slip",
+        include_str!("../../golden/cases/roll_slip.toml"),
+    ),
+    ("si_units", include_str!("../../golden/cases/si_units.toml")),
+    (
+        "slip_roll",
+        include_str!("../../golden/cases/slip_roll.toml"),
+    ),
+    (
+        "slip_slip",
+        include_str!("../../golden/cases/slip_slip.toml"),
+    ),
+    ("unequal", include_str!("../../golden/cases/unequal.toml")),
+    (
+        "unequal_friction",
+        include_str!("../../golden/cases/unequal_friction.toml"),
+    ),
+];
+
+/// A built-in case by name ([`BUILTIN`]).
+///
+/// Errors: an unknown name (the known ones listed); a case file that does
+/// not read (a build of a broken checkout).
+pub fn builtin_case(name: &str) -> Result<Case> {
+    let Some((stem, text)) = BUILTIN.iter().find(|(n, _)| *n == name) else {
+        let known: Vec<&str> = BUILTIN.iter().map(|(n, _)| *n).collect();
+        return Err(Error::invalid(
+            "case",
+            name,
+            format!(
+                "unknown case; the built-in cases: {} (or give --params FILE, or --golden DIR \
+                 for DIR/cases/NAME.toml)",
+                known.join(", ")
+            ),
+        ));
+    };
+    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+        Error::invalid(
+            "case",
+            name,
+            format!("not valid TOML: {}", e.message().trim()),
+        )
+    })?;
+    let (pairs, description, steps) = case_parts(&table)?;
+    let model = crate::model::input::model_from_pairs(&pairs)
+        .map_err(|e| Error::invalid("case", name, format!("has a bad value: {e}")))?;
+    Ok(Case {
+        name: stem.to_string(),
+        description,
+        model,
+        steps,
+    })
+}
+
 /// A case by name from `golden_dir/cases/NAME.toml`.
 pub fn find_case(golden_dir: &Path, name: &str) -> Result<Case> {
     let dir = golden_dir.join("cases");
@@ -126,8 +235,8 @@ pub fn find_case(golden_dir: &Path, name: &str) -> Result<Case> {
             "case",
             name,
             format!(
-                "no case directory {} here (cases are looked for in <golden>/cases; \
-                 run from the repository or give --golden DIR)",
+                "no case directory {} (--golden DIR reads DIR/cases/NAME.toml; without \
+                 --golden the built-in cases are used)",
                 dir.display()
             ),
         ));
@@ -351,4 +460,33 @@ pub fn write_all(golden_dir: &Path) -> Result<String> {
     // the data change as one set (see fileset): never a new json beside an old csv
     fileset::write_set(&data, &files)?;
     Ok(summary)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builtin_cases_are_the_case_files() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("golden");
+        let names = case_names(&dir).unwrap();
+        let builtin: Vec<&str> = BUILTIN.iter().map(|(n, _)| *n).collect();
+        assert_eq!(names, builtin, "golden/cases and golden::BUILTIN differ");
+        for name in &names {
+            let text = std::fs::read_to_string(dir.join("cases").join(format!("{name}.toml")));
+            let built = BUILTIN.iter().find(|(n, _)| n == name).unwrap().1;
+            assert_eq!(text.unwrap(), built, "{name}");
+            let a = builtin_case(name).unwrap();
+            let b = find_case(&dir, name).unwrap();
+            assert_eq!(
+                (a.model, a.steps, a.description),
+                (b.model, b.steps, b.description)
+            );
+        }
+        let e = builtin_case("no_such_case").unwrap_err().to_string();
+        assert!(
+            e.contains("no_such_case") && e.contains("main_mu_0_3"),
+            "{e}"
+        );
+    }
 }
