@@ -79,6 +79,26 @@ def test_from_toml(tmp_path):
     assert isinstance(e.value, OSError) and e.value.exit_code == 2
 
 
+def test_from_toml_reads_every_golden_case_file(tmp_path, golden_dir):
+    cases = sorted((golden_dir / "cases").glob("*.toml"))
+    assert len(cases) == len(cylroll.golden.names())
+    # a case file is a parameter file: its description and steps are not model keys
+    for path in cases:
+        assert cylroll.Model.from_toml(path) == cylroll.golden.case(path.stem), path.name
+    # other unknown keys are still refused, naming the key and the file
+    p = tmp_path / "p.toml"
+    p.write_text('description = "x"\nsteps = 3\nmu = "0.3"\n')
+    with pytest.raises(cylroll.InvalidParameterError, match="unknown key") as e:
+        cylroll.Model.from_toml(p)
+    assert '"mu"' in str(e.value) and "p.toml" in str(e.value)
+    # TOML's inf is the word inf (rolling); nan is refused as the text "nan" is
+    p.write_text("mu_floor = inf\n")
+    assert cylroll.Model.from_toml(p) == cylroll.Model(mu_floor="inf")
+    p.write_text("mu_contact = nan\n")
+    with pytest.raises(cylroll.InvalidParameterError, match='"nan"'):
+        cylroll.Model.from_toml(p)
+
+
 def test_golden_cases():
     names = cylroll.golden.names()
     assert "mujoco_main" in names and "main_mu_0_3" in names and names == sorted(names)
