@@ -47,6 +47,10 @@ def exact_text(name: str, x: Any, allow_float: bool = False) -> str:
         sign, digits, exp = x.as_tuple()
         if isinstance(exp, int) and -60 <= exp <= 60:
             return format(x, "f")
+        if isinstance(exp, int) and abs(exp) <= 50_000:
+            # as written (1E-5000): the library reads it exactly and quotes it
+            # so, where the fraction would be thousands of digits
+            return str(x)
         return _fraction_text(Fraction(x))
     if isinstance(x, numbers.Integral):
         n = int(x)

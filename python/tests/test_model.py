@@ -79,6 +79,14 @@ def test_from_toml(tmp_path):
     assert isinstance(e.value, OSError) and e.value.exit_code == 2
 
 
+def test_tiny_decimals_are_passed_and_quoted_as_written():
+    m = cylroll.Model(theta0=Decimal("1E-5000"), k1=Decimal("2.5E-70"))
+    assert m.params["theta0"] == "1e-5000" and m.params["k1"] == "2.5e-70"
+    with pytest.raises(cylroll.InvalidParameterError) as e:
+        cylroll.Model(m1=Decimal("-1E-5000"))
+    assert '"-1E-5000"' in str(e.value) and len(str(e.value)) < 200
+
+
 def test_from_toml_reads_every_golden_case_file(tmp_path, golden_dir):
     cases = sorted((golden_dir / "cases").glob("*.toml"))
     assert len(cases) == len(cylroll.golden.names())
