@@ -280,6 +280,23 @@ fn every_case_has_the_branch_point_and_both_branches_of_the_independent_derivati
         .unwrap_err()
         .to_string();
         assert!(err.contains("part-at"), "[{name}] part-at {before}: {err}");
+        // past the end of the closed branch, or behind the start: refused too,
+        // naming the window (before, such an angle was never reached and the
+        // motion silently stayed together)
+        let th0 = m.start().theta0.to_float(P).to_f64();
+        for out in [th_s + 0.01, th_s + 1.0, th0 * 0.5, -1.0] {
+            let a = format!("{out:.6}");
+            let err = sep(
+                &m,
+                Branch::PartAt(Exact::parse("part_at", &a, true).unwrap()),
+            )
+            .unwrap_err()
+            .to_string();
+            assert!(
+                err.contains("invalid part-at") && err.contains("theta in [≈"),
+                "[{name}] part-at {a}: {err}"
+            );
+        }
     }
     assert!(
         checked >= 23 && with_star >= 13,

@@ -345,3 +345,72 @@ fn check_quotes_the_candidates_times_as_given_and_the_parting_angle_it_used() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["first_after_end"]["t"], "1e2", "{v}");
 }
+
+/// `--part-at` outside every window where parting is lawful is refused by
+/// every subcommand, naming the window (or saying the motion is unique),
+/// with nothing printed; inside it, the cylinders part there.
+#[test]
+fn part_at_outside_the_lawful_window_is_refused_by_every_subcommand() {
+    let run = |args: &[&str]| {
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .args(args)
+            .output()
+            .unwrap();
+        (
+            String::from_utf8(out.stdout).unwrap(),
+            String::from_utf8(out.stderr).unwrap(),
+            out.status.code(),
+        )
+    };
+    let base = ["--theta0", "0.1", "--digits", "12"];
+    let cmds: [&[&str]; 4] = [
+        &["separation"],
+        &["trajectory", "--times", "1"],
+        &["time", "--to", "0.5"],
+        &["forces", "--theta", "0.5"],
+    ];
+    for cmd in cmds {
+        for a in ["1e-5000", "0.05", "1.06", "3"] {
+            let mut args: Vec<&str> = cmd.to_vec();
+            args.extend(base);
+            args.extend(["--part-at", a]);
+            let (out, err, code) = run(&args);
+            assert_eq!(code, Some(2), "{args:?}: {err}");
+            assert!(out.is_empty(), "{args:?}");
+            assert!(
+                err.contains(&format!("invalid part-at = \"{a}\""))
+                    && err.contains("theta in [≈0.96571")
+                    && err.contains(", ≈1.0507"),
+                "{args:?}: {err}"
+            );
+        }
+    }
+    // a unique motion (frictionless contact) has no window at all
+    let (_, err, code) = run(&[
+        "separation",
+        "--theta0",
+        "0.1",
+        "--contact",
+        "slip",
+        "--part-at",
+        "1",
+    ]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("it is unique"), "{err}");
+    // inside the window: parts there
+    let (out, err, code) = run(&[
+        "separation",
+        "--theta0",
+        "0.1",
+        "--part-at",
+        "1",
+        "--digits",
+        "12",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.contains("theta_s                 = 1.00000000000"),
+        "{out}"
+    );
+}

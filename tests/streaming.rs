@@ -161,7 +161,9 @@ fn unknown_or_repeated_columns_are_refused_by_name() {
     }
 }
 
-/// The peak resident memory (kB) of the command, its stdout counted.
+/// The peak resident memory (kB) of the command, its stdout counted (the
+/// child is reaped by `wait4`, which also gives its resource usage).
+#[allow(clippy::zombie_processes)]
 fn peak_kb(args: &[&str], block: usize) -> (i64, usize) {
     let bin = assert_cmd::cargo::cargo_bin("cylroll");
     let mut child = std::process::Command::new(bin)

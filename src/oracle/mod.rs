@@ -204,6 +204,74 @@ fn first_refused_time(
     Some(err)
 }
 
+/// A `--part-at` angle must lie where parting is lawful: inside a window of
+/// the `stay` motion between a branch point and the end of the closed branch
+/// (or of the window). Checked on the whole motion at the first working
+/// precision, so that an angle behind the start or past the end of the
+/// closed branch is refused rather than silently never reached.
+///
+/// Errors: [`Error::InvalidParameter`] naming `part-at`; a run's.
+fn check_part_at(model: &Model, opts: &Options) -> Result<()> {
+    let Branch::PartAt(a) = &opts.branch else {
+        return Ok(());
+    };
+    if model.starts_at_equilibrium() {
+        return Ok(());
+    }
+    let stay = Options {
+        branch: Branch::Stay,
+        ..opts.clone()
+    };
+    let mut r = runs(model, &stay, Vec::new(), Until::End);
+    let (p1, _) = precisions(opts.digits, 0);
+    let m = r.at(p1, Run::Low)?;
+    let af = a.to_float(p1);
+    // the end of the closed branch: where the contact opens, or the motion's end
+    let closed_end = m
+        .events
+        .iter()
+        .find(|e| e.kind == Kind::Separation)
+        .or(m.events.last())
+        .map(|e| e.at.theta.clone());
+    let tol = Float::with_val(p1, af.abs_ref()).max(&Float::with_val(p1, 1u32)) * 1e-9f64;
+    let inside = m.windows.iter().any(|(lo, hi)| {
+        let Some(hi) = hi.clone().or_else(|| closed_end.clone()) else {
+            return false;
+        };
+        let (a0, b0) = if *lo <= hi {
+            (lo.clone(), hi)
+        } else {
+            (hi, lo.clone())
+        };
+        Float::with_val(p1, &a0 - &tol) <= af && af <= Float::with_val(p1, &b0 + &tol)
+    });
+    if inside {
+        return Ok(());
+    }
+    // the windows, quoted to the digits the first precision holds
+    let q = crate::numeric::decimal::approx_text;
+    let wins: Vec<String> = m
+        .windows
+        .iter()
+        .filter_map(|(lo, hi)| {
+            let hi = hi.clone().or_else(|| closed_end.clone())?;
+            Some(format!("[≈{}, ≈{}]", q(lo), q(&hi)))
+        })
+        .collect();
+    let allowed = if wins.is_empty() {
+        "must lie where parting is lawful, and this motion has no such angle: it is unique \
+         (no branch point before the contact opens); drop --part-at"
+            .to_string()
+    } else {
+        format!(
+            "must lie where parting is lawful: theta in {} (from the branch point \
+             theta_indeterminate to the end of the closed branch)",
+            wins.join(" or ")
+        )
+    };
+    Err(Error::invalid("part-at", a, allowed))
+}
+
 /// The notes every motion answer carries: the energy balance where work
 /// was dissipated, the routes, the window where parting was lawful.
 fn motion_notes(first: &Motion, opts: &Options) -> Vec<String> {
@@ -251,6 +319,7 @@ fn motion_notes(first: &Motion, opts: &Options) -> Vec<String> {
 /// [`motion::run`].
 pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     check_digits(opts.digits)?;
+    check_part_at(model, opts)?;
     let digits = opts.digits;
     let mut ans = empty_answer(Question::Separation, model, opts);
     if model.starts_at_equilibrium() {
@@ -522,6 +591,7 @@ fn at_angle(
     est: impl Fn(&motion::Point) -> Vec<Estimate>,
 ) -> Result<(Vec<Verified>, Phase, Option<String>)> {
     check_digits(opts.digits)?;
+    check_part_at(model, opts)?;
     if model.starts_at_equilibrium() {
         return Err(infinite(model, "the time to any angle"));
     }
@@ -784,6 +854,8 @@ pub fn trajectory_of(
     opts: &Options,
     columns: &[String],
 ) -> Result<Answer> {
+    check_digits(opts.digits)?;
+    check_part_at(model, opts)?;
     let (mut ans, row_notes, _) = trajectory_block(model, times, opts, columns)?;
     ans.notes.extend(row_notes);
     Ok(ans)
@@ -808,6 +880,7 @@ pub fn trajectory_in_blocks(
 ) -> Result<Answer> {
     check_digits(opts.digits)?;
     check_times(times)?;
+    check_part_at(model, opts)?;
     let block = block.max(1);
     let chunks: Vec<&[Exact]> = times.chunks(block).collect();
     // the last block first: it follows the motion to the last time, so a
@@ -980,6 +1053,7 @@ pub fn theta_at_times(
 ) -> Result<(Vec<Verified>, Vec<Phase>)> {
     check_digits(opts.digits)?;
     check_times(times)?;
+    check_part_at(model, opts)?;
     if model.starts_at_equilibrium() {
         return Err(infinite(model, "every time along the motion"));
     }
