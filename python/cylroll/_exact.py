@@ -16,9 +16,22 @@ from ._errors import InvalidParameterError
 Number = Union[str, int, Fraction, Decimal, float]
 
 
+#: Longest echo of a given value in a message (as the library's own messages).
+ECHO_MAX = 60
+
+
+def _shorten(text: str) -> str:
+    """``text`` cut to at most :data:`ECHO_MAX` characters with its length
+    noted, like the library's messages (shortening twice changes nothing)."""
+    if len(text) <= ECHO_MAX:
+        return text
+    return f"{text[:ECHO_MAX - 30]}... ({len(text)} characters)"
+
+
 def _invalid(name: str, value: Any, allowed: str) -> InvalidParameterError:
-    exc = InvalidParameterError(f"invalid {name} = {str(value)!r}: {allowed}")
-    exc._set_fields("invalid_parameter", {"name": name, "value": str(value), "allowed": allowed})
+    shown = _shorten(str(value))
+    exc = InvalidParameterError(f"invalid {name} = {shown!r}: {allowed}")
+    exc._set_fields("invalid_parameter", {"name": name, "value": shown, "allowed": allowed})
     return exc
 
 

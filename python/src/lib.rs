@@ -78,7 +78,8 @@ fn py_error(py: Python<'_>, e: &Error) -> PyErr {
         } => (
             "invalid_parameter",
             vec![
-                ("name", name.clone()),
+                // the keyword's spelling in Python (the library names flags)
+                ("name", name.replace('-', "_")),
                 ("value", value.clone()),
                 ("allowed", allowed.clone()),
             ],

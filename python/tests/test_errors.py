@@ -65,6 +65,14 @@ def test_bad_requests():
         m.replace(contact="slip", mu_contact="0.3")
     with pytest.raises(cylroll.InvalidParameterError, match="branch"):
         m.separation(branch="sideways")
+    # a value refused on the Python side is quoted bounded, as the library does
+    with pytest.raises(cylroll.InvalidParameterError) as e:
+        m.trajectory(t_end="-" + "9" * 5000, steps=3)
+    assert len(str(e.value)) < 140 and "(5001 characters)" in str(e.value)
+    # and a part_at outside the window where parting is lawful names the window
+    with pytest.raises(cylroll.InvalidParameterError, match=r"theta in \[") as e:
+        m.separation(branch="part", part_at="3")
+    assert e.value.name == "part_at"
 
 
 def test_no_physical_answer():
