@@ -247,11 +247,12 @@ class Integrators:
         return self.cf[mode]
 
     def start(self, ta):
-        """Rest at theta0 = 1/10; x1 = phi1 = 0, psi2 = phi2 - theta = -(r1/r2 + 1) theta0."""
+        """Rest at theta0 = 1/10; x1 = phi1 = 0, phi2 = 0 (cylroll's gauge: every body angle
+        counted from the start), so psi2 = phi2 - theta = -theta0."""
         st = [self.real("0.1"), self.real(0)]
         if self.full:
             st = [self.real("0.1"), self.real(0), self.real(0), self.real(0), self.real(0), self.real(0),
-                  self.real("-0.2"), self.real(0), self.real(0)]
+                  self.real("-0.1"), self.real(0), self.real(0)]
         ta.time = self.real(0)
         ta.state[:] = st
         ta.reset_cooldowns()

@@ -30,10 +30,6 @@ use pyo3::types::PyDict;
 use std::sync::mpsc::{self, RecvTimeoutError};
 use std::time::Duration;
 
-mod golden {
-    include!(concat!(env!("OUT_DIR"), "/golden_cases.rs"));
-}
-
 /// A verified value as it crosses into Python: name, decimal text (exactly
 /// the verified digits), digits verified, error bound (as a float and as
 /// short text).
@@ -300,11 +296,11 @@ fn read_toml(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Pairs> {
 /// Names of the embedded golden cases, sorted.
 #[pyfunction]
 fn golden_names() -> Vec<&'static str> {
-    golden::CASES.iter().map(|(n, _)| *n).collect()
+    cylroll::golden::BUILTIN.iter().map(|(n, _)| *n).collect()
 }
 
 fn golden_text(name: &str) -> cylroll::Result<&'static str> {
-    golden::CASES
+    cylroll::golden::BUILTIN
         .iter()
         .find(|(n, _)| *n == name)
         .map(|(_, t)| *t)
@@ -323,21 +319,9 @@ fn golden_text(name: &str) -> cylroll::Result<&'static str> {
 fn golden_case(py: Python<'_>, name: &str) -> PyResult<(String, Pairs, String, u32)> {
     direct(py, || {
         let text = golden_text(name)?;
-        let (pairs, description, steps) = case_parts(name, text)?;
+        let (pairs, description, steps) = cylroll::golden::case_text_parts(name, text)?;
         Ok((text.to_string(), pairs, description, steps))
     })
-}
-
-/// The parts of a case file, as the library reads them.
-fn case_parts(name: &str, text: &str) -> cylroll::Result<(Pairs, String, u32)> {
-    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-        Error::invalid(
-            "case",
-            name,
-            format!("not valid TOML: {}", e.message().trim()),
-        )
-    })?;
-    cylroll::golden::case_parts(&table)
 }
 
 fn parse_angle(name: &str, text: &str) -> cylroll::Result<Exact> {
@@ -604,7 +588,7 @@ fn check<'py>(
     let rep = detached(py, move || {
         let (pairs, description, steps) = match pairs {
             Some(p) => (p, String::new(), 40),
-            None => case_parts(&case_name, golden_text(&case_name)?)?,
+            None => cylroll::golden::case_text_parts(&case_name, golden_text(&case_name)?)?,
         };
         let model = spec(&pairs)?;
         let case = Case {

@@ -191,6 +191,24 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ),
 ];
 
+/// The model keys, description and grid size of a case file's text (`name`
+/// for messages).
+///
+/// Errors: text that is not TOML; as [`case_parts`].
+pub fn case_text_parts(
+    name: &str,
+    text: &str,
+) -> Result<(crate::model::input::Pairs, String, u32)> {
+    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+        Error::invalid(
+            "case",
+            name,
+            format!("not valid TOML: {}", e.message().trim()),
+        )
+    })?;
+    case_parts(&table)
+}
+
 /// A built-in case by name ([`BUILTIN`]).
 ///
 /// Errors: an unknown name (the known ones listed); a case file that does
@@ -208,14 +226,7 @@ pub fn builtin_case(name: &str) -> Result<Case> {
             ),
         ));
     };
-    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-        Error::invalid(
-            "case",
-            name,
-            format!("not valid TOML: {}", e.message().trim()),
-        )
-    })?;
-    let (pairs, description, steps) = case_parts(&table)?;
+    let (pairs, description, steps) = case_text_parts(name, text)?;
     let model = crate::model::input::model_from_pairs(&pairs)
         .map_err(|e| Error::invalid("case", name, format!("has a bad value: {e}")))?;
     Ok(Case {

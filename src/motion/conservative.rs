@@ -281,18 +281,27 @@ pub fn first_phase(
                 continue;
             }
             let (a, energy) = route.columns_at(&d, &tf, p)?;
-            let d2 = Float::with_val(p, &d + &derr);
-            let (b, _) = route.columns_at(&d2, &tf, p)?;
-            let mut err: Vec<Float> = a
-                .iter()
-                .zip(&b)
-                .map(|(x, y)| {
-                    Float::with_val(p, x - y).abs()
-                        + (Float::with_val(p, x.abs_ref()) >> (p as i32 - 4))
-                })
-                .collect();
-            err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
-            rows.push(point_of(a, energy, mode, Some(err), zero_bits(ctx, mode)));
+            // the columns' errors from δ's: only the higher run's error
+            // estimate counts on the ladder (the lower run's value is the
+            // one compared against), so the lower run skips the second
+            // evaluation
+            let err = if wants.run == Run::Low {
+                None
+            } else {
+                let d2 = Float::with_val(p, &d + &derr);
+                let (b, _) = route.columns_at(&d2, &tf, p)?;
+                let mut err: Vec<Float> = a
+                    .iter()
+                    .zip(&b)
+                    .map(|(x, y)| {
+                        Float::with_val(p, x - y).abs()
+                            + (Float::with_val(p, x.abs_ref()) >> (p as i32 - 4))
+                    })
+                    .collect();
+                err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
+                Some(err)
+            };
+            rows.push(point_of(a, energy, mode, err, zero_bits(ctx, mode)));
         }
     }
     // the state at the end as a sample of the mode's system, at the
