@@ -56,7 +56,7 @@ def main():
           "| heyoka cold / cylroll | digits agreeing | cylroll library (divan, wall) |")
     print("|---|---|---|---|---|---|---|---|---|")
     names = {"events": "events: slip onset + separation (`separation`)",
-             "theta": "θ at 1000 times (`trajectory --times`, all columns printed)",
+             "theta": "θ at 1000 times (`trajectory --times … --columns t,theta,mode`)",
              "rows": "1000 rows, every column (`trajectory --times`)"}
     lib_name = {"theta": "t3_friction", "rows": "t3_friction_rows"}
     digits = sorted(int(d) for d in res["per_digits"])
