@@ -414,3 +414,47 @@ fn part_at_outside_the_lawful_window_is_refused_by_every_subcommand() {
         "{out}"
     );
 }
+
+/// Refusals that need no computation come before it: a candidate with more
+/// rows than `--max-rows` (counted without parsing), an unwritable `report`
+/// or `golden` destination. Each exits at once with nothing computed.
+#[test]
+fn refusals_that_need_no_computation_come_first() {
+    let dir = tempfile::tempdir().unwrap();
+    // 200 001 rows against --max-rows 200 000: judged row by row, the first
+    // 200 000 would have been compared with the oracle before the refusal
+    let path = dir.path().join("long.csv");
+    let mut text = String::from("t,theta\n");
+    for i in 0..=200_000u32 {
+        text.push_str(&format!("{}e-6,0.1\n", i));
+    }
+    std::fs::write(&path, text).unwrap();
+    let t0 = std::time::Instant::now();
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .args(["check", path.to_str().unwrap(), "--case", "main_roll_roll"])
+        .args(["--max-rows", "200000"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("more than 200000 data rows"), "{err}");
+    assert!(t0.elapsed().as_secs_f64() < 5.0, "{:?}", t0.elapsed());
+    // a report whose destination is a file, not a directory
+    let file = dir.path().join("plain");
+    std::fs::write(&file, "x").unwrap();
+    let t0 = std::time::Instant::now();
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .args(["report", "--quiet", "--out", file.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(4), "{err}");
+    assert!(
+        err.contains("cannot write") && err.contains("plain"),
+        "{err}"
+    );
+    assert!(t0.elapsed().as_secs_f64() < 5.0, "{:?}", t0.elapsed());
+    assert!(out.stdout.is_empty());
+}

@@ -488,8 +488,10 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
             "must be a finite number >= 0 (radians of theta)",
         ));
     }
-    // the header first: a malformed candidate is refused before any oracle work
+    // the header first, and the number of rows: a malformed or too long
+    // candidate is refused before any oracle work
     let header = Rows::open(src, case, lim)?.header;
+    Rows::open(src, case, lim)?.count_within_limit()?;
     for o in &lim.tols {
         let gi = crate::motion::COLUMNS.iter().position(|c| *c == o.column);
         if !gi.is_some_and(|g| header.has(g)) {

@@ -146,6 +146,35 @@ impl<'a> Rows<'a> {
         })
     }
 
+    /// Refuses a candidate with more than `max_rows` data rows, counting its
+    /// non-blank lines after the header without parsing them: done before
+    /// any oracle work, so that a file too long is refused at once rather
+    /// than after the rows before the limit were judged.
+    ///
+    /// Errors: the refusal; a read error.
+    pub fn count_within_limit(mut self) -> Result<()> {
+        let mut n = 0usize;
+        while let Some(line) = next_line(&mut self.reader, &mut self.buf, &self.source)? {
+            if line.trim().is_empty() {
+                continue;
+            }
+            n += 1;
+            if n > self.max_rows {
+                return Err(refuse(
+                    &self.source,
+                    format!(
+                        "has more than {} data rows (raise --max-rows, at most 100000000)",
+                        self.max_rows
+                    ),
+                ));
+            }
+            if n % 65536 == 0 {
+                crate::cancel::check()?;
+            }
+        }
+        Ok(())
+    }
+
     /// The next data row: (its 1-based number, t, the other cells).
     pub fn next_row(&mut self) -> Result<Option<(usize, Exact, Vec<Cell>)>> {
         loop {

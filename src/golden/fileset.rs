@@ -69,6 +69,26 @@ fn stage(path: &Path, bytes: &[u8]) -> Result<PathBuf> {
     Ok(tmp)
 }
 
+/// Whether the set's directories can be written: each of `dirs` (relative
+/// to `dir`; `dir` itself for an empty path) is created if missing and a
+/// probe file is written in it and removed. Called before the work that
+/// computes the set, so that an unwritable destination is refused at once.
+///
+/// Errors: [`Error::Write`] naming the directory.
+pub fn check_writable(dir: &Path, dirs: &[&str]) -> Result<()> {
+    for sub in dirs {
+        let d = if sub.is_empty() {
+            dir.to_path_buf()
+        } else {
+            dir.join(sub)
+        };
+        let probe = d.join(format!(".cylroll-probe-{}", std::process::id()));
+        let tmp = stage(&probe, b"")?;
+        let _ = std::fs::remove_file(&tmp);
+    }
+    Ok(())
+}
+
 /// Writes `bytes` to `path` atomically: readers see the old or the new file,
 /// never a partial one.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {

@@ -456,6 +456,8 @@ pub use fileset::write_atomic;
 /// are computed before anything is written, so a failure writes nothing.
 pub fn write_all(golden_dir: &Path) -> Result<String> {
     let cases = load_cases(golden_dir)?;
+    // an unwritable destination is refused before the work
+    fileset::check_writable(golden_dir, &["data"])?;
     let mut out = Vec::new();
     for c in &cases {
         out.push((c.name.clone(), render(c)?));

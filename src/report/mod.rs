@@ -245,6 +245,8 @@ const ENGINES: &str = "physics engines held against the oracle (conformance scor
 /// summary: the files written and any problem met (points that could not be
 /// verified, closed forms that disagree).
 pub fn run_with(dir: &Path, cfg: &Config) -> Result<String> {
+    // an unwritable destination is refused before the work
+    crate::golden::fileset::check_writable(dir, &["", "figures"])?;
     let (pb, show) = progress_bar(cfg);
     let data = data::compute(cfg, &pb, show)?;
     pb.set_message("friction");
