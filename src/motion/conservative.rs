@@ -231,7 +231,10 @@ pub fn first_phase(
     let mut events = Vec::new();
     if let (Some((d, err)), true) = (&branch_at, ending != Ending::BranchPart) {
         if *d <= d_end {
-            let (t, terr) = route.engine(p)?.time(d);
+            // t* by the cheaper half-angle quadrature where it applies
+            // (θ ≤ 2π/3; else the θ form, as `time`): the branch point's
+            // detection is to cost little on top of the phase
+            let (t, terr, _) = route.engine(p)?.time_fast(d, wants.run == Run::High, false);
             let (cols, en) = route.columns_at(d, &t, p)?;
             let thd = Float::with_val(p, cols[2].abs_ref());
             let t_err = if thd.is_zero() {
