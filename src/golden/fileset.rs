@@ -69,10 +69,12 @@ fn stage(path: &Path, bytes: &[u8]) -> Result<PathBuf> {
     Ok(tmp)
 }
 
-/// Whether the set's directories can be written: each of `dirs` (relative
-/// to `dir`; `dir` itself for an empty path) is created if missing and a
-/// probe file is written in it and removed. Called before the work that
-/// computes the set, so that an unwritable destination is refused at once.
+/// Whether the set's directories can be written, creating nothing: for each
+/// of `dirs` (relative to `dir`; `dir` itself for an empty path), a probe
+/// file is written and removed in the directory or, where it does not exist
+/// yet, in its nearest existing ancestor (which must be a directory). Called
+/// before the work that computes the set, so that an unwritable destination
+/// is refused at once.
 ///
 /// Errors: [`Error::Write`] naming the directory.
 pub fn check_writable(dir: &Path, dirs: &[&str]) -> Result<()> {
@@ -82,9 +84,25 @@ pub fn check_writable(dir: &Path, dirs: &[&str]) -> Result<()> {
         } else {
             dir.join(sub)
         };
-        let probe = d.join(format!(".cylroll-probe-{}", std::process::id()));
-        let tmp = stage(&probe, b"")?;
-        let _ = std::fs::remove_file(&tmp);
+        let mut at = d.as_path();
+        while !at.exists() {
+            match at.parent() {
+                Some(p) if !p.as_os_str().is_empty() => at = p,
+                _ => {
+                    at = Path::new(".");
+                    break;
+                }
+            }
+        }
+        if !at.is_dir() {
+            return Err(write_err(
+                &d,
+                std::io::Error::other(format!("{} is not a directory", at.display())),
+            ));
+        }
+        let probe = at.join(format!(".cylroll-probe-{}", std::process::id()));
+        std::fs::File::create(&probe).map_err(|e| write_err(&d, e))?;
+        let _ = std::fs::remove_file(&probe);
     }
     Ok(())
 }

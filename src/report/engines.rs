@@ -130,6 +130,13 @@ pub fn page(cards: &[Card], root_shown: &str, report_stamp: &str) -> String {
         s.push_str("</body>\n</html>\n");
         return s;
     }
+    s.push_str(&format!(
+        "<p>To score your own engine: install the Python package with the engines extra and run the battery on an adapter of your own, one class of about 50 lines (<code>name</code>, <code>version</code>, <code>settings</code>, <code>build</code>, <code>step</code>, <code>poses</code>, <code>velocities</code>, <code>contact_forces</code>; see <code>python/cylroll/conformance/README.md</code> and the complete example in <code>examples.py</code>):</p>\n\
+         <pre><code>pip install './python[engines]'\n\
+         python -m cylroll.conformance mymodule:MyEngine --out {r}/myengine</code></pre>\n\
+         <p>The command writes <code>scorecard.json</code> and <code>index.html</code>; a scorecard committed under <code>{r}/</code> appears on this page at the next <code>cylroll report</code>.</p>\n",
+        r = esc(root_shown)
+    ));
     s.push_str("<nav><h2>Contents</h2><ul>\n");
     for c in cards {
         s.push_str(&format!(
