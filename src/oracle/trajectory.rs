@@ -1,0 +1,320 @@
+//! `trajectory`: every column (or those asked) at given times, through
+//! every phase, verified on the precision ladder; long tables in blocks of
+//! rows so that memory stays bounded ([`trajectory_in_blocks`]); θ alone at
+//! times ([`theta_at_times`]).
+
+use super::ladder::{self, event_estimates, events_of, integrated, laddered};
+use super::{
+    check_digits, check_part_at, check_times, empty_answer, energy_note, infinite, motion_notes,
+    runs, Answer, Options, Question, Row,
+};
+use crate::error::{Error, Result};
+use crate::exact::Exact;
+use crate::model::Model;
+use crate::motion::{self, Phase, Until};
+use crate::numeric::verify::{precisions, Estimate, Run, Verified};
+use rug::Float;
+
+/// The first of `times` that [`trajectory`] refuses on its own (a time past
+/// the end of the motion), found by bisection on single times (the refused
+/// ones are those past the end: a tail of the ascending times), with its
+/// error.
+fn first_refused_time(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+    columns: &[String],
+) -> Option<Error> {
+    let refused = |i: usize| match trajectory_block(model, &times[i..=i], opts, columns) {
+        Err(e @ Error::InvalidParameter { .. }) => Some(e),
+        _ => None,
+    };
+    let mut err = refused(times.len() - 1)?;
+    let (mut lo, mut hi) = (0usize, times.len() - 1);
+    if let Some(e) = refused(0) {
+        return Some(e);
+    }
+    // times[lo] accepted, times[hi] refused
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        match refused(mid) {
+            Some(e) => {
+                hi = mid;
+                err = e;
+            }
+            None => lo = mid,
+        }
+    }
+    Some(err)
+}
+
+/// Every column at `times` (ascending, ≥ 0), through every phase to the
+/// first impact: one row per time, in [`crate::motion::COLUMNS`] order,
+/// with its phase; and the events up to the last time.
+///
+/// Errors: a negative or descending time; a time after the end of the
+/// model; see [`motion::run`].
+pub fn trajectory(model: &Model, times: &[Exact], opts: &Options) -> Result<Answer> {
+    trajectory_of(model, times, opts, &all_columns())
+}
+
+/// Every column of a trajectory: [`motion::COLUMNS`] and `mode`.
+pub fn all_columns() -> Vec<String> {
+    let mut c: Vec<String> = motion::COLUMNS.iter().map(|s| s.to_string()).collect();
+    c.push("mode".into());
+    c
+}
+
+/// The columns named in `text` (comma-separated names of
+/// [`motion::COLUMNS`] and `mode`, each at most once), in its order.
+///
+/// Errors: [`Error::InvalidParameter`] naming `columns`.
+pub fn parse_columns(text: &str) -> Result<Vec<String>> {
+    let all = all_columns();
+    let mut out: Vec<String> = Vec::new();
+    for c in text.split(',').map(str::trim) {
+        if !all.iter().any(|a| a == c) {
+            return Err(Error::invalid(
+                "columns",
+                c,
+                format!("must be among {}", all.join(", ")),
+            ));
+        }
+        if out.iter().any(|o| o == c) {
+            return Err(Error::invalid("columns", c, "must be named only once"));
+        }
+        out.push(c.to_string());
+    }
+    Ok(out)
+}
+
+/// [`trajectory`] with only `columns` (see [`parse_columns`]): the others
+/// are neither verified nor, where θ alone is asked (with `t` and `mode`),
+/// computed.
+///
+/// Errors: as [`trajectory`].
+pub fn trajectory_of(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+    columns: &[String],
+) -> Result<Answer> {
+    check_digits(opts.digits)?;
+    check_part_at(model, opts)?;
+    let (mut ans, row_notes, _) = trajectory_block(model, times, opts, columns)?;
+    ans.notes.extend(row_notes);
+    Ok(ans)
+}
+
+/// [`trajectory`] computed `block` rows at a time, so that memory stays
+/// bounded however many times are asked: each block is a trajectory of its
+/// own (the motion integrated to the block's last time at both working
+/// precisions) and is handed to `sink` with its rows; the answer returned
+/// carries everything but the rows — the events and notes of the motion to
+/// the last time (those of the last block), followed by the notes on rows of
+/// every block.
+///
+/// Errors: as [`trajectory`], and whatever `sink` returns.
+pub fn trajectory_in_blocks(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+    columns: &[String],
+    block: usize,
+    mut sink: impl FnMut(&[Exact], Answer) -> Result<()>,
+) -> Result<Answer> {
+    check_digits(opts.digits)?;
+    check_times(times)?;
+    check_part_at(model, opts)?;
+    let block = block.max(1);
+    let chunks: Vec<&[Exact]> = times.chunks(block).collect();
+    // the last block first: it follows the motion to the last time, so a
+    // time past the end (or any other refusal of the motion) is found
+    // before the other blocks are computed
+    let Some((last, rest)) = chunks.split_last() else {
+        return trajectory_of(model, times, opts, columns);
+    };
+    let (last_ans, last_notes, last_drift) = match trajectory_block(model, last, opts, columns) {
+        Ok(b) => b,
+        Err(e @ Error::InvalidParameter { .. }) if !rest.is_empty() => {
+            return Err(first_refused_time(model, times, opts, columns).unwrap_or(e))
+        }
+        Err(e) => return Err(e),
+    };
+    let mut row_notes = Vec::new();
+    let mut drift = last_drift.clone();
+    for chunk in rest {
+        crate::cancel::check()?;
+        let (ans, notes, d) = trajectory_block(model, chunk, opts, columns)?;
+        row_notes.extend(notes);
+        if d > drift {
+            drift = d;
+        }
+        sink(chunk, ans)?;
+    }
+    row_notes.extend(last_notes);
+    let mut head = last_ans.clone();
+    // the energy balance as held over every block's rows
+    let (was, is) = (energy_note(&last_drift), energy_note(&drift));
+    for n in head.notes.iter_mut().filter(|n| **n == was) {
+        n.clone_from(&is);
+    }
+    head.rows = Vec::new();
+    head.proved_rows = Vec::new();
+    sink(last, last_ans)?;
+    head.notes.extend(row_notes);
+    Ok(head)
+}
+
+/// [`trajectory`]'s answer, its notes on single rows (a time that cannot be
+/// told apart from an event's) apart.
+fn trajectory_block(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+    columns: &[String],
+) -> Result<(Answer, Vec<String>, Float)> {
+    check_digits(opts.digits)?;
+    check_times(times)?;
+    if model.starts_at_equilibrium() {
+        return Err(infinite(model, "every time along the motion"));
+    }
+    let mut ans = empty_answer(Question::Trajectory, model, opts);
+    ans.columns = columns.to_vec();
+    // the table verified: t and θ (the events' rows need them), then the
+    // other numeric columns asked, as indices of motion::COLUMNS
+    let asked: Vec<usize> = columns
+        .iter()
+        .filter_map(|c| motion::COLUMNS.iter().position(|k| k == c))
+        .collect();
+    let mut idx = vec![0usize, 1];
+    idx.extend(asked.iter().copied().filter(|&k| k > 1));
+    let theta_only = idx.len() == 2;
+    let exact_t = ladder::exact_times(times);
+    let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
+    runs.req.theta_only = theta_only;
+    let (p1, _) = precisions(opts.digits, 0);
+    let mut first = runs.at(p1, Run::Low)?;
+    runs.resolve_sides(&mut first)?;
+    let n_ev = first.events.len();
+    let names: Vec<String> = idx
+        .iter()
+        .map(|&k| motion::COLUMNS[k].to_string())
+        .collect();
+    let n_rows = times.len();
+    let mut table = laddered(&mut runs, first.clone(), &names, n_rows + n_ev, |m| {
+        let p = m.prec();
+        let sc = ladder::column_scales(model, p);
+        let mut out = Vec::new();
+        if theta_only {
+            for ((t, th), text) in times.iter().zip(ladder::theta_estimates(m)).zip(&exact_t) {
+                let mut te = integrated(&t.to_float(p), sc[0].clone());
+                te.exact_text = text.clone();
+                out.push(te);
+                out.push(th);
+            }
+        } else {
+            for (pt, text) in m.rows.iter().zip(&exact_t) {
+                let mut all = ladder::point_estimates(pt, &sc, text.as_ref());
+                out.extend(
+                    idx.iter()
+                        .map(|&k| std::mem::replace(&mut all[k], Estimate::zero(p, Float::new(p)))),
+                );
+            }
+        }
+        // the events' times and angles, as rows of their own columns
+        let mut ev = Vec::new();
+        event_estimates(m, &mut ev);
+        for pair in ev.chunks(2) {
+            let mut row = vec![pair[0].clone(), pair[1].clone()];
+            for &k in idx.iter().skip(2) {
+                row.push(Estimate::zero(p, sc[k].clone()));
+            }
+            out.extend(row);
+        }
+        Ok(out)
+    })?;
+    let ev_rows = table.split_off(n_rows);
+    let ev_vals: Vec<Verified> = ev_rows
+        .into_iter()
+        .flat_map(|r| r.into_iter().take(2))
+        .collect();
+    ans.events = events_of(&first, &ev_vals);
+    // each row in the order of the columns asked
+    let table: Vec<Vec<Verified>> = table
+        .into_iter()
+        .map(|row| {
+            asked
+                .iter()
+                .map(|&k| {
+                    let at = idx.iter().position(|&i| i == k).unwrap_or(0);
+                    row[at].clone()
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    ans.rows = if theta_only {
+        ladder::theta_phases(&first)
+            .into_iter()
+            .zip(table)
+            .map(|(phase, values)| Row {
+                values,
+                phase,
+                at_event: None,
+            })
+            .collect()
+    } else {
+        ladder::rows_of(&first, table)
+    };
+    let mut row_notes = Vec::new();
+    for &(i, k) in &runs.at_events {
+        ans.rows[i].at_event = Some(k);
+        let e = &first.events[k];
+        row_notes.push(format!(
+            "t = {} cannot be told apart from the {} at t = {} (not even at {} bits): its row is \
+             the state at the event (positions and velocities are continuous there; the \
+             forces and accelerations are those of the phase before)",
+            times[i],
+            e.kind.name().replace('_', " "),
+            ans.events[k].t.text,
+            runs.side_bits
+        ));
+    }
+    ans.start_mode = Some(first.start_mode);
+    ans.end = first.end;
+    ans.routes = first.routes.clone();
+    ans.notes = motion_notes(&first, opts);
+    Ok((ans, row_notes, first.energy_drift.clone()))
+}
+
+/// θ alone at `times`, verified like [`trajectory`]'s `theta` column but
+/// without the other columns, and the phase of each time.
+///
+/// Errors: as [`trajectory`].
+pub fn theta_at_times(
+    model: &Model,
+    times: &[Exact],
+    opts: &Options,
+) -> Result<(Vec<Verified>, Vec<Phase>)> {
+    check_digits(opts.digits)?;
+    check_times(times)?;
+    check_part_at(model, opts)?;
+    if model.starts_at_equilibrium() {
+        return Err(infinite(model, "every time along the motion"));
+    }
+    let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
+    runs.req.theta_only = true;
+    let (p1, _) = precisions(opts.digits, 0);
+    let mut first = runs.at(p1, Run::Low)?;
+    runs.resolve_sides(&mut first)?;
+    let phases = ladder::theta_phases(&first);
+    let rows = laddered(&mut runs, first, &["theta".to_string()], times.len(), |m| {
+        Ok(ladder::theta_estimates(m))
+    })?;
+    Ok((
+        rows.into_iter()
+            .filter_map(|r| r.into_iter().next())
+            .collect(),
+        phases,
+    ))
+}
