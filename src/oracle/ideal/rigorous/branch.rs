@@ -14,11 +14,10 @@
 //! coincide within the proof and nothing is claimed), and t* follows by the
 //! proved quadrature.
 
-use super::theta_s::positive_above;
+use super::theta_s::first_root_below;
 use super::{Oracle, Proved};
 use crate::error::Result;
 use crate::numeric::interval::{not_enclosed, Iv};
-use rug::float::Round;
 use rug::Float;
 
 impl Oracle {
@@ -51,49 +50,34 @@ impl Oracle {
         theta_s: &Iv,
         p: u32,
     ) -> Result<(Proved, std::result::Result<Proved, String>)> {
-        use crate::numeric::poly;
         let coef = self.free_normal_interval_coefficients(p);
+        // positive above the root: the free normal acceleration is negative
+        // (the contact presses) from the start down to θ*
         let neg: Vec<Iv> = coef.iter().map(Iv::neg).collect();
-        let mids: Vec<Float> = coef.iter().map(|c| c.mid_rad().0).collect();
         let c_start = Float::with_val(p, start.clone().abs()).cos();
-        let (c_star, eps0) = poly::refine_root("theta_indeterminate", &mids, &c_start, p)
-            .unwrap_or_else(|_| (c_start.clone(), Float::with_val(p, 1e-12)));
         let c0 = self.consts(p).th0.cos();
-        let mut eps = Float::with_val(p, eps0 * 4u32);
-        let min_eps = Float::with_val(p, 1u32) >> (p as i32 - 8);
-        if eps < min_eps {
-            eps = min_eps;
+        let Some(c) = first_root_below(&neg, "theta_indeterminate", &c_start, &c0.hi, p)? else {
+            return Err(not_enclosed(
+                "theta_indeterminate: the sign change of the free normal acceleration could not be proved",
+            ));
+        };
+        let th = c.acos()?;
+        if th.hi >= theta_s.abs().lo {
+            return Err(not_enclosed(
+                "theta_indeterminate: the order theta* < theta_s could not be proved",
+            ));
         }
-        for _ in 0..24 {
-            let lo = Float::with_val_round(p, &c_star - &eps, Round::Down).0;
-            let hi = Float::with_val_round(p, &c_star + &eps, Round::Up).0;
-            let plo = Iv::horner(&coef, &Iv::point(p, &lo));
-            let phi = Iv::horner(&coef, &Iv::point(p, &hi));
-            if plo.is_positive() && phi.is_negative() && positive_above(&neg, &hi, &c0.hi)? {
-                let th = Iv::new(lo, hi).acos()?;
-                let s = theta_s.abs();
-                if th.hi >= s.lo {
-                    return Err(not_enclosed(
-                        "theta_indeterminate: the order theta* < theta_s could not be proved",
-                    ));
-                }
-                let user = self.odd_iv(th);
-                let t = if self.route.work.starts_at_equilibrium() {
-                    Err("t_indeterminate is infinite".to_string())
-                } else {
-                    let w = self.odd_iv(user.clone());
-                    self.rigorous_time_iv(&w, p).map_err(|e| e.to_string())
-                };
-                let digits = self.digits;
-                return Ok((
-                    Proved::new("theta_indeterminate", user, digits),
-                    t.map(|t| Proved::new("t_indeterminate", t, digits)),
-                ));
-            }
-            eps <<= 2u32;
-        }
-        Err(not_enclosed(
-            "theta_indeterminate: the sign change of the free normal acceleration could not be proved",
+        let user = self.odd_iv(th);
+        let t = if self.route.work.starts_at_equilibrium() {
+            Err("t_indeterminate is infinite".to_string())
+        } else {
+            let w = self.odd_iv(user.clone());
+            self.rigorous_time_iv(&w, p).map_err(|e| e.to_string())
+        };
+        let digits = self.digits;
+        Ok((
+            Proved::new("theta_indeterminate", user, digits),
+            t.map(|t| Proved::new("t_indeterminate", t, digits)),
         ))
     }
 }

@@ -33,29 +33,13 @@ impl Oracle {
             })?;
         let k = self.consts(p);
         let coef = self.n12_interval_coefficients(&k)?;
-        let mids: Vec<Float> = coef.iter().map(|c| c.mid_rad().0).collect();
-        let (c_star, eps0) = poly::refine_root("theta_s", &mids, &start, p)
-            .unwrap_or_else(|_| (Float::with_val(p, &start), Float::with_val(p, 1e-12)));
         let c0 = k.th0.cos();
-        let mut eps = Float::with_val(p, eps0 * 4u32);
-        let min_eps = Float::with_val(p, 1u32) >> (p as i32 - 8);
-        if eps < min_eps {
-            eps = min_eps;
+        match first_root_below(&coef, "theta_s", &Float::with_val(p, &start), &c0.hi, p)? {
+            Some(c) => Ok(self.odd_iv(c.acos()?)),
+            None => Err(not_enclosed(
+                "theta_s: the sign change of N12 could not be proved",
+            )),
         }
-        for _ in 0..24 {
-            let lo = Float::with_val_round(p, &c_star - &eps, Round::Down).0;
-            let hi = Float::with_val_round(p, &c_star + &eps, Round::Up).0;
-            let plo = Iv::horner(&coef, &Iv::point(p, &lo));
-            let phi = Iv::horner(&coef, &Iv::point(p, &hi));
-            if plo.is_negative() && phi.is_positive() && positive_above(&coef, &hi, &c0.hi)? {
-                let th = Iv::new(lo, hi).acos()?;
-                return Ok(self.odd_iv(th));
-            }
-            eps <<= 2u32;
-        }
-        Err(not_enclosed(
-            "theta_s: the sign change of N12 could not be proved",
-        ))
     }
 
     /// The coefficients of N12·K²/m2 as intervals (A_H enclosed).
@@ -195,4 +179,42 @@ pub(super) fn prove_positive(coef: &[Iv], a: &Float, b: &Float) -> Result<bool> 
         stack.push((m, hi));
     }
     Ok(true)
+}
+
+/// The first root below `c0_hi` of the interval polynomial `q` in c = cos θ,
+/// enclosed: an interval [lo, hi] around the Newton root of the midpoints
+/// near `start` (widened fourfold until it works, 24 times at most) with
+/// q(lo) < 0 < q(hi) proved and q > 0 proved on [hi, c0_hi] — the root the
+/// motion meets first as c falls from cos θ0. Orient `q` so that it is
+/// positive above the root (negate it otherwise). `name` for messages.
+///
+/// Errors: none of its own (Ok(None): not proved at this precision); those
+/// of the positivity proof.
+pub(super) fn first_root_below(
+    q: &[Iv],
+    name: &str,
+    start: &Float,
+    c0_hi: &Float,
+    p: u32,
+) -> Result<Option<Iv>> {
+    use crate::numeric::poly;
+    let mids: Vec<Float> = q.iter().map(|c| c.mid_rad().0).collect();
+    let (c_star, eps0) = poly::refine_root(name, &mids, start, p)
+        .unwrap_or_else(|_| (Float::with_val(p, start), Float::with_val(p, 1e-12)));
+    let mut eps = Float::with_val(p, eps0 * 4u32);
+    let min_eps = Float::with_val(p, 1u32) >> (p as i32 - 8);
+    if eps < min_eps {
+        eps = min_eps;
+    }
+    for _ in 0..24 {
+        let lo = Float::with_val_round(p, &c_star - &eps, Round::Down).0;
+        let hi = Float::with_val_round(p, &c_star + &eps, Round::Up).0;
+        let qlo = Iv::horner(q, &Iv::point(p, &lo));
+        let qhi = Iv::horner(q, &Iv::point(p, &hi));
+        if qlo.is_negative() && qhi.is_positive() && positive_above(q, &hi, c0_hi)? {
+            return Ok(Some(Iv::new(lo, hi)));
+        }
+        eps <<= 2u32;
+    }
+    Ok(None)
 }
