@@ -246,7 +246,14 @@ fn check_part_at(model: &Model, opts: &Options) -> Result<()> {
 /// The notes every motion answer carries: the energy balance where work
 /// was dissipated, the routes, the window where parting was lawful.
 fn motion_notes(first: &Motion, opts: &Options) -> Vec<String> {
-    let mut notes = Vec::new();
+    let mut notes: Vec<String> = energy_drift(first).iter().map(energy_note).collect();
+    notes.extend(branch_notes(first, opts));
+    notes
+}
+
+/// The largest energy drift |E(0) − E(t) − W(t)| along a dissipative motion
+/// (None for a conservative one, whose energy integral is exact).
+fn energy_drift(first: &Motion) -> Option<Float> {
     let dissipative = first
         .routes
         .iter()
@@ -255,9 +262,12 @@ fn motion_notes(first: &Motion, opts: &Options) -> Vec<String> {
             .events
             .iter()
             .any(|e| e.at.work.is_sign_positive() && !e.at.work.is_zero());
-    if dissipative {
-        notes.push(energy_note(&first.energy_drift));
-    }
+    dissipative.then(|| first.energy_drift.clone())
+}
+
+/// The notes on where the motion is not unique and the branch followed.
+fn branch_notes(first: &Motion, opts: &Options) -> Vec<String> {
+    let mut notes = Vec::new();
     if first.events.iter().any(|e| e.kind == Kind::Indeterminate) {
         let on = match &opts.branch {
             Branch::Stay => "the cylinders stay together (the branch followed, the limit of stiff \

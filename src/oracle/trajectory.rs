@@ -5,8 +5,8 @@
 
 use super::ladder::{self, event_estimates, events_of, integrated, laddered};
 use super::{
-    check_digits, check_part_at, check_times, empty_answer, energy_note, infinite, motion_notes,
-    runs, Answer, Options, Question, Row,
+    branch_notes, check_digits, check_part_at, check_times, empty_answer, energy_drift,
+    energy_note, infinite, runs, Answer, Options, Question, Row,
 };
 use crate::error::{Error, Result};
 use crate::exact::Exact;
@@ -101,9 +101,31 @@ pub fn trajectory_of(
 ) -> Result<Answer> {
     check_digits(opts.digits)?;
     check_part_at(model, opts)?;
-    let (mut ans, row_notes, _) = trajectory_block(model, times, opts, columns)?;
-    ans.notes.extend(row_notes);
-    Ok(ans)
+    let b = trajectory_block(model, times, opts, columns)?;
+    Ok(b.finish())
+}
+
+/// A trajectory's answer for some times, before its notes are complete.
+struct Block {
+    /// The answer, with the notes on the branch followed.
+    ans: Answer,
+    /// Notes on single rows (a time that cannot be told apart from an event's).
+    row_notes: Vec<String>,
+    /// The energy balance's largest drift, for a dissipative motion.
+    drift: Option<Float>,
+}
+
+impl Block {
+    /// The answer with its notes in order: the energy balance, the branch,
+    /// the rows.
+    fn finish(self) -> Answer {
+        let mut ans = self.ans;
+        let mut notes: Vec<String> = self.drift.iter().map(energy_note).collect();
+        notes.append(&mut ans.notes);
+        notes.extend(self.row_notes);
+        ans.notes = notes;
+        ans
+    }
 }
 
 /// [`trajectory`] computed `block` rows at a time, so that memory stays
@@ -134,7 +156,7 @@ pub fn trajectory_in_blocks(
     let Some((last, rest)) = chunks.split_last() else {
         return trajectory_of(model, times, opts, columns);
     };
-    let (last_ans, last_notes, last_drift) = match trajectory_block(model, last, opts, columns) {
+    let last_block = match trajectory_block(model, last, opts, columns) {
         Ok(b) => b,
         Err(e @ Error::InvalidParameter { .. }) if !rest.is_empty() => {
             return Err(first_refused_time(model, times, opts, columns).unwrap_or(e))
@@ -142,28 +164,29 @@ pub fn trajectory_in_blocks(
         Err(e) => return Err(e),
     };
     let mut row_notes = Vec::new();
-    let mut drift = last_drift.clone();
+    let mut drift = last_block.drift.clone();
     for chunk in rest {
         crate::cancel::check()?;
-        let (ans, notes, d) = trajectory_block(model, chunk, opts, columns)?;
-        row_notes.extend(notes);
-        if d > drift {
-            drift = d;
-        }
-        sink(chunk, ans)?;
+        let b = trajectory_block(model, chunk, opts, columns)?;
+        row_notes.extend(b.row_notes);
+        // the energy balance as held over every block's rows
+        drift = match (drift, b.drift) {
+            (Some(a), Some(d)) => Some(if d > a { d } else { a }),
+            (a, d) => a.or(d),
+        };
+        sink(chunk, b.ans)?;
     }
-    row_notes.extend(last_notes);
-    let mut head = last_ans.clone();
-    // the energy balance as held over every block's rows
-    let (was, is) = (energy_note(&last_drift), energy_note(&drift));
-    for n in head.notes.iter_mut().filter(|n| **n == was) {
-        n.clone_from(&is);
-    }
+    let mut head = last_block.ans.clone();
     head.rows = Vec::new();
     head.proved_rows = Vec::new();
-    sink(last, last_ans)?;
-    head.notes.extend(row_notes);
-    Ok(head)
+    row_notes.extend(last_block.row_notes);
+    sink(last, last_block.ans)?;
+    Ok(Block {
+        ans: head,
+        row_notes,
+        drift,
+    }
+    .finish())
 }
 
 /// [`trajectory`]'s answer, its notes on single rows (a time that cannot be
@@ -173,7 +196,7 @@ fn trajectory_block(
     times: &[Exact],
     opts: &Options,
     columns: &[String],
-) -> Result<(Answer, Vec<String>, Float)> {
+) -> Result<Block> {
     check_digits(opts.digits)?;
     check_times(times)?;
     if model.starts_at_equilibrium() {
@@ -283,8 +306,12 @@ fn trajectory_block(
     ans.start_mode = Some(first.start_mode);
     ans.end = first.end;
     ans.routes = first.routes.clone();
-    ans.notes = motion_notes(&first, opts);
-    Ok((ans, row_notes, first.energy_drift.clone()))
+    ans.notes = branch_notes(&first, opts);
+    Ok(Block {
+        ans,
+        row_notes,
+        drift: energy_drift(&first),
+    })
 }
 
 /// θ alone at `times`, verified like [`trajectory`]'s `theta` column but
