@@ -7,22 +7,16 @@ use cylroll::oracle::rigorous::Proved;
 use cylroll::oracle::{Answer, Question};
 use serde_json::{json, Map, Value};
 
-/// The answer in the requested format.
+/// The answer in the requested format (`trajectory`'s tables are printed
+/// by [`super::stream`], from [`table_parts`] and [`rows_text`]).
 pub fn render(mut a: Answer, format: Format) -> String {
+    debug_assert!(
+        a.question != Question::Trajectory,
+        "tables go through stream"
+    );
     // a finding is stated once, however many routes reached it
     let mut seen = std::collections::HashSet::new();
     a.notes.retain(|n| seen.insert(n.clone()));
-    if a.question == Question::Trajectory {
-        let mut stats = RowStats::default();
-        stats.add(&a);
-        let mut out = rows_text(&a, format, true);
-        let rows = std::mem::take(&mut out);
-        let (head, tail) = table_parts(&a, format, &stats);
-        out.push_str(&head);
-        out.push_str(&rows);
-        out.push_str(&tail);
-        return out;
-    }
     match format {
         Format::Text => text(&a, None),
         Format::Json => json_text(&a, None).0,

@@ -151,8 +151,9 @@ pub fn trajectory(
             if rigorous {
                 rigor.block(model, t, &mut a);
             }
+            let first = stats.rows == 0;
             stats.add(&a);
-            spill.push(&rows_text(&a, format, stats.rows == a.rows.len()))
+            spill.push(&rows_text(&a, format, first))
         })?;
     if rigorous {
         rigor.notes(&mut head);
