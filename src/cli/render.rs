@@ -117,14 +117,22 @@ const ROWS_MARK: &str = "\u{0}ROWS\u{0}";
 /// separates rows by commas).
 pub fn rows_text(a: &Answer, format: Format, first: bool) -> String {
     let mut out = String::new();
+    // the columns once for every row (a row's cells are written straight
+    // into `out`: a table of 10^5 rows is the common case)
+    let cols = columns(a);
+    let sep = match format {
+        Format::Text => '\t',
+        _ => ',',
+    };
     for i in 0..a.rows.len() {
         match format {
-            Format::Text => {
-                out.push_str(&row_texts(a, i).join("\t"));
-                out.push('\n');
-            }
-            Format::Csv => {
-                out.push_str(&row_texts(a, i).join(","));
+            Format::Text | Format::Csv => {
+                row_cells(a, i, &cols, |k, cell| {
+                    if k > 0 {
+                        out.push(sep);
+                    }
+                    out.push_str(cell);
+                });
                 out.push('\n');
             }
             Format::Json => {
@@ -206,25 +214,25 @@ fn proved_cell<'a>(a: &'a Answer, row: usize, col: &str) -> Option<&'a Proved> {
         .and_then(|r| r.iter().find(|p| p.name == col))
 }
 
-/// The text of each cell of row `i` (proved digits where enclosed).
-fn row_texts(a: &Answer, i: usize) -> Vec<String> {
+/// Calls `cell(k, text)` for each cell of row `i` in the order of `cols`
+/// (the answer's [`columns`]): the proved digits where the row is enclosed.
+fn row_cells(a: &Answer, i: usize, cols: &[String], mut cell: impl FnMut(usize, &str)) {
     let r = &a.rows[i];
     let mut vals = r.values.iter();
-    columns(a)
-        .iter()
-        .map(|c| {
-            if c == "mode" {
-                return r.phase.tag();
-            }
-            match vals.next() {
-                Some(v) => match proved_cell(a, i, &v.name) {
-                    Some(p) => p.shown.text.clone(),
-                    None => v.text.clone(),
-                },
-                None => String::new(),
-            }
-        })
-        .collect()
+    let proved = !a.proved_rows.is_empty();
+    for (k, c) in cols.iter().enumerate() {
+        if c == "mode" {
+            cell(k, &r.phase.tag());
+            continue;
+        }
+        match vals.next() {
+            Some(v) => match proved.then(|| proved_cell(a, i, &v.name)).flatten() {
+                Some(p) => cell(k, &p.shown.text),
+                None => cell(k, &v.text),
+            },
+            None => cell(k, ""),
+        }
+    }
 }
 
 fn laws_line(a: &Answer) -> String {

@@ -221,6 +221,35 @@ impl Point {
         v
     }
 
+    /// The values in [`COLUMNS`] order and the route's errors, moved out.
+    pub fn into_columns(self) -> (Vec<Float>, Option<Vec<Float>>) {
+        let s = self.state;
+        let v = vec![
+            s.t,
+            s.theta,
+            s.theta_dot,
+            s.theta_ddot,
+            s.phi1,
+            s.phi2,
+            s.x1,
+            s.x2,
+            s.y2,
+            s.x1_dot,
+            s.phi1_dot,
+            s.x2_dot,
+            s.y2_dot,
+            s.phi2_dot,
+            s.f1,
+            s.n1,
+            s.f21,
+            s.n12,
+            self.s1,
+            self.s12,
+            self.work,
+        ];
+        (v, self.err)
+    }
+
     /// Whether column `i` of [`COLUMNS`] is exactly 0 by the laws.
     pub fn is_exact_zero(&self, i: usize) -> bool {
         self.exact_zero & (1 << i) != 0

@@ -1,7 +1,7 @@
 //! Decimal rendering of `Float`s to a number of significant digits.
 
 use rug::float::Round;
-use rug::Float;
+use rug::{Assign, Float};
 
 /// `x` correctly rounded (to nearest) to `digits` significant decimal digits,
 /// as (sign, digit string of length `digits`, decimal exponent e) meaning
@@ -51,6 +51,22 @@ const POW10_KEPT: usize = 32;
 /// MPFR's correctly rounded conversion; for callers that allow for the unit
 /// (the precision ladder's fast judgement). Needs digits·log2(10) < prec(x).
 pub fn approx_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
+    let mut buf = Vec::new();
+    let (neg, e) = approx_sig_into(x, digits, &mut buf)?;
+    Some((neg, String::from_utf8(buf).ok()?, e))
+}
+
+thread_local! {
+    /// [`approx_sig_into`]'s working numbers, kept between calls (a table
+    /// converts tens of thousands of values at one precision).
+    static SCRATCH: std::cell::RefCell<(Float, rug::Integer)> =
+        std::cell::RefCell::new((Float::new(64), rug::Integer::new()));
+}
+
+/// [`approx_sig`] with its digits written into `buf` (cleared first, ASCII
+/// digits), returning (sign, exponent); allocates nothing once its scratch
+/// numbers have grown to the precision.
+pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(bool, i64)> {
     if x.is_zero() || !x.is_finite() {
         return None;
     }
@@ -58,62 +74,88 @@ pub fn approx_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
     let mut e = (m.abs().log10() + ex as f64 * std::f64::consts::LOG10_2).floor() as i64 + 1;
     let p = x.prec() + 16;
     let n = digits as i64;
-    for _ in 0..3 {
-        let k = n - e;
-        let kk = u32::try_from(k.unsigned_abs()).ok()?;
-        let mut y = Float::with_val(p, x.abs_ref());
-        // 10^kk at p bits, kept for later calls (a table's values share
-        // their precision, and each column mostly its exponent)
-        POW10.with(|c| {
-            let mut c = c.borrow_mut();
-            let i = match c.iter().position(|e| e.0 == p && e.1 == kk) {
-                Some(i) => i,
-                None => {
-                    if c.len() == POW10_KEPT {
-                        c.remove(0);
-                    }
-                    c.push((p, kk, Float::with_val(p, Float::u_pow_u(10, kk))));
-                    c.len() - 1
-                }
-            };
-            if k >= 0 {
-                y *= &c[i].2;
-            } else {
-                y /= &c[i].2;
-            }
-        });
-        let (mi, _) = y.to_integer_round(Round::Nearest)?;
-        let s = mi.to_string();
-        match (s.len() as i64).cmp(&n) {
-            std::cmp::Ordering::Greater => e += 1,
-            std::cmp::Ordering::Less => e -= 1,
-            std::cmp::Ordering::Equal => return Some((x.is_sign_negative(), s, e)),
+    SCRATCH.with(|sc| {
+        let mut sc = sc.borrow_mut();
+        let (y, mi) = &mut *sc;
+        if y.prec() != p {
+            y.set_prec(p);
         }
-    }
-    None
+        for _ in 0..3 {
+            let k = n - e;
+            let kk = u32::try_from(k.unsigned_abs()).ok()?;
+            y.assign(x.abs_ref());
+            // 10^kk at p bits, kept for later calls (a table's values share
+            // their precision, and each column mostly its exponent)
+            POW10.with(|c| {
+                let mut c = c.borrow_mut();
+                let i = match c.iter().position(|e| e.0 == p && e.1 == kk) {
+                    Some(i) => i,
+                    None => {
+                        if c.len() == POW10_KEPT {
+                            c.remove(0);
+                        }
+                        c.push((p, kk, Float::with_val(p, Float::u_pow_u(10, kk))));
+                        c.len() - 1
+                    }
+                };
+                if k >= 0 {
+                    *y *= &c[i].2;
+                } else {
+                    *y /= &c[i].2;
+                }
+            });
+            y.to_integer_round_in_place(mi, Round::Nearest)?;
+            buf.clear();
+            match mi.to_u128() {
+                Some(u) => {
+                    use std::io::Write;
+                    write!(buf, "{u}").ok()?;
+                }
+                None => buf.extend_from_slice(mi.to_string().as_bytes()),
+            }
+            match (buf.len() as i64).cmp(&n) {
+                std::cmp::Ordering::Greater => e += 1,
+                std::cmp::Ordering::Less => e -= 1,
+                std::cmp::Ordering::Equal => return Some((x.is_sign_negative(), e)),
+            }
+        }
+        None
+    })
 }
 
 /// Plain text of ±0.d·10^e: positional when −7 ≤ e ≤ 21, else `d.ddde±x`.
 pub fn render(neg: bool, d: &str, e: i64) -> String {
-    let sign = if neg { "-" } else { "" };
     let n = d.len() as i64;
+    let mut out = String::with_capacity(d.len() + 10);
+    if neg {
+        out.push('-');
+    }
+    let zeros = |out: &mut String, k: i64| out.extend(std::iter::repeat_n('0', k.max(0) as usize));
     if (-6..=21).contains(&e) {
         if e <= 0 {
-            format!("{sign}0.{}{}", "0".repeat((-e) as usize), d)
+            out.push_str("0.");
+            zeros(&mut out, -e);
+            out.push_str(d);
         } else if e >= n {
-            format!("{sign}{}{}", d, "0".repeat((e - n) as usize))
+            out.push_str(d);
+            zeros(&mut out, e - n);
         } else {
             let (a, b) = d.split_at(e as usize);
-            format!("{sign}{a}.{b}")
+            out.push_str(a);
+            out.push('.');
+            out.push_str(b);
         }
     } else {
         let (a, b) = d.split_at(1);
-        if b.is_empty() {
-            format!("{sign}{a}e{}", e - 1)
-        } else {
-            format!("{sign}{a}.{b}e{}", e - 1)
+        out.push_str(a);
+        if !b.is_empty() {
+            out.push('.');
+            out.push_str(b);
         }
+        use std::fmt::Write;
+        let _ = write!(out, "e{}", e - 1);
     }
+    out
 }
 
 /// `x` to `digits` significant digits as text ("0" for zero).

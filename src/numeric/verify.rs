@@ -137,13 +137,22 @@ pub fn agreeing_digits(v: &Float, b: &Float, max: u32) -> u32 {
 /// exact path decides): a cell at a power of ten (A = 10…0, where the cell
 /// below is finer) or a carry into d + 1 digits.
 fn fast_text(v: &Float, bound: &Float, digits: u32) -> Option<String> {
+    thread_local! {
+        static BUF: std::cell::RefCell<Vec<u8>> = const { std::cell::RefCell::new(Vec::new()) };
+    }
+    BUF.with(|buf| fast_text_in(v, bound, digits, &mut buf.borrow_mut()))
+}
+
+/// [`fast_text`] on a reused digit buffer.
+fn fast_text_in(v: &Float, bound: &Float, digits: u32, a: &mut Vec<u8>) -> Option<String> {
     let d = digits as usize;
-    let (neg, dd, e) = super::decimal::approx_sig(v, digits + 3)?;
-    let bytes = dd.as_bytes();
-    if bytes.len() != d + 3 {
+    let (neg, e) = super::decimal::approx_sig_into(v, digits + 3, a)?;
+    if a.len() != d + 3 || d == 0 {
         return None;
     }
-    let t: i64 = dd[d..].parse().ok()?;
+    let t = a[d..]
+        .iter()
+        .fold(0i64, |t, &c| t * 10 + i64::from(c.wrapping_sub(b'0')));
     // the three guard digits are good to one unit: the rounding boundary
     // T = 500 is more than two units away
     let margin = (t - 500).abs() - 2;
@@ -162,7 +171,7 @@ fn fast_text(v: &Float, bound: &Float, digits: u32) -> Option<String> {
             return None;
         }
     }
-    let mut a: Vec<u8> = bytes[..d].to_vec();
+    a.truncate(d);
     if a[0] == b'1' && a[1..].iter().all(|&c| c == b'0') {
         return None;
     }
@@ -182,8 +191,8 @@ fn fast_text(v: &Float, bound: &Float, digits: u32) -> Option<String> {
             }
         }
     }
-    let digits_str = String::from_utf8(a).ok()?;
-    Some(render(neg, &digits_str, e))
+    let digits_str = std::str::from_utf8(a).ok()?;
+    Some(render(neg, digits_str, e))
 }
 
 fn judge(

@@ -39,10 +39,16 @@ pub fn signature(m: &Motion) -> Vec<String> {
 /// integrator's tolerance (the comparison of the two precisions carries
 /// the real weight).
 pub fn integrated(v: &Float, scale: Float) -> Estimate {
+    integrated_owned(v.clone(), scale)
+}
+
+/// [`integrated`] keeping `v` itself.
+pub fn integrated_owned(v: Float, scale: Float) -> Estimate {
     let p = v.prec();
-    let one = Float::with_val(p, 1u32);
-    let err = (Float::with_val(p, v.abs_ref()) + &one) >> (p as i32 - 24);
-    Estimate::new(v.clone(), err, scale)
+    let mut err = Float::with_val(p, v.abs_ref());
+    err += 1u32;
+    err >>= p as i32 - 24;
+    Estimate::new(v, err, scale)
 }
 
 fn one(p: u32) -> Float {
@@ -112,6 +118,46 @@ pub fn point_estimates(pt: &Point, scales: &[Float], t_text: Option<&String>) ->
             e
         })
         .collect()
+}
+
+/// The estimates of the columns `idx` (indices of [`crate::motion::COLUMNS`],
+/// each at most once) of a point, in that order, appended to `out`: the
+/// point's values moved into them (a table's rows are the bulk of its
+/// work). The same estimates as [`point_estimates`].
+pub fn push_point_estimates(
+    pt: Point,
+    scales: &[Float],
+    t_text: Option<&String>,
+    idx: &[usize],
+    out: &mut Vec<Estimate>,
+) {
+    let zero = pt.exact_zero;
+    let (vals, errs) = pt.into_columns();
+    let mut vals: Vec<Option<Float>> = vals.into_iter().map(Some).collect();
+    let mut errs: Option<Vec<Option<Float>>> = errs.map(|e| e.into_iter().map(Some).collect());
+    for &i in idx {
+        let Some(v) = vals.get_mut(i).and_then(Option::take) else {
+            continue;
+        };
+        let p = v.prec();
+        let sc = Float::with_val(p, &scales[i]);
+        if zero & (1 << i) != 0 {
+            out.push(Estimate::zero(p, sc));
+            continue;
+        }
+        let err = errs
+            .as_mut()
+            .and_then(|e| e.get_mut(i).and_then(Option::take));
+        let mut e = match err {
+            Some(err) if err.prec() == p => Estimate::new(v, err, sc),
+            Some(err) => Estimate::new(v, Float::with_val(p, &err), sc),
+            None => integrated_owned(v, sc),
+        };
+        if i == 0 {
+            e.exact_text = t_text.cloned();
+        }
+        out.push(e);
+    }
 }
 
 /// The estimates of each event's time and angle.
@@ -296,7 +342,7 @@ pub fn laddered(
     first: Motion,
     names: &[String],
     rows: usize,
-    est: impl Fn(&Motion) -> Result<Vec<Estimate>>,
+    est: impl Fn(Motion) -> Result<Vec<Estimate>>,
 ) -> Result<Vec<Vec<Verified>>> {
     let digits = runs.req.digits;
     let sig = signature(&first);
@@ -323,7 +369,7 @@ pub fn laddered(
             });
         }
         check_balance(&m, digits)?;
-        est(&m)
+        est(m)
     };
     if rows == 1 {
         ladder_runs(digits, &refs, f).map(|r| vec![r])

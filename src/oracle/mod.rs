@@ -422,6 +422,7 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         names.extend(IMPACT_KEYS.map(String::from));
     }
     let vals = laddered(&mut runs, first.clone(), &names, 1, |m| {
+        let m = &m;
         let mut out = Vec::new();
         event_estimates(m, &mut out);
         let p = m.prec();
@@ -617,6 +618,7 @@ fn at_angle(
         )
     });
     let rows = laddered(&mut runs, first, &names, 1, |m| {
+        let m = &m;
         m.target
             .as_ref()
             .map(&est)

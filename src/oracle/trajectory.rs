@@ -3,7 +3,7 @@
 //! rows so that memory stays bounded ([`trajectory_in_blocks`]); θ alone at
 //! times ([`theta_at_times`]).
 
-use super::ladder::{self, event_estimates, events_of, integrated, laddered};
+use super::ladder::{self, event_estimates, events_of, integrated_owned, laddered};
 use super::{
     branch_notes, check_digits, check_part_at, check_times, empty_answer, energy_drift,
     energy_note, infinite, runs, Answer, Options, Question, Row,
@@ -176,11 +176,15 @@ pub fn trajectory_in_blocks(
         };
         sink(chunk, b.ans)?;
     }
-    let mut head = last_block.ans.clone();
-    head.rows = Vec::new();
-    head.proved_rows = Vec::new();
+    // the head: the last block's answer without its rows (not cloned)
+    let mut last_ans = last_block.ans;
+    let rows = std::mem::take(&mut last_ans.rows);
+    let proved_rows = std::mem::take(&mut last_ans.proved_rows);
+    let head = last_ans.clone();
+    last_ans.rows = rows;
+    last_ans.proved_rows = proved_rows;
     row_notes.extend(last_block.row_notes);
-    sink(last, last_block.ans)?;
+    sink(last, last_ans)?;
     Ok(Block {
         ans: head,
         row_notes,
@@ -225,29 +229,31 @@ fn trajectory_block(
         .map(|&k| motion::COLUMNS[k].to_string())
         .collect();
     let n_rows = times.len();
-    let mut table = laddered(&mut runs, first.clone(), &names, n_rows + n_ev, |m| {
+    // the first run goes to the ladder (its rows become estimates); what
+    // the answer needs of it besides is kept without its rows
+    let phases: Vec<Phase> = first.rows.iter().map(|pt| pt.phase).collect();
+    let first_rows = std::mem::take(&mut first.rows);
+    let kept = first.clone();
+    first.rows = first_rows;
+    let mut table = laddered(&mut runs, first, &names, n_rows + n_ev, |m| {
         let p = m.prec();
         let sc = ladder::column_scales(model, p);
-        let mut out = Vec::new();
+        let mut out = Vec::with_capacity((n_rows + n_ev) * idx.len());
+        // the events' times and angles, as rows of their own columns
+        let mut ev = Vec::new();
+        event_estimates(&m, &mut ev);
         if theta_only {
-            for ((t, th), text) in times.iter().zip(ladder::theta_estimates(m)).zip(&exact_t) {
-                let mut te = integrated(&t.to_float(p), sc[0].clone());
+            for ((t, th), text) in times.iter().zip(ladder::theta_estimates(&m)).zip(&exact_t) {
+                let mut te = integrated_owned(t.to_float(p), sc[0].clone());
                 te.exact_text = text.clone();
                 out.push(te);
                 out.push(th);
             }
         } else {
-            for (pt, text) in m.rows.iter().zip(&exact_t) {
-                let mut all = ladder::point_estimates(pt, &sc, text.as_ref());
-                out.extend(
-                    idx.iter()
-                        .map(|&k| std::mem::replace(&mut all[k], Estimate::zero(p, Float::new(p)))),
-                );
+            for (pt, text) in m.rows.into_iter().zip(&exact_t) {
+                ladder::push_point_estimates(pt, &sc, text.as_ref(), &idx, &mut out);
             }
         }
-        // the events' times and angles, as rows of their own columns
-        let mut ev = Vec::new();
-        event_estimates(m, &mut ev);
         for pair in ev.chunks(2) {
             let mut row = vec![pair[0].clone(), pair[1].clone()];
             for &k in idx.iter().skip(2) {
@@ -262,37 +268,42 @@ fn trajectory_block(
         .into_iter()
         .flat_map(|r| r.into_iter().take(2))
         .collect();
-    ans.events = events_of(&first, &ev_vals);
+    ans.events = events_of(&kept, &ev_vals);
     // each row in the order of the columns asked
+    let at: Vec<usize> = asked
+        .iter()
+        .map(|&k| idx.iter().position(|&i| i == k).unwrap_or(0))
+        .collect();
+    let distinct = at.iter().enumerate().all(|(i, a)| !at[..i].contains(a));
     let table: Vec<Vec<Verified>> = table
         .into_iter()
         .map(|row| {
-            asked
-                .iter()
-                .map(|&k| {
-                    let at = idx.iter().position(|&i| i == k).unwrap_or(0);
-                    row[at].clone()
-                })
-                .collect::<Vec<_>>()
+            if distinct {
+                // each value moved to its place (a column asked once)
+                let mut row: Vec<Option<Verified>> = row.into_iter().map(Some).collect();
+                at.iter().filter_map(|&i| row[i].take()).collect()
+            } else {
+                at.iter().map(|&i| row[i].clone()).collect()
+            }
         })
         .collect();
     ans.rows = if theta_only {
-        ladder::theta_phases(&first)
-            .into_iter()
-            .zip(table)
-            .map(|(phase, values)| Row {
-                values,
-                phase,
-                at_event: None,
-            })
-            .collect()
+        ladder::theta_phases(&kept)
     } else {
-        ladder::rows_of(&first, table)
-    };
+        phases
+    }
+    .into_iter()
+    .zip(table)
+    .map(|(phase, values)| Row {
+        values,
+        phase,
+        at_event: None,
+    })
+    .collect();
     let mut row_notes = Vec::new();
     for &(i, k) in &runs.at_events {
         ans.rows[i].at_event = Some(k);
-        let e = &first.events[k];
+        let e = &kept.events[k];
         row_notes.push(format!(
             "t = {} cannot be told apart from the {} at t = {} (not even at {} bits): its row is \
              the state at the event (positions and velocities are continuous there; the \
@@ -303,14 +314,14 @@ fn trajectory_block(
             runs.side_bits
         ));
     }
-    ans.start_mode = Some(first.start_mode);
-    ans.end = first.end;
-    ans.routes = first.routes.clone();
-    ans.notes = branch_notes(&first, opts);
+    ans.start_mode = Some(kept.start_mode);
+    ans.end = kept.end;
+    ans.routes = kept.routes.clone();
+    ans.notes = branch_notes(&kept, opts);
     Ok(Block {
         ans,
         row_notes,
-        drift: energy_drift(&first),
+        drift: energy_drift(&kept),
     })
 }
 
@@ -336,6 +347,7 @@ pub fn theta_at_times(
     runs.resolve_sides(&mut first)?;
     let phases = ladder::theta_phases(&first);
     let rows = laddered(&mut runs, first, &["theta".to_string()], times.len(), |m| {
+        let m = &m;
         Ok(ladder::theta_estimates(m))
     })?;
     Ok((
