@@ -677,52 +677,52 @@ impl Route {
     /// Errors: none beyond building the engine at `p`.
     pub fn columns_at(&mut self, delta: &Float, t: &Float, p: u32) -> Result<(Vec<Float>, Float)> {
         let (floor, contact) = (self.work.floor(), self.work.contact());
-        let pr = self.work.params();
-        let r = Float::with_val(p, &pr.r());
-        let r1 = Float::with_val(p, &pr.r1);
-        let r2 = Float::with_val(p, &pr.r2);
-        let v0 = Float::with_val(p, &rug::Rational::from(&pr.m1 + &pr.m2))
-            * Float::with_val(p, &pr.g)
-            * &r1;
         let e = self.engine(p)?;
+        // r, r1, r2 at p bits as the dynamics holds them (each the
+        // correctly rounded exact parameter)
+        let (r, r1, r2) = (&e.dynm.r, &e.dynm.r1, &e.dynm.r2);
         let st = e.dynm.state(delta);
         let pos = e.dynm.positions(&st, t);
         let f = e.dynm.forces(&st);
         // T + V with V = m1 g y1 + m2 g y2 (y1 = r1): the constrained
         // system's zero of the potential
-        let energy = e.dynm.energy(&st) + v0;
+        let energy = e.dynm.energy(&st) + &e.v0;
         let [xd, pd, sd] = &st.v;
         let td = &st.thetadot;
-        let x2 = Float::with_val(p, &r * &st.s) + &pos[0];
-        let y2 = Float::with_val(p, &r * &st.c) + &r1;
-        let x2d = Float::with_val(p, &r * &st.c) * td + xd;
-        let y2d = -(Float::with_val(p, &r * &st.s) * td);
+        let x2 = Float::with_val(p, r * &st.s) + &pos[0];
+        let y2 = Float::with_val(p, r * &st.c) + r1;
+        let x2d = Float::with_val(p, r * &st.c) * td + xd;
+        let y2d = -(Float::with_val(p, r * &st.s) * td);
         let s1 = if floor == Floor::Slip {
-            Float::with_val(p, xd - Float::with_val(p, &r1 * pd))
+            Float::with_val(p, xd - Float::with_val(p, r1 * pd))
         } else {
             Float::new(p)
         };
         let s12 = if contact == Contact::Slip {
-            Float::with_val(p, &r * td) + Float::with_val(p, &r2 * sd)
-                - Float::with_val(p, &r1 * pd)
+            Float::with_val(p, r * td) + Float::with_val(p, r2 * sd) - Float::with_val(p, r1 * pd)
         } else {
             Float::new(p)
         };
+        let phi2 = Float::with_val(p, &pos[2] + &st.theta);
+        let phi2_dot = Float::with_val(p, sd + td);
+        // the state's own values moved into the columns
+        let [x1, phi1, _] = pos;
+        let [xd, pd, _] = st.v;
         let vals = vec![
             Float::with_val(p, t),
-            st.theta.clone(),
-            td.clone(),
-            st.thetaddot.clone(),
-            pos[1].clone(),
-            Float::with_val(p, &pos[2] + &st.theta),
-            pos[0].clone(),
+            st.theta,
+            st.thetadot,
+            st.thetaddot,
+            phi1,
+            phi2,
+            x1,
             x2,
             y2,
-            xd.clone(),
-            pd.clone(),
+            xd,
+            pd,
             x2d,
             y2d,
-            Float::with_val(p, sd + td),
+            phi2_dot,
             f.f1,
             f.n1,
             f.f21,
