@@ -35,6 +35,7 @@ fn main() {
             digits,
             sides: Vec::new(),
             target_side: None,
+            low_deltas: Vec::new(),
         };
         let mo = motion::run(&m, &req, p, &mut Caches::default()).expect("motion");
         println!(

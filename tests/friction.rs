@@ -68,6 +68,7 @@ fn run(m: &Model, prec: u32, times: &[Exact]) -> motion::Motion {
         digits: 0,
         sides: Vec::new(),
         target_side: None,
+        low_deltas: Vec::new(),
     };
     motion::run(m, &req, prec, &mut Caches::default()).unwrap()
 }
@@ -1361,4 +1362,59 @@ fn a_large_mu_opens_the_contact_one_over_mu_before_the_rolling_separation() {
             "mu = {mu}: theta_s = {th}, (theta_s(inf) - theta_s) mu = {delta} vs {c} (rel {rel:e})"
         );
     }
+}
+
+/// Every column of a trajectory through a sticking phase (the energy route,
+/// whose rows' errors come from δ's: a second evaluation, or the difference
+/// of the two precisions counted twice), slip onset and a slipping phase
+/// (the spectral route, rows summed in fixed point), at 20 digits, is the
+/// 60-digit table rounded to 20 digits wherever both print digits; times
+/// from just after the start (δ below its own error bound) to next to the
+/// slip onset. Every value is within its stated error bound of the
+/// 60-digit one, those printed as 0 included.
+#[test]
+fn trajectory_digits_agree_with_a_higher_precision_in_every_phase() {
+    let m = model(law("0.3"), law("0.3"), "1/2");
+    let times: Vec<Exact> = [
+        "0", "1e-30", "1e-6", "0.5", "1", "2.5", "4", "4.156", "4.1561", "4.3", "4.6", "4.9",
+    ]
+    .iter()
+    .map(|s| Exact::parse("t", s, false).unwrap())
+    .collect();
+    let a = oracle::trajectory(&m, &times, &Options::digits(20)).unwrap();
+    let b = oracle::trajectory(&m, &times, &Options::digits(60)).unwrap();
+    assert_eq!(a.rows.len(), times.len());
+    let (mut compared, mut bounds) = (0, 0);
+    for (ra, rb) in a.rows.iter().zip(&b.rows) {
+        assert_eq!(ra.phase, rb.phase);
+        for (x, y) in ra.values.iter().zip(&rb.values) {
+            assert_eq!(x.name, y.name);
+            // t is printed as given
+            if x.name == "t" {
+                continue;
+            }
+            // the stated bound holds (y is good to ~60 digits)
+            let err = Float::with_val(PREC, &x.value - &y.value).abs();
+            let slack = Float::with_val(PREC, 10u32).pow(-50i32);
+            assert!(
+                err <= Float::with_val(PREC, &x.err_bound + &slack),
+                "{} at t = {}: error {:.3e} above its bound {:.3e}",
+                x.name,
+                ra.values[0].text,
+                err.to_f64(),
+                x.err_bound.to_f64()
+            );
+            bounds += 1;
+            if x.digits == 0 || y.digits < 25 {
+                continue;
+            }
+            let want = cylroll::numeric::decimal::to_sig(&y.value, x.digits);
+            assert_eq!(x.text, want, "{} at t = {}", x.name, ra.values[0].text);
+            compared += 1;
+        }
+    }
+    // both phases' rows, every numeric column
+    assert!(compared > 150 && bounds > 200, "{compared} {bounds}");
+    let tags: std::collections::BTreeSet<String> = a.rows.iter().map(|r| r.phase.tag()).collect();
+    assert!(tags.len() >= 2, "{tags:?}");
 }

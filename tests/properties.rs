@@ -211,6 +211,7 @@ proptest! {
             digits: 0,
             sides: Vec::new(),
             target_side: None,
+            low_deltas: Vec::new(),
         };
         let m = match motion::run(&model, &req, 120, &mut motion::Caches::default()) {
             Ok(m) => m,

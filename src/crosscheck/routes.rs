@@ -42,6 +42,7 @@ pub fn motion_by(model: &Model, method: Method, prec: u32, horizon: &Float) -> R
         digits: 0,
         sides: Vec::new(),
         target_side: None,
+        low_deltas: Vec::new(),
     };
     motion::run(model, &req, prec, &mut Caches::default())
 }

@@ -43,6 +43,8 @@ pub enum Ending {
 pub struct Fast {
     /// The rows at the requested times inside the phase (full columns).
     pub rows: Vec<Point>,
+    /// δ = θ − θ0 (working frame) at each of `rows`.
+    pub deltas: Vec<Float>,
     /// θ at the requested times inside the phase (θ only).
     pub thetas: Vec<(Float, Phase, Option<Float>)>,
     /// How many of the requested times the phase covered.
@@ -84,6 +86,9 @@ pub struct Wants<'a> {
     /// How far past the target to look for events (in θ, > 0): an event
     /// the target cannot be told from is located too.
     pub beyond: Option<Float>,
+    /// δ at each requested time in the ladder's lower run
+    /// ([`super::Request::low_deltas`]; empty: none).
+    pub low_deltas: &'a [Float],
 }
 
 /// The first phase from the start, in the conservative mode `mode`, by
@@ -263,6 +268,7 @@ pub fn first_phase(
         .count();
     let times = &wants.times[..covered];
     let mut rows = Vec::new();
+    let mut row_deltas = Vec::new();
     let mut thetas = Vec::new();
     if !times.is_empty() {
         let mut cache = (0, Vec::new());
@@ -275,7 +281,7 @@ pub fn first_phase(
             wants.digits,
             Some(&t_end),
         )?;
-        for (t, (d, derr)) in times.iter().zip(deltas) {
+        for (i, (t, (d, derr))) in times.iter().zip(deltas).enumerate() {
             let tf = t.to_float(p);
             if wants.theta_only {
                 let th = Float::with_val(p, &th0w + &d);
@@ -286,25 +292,39 @@ pub fn first_phase(
             let (a, energy) = route.columns_at(&d, &tf, p)?;
             // the columns' errors from δ's: only the higher run's error
             // estimate counts on the ladder (the lower run's value is the
-            // one compared against), so the lower run skips the second
-            // evaluation
+            // one compared against), so the lower run skips it. Where the
+            // lower run's δ differs from this one by more than δ's bound,
+            // |v(p1) − v(p2)| counted twice covers what δ's error carries
+            // into the columns (to first order: each column is a smooth
+            // closed form of δ); else a second evaluation at δ + bound
+            // measures it.
+            let mut weight = 1;
             let err = if wants.run == Run::Low {
                 None
             } else {
-                let d2 = Float::with_val(p, &d + &derr);
-                let (b, _) = route.columns_at(&d2, &tf, p)?;
-                let mut err: Vec<Float> = a
-                    .iter()
-                    .zip(&b)
-                    .map(|(x, y)| {
-                        Float::with_val(p, x - y).abs()
-                            + (Float::with_val(p, x.abs_ref()) >> (p as i32 - 4))
-                    })
-                    .collect();
+                let ulps = |x: &Float| Float::with_val(p, x.abs_ref()) >> (p as i32 - 4);
+                let apart = wants.low_deltas.get(i).is_some_and(|d1| {
+                    let gap = Float::with_val(p, d1 - &d).abs();
+                    !gap.is_zero() && gap >= derr
+                });
+                let mut err: Vec<Float> = if apart {
+                    weight = 2;
+                    a.iter().map(ulps).collect()
+                } else {
+                    let d2 = Float::with_val(p, &d + &derr);
+                    let (b, _) = route.columns_at(&d2, &tf, p)?;
+                    a.iter()
+                        .zip(&b)
+                        .map(|(x, y)| Float::with_val(p, x - y).abs() + ulps(x))
+                        .collect()
+                };
                 err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
                 Some(err)
             };
-            rows.push(point_of(a, energy, mode, err, zero_bits(ctx, mode)));
+            let mut pt = point_of(a, energy, mode, err, zero_bits(ctx, mode));
+            pt.diff_weight = weight;
+            rows.push(pt);
+            row_deltas.push(d);
         }
     }
     // the state at the end as a sample of the mode's system, at the
@@ -346,6 +366,7 @@ pub fn first_phase(
     let theta_err = d_err;
     Ok(Fast {
         rows,
+        deltas: row_deltas,
         thetas,
         covered,
         events,
@@ -410,6 +431,7 @@ fn point_of(c: Vec<Float>, energy: Float, mode: Mode, err: Option<Vec<Float>>, z
         phase: Phase::Contact(mode),
         err,
         exact_zero: zero,
+        diff_weight: 1,
     }
 }
 

@@ -213,6 +213,7 @@ impl Ctx {
             phase: Phase::Contact(mode),
             err: None,
             exact_zero: zero,
+            diff_weight: 1,
         }
     }
 

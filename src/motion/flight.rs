@@ -503,6 +503,7 @@ impl Flight {
             phase: Phase::Flight { floor },
             err: None,
             exact_zero: zero,
+            diff_weight: 1,
         }
     }
 }

@@ -344,6 +344,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             start_mode: mode,
             events: Vec::new(),
             rows: Vec::new(),
+            deltas: Vec::new(),
             thetas: Vec::new(),
             separation: None,
             impact: None,
@@ -406,6 +407,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             branch: &req.branch,
             target: target_theta.as_ref(),
             beyond: beyond.clone(),
+            low_deltas: &req.low_deltas,
         };
         let fast = conservative::first_phase(&ctx, route, mode, &wants, prec)?;
         crate::cancel::check()?;
@@ -418,6 +420,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         if let Some(win) = fast.window {
             w.out.windows.push(win);
         }
+        w.out.deltas = fast.deltas;
         for pt in fast.rows {
             w.push_row(pt);
         }

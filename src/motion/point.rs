@@ -204,6 +204,12 @@ pub struct Point {
     /// speed, a frictionless contact's force, the work of a conservative
     /// phase), as a bit set over [`COLUMNS`].
     pub exact_zero: u32,
+    /// How many times the ladder's bound counts the difference between its
+    /// two runs for every column but t ([`crate::numeric::verify::Estimate::diff_weight`]):
+    /// 2 where the route's own error is covered by that difference (a
+    /// conservative row whose δ the two runs tell apart by more than δ's
+    /// error bound), else 1.
+    pub diff_weight: u32,
 }
 
 impl std::ops::Deref for Point {

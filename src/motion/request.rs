@@ -123,6 +123,14 @@ pub struct Request {
     pub sides: Vec<(usize, usize, Side)>,
     /// The decided side of the target angle at an event.
     pub target_side: Option<(usize, Side)>,
+    /// δ = θ − θ0 at each row of the conservative first phase in the
+    /// ladder's lower run of this rung ([`Motion::deltas`]), given to the
+    /// higher run (empty otherwise): where the two runs' δ differ by more
+    /// than the higher run's own error bound on δ, that difference (counted
+    /// twice by the ladder) covers the error δ's bound carries into the
+    /// row's columns, and the second evaluation of the columns that would
+    /// measure it is spared.
+    pub low_deltas: Vec<Float>,
 }
 
 impl Request {
@@ -140,6 +148,7 @@ impl Request {
             digits: 0,
             sides: Vec::new(),
             target_side: None,
+            low_deltas: Vec::new(),
         }
     }
 }
@@ -153,6 +162,10 @@ pub struct Motion {
     pub events: Vec<EventRec>,
     /// The rows at the requested times.
     pub rows: Vec<Point>,
+    /// δ = θ − θ0 (the energy route's working frame, at this precision) of
+    /// the rows in a conservative first phase, as computed there (θ itself
+    /// is rounded to the precision relative to θ0, δ is not).
+    pub deltas: Vec<Float>,
     /// θ, the phase and (from the energy route) θ's error bound at the
     /// requested times ([`Request::theta_only`]).
     pub thetas: Vec<(Float, Phase, Option<Float>)>,

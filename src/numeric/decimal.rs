@@ -104,13 +104,23 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
                     *y /= &c[i].2;
                 }
             });
-            y.to_integer_round_in_place(mi, Round::Nearest)?;
+            // to the nearest integer, ties to even (as mpfr_get_z at RNDN),
+            // from y's bits y = m·2^ex (cheaper than mpfr_get_z)
+            let ex = y.to_integer_exp_in_place(mi)?;
+            if ex >= 0 {
+                *mi <<= ex as u32;
+            } else {
+                let sh = ex.unsigned_abs();
+                let half = mi.get_bit(sh - 1);
+                let below = mi.find_one(0).is_some_and(|b| b + 1 < sh);
+                *mi >>= sh;
+                if half && (below || mi.get_bit(0)) {
+                    *mi += 1u32;
+                }
+            }
             buf.clear();
             match mi.to_u128() {
-                Some(u) => {
-                    use std::io::Write;
-                    write!(buf, "{u}").ok()?;
-                }
+                Some(u) => push_u128(buf, u),
                 None => buf.extend_from_slice(mi.to_string().as_bytes()),
             }
             match (buf.len() as i64).cmp(&n) {
@@ -121,6 +131,33 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
         }
         None
     })
+}
+
+/// The decimal digits of `u` appended to `buf` (u64 arithmetic: the
+/// formatting of a `u128` divides in software digit by digit).
+fn push_u128(buf: &mut Vec<u8>, u: u128) {
+    const E19: u128 = 10_000_000_000_000_000_000;
+    if u < E19 {
+        push_u64(buf, u as u64, 1);
+    } else if u < E19 * E19 {
+        push_u64(buf, (u / E19) as u64, 1);
+        push_u64(buf, (u % E19) as u64, 19);
+    } else {
+        buf.extend_from_slice(u.to_string().as_bytes());
+    }
+}
+
+/// The decimal digits of `v`, at least `width` of them (leading zeros).
+fn push_u64(buf: &mut Vec<u8>, mut v: u64, width: usize) {
+    let mut tmp = [b'0'; 20];
+    let mut i = tmp.len();
+    while v > 0 {
+        i -= 1;
+        tmp[i] = b'0' + (v % 10) as u8;
+        v /= 10;
+    }
+    let start = i.min(tmp.len() - width.clamp(1, 20));
+    buf.extend_from_slice(&tmp[start..]);
 }
 
 /// Plain text of ±0.d·10^e: positional when −7 ≤ e ≤ 21, else `d.ddde±x`.
@@ -188,6 +225,53 @@ pub fn approx_text(x: &Float) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// approx_sig's digits are within one unit of the last digit of the
+    /// correctly rounded ones (`round_sig`), over magnitudes and digit counts
+    /// on both sides of its 64- and 128-bit digit conversions.
+    #[test]
+    fn approximate_digits_within_one_unit() {
+        use rug::{Integer, Rational};
+        let p = 240;
+        let value = |(neg, d, e): (bool, String, i64)| {
+            // ±0.d·10^e exactly
+            let n = d.len() as i64;
+            let mut r = Rational::from(d.parse::<Integer>().unwrap());
+            let k = e - n;
+            let pow = Rational::from(Integer::from(Integer::u_pow_u(10, k.unsigned_abs() as u32)));
+            r = if k >= 0 { r * pow } else { r / pow };
+            if neg {
+                -r
+            } else {
+                r
+            }
+        };
+        let mut x = Float::with_val(p, 2u32).sqrt() / 1000u32;
+        for i in 0..120u32 {
+            // magnitudes 1e-3 … 1e12 and both signs
+            x *= Float::with_val(p, 1.37f64);
+            let v = if i % 2 == 0 { x.clone() } else { -x.clone() };
+            for d in [1u32, 4, 18, 19, 20, 30, 37, 38, 39, 45, 60] {
+                let exact = round_sig(&v, d).unwrap();
+                let approx = approx_sig(&v, d).unwrap();
+                assert_eq!(approx.1.len(), d as usize);
+                let unit = {
+                    let e = exact.2.max(approx.2) - d as i64;
+                    let pow = Rational::from(Integer::from(Integer::u_pow_u(
+                        10,
+                        e.unsigned_abs() as u32,
+                    )));
+                    if e >= 0 {
+                        pow
+                    } else {
+                        Rational::from(1) / pow
+                    }
+                };
+                let gap = (value(exact) - value(approx.clone())).abs();
+                assert!(gap <= unit, "x = {v}, {d} digits: {approx:?}");
+            }
+        }
+    }
 
     #[test]
     fn rounding_and_layout() {

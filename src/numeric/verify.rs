@@ -41,6 +41,14 @@ pub struct Estimate {
     /// with no rounding to decide — a rounding tie such as 0.125 at two
     /// digits could never be settled by error bounds.
     pub exact_text: Option<String>,
+    /// How many times the bound counts |v(p1) − v(p2)| (this, the higher
+    /// run's, estimate decides; normally 1). 2 for a value whose method
+    /// error `err` leaves out a part that is at most that difference to
+    /// first order: a closed form of δ = θ − θ0 whose two runs differ by
+    /// more than δ's own error bound (the conservative rows of a
+    /// trajectory), so that |v(p1) − v(p2)| also bounds the error δ's
+    /// error carries into it.
+    pub diff_weight: u32,
 }
 
 impl Estimate {
@@ -52,6 +60,7 @@ impl Estimate {
             exact_zero: false,
             scale,
             exact_text: None,
+            diff_weight: 1,
         }
     }
     /// A value that is correctly rounded up to a few ulps (err = 4 ulp).
@@ -68,6 +77,7 @@ impl Estimate {
             exact_zero: true,
             scale,
             exact_text: None,
+            diff_weight: 1,
         }
     }
 }
@@ -225,6 +235,9 @@ fn judge(
     }
     let mut bound = Float::with_val(p, &a.value - &b.value);
     bound.abs_mut();
+    if b.diff_weight != 1 {
+        bound *= b.diff_weight;
+    }
     bound += &b.err;
     if !b.value.is_finite() || !bound.is_finite() {
         return Err(0);
@@ -321,6 +334,9 @@ fn absolute_fallback(
     let p = b.value.prec();
     let mut bound = Float::with_val(p, &a.value - &b.value);
     bound.abs_mut();
+    if b.diff_weight != 1 {
+        bound *= b.diff_weight;
+    }
     bound += &b.err;
     let tiny = Float::with_val(
         p,
@@ -545,9 +561,11 @@ mod tests {
         ] {
             cases.push(Float::with_val(p, Float::parse(num).unwrap()));
         }
+        // digits on either side of the 19 and 38 of the digit conversion's
+        // 64- and 128-bit paths
         for v in &cases {
-            for digits in [1u32, 3, 5, 8, 12] {
-                for bexp in [5, 12, 20, 40, 60, 100] {
+            for digits in [1u32, 3, 5, 8, 12, 16, 17, 18, 19, 30, 35, 36, 40, 50] {
+                for bexp in [5, 12, 20, 40, 60, 100, 150, 190] {
                     let bound = Float::with_val(p, v.abs_ref()) >> bexp;
                     let lo = Float::with_val(p, v - &bound);
                     let hi = Float::with_val(p, v + &bound);

@@ -114,6 +114,8 @@ pub fn point_estimates(pt: &Point, scales: &[Float], t_text: Option<&String>) ->
             };
             if i == 0 {
                 e.exact_text = t_text.cloned();
+            } else {
+                e.diff_weight = pt.diff_weight;
             }
             e
         })
@@ -132,6 +134,7 @@ pub fn push_point_estimates(
     out: &mut Vec<Estimate>,
 ) {
     let zero = pt.exact_zero;
+    let weight = pt.diff_weight;
     let (vals, errs) = pt.into_columns();
     let mut vals: Vec<Option<Float>> = vals.into_iter().map(Some).collect();
     let mut errs: Option<Vec<Option<Float>>> = errs.map(|e| e.into_iter().map(Some).collect());
@@ -155,6 +158,8 @@ pub fn push_point_estimates(
         };
         if i == 0 {
             e.exact_text = t_text.cloned();
+        } else {
+            e.diff_weight = weight;
         }
         out.push(e);
     }
@@ -353,6 +358,13 @@ pub fn laddered(
         let m = match (p == p1, cache.borrow_mut().take()) {
             (true, Some(m)) => m,
             _ => runs.at(p, run)?,
+        };
+        // the lower run's δ at each conservative row, for the higher run's
+        // error of those rows (Request::low_deltas)
+        runs.req.low_deltas = if run == Run::Low {
+            m.deltas.clone()
+        } else {
+            Vec::new()
         };
         if signature(&m) != sig {
             return Err(Error::NotConverged {

@@ -138,6 +138,7 @@ fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -
             digits: opts.digits,
             sides: Vec::new(),
             target_side: None,
+            low_deltas: Vec::new(),
         },
         caches: Caches::default(),
         at_events: Vec::new(),

@@ -638,6 +638,7 @@ impl Route {
             exact_zero: t.is_zero(),
             scale: ctx.ts.clone(),
             exact_text: None,
+            diff_weight: 1,
         }];
         for i in 0..12 {
             let prop = Float::with_val(p, &b[i] - &a[i]).abs();
@@ -654,6 +655,7 @@ impl Route {
                 exact_zero: zero,
                 scale: scales[i].clone(),
                 exact_text: None,
+                diff_weight: 1,
             });
         }
         Ok(out)

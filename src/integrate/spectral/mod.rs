@@ -318,7 +318,7 @@ pub fn run(
                 None => pc.invert_at(&tau),
             };
             let mut smp = if full {
-                pc.sample(sys, &s)?
+                pc.row_sample(sys, &s)?
             } else {
                 pc.theta_sample(&s)
             };

@@ -10,6 +10,7 @@ use super::Settings;
 use crate::error::Result;
 use crate::integrate::solve::Sample;
 use crate::mechanics::system::{self as sy, Accel, System};
+use crate::numeric::cheb::fixed_sums::FixedSums;
 use crate::numeric::cheb::{ChebFit, Roots};
 use rug::{Assign, Float};
 
@@ -49,6 +50,9 @@ pub(super) struct Piece {
     pub(super) used: usize,
     /// Bases of the inversions' Newton steps (lower precisions, full).
     pub(super) scratch: std::cell::RefCell<(Vec<Float>, Vec<Float>)>,
+    /// The interpolants in fixed point for output rows, built at the first
+    /// (`Some(None)`: fixed point does not apply).
+    fixed: std::cell::RefCell<Option<Option<FixedSums>>>,
 }
 
 pub(super) enum Attempt {
@@ -375,6 +379,7 @@ pub(super) fn attempt(
         lower: lower_copies(&dt, &rfit, p),
         used,
         scratch: Default::default(),
+        fixed: Default::default(),
         dt64: dt.to_f64(),
         rate64: rfit.to_f64(),
         nodes,
@@ -382,32 +387,61 @@ pub(super) fn attempt(
 }
 
 impl Piece {
-    /// The state (t, q, q̇, W) at s: every interpolant on one basis.
-    fn state(&self, s: &Float) -> (Float, Vec<Float>, Vec<Float>, Float) {
+    /// The interpolants in the order [`Piece::state`] reads their sums:
+    /// the rate, the velocities, the positions, t, the work.
+    fn fits(&self) -> Vec<&ChebFit> {
+        let mut f = vec![&self.rate];
+        f.extend(self.vel.iter().map(|(_, f)| f));
+        f.extend(self.pos.iter().map(|(_, f)| f));
+        f.push(&self.dt);
+        f.extend(self.work.as_ref());
+        f
+    }
+
+    /// The state (t, q, q̇, W) at s: every interpolant on one basis;
+    /// `read_only`: a state only read (an output row), whose sums are taken
+    /// in fixed point where it applies ([`FixedSums`]: within the
+    /// interpolants' tolerance, several times cheaper than MPFR's).
+    fn state(&self, s: &Float, read_only: bool) -> (Float, Vec<Float>, Vec<Float>, Float) {
         let p = s.prec();
         let ith = sy::th(0);
         let zero = Float::new(p);
-        let mut sc = self.scratch.borrow_mut();
-        let basis = &mut sc.1;
-        ChebFit::basis_into(&zero, &self.len, s, self.dt.c.len(), p, basis);
+        let n_fits = 2 + self.vel.len() + self.pos.len() + usize::from(self.work.is_some());
+        let mut sums = vec![Float::new(p); n_fits];
+        let fixed = read_only && {
+            let mut fx = self.fixed.borrow_mut();
+            let fx = fx.get_or_insert_with(|| FixedSums::new(&self.fits(), p));
+            fx.as_mut()
+                .is_some_and(|fx| fx.eval(&zero, &self.len, s, &mut sums))
+        };
+        if !fixed {
+            let mut sc = self.scratch.borrow_mut();
+            let basis = &mut sc.1;
+            ChebFit::basis_into(&zero, &self.len, s, self.dt.c.len(), p, basis);
+            for (o, f) in sums.iter_mut().zip(self.fits()) {
+                *o = f.dot(basis);
+            }
+        }
+        let mut sums = sums.into_iter();
+        let mut next = || sums.next().unwrap_or_else(|| Float::new(p));
         let mut q = self.q0.clone();
         let mut v = self.v0.clone();
         q[ith] = theta_at(&self.q0[ith], self.dir, self.m, s);
-        let mut thd = Float::with_val(p, self.m) / self.rate.dot(basis);
+        let mut thd = Float::with_val(p, self.m) / next();
         if self.m == 2 {
             thd *= s;
         }
         v[ith] = thd * self.dir;
-        for (i, f) in &self.vel {
-            v[*i] = Float::with_val(p, &self.v0[*i] + f.dot(basis));
+        for (i, _) in &self.vel {
+            v[*i] = Float::with_val(p, &self.v0[*i] + next());
         }
-        for (i, f) in &self.pos {
-            q[*i] = Float::with_val(p, &self.q0[*i] + f.dot(basis));
+        for (i, _) in &self.pos {
+            q[*i] = Float::with_val(p, &self.q0[*i] + next());
         }
         fill_dependents(&self.deps, &self.q0, &mut q, &mut v);
-        let t = Float::with_val(p, &self.t0 + self.dt.dot(basis));
+        let t = Float::with_val(p, &self.t0 + next());
         let work = match &self.work {
-            Some(f) => Float::with_val(p, &self.work0 + f.dot(basis)),
+            Some(_) => Float::with_val(p, &self.work0 + next()),
             None => self.work0.clone(),
         };
         (t, q, v, work)
@@ -433,7 +467,18 @@ impl Piece {
 
     /// The full sample at s (one KKT solve).
     pub(super) fn sample(&self, sys: &mut System, s: &Float) -> Result<Sample> {
-        let (t, q, v, work) = self.state(s);
+        self.sample_as(sys, s, false)
+    }
+
+    /// [`Piece::sample`] for an output row, which nothing is computed from:
+    /// the interpolants summed in fixed point (within their tolerance, far
+    /// below the row's precision, several times cheaper).
+    pub(super) fn row_sample(&self, sys: &mut System, s: &Float) -> Result<Sample> {
+        self.sample_as(sys, s, true)
+    }
+
+    fn sample_as(&self, sys: &mut System, s: &Float, read_only: bool) -> Result<Sample> {
+        let (t, q, v, work) = self.state(s, read_only);
         let acc = sys.accel(&q, &v)?;
         let power = if sys.has_slips() {
             sys.slip_power(&q, &v, &acc.lambda)

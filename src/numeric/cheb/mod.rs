@@ -26,6 +26,7 @@
 //! coefficient is rounded to the fit's precision.
 
 mod fft;
+pub mod fixed_sums;
 
 pub use fft::Roots;
 

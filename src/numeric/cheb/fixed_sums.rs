@@ -1,0 +1,242 @@
+//! Several Chebyshev sums at one point, in fixed point: the sums a dense
+//! grid of output times asks of a piece's interpolants (every state
+//! coordinate at every time).
+//!
+//! At a few limbs MPFR spends most of a multiply-add in call overhead and
+//! temporaries (about 600 instructions at 3–4 limbs, measured with
+//! callgrind); the fixed-point numbers of [`crate::numeric::fixed`] take a
+//! few per limb product. The coefficients are converted once; at each point
+//! the basis T_k(x) comes from the three-term recurrence in fixed point and
+//! each sum from one exact accumulation, rounded once.
+//!
+//! Accuracy: with F = 64(L − 1) fraction bits chosen ≥ the working
+//! precision wp + 8, the coefficients are rounded to 2^−F; the recurrence
+//! (stable for |x| ≤ 1: an error made at step j reaches T_k multiplied by
+//! U_{k−j−1}(x), |U_m| ≤ m + 1) leaves T_k within k²·2^−F; the accumulation
+//! truncates once. Every sum is within (n² + n)·2^−F·max(1, Σ|c_k|) of the
+//! exact sum of the coefficients: at most 2^−(wp−9)·max(1, Σ|c_k|) for the
+//! n ≤ 256 allowed. The spectral route's interpolants are good to 2^−(p−8)
+//! at an answer precision p at least 25 bits below its working precision
+//! wp ([`crate::integrate::solve::Opts::for_prec`]): the sums add at most 2^−24
+//! of that, to values only read (the rows of a trajectory), never carried
+//! on into the motion.
+
+use super::ChebFit;
+use crate::numeric::fixed::{self, Acc, Conv, Fx};
+use rug::Float;
+
+/// The fits' coefficients in fixed point, for their sums at many points of
+/// their common interval.
+#[derive(Debug, Clone)]
+pub struct FixedSums {
+    /// Limbs per number (one of them the integer limb).
+    limbs: usize,
+    /// The fits' lengths.
+    lens: Vec<usize>,
+    /// The longest fit.
+    n: usize,
+    /// Magnitudes, fit after fit, coefficient after coefficient, `limbs`
+    /// limbs each (least significant first).
+    mags: Vec<u64>,
+    /// Signs, in the same order.
+    negs: Vec<bool>,
+    /// Significant limbs, in the same order.
+    sig: Vec<u16>,
+    conv: Conv,
+    /// The working precision.
+    prec: u32,
+}
+
+/// The limb counts instantiated (beyond them the caller sums in MPFR).
+macro_rules! with_limbs {
+    ($l:expr, $f:ident, $($args:expr),*) => {
+        match $l {
+            3 => $f::<3>($($args),*),
+            4 => $f::<4>($($args),*),
+            5 => $f::<5>($($args),*),
+            6 => $f::<6>($($args),*),
+            7 => $f::<7>($($args),*),
+            8 => $f::<8>($($args),*),
+            9 => $f::<9>($($args),*),
+            10 => $f::<10>($($args),*),
+            12 => $f::<12>($($args),*),
+            14 => $f::<14>($($args),*),
+            16 => $f::<16>($($args),*),
+            _ => None,
+        }
+    };
+}
+
+impl FixedSums {
+    /// The coefficients of `fits` (one interval; working precision
+    /// `prec`) in fixed point; `None` where fixed point does not apply (a
+    /// precision beyond the instantiated sizes, a coefficient of 2^60 or
+    /// more, a fit longer than 256).
+    pub fn new(fits: &[&ChebFit], prec: u32) -> Option<Self> {
+        let limbs = fixed::limbs_for((prec as usize + 8).div_ceil(64) + 1)?;
+        let lens: Vec<usize> = fits.iter().map(|f| f.c.len()).collect();
+        let n = lens.iter().copied().max()?.max(2);
+        if n > 256 {
+            return None;
+        }
+        let big = fits
+            .iter()
+            .flat_map(|f| f.c.iter())
+            .any(|c| !c.is_finite() || c.get_exp().is_some_and(|e| e > 60));
+        if big {
+            return None;
+        }
+        let mut s = FixedSums {
+            limbs,
+            lens,
+            n,
+            mags: Vec::new(),
+            negs: Vec::new(),
+            sig: Vec::new(),
+            conv: Conv::new(prec),
+            prec,
+        };
+        with_limbs!(limbs, convert, &mut s, fits)?;
+        Some(s)
+    }
+
+    /// The sum of each fit at `v` of the interval [a, b] into `out` (one per
+    /// fit, each rounded to its own precision); `false` (out unspecified)
+    /// where a value left the fixed-point range.
+    pub fn eval(&mut self, a: &Float, b: &Float, v: &Float, out: &mut [Float]) -> bool {
+        let p = self.prec;
+        // x = (2v − a − b)/(b − a), as ChebFit::basis_into
+        let mut x = Float::with_val(p, v * 2u32);
+        x -= a;
+        x -= b;
+        x /= Float::with_val(p, b - a);
+        if x.clone().abs() > 1u32 {
+            return false;
+        }
+        with_limbs!(self.limbs, sums, self, &x, out).unwrap_or(false)
+    }
+}
+
+fn convert<const L: usize>(s: &mut FixedSums, fits: &[&ChebFit]) -> Option<()> {
+    for f in fits {
+        for c in &f.c {
+            let v: Fx<L> = s.conv.to_fx(c);
+            s.mags.extend_from_slice(&v.m);
+            s.negs.push(v.neg);
+            s.sig.push(v.len);
+        }
+    }
+    Some(())
+}
+
+fn coef<const L: usize>(s: &FixedSums, at: usize) -> Fx<L> {
+    let mut m = [0u64; L];
+    m.copy_from_slice(&s.mags[at * L..(at + 1) * L]);
+    Fx {
+        m,
+        len: s.sig[at],
+        neg: s.negs[at],
+    }
+}
+
+fn sums<const L: usize>(s: &mut FixedSums, x: &Float, out: &mut [Float]) -> Option<bool> {
+    let xf: Fx<L> = s.conv.to_fx(x);
+    let x2 = xf.mul_small(2);
+    let mut one = [0u64; L];
+    one[L - 1] = 1;
+    let mut basis: Vec<Fx<L>> = Vec::with_capacity(s.n);
+    basis.push(Fx {
+        m: one,
+        len: L as u16,
+        neg: false,
+    });
+    basis.push(xf);
+    let mut acc = Acc::<L>::new();
+    for k in 2..s.n {
+        // T_k = 2x T_{k−1} − T_{k−2}
+        acc.clear();
+        acc.mac(&x2, &basis[k - 1]);
+        let mut back = basis[k - 2];
+        back.neg = !back.neg && back.len > 0;
+        acc.add(&back);
+        basis.push(acc.finish(1));
+    }
+    let mut at = 0;
+    for (i, o) in out.iter_mut().enumerate() {
+        acc.clear();
+        let len = s.lens.get(i).copied().unwrap_or(0);
+        for (k, t) in basis.iter().enumerate().take(len) {
+            acc.mac(&coef::<L>(s, at + k), t);
+        }
+        at += len;
+        let r = acc.finish(1);
+        s.conv.to_float(&r, o);
+    }
+    Some(!acc.overflow)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::ops::Pow;
+
+    /// The fixed-point sums against MPFR's, for fits of several lengths and
+    /// magnitudes at several precisions, far inside the working precision.
+    #[test]
+    fn agree_with_the_floating_point_sums() {
+        for &p in &[64u32, 171, 226, 400, 700] {
+            let a = Float::with_val(p, 0u32);
+            let b = Float::with_val(p, 3) / 7u32;
+            let fits: Vec<ChebFit> = [(40usize, 1.0f64), (61, -3.5e3), (61, 2.0e-9)]
+                .iter()
+                .map(|&(n, scale)| {
+                    let c = (0..n)
+                        .map(|k| {
+                            // decaying, alternating, irrational-ish coefficients
+                            let mut v = Float::with_val(p, k as u32 + 2).sqrt() * scale;
+                            v /= Float::with_val(p, 1.7f64).pow(k as u32);
+                            if k % 3 == 1 {
+                                -v
+                            } else {
+                                v
+                            }
+                        })
+                        .collect();
+                    ChebFit {
+                        a: a.clone(),
+                        b: b.clone(),
+                        c,
+                        fmax: Float::with_val(p, scale.abs()),
+                    }
+                })
+                .collect();
+            let refs: Vec<&ChebFit> = fits.iter().collect();
+            let mut fx = FixedSums::new(&refs, p).expect("fixed point applies");
+            for j in 0..9u32 {
+                let v = Float::with_val(p, &b * j) / 8u32;
+                let mut out = vec![Float::new(p); fits.len()];
+                assert!(fx.eval(&a, &b, &v, &mut out));
+                let mut basis = Vec::new();
+                ChebFit::basis_into(&a, &b, &v, 61, p, &mut basis);
+                for (f, o) in fits.iter().zip(&out) {
+                    let want = f.dot(&basis);
+                    let tol = (Float::with_val(p, want.abs_ref()) + 1u32) >> (p as i32 - 6);
+                    let diff = Float::with_val(p, o - &want).abs();
+                    assert!(diff <= tol, "p {p} v {j}/8: {o} vs {want}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn declines_large_coefficients() {
+        let p = 128;
+        let f = ChebFit {
+            a: Float::with_val(p, 0u32),
+            b: Float::with_val(p, 1u32),
+            c: vec![Float::with_val(p, 1u32) << 70u32],
+            fmax: Float::with_val(p, 1u32) << 70u32,
+        };
+        assert!(FixedSums::new(&[&f], p).is_none());
+    }
+}
