@@ -420,14 +420,29 @@ where
         let a = f(precs.0, Run::Low)?;
         let b = f(precs.1, Run::High)?;
         let mut failed = None;
+        // the estimates are dropped row by row as they are judged: the
+        // memory of a long table's estimates serves its verified values
+        let (mut ai, mut bi) = (a.into_iter(), b.into_iter());
+        let (mut row_a, mut row_b) = (Vec::with_capacity(w), Vec::with_capacity(w));
         for (r, slot) in done.iter_mut().enumerate() {
+            row_a.clear();
+            row_b.clear();
+            row_a.extend(ai.by_ref().take(w));
+            row_b.extend(bi.by_ref().take(w));
             if slot.is_some() {
                 continue;
             }
             let mut out = Vec::with_capacity(names.len());
             let mut row_failed = None;
             for (i, name) in names.iter().enumerate() {
-                let (ea, eb) = (&a[r * w + i], &b[r * w + i]);
+                let (Some(ea), Some(eb)) = (row_a.get(i), row_b.get(i)) else {
+                    return Err(Error::NotConverged {
+                        quantity: name.to_string(),
+                        requested: digits,
+                        reached: "no value computed".into(),
+                        detail: format!("row {r} of {rows}"),
+                    });
+                };
                 let last = attempt + 1 == MAX_ATTEMPTS;
                 match judge(name, digits, precs, ea, eb)
                     .or_else(|r| absolute_fallback(last, name, digits, precs, ea, eb).ok_or(r))
