@@ -187,16 +187,8 @@ const PLAIN_MAX: usize = 24;
 /// such as 10^-100000 is written in a few characters, still exactly.
 pub fn rational_text(q: &Rational) -> String {
     let mut den = q.denom().clone();
-    let mut twos = 0u32;
-    let mut fives = 0u32;
-    while den.is_divisible_u(2) {
-        den /= 2;
-        twos += 1;
-    }
-    while den.is_divisible_u(5) {
-        den /= 5;
-        fives += 1;
-    }
+    let twos = den.remove_factor_mut(&Integer::from(2));
+    let fives = den.remove_factor_mut(&Integer::from(5));
     if den != 1 {
         return format!(
             "{}/{}",
