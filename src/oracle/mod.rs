@@ -102,7 +102,14 @@ fn check_digits(digits: u32) -> Result<()> {
 
 fn check_times(times: &[Exact]) -> Result<()> {
     for w in times.windows(2) {
-        if w[1].to_float(256) < w[0].to_float(256) {
+        // exactly where both are rational or both multiples of π (no
+        // conversion, and no two times too close for a float to order)
+        let descending = if w[0].times_pi == w[1].times_pi {
+            w[1].coef < w[0].coef
+        } else {
+            w[1].to_float(256) < w[0].to_float(256)
+        };
+        if descending {
             return Err(Error::invalid("times", &w[1], "must be ascending"));
         }
     }
