@@ -93,39 +93,18 @@ pub fn column_scales(model: &Model, p: u32) -> Vec<Float> {
     ]
 }
 
-/// The estimates of a point's columns.
+/// The estimates of a point's columns (all of [`crate::motion::COLUMNS`]).
 pub fn point_estimates(pt: &Point, scales: &[Float], t_text: Option<&String>) -> Vec<Estimate> {
-    let vals = pt.columns();
-    vals.into_iter()
-        .enumerate()
-        .map(|(i, v)| {
-            let p = v.prec();
-            let sc = Float::with_val(p, &scales[i]);
-            if pt.is_exact_zero(i) {
-                return Estimate::zero(p, sc);
-            }
-            let mut e = match &pt.err {
-                Some(errs) => Estimate::new(v.clone(), Float::with_val(p, &errs[i]), sc),
-                None => {
-                    let mut e = integrated(&v, one(p));
-                    e.scale = sc;
-                    e
-                }
-            };
-            if i == 0 {
-                e.exact_text = t_text.cloned();
-            } else {
-                e.diff_weight = pt.diff_weight;
-            }
-            e
-        })
-        .collect()
+    let all: Vec<usize> = (0..crate::motion::COLUMNS.len()).collect();
+    let mut out = Vec::with_capacity(all.len());
+    push_point_estimates(pt.clone(), scales, t_text, &all, &mut out);
+    out
 }
 
 /// The estimates of the columns `idx` (indices of [`crate::motion::COLUMNS`],
 /// each at most once) of a point, in that order, appended to `out`: the
 /// point's values moved into them (a table's rows are the bulk of its
-/// work). The same estimates as [`point_estimates`].
+/// work).
 pub fn push_point_estimates(
     pt: Point,
     scales: &[Float],
