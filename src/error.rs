@@ -69,6 +69,27 @@ impl Error {
         }
     }
 
+    /// An [`Error::InvalidParameter`] with its name and value given by `f`
+    /// (from the old ones; e.g. the name with the file it was read from);
+    /// any other error as it is.
+    pub fn map_invalid(self, f: impl FnOnce(String, String) -> (String, String)) -> Self {
+        match self {
+            Error::InvalidParameter {
+                name,
+                value,
+                allowed,
+            } => {
+                let (name, value) = f(name, value);
+                Error::InvalidParameter {
+                    name,
+                    value,
+                    allowed,
+                }
+            }
+            other => other,
+        }
+    }
+
     /// Shorthand for [`Error::NotPhysical`].
     pub fn not_physical(what: impl ToString) -> Self {
         Error::NotPhysical {

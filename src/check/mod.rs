@@ -437,16 +437,13 @@ fn at_rows(e: Error, source: &str, chunk: &Chunk) -> Error {
             .find(|c| c.1.to_string() == value)
             .map_or(format!("rows {first}-{last}"), |c| format!("row {}", c.0))
     };
+    let e = e.map_invalid(|name, value| {
+        (
+            format!("{name} (candidate {source}, {})", rows(&value)),
+            value,
+        )
+    });
     match e {
-        Error::InvalidParameter {
-            name,
-            value,
-            allowed,
-        } => Error::InvalidParameter {
-            name: format!("{name} (candidate {source}, {})", rows(&value)),
-            value,
-            allowed,
-        },
         Error::NotPhysical { what } => Error::NotPhysical {
             what: format!("candidate {source}, rows {first}-{last}: {what}"),
         },

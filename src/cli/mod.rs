@@ -439,24 +439,16 @@ impl Origins {
     /// An error of the oracle about a time, naming the entry it quotes (the
     /// first with that text: the times are ascending, so the first at fault).
     fn locate(&self, e: Error, times: &[Exact]) -> Error {
-        match e {
-            Error::InvalidParameter {
-                name,
-                value,
-                allowed,
-            } if name == "times" => {
-                let name = match times.iter().position(|t| t.to_string() == value) {
-                    Some(i) => self.name(i),
-                    None => self.param.clone(),
-                };
-                Error::InvalidParameter {
-                    name,
-                    value,
-                    allowed,
-                }
+        e.map_invalid(|name, value| {
+            if name != "times" {
+                return (name, value);
             }
-            other => other,
-        }
+            let name = match times.iter().position(|t| t.to_string() == value) {
+                Some(i) => self.name(i),
+                None => self.param.clone(),
+            };
+            (name, value)
+        })
     }
 }
 

@@ -157,18 +157,7 @@ pub fn read_params(path: &std::path::Path) -> Result<Pairs> {
 /// An error about a value read from the file `path`, naming the file:
 /// `m1 (in p.toml)`.
 pub fn in_file(e: Error, path: &std::path::Path) -> Error {
-    match e {
-        Error::InvalidParameter {
-            name,
-            value,
-            allowed,
-        } => Error::InvalidParameter {
-            name: format!("{name} (in {})", path.display()),
-            value,
-            allowed,
-        },
-        other => other,
-    }
+    e.map_invalid(|name, value| (format!("{name} (in {})", path.display()), value))
 }
 
 /// Largest parameter or case file read, in bytes.
@@ -265,22 +254,11 @@ pub fn model_from_pairs(vals: &Pairs) -> Result<Model> {
 /// An error about a key quoting the key's value as it was given (`-1e3`,
 /// not the rational `-1000` the check saw).
 fn as_given(e: Error, vals: &Pairs) -> Error {
-    match e {
-        Error::InvalidParameter {
-            name,
-            value,
-            allowed,
-        } => {
-            let value = match vals.get(&name) {
-                Some(given) => crate::error::shorten(given.trim()),
-                None => value,
-            };
-            Error::InvalidParameter {
-                name,
-                value,
-                allowed,
-            }
-        }
-        other => other,
-    }
+    e.map_invalid(|name, value| {
+        let value = match vals.get(&name) {
+            Some(given) => crate::error::shorten(given.trim()),
+            None => value,
+        };
+        (name, value)
+    })
 }
