@@ -110,7 +110,7 @@ impl FixedSums {
         x -= a;
         x -= b;
         x /= Float::with_val(p, b - a);
-        if x.clone().abs() > 1u32 {
+        if x > 1u32 || x < -1i32 {
             return false;
         }
         with_limbs!(self.limbs, sums, self, &x, out).unwrap_or(false)
