@@ -406,11 +406,11 @@ impl Piece {
         let p = s.prec();
         let ith = sy::th(0);
         let zero = Float::new(p);
-        let n_fits = 2 + self.vel.len() + self.pos.len() + usize::from(self.work.is_some());
-        let mut sums = vec![Float::new(p); n_fits];
+        let fits = self.fits();
+        let mut sums = vec![Float::new(p); fits.len()];
         let fixed = read_only && {
             let mut fx = self.fixed.borrow_mut();
-            let fx = fx.get_or_insert_with(|| FixedSums::new(&self.fits(), p));
+            let fx = fx.get_or_insert_with(|| FixedSums::new(&fits, p));
             fx.as_mut()
                 .is_some_and(|fx| fx.eval(&zero, &self.len, s, &mut sums))
         };
@@ -418,7 +418,7 @@ impl Piece {
             let mut sc = self.scratch.borrow_mut();
             let basis = &mut sc.1;
             ChebFit::basis_into(&zero, &self.len, s, self.dt.c.len(), p, basis);
-            for (o, f) in sums.iter_mut().zip(self.fits()) {
+            for (o, f) in sums.iter_mut().zip(&fits) {
                 *o = f.dot(basis);
             }
         }
