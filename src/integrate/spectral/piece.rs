@@ -53,6 +53,9 @@ pub(super) struct Piece {
     /// The interpolants in fixed point for output rows, built at the first
     /// (`Some(None)`: fixed point does not apply).
     fixed: std::cell::RefCell<Option<Option<FixedSums>>>,
+    /// t(s) − t0 and dt/ds in fixed point for the inversions (built at the
+    /// first; `Some(None)`: fixed point does not apply).
+    pub(super) fixed_time: std::cell::RefCell<Option<Option<FixedSums>>>,
 }
 
 pub(super) enum Attempt {
@@ -380,6 +383,7 @@ pub(super) fn attempt(
         used,
         scratch: Default::default(),
         fixed: Default::default(),
+        fixed_time: Default::default(),
         dt64: dt.to_f64(),
         rate64: rfit.to_f64(),
         nodes,

@@ -4,6 +4,7 @@
 //! own when many outputs fall inside one piece.
 
 use super::piece::{within, Piece};
+use crate::numeric::cheb::fixed_sums::FixedSums;
 use crate::numeric::cheb::{ChebFit, Roots};
 use rug::{Assign, Float};
 
@@ -101,8 +102,42 @@ impl Piece {
                 break;
             }
         }
+        // full precision: t(s) and dt/ds summed in fixed point where it
+        // applies (the steps' sums several times cheaper than MPFR's, as
+        // accurate: FixedSums), else precision doubling in MPFR
+        let zero = Float::new(p);
+        let stop = Float::with_val(p, &self.len) >> (p as i32 / 2 + 4);
+        let seed = s;
+        {
+            let mut fx = self.fixed_time.borrow_mut();
+            let fx = fx.get_or_insert_with(|| FixedSums::new(&[&self.dt, &self.rate], p));
+            if let Some(fs) = fx.as_mut() {
+                let mut s = Float::with_val(p, seed);
+                let mut fd = [Float::new(p), Float::new(p)];
+                let mut done = true;
+                for _ in 0..20 {
+                    if !fs.eval(&zero, &self.len, &s, &mut fd) {
+                        done = false;
+                        break;
+                    }
+                    fd[0] -= &target;
+                    let step = Float::with_val(p, &fd[0] / &fd[1]);
+                    if !step.is_finite() {
+                        break;
+                    }
+                    s -= &step;
+                    s.assign(s.clone().max(&lo.0).min(&hi.0));
+                    if step.abs() <= stop {
+                        break;
+                    }
+                }
+                if done {
+                    return s;
+                }
+            }
+        }
         // precision doubling: one step on each lower copy, then full steps
-        let mut s = Float::with_val(p, s);
+        let mut s = Float::with_val(p, seed);
         for (q, dt, rate) in &self.lower {
             let sq = Float::with_val(*q, &s);
             let zero = Float::new(*q);
@@ -115,8 +150,6 @@ impl Piece {
                 s.assign(s.clone().max(&lo.0).min(&hi.0));
             }
         }
-        let zero = Float::new(p);
-        let stop = Float::with_val(p, &self.len) >> (p as i32 / 2 + 4);
         let n = self.dt.c.len();
         for _ in 0..20 {
             let basis = &mut *full;
