@@ -149,12 +149,27 @@ fn push_u128(buf: &mut Vec<u8>, u: u128) {
 
 /// The decimal digits of `v`, at least `width` of them (leading zeros).
 fn push_u64(buf: &mut Vec<u8>, mut v: u64, width: usize) {
+    // two digits a step from a table of 00..99
+    const PAIRS: &[u8; 200] = b"0001020304050607080910111213141516171819\
+2021222324252627282930313233343536373839\
+4041424344454647484950515253545556575859\
+6061626364656667686970717273747576777879\
+8081828384858687888990919293949596979899";
     let mut tmp = [b'0'; 20];
     let mut i = tmp.len();
-    while v > 0 {
+    while v >= 100 {
+        let k = (v % 100) as usize * 2;
+        v /= 100;
+        i -= 2;
+        tmp[i..i + 2].copy_from_slice(&PAIRS[k..k + 2]);
+    }
+    if v >= 10 {
+        let k = v as usize * 2;
+        i -= 2;
+        tmp[i..i + 2].copy_from_slice(&PAIRS[k..k + 2]);
+    } else if v > 0 {
         i -= 1;
-        tmp[i] = b'0' + (v % 10) as u8;
-        v /= 10;
+        tmp[i] = b'0' + v as u8;
     }
     let start = i.min(tmp.len() - width.clamp(1, 20));
     buf.extend_from_slice(&tmp[start..]);
@@ -269,6 +284,33 @@ mod tests {
                 };
                 let gap = (value(exact) - value(approx.clone())).abs();
                 assert!(gap <= unit, "x = {v}, {d} digits: {approx:?}");
+            }
+        }
+    }
+
+    /// The table-driven integer digits against the standard formatting, at
+    /// every length 1–39 and around the 10^19 split and powers of ten.
+    #[test]
+    fn integer_digits_as_the_standard_formatting() {
+        let mut vals: Vec<u128> = vec![0, 1, 9, 10, 99, 100, 101, u64::MAX as u128, u128::MAX];
+        let mut x: u128 = 7;
+        for _ in 0..39 {
+            vals.extend([x, x.saturating_sub(1), x.saturating_add(1)]);
+            x = x.saturating_mul(10).saturating_add(3);
+        }
+        let mut p: u128 = 1;
+        for _ in 0..38 {
+            p *= 10;
+            vals.extend([p - 1, p, p + 1]);
+        }
+        for v in vals {
+            let mut buf = Vec::new();
+            push_u128(&mut buf, v);
+            assert_eq!(String::from_utf8(buf).unwrap(), v.to_string(), "{v}");
+            if let Ok(w) = u64::try_from(v) {
+                let mut buf = Vec::new();
+                push_u64(&mut buf, w, 20);
+                assert_eq!(String::from_utf8(buf).unwrap(), format!("{w:020}"), "{w}");
             }
         }
     }

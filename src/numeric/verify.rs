@@ -34,8 +34,9 @@ pub struct Estimate {
     /// frictionless contact).
     pub exact_zero: bool,
     /// The natural magnitude of the quantity (used only to decide that a value
-    /// indistinguishable from zero may be printed as 0).
-    pub scale: Float,
+    /// indistinguishable from zero may be printed as 0); shared by the
+    /// values of a column.
+    pub scale: std::sync::Arc<Float>,
     /// The exact decimal text of a value known exactly (an input echoed in
     /// the output, such as a terminating-decimal time): printed as it is,
     /// with no rounding to decide — a rounding tie such as 0.125 at two
@@ -54,6 +55,11 @@ pub struct Estimate {
 impl Estimate {
     /// An estimate with error `err` and natural scale `scale`.
     pub fn new(value: Float, err: Float, scale: Float) -> Self {
+        Self::shared(value, err, std::sync::Arc::new(scale))
+    }
+    /// [`Estimate::new`] with a scale shared with other estimates (a
+    /// table's column).
+    pub fn shared(value: Float, err: Float, scale: std::sync::Arc<Float>) -> Self {
         Estimate {
             value,
             err,
@@ -71,6 +77,10 @@ impl Estimate {
     }
     /// An exact zero.
     pub fn zero(prec: u32, scale: Float) -> Self {
+        Self::zero_shared(prec, std::sync::Arc::new(scale))
+    }
+    /// [`Estimate::zero`] with a shared scale.
+    pub fn zero_shared(prec: u32, scale: std::sync::Arc<Float>) -> Self {
         Estimate {
             value: Float::new(prec),
             err: Float::new(prec),
@@ -247,7 +257,7 @@ fn judge(
         // at the requested digits relative to the quantity's natural scale
         let tiny = Float::with_val(
             p,
-            &b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
+            &*b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
         );
         if bound <= tiny {
             return Ok(Verified {
@@ -340,7 +350,7 @@ fn absolute_fallback(
     bound += &b.err;
     let tiny = Float::with_val(
         p,
-        &b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
+        &*b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
     );
     if !bound.is_finite() || bound > tiny {
         return None;

@@ -13,6 +13,7 @@ use crate::motion::{self, Caches, Motion, Phase, Point, Request, Side, Until};
 use crate::numeric::verify::{ladder_runs, ladder_table, precisions, Estimate, Run, Verified};
 use rug::Float;
 use std::cell::RefCell;
+use std::sync::Arc;
 
 /// The skeleton of a motion: what the two precisions must agree on.
 pub fn signature(m: &Motion) -> Vec<String> {
@@ -44,11 +45,16 @@ pub fn integrated(v: &Float, scale: Float) -> Estimate {
 
 /// [`integrated`] keeping `v` itself.
 pub fn integrated_owned(v: Float, scale: Float) -> Estimate {
+    integrated_shared(v, Arc::new(scale))
+}
+
+/// [`integrated_owned`] with a shared scale.
+pub fn integrated_shared(v: Float, scale: Arc<Float>) -> Estimate {
     let p = v.prec();
     let mut err = Float::with_val(p, v.abs_ref());
     err += 1u32;
     err >>= p as i32 - 24;
-    Estimate::new(v, err, scale)
+    Estimate::shared(v, err, scale)
 }
 
 fn one(p: u32) -> Float {
@@ -97,7 +103,8 @@ pub fn column_scales(model: &Model, p: u32) -> Vec<Float> {
 pub fn point_estimates(pt: &Point, scales: &[Float], t_text: Option<&String>) -> Vec<Estimate> {
     let all: Vec<usize> = (0..crate::motion::COLUMNS.len()).collect();
     let mut out = Vec::with_capacity(all.len());
-    push_point_estimates(pt.clone(), scales, t_text, &all, &mut out);
+    let scales: Vec<Arc<Float>> = scales.iter().cloned().map(Arc::new).collect();
+    push_point_estimates(pt.clone(), &scales, t_text, &all, &mut out);
     out
 }
 
@@ -107,7 +114,7 @@ pub fn point_estimates(pt: &Point, scales: &[Float], t_text: Option<&String>) ->
 /// work).
 pub fn push_point_estimates(
     pt: Point,
-    scales: &[Float],
+    scales: &[Arc<Float>],
     t_text: Option<&String>,
     idx: &[usize],
     out: &mut Vec<Estimate>,
@@ -122,18 +129,18 @@ pub fn push_point_estimates(
             continue;
         };
         let p = v.prec();
-        let sc = Float::with_val(p, &scales[i]);
+        let sc = Arc::clone(&scales[i]);
         if zero & (1 << i) != 0 {
-            out.push(Estimate::zero(p, sc));
+            out.push(Estimate::zero_shared(p, sc));
             continue;
         }
         let err = errs
             .as_mut()
             .and_then(|e| e.get_mut(i).and_then(Option::take));
         let mut e = match err {
-            Some(err) if err.prec() == p => Estimate::new(v, err, sc),
-            Some(err) => Estimate::new(v, Float::with_val(p, &err), sc),
-            None => integrated_owned(v, sc),
+            Some(err) if err.prec() == p => Estimate::shared(v, err, sc),
+            Some(err) => Estimate::shared(v, Float::with_val(p, &err), sc),
+            None => integrated_shared(v, sc),
         };
         if i == 0 {
             e.exact_text = t_text.cloned();

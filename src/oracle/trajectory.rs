@@ -3,7 +3,7 @@
 //! rows so that memory stays bounded ([`trajectory_in_blocks`]); θ alone at
 //! times ([`theta_at_times`]).
 
-use super::ladder::{self, event_estimates, events_of, integrated_owned, laddered};
+use super::ladder::{self, event_estimates, events_of, laddered};
 use super::{
     branch_notes, check_digits, check_part_at, check_times, empty_answer, energy_drift,
     energy_note, infinite, runs, Answer, Options, Question, Row,
@@ -238,26 +238,28 @@ fn trajectory_block(
     let mut table = laddered(&mut runs, first, &names, n_rows + n_ev, |m| {
         let p = m.prec();
         let sc = ladder::column_scales(model, p);
+        let shared: Vec<std::sync::Arc<Float>> =
+            sc.iter().cloned().map(std::sync::Arc::new).collect();
         let mut out = Vec::with_capacity((n_rows + n_ev) * idx.len());
         // the events' times and angles, as rows of their own columns
         let mut ev = Vec::new();
         event_estimates(&m, &mut ev);
         if theta_only {
             for ((t, th), text) in times.iter().zip(ladder::theta_estimates(&m)).zip(&exact_t) {
-                let mut te = integrated_owned(t.to_float(p), sc[0].clone());
+                let mut te = ladder::integrated_shared(t.to_float(p), shared[0].clone());
                 te.exact_text = text.clone();
                 out.push(te);
                 out.push(th);
             }
         } else {
             for (pt, text) in m.rows.into_iter().zip(&exact_t) {
-                ladder::push_point_estimates(pt, &sc, text.as_ref(), &idx, &mut out);
+                ladder::push_point_estimates(pt, &shared, text.as_ref(), &idx, &mut out);
             }
         }
         for pair in ev.chunks(2) {
             let mut row = vec![pair[0].clone(), pair[1].clone()];
             for &k in idx.iter().skip(2) {
-                row.push(Estimate::zero(p, sc[k].clone()));
+                row.push(Estimate::zero_shared(p, shared[k].clone()));
             }
             out.extend(row);
         }

@@ -636,7 +636,7 @@ impl Route {
             value: tf.clone(),
             err: Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2),
             exact_zero: t.is_zero(),
-            scale: ctx.ts.clone(),
+            scale: std::sync::Arc::new(ctx.ts.clone()),
             exact_text: None,
             diff_weight: 1,
         }];
@@ -653,7 +653,7 @@ impl Route {
                 value: v,
                 err: prop + ulps,
                 exact_zero: zero,
-                scale: scales[i].clone(),
+                scale: std::sync::Arc::new(scales[i].clone()),
                 exact_text: None,
                 diff_weight: 1,
             });
