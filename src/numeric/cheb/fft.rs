@@ -78,6 +78,15 @@ impl Roots {
         }
     }
 
+    /// (cos a, sin a) for a = mπ/(2N), signs applied, at the table's
+    /// precision.
+    pub(super) fn cos_sin(&self, m: usize) -> (Float, Float) {
+        let (c, nc, s, ns) = self.cis(m);
+        let c = if nc { -c.clone() } else { c.clone() };
+        let s = if ns { -s.clone() } else { s.clone() };
+        (c, s)
+    }
+
     /// The k-th Chebyshev point of the first kind, cos((2k+1)π/2N), at `p` bits.
     pub fn point(&self, k: usize, p: u32) -> Float {
         let (c, neg, _, _) = self.cis(2 * k + 1);
@@ -145,8 +154,17 @@ pub(super) fn fft(re: &mut [Float], im: &mut [Float], roots: &Roots, p: u32) {
         b: Float::new(p),
         acc_r: Float::new(p),
         acc_i: Float::new(p),
+        v: vec![Float::new(p); 16],
     };
-    fft_rec(re, im, 0, 1, n, &mut ore, &mut oim, roots, &mut w);
+    let k = Consts {
+        s3: (roots.n % 3 == 0).then(|| roots.cos_sin(4 * roots.n / 3).1),
+        c5: (roots.n % 5 == 0).then(|| {
+            let (c1, s1) = roots.cos_sin(4 * roots.n / 5);
+            let (c2, s2) = roots.cos_sin(8 * roots.n / 5);
+            [c1, c2, s1, s2]
+        }),
+    };
+    fft_rec(re, im, 0, 1, n, &mut ore, &mut oim, roots, &mut w, &k);
     for (x, y) in re.iter_mut().zip(ore.iter_mut()) {
         std::mem::swap(x, y);
     }
@@ -164,6 +182,16 @@ struct Work {
     b: Float,
     acc_r: Float,
     acc_i: Float,
+    /// Scratch of the radix-3 and radix-5 butterflies.
+    v: Vec<Float>,
+}
+
+/// The constants of the radix-3 and radix-5 butterflies.
+struct Consts {
+    /// sin(2π/3) (where N has the factor 3).
+    s3: Option<Float>,
+    /// cos(2π/5), cos(4π/5), sin(2π/5), sin(4π/5) (where N has the factor 5).
+    c5: Option<[Float; 4]>,
 }
 
 /// The DFT of the n entries x[off + j·stride] into out[0..n].
@@ -178,6 +206,7 @@ fn fft_rec(
     oim: &mut [Float],
     roots: &Roots,
     w: &mut Work,
+    consts: &Consts,
 ) {
     if n == 1 {
         ore[0].assign(&re[off]);
@@ -201,6 +230,7 @@ fn fft_rec(
             &mut oim[q * m..(q + 1) * m],
             roots,
             w,
+            consts,
         );
     }
     // the table's N is a multiple of n: e^(−2πi e/n) = e^(−2πi (e N/n)/N)
@@ -220,6 +250,18 @@ fn fft_rec(
             ore[k + m].assign(&w.zr[0] - &w.zr[1]);
             oim[k + m].assign(&w.zi[0] - &w.zi[1]);
             continue;
+        }
+        if r == 3 {
+            if let Some(s3) = &consts.s3 {
+                butterfly3(w, s3, ore, oim, k, m);
+                continue;
+            }
+        }
+        if r == 5 {
+            if let Some(c5) = &consts.c5 {
+                butterfly5(w, c5, ore, oim, k, m);
+                continue;
+            }
         }
         for s in 0..r {
             w.acc_r.assign(&w.zr[0]);
@@ -241,6 +283,102 @@ fn fft_rec(
             oim[k + s * m].assign(&w.acc_i);
         }
     }
+}
+
+/// The radix-3 butterfly on the twiddled z_0, z_1, z_2 of `w` into
+/// out[k], out[k + m], out[k + 2m]: with t = z_1 + z_2, d = z_1 − z_2,
+/// X_0 = z_0 + t, X_{1,2} = z_0 − t/2 ∓ i sin(2π/3) d (two real products
+/// instead of the six complex ones of the plain sum).
+fn butterfly3(w: &mut Work, s3: &Float, ore: &mut [Float], oim: &mut [Float], k: usize, m: usize) {
+    let [tr, ti, dr, di, hr, hi, ..] = &mut w.v[..] else {
+        unreachable!("16 scratch numbers")
+    };
+    let (zr, zi) = (&w.zr, &w.zi);
+    tr.assign(&zr[1] + &zr[2]);
+    ti.assign(&zi[1] + &zi[2]);
+    dr.assign(&zr[1] - &zr[2]);
+    di.assign(&zi[1] - &zi[2]);
+    ore[k].assign(&zr[0] + &*tr);
+    oim[k].assign(&zi[0] + &*ti);
+    // h = z_0 − t/2
+    *tr >>= 1;
+    *ti >>= 1;
+    hr.assign(&zr[0] - &*tr);
+    hi.assign(&zi[0] - &*ti);
+    // s·d
+    *dr *= s3;
+    *di *= s3;
+    ore[k + m].assign(&*hr + &*di);
+    oim[k + m].assign(&*hi - &*dr);
+    ore[k + 2 * m].assign(&*hr - &*di);
+    oim[k + 2 * m].assign(&*hi + &*dr);
+}
+
+/// The radix-5 butterfly on the twiddled z_0 … z_4 of `w` into
+/// out[k + s m], s = 0..5: with a_1 = z_1 + z_4, a_2 = z_2 + z_3,
+/// b_1 = z_1 − z_4, b_2 = z_2 − z_3 and c_j = cos(2πj/5), s_j = sin(2πj/5),
+/// X_0 = z_0 + a_1 + a_2,
+/// X_{1,4} = z_0 + c_1 a_1 + c_2 a_2 ∓ i(s_1 b_1 + s_2 b_2),
+/// X_{2,3} = z_0 + c_2 a_1 + c_1 a_2 ∓ i(s_2 b_1 − s_1 b_2)
+/// (16 real products instead of the 20 complex ones of the plain sum).
+fn butterfly5(
+    w: &mut Work,
+    [c1, c2, s1, s2]: &[Float; 4],
+    ore: &mut [Float],
+    oim: &mut [Float],
+    k: usize,
+    m: usize,
+) {
+    let [a1r, a1i, a2r, a2i, b1r, b1i, b2r, b2i, xr, xi, yr, yi, t, ..] = &mut w.v[..] else {
+        unreachable!("16 scratch numbers")
+    };
+    let (zr, zi) = (&w.zr, &w.zi);
+    a1r.assign(&zr[1] + &zr[4]);
+    a1i.assign(&zi[1] + &zi[4]);
+    a2r.assign(&zr[2] + &zr[3]);
+    a2i.assign(&zi[2] + &zi[3]);
+    b1r.assign(&zr[1] - &zr[4]);
+    b1i.assign(&zi[1] - &zi[4]);
+    b2r.assign(&zr[2] - &zr[3]);
+    b2i.assign(&zi[2] - &zi[3]);
+    ore[k].assign(&zr[0] + &*a1r);
+    ore[k] += &*a2r;
+    oim[k].assign(&zi[0] + &*a1i);
+    oim[k] += &*a2i;
+    // (x, y) = (z_0 + c a_1 + c' a_2, s b_1 ± s' b_2); out[k + i m] = x − i y,
+    // out[k + j m] = x + i y
+    let mut pair =
+        |c: &Float, cc: &Float, s: &Float, ss: &Float, minus: bool, i: usize, j: usize| {
+            xr.assign(&*a1r * c);
+            t.assign(&*a2r * cc);
+            *xr += &*t;
+            *xr += &zr[0];
+            xi.assign(&*a1i * c);
+            t.assign(&*a2i * cc);
+            *xi += &*t;
+            *xi += &zi[0];
+            yr.assign(&*b1r * s);
+            t.assign(&*b2r * ss);
+            if minus {
+                *yr -= &*t;
+            } else {
+                *yr += &*t;
+            }
+            yi.assign(&*b1i * s);
+            t.assign(&*b2i * ss);
+            if minus {
+                *yi -= &*t;
+            } else {
+                *yi += &*t;
+            }
+            // x − i y = (x_r + y_i) + i(x_i − y_r)
+            ore[k + i * m].assign(&*xr + &*yi);
+            oim[k + i * m].assign(&*xi - &*yr);
+            ore[k + j * m].assign(&*xr - &*yi);
+            oim[k + j * m].assign(&*xi + &*yr);
+        };
+    pair(c1, c2, s1, s2, false, 1, 4);
+    pair(c2, c1, s2, s1, true, 2, 3);
 }
 
 /// The DFT V_k = Σ_j v_j e^(−2πi jk/N) of N real values (N = the table's),

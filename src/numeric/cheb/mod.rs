@@ -447,7 +447,7 @@ mod tests {
     fn transform_matches_the_definition_for_mixed_radices() {
         let p = 200;
         for n in [
-            1usize, 2, 3, 4, 5, 6, 8, 9, 10, 12, 15, 16, 18, 25, 30, 45, 60, 64,
+            1usize, 2, 3, 4, 5, 6, 8, 9, 10, 12, 15, 16, 18, 25, 30, 45, 60, 64, 75, 90, 150, 200,
         ] {
             let roots = Roots::new(n, p);
             // a non-symmetric test function on [−1, 1]
