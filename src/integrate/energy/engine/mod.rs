@@ -85,7 +85,7 @@ impl Engine {
         Ok(Engine {
             dynm,
             v0,
-            ts: TanhSinh::new(prec),
+            ts: TanhSinh::with_fast_nodes(prec),
             ts_half: TanhSinh::with_fast_nodes(prec),
             scratch: Scratch::new(prec),
             half,
