@@ -112,26 +112,12 @@ impl Piece {
             let mut fx = self.fixed_time.borrow_mut();
             let fx = fx.get_or_insert_with(|| FixedSums::new(&[&self.dt, &self.rate], p));
             if let Some(fs) = fx.as_mut() {
-                let mut s = Float::with_val(p, seed);
                 let mut fd = [Float::new(p), Float::new(p)];
-                let mut done = true;
-                for _ in 0..20 {
-                    if !fs.eval(&zero, &self.len, &s, &mut fd) {
-                        done = false;
-                        break;
-                    }
-                    fd[0] -= &target;
-                    let step = Float::with_val(p, &fd[0] / &fd[1]);
-                    if !step.is_finite() {
-                        break;
-                    }
-                    s -= &step;
-                    s.assign(s.clone().max(&lo.0).min(&hi.0));
-                    if step.abs() <= stop {
-                        break;
-                    }
-                }
-                if done {
+                let s = newton(Float::with_val(p, seed), lo, hi, &stop, |s| {
+                    fs.eval(&zero, &self.len, s, &mut fd)
+                        .then(|| (Float::with_val(p, &fd[0] - &target), fd[1].clone()))
+                });
+                if let Some(s) = s {
                     return s;
                 }
             }
@@ -151,20 +137,37 @@ impl Piece {
             }
         }
         let n = self.dt.c.len();
-        for _ in 0..20 {
+        newton(s, lo, hi, &stop, |s| {
             let basis = &mut *full;
-            ChebFit::basis_into(&zero, &self.len, &s, n, p, basis);
-            let f = self.dt.dot(basis) - &target;
-            let step = f / self.rate.dot(basis);
-            if !step.is_finite() {
-                break;
-            }
-            s -= &step;
-            s.assign(s.clone().max(&lo.0).min(&hi.0));
-            if step.abs() <= stop {
-                break;
-            }
-        }
-        s
+            ChebFit::basis_into(&zero, &self.len, s, n, p, basis);
+            Some((self.dt.dot(basis) - &target, self.rate.dot(basis)))
+        })
+        .unwrap_or_else(|| Float::with_val(p, seed))
     }
+}
+
+/// Newton's method from `s` inside [lo.0, hi.0] on f with `f_df(s)` =
+/// (f(s), f'(s)) at full precision, until a step is at most `stop` (20 steps
+/// at most); `None` where `f_df` does not apply at some step.
+fn newton(
+    mut s: Float,
+    lo: &(Float, Float),
+    hi: &(Float, Float),
+    stop: &Float,
+    mut f_df: impl FnMut(&Float) -> Option<(Float, Float)>,
+) -> Option<Float> {
+    let p = s.prec();
+    for _ in 0..20 {
+        let (f, d) = f_df(&s)?;
+        let step = Float::with_val(p, &f / &d);
+        if !step.is_finite() {
+            break;
+        }
+        s -= &step;
+        s.assign(s.clone().max(&lo.0).min(&hi.0));
+        if step.abs() <= *stop {
+            break;
+        }
+    }
+    Some(s)
 }

@@ -306,17 +306,11 @@ pub(crate) fn gauss_many(
     // singleton columns, in the order found: (row, column, the columns
     // still in the system then, the row's right-hand sides then)
     let mut later: Vec<(usize, usize, Vec<bool>, Vec<Float>)> = Vec::new();
-    let single = |it: &mut dyn Iterator<Item = usize>| -> (usize, Option<usize>) {
-        let mut count = 0;
-        let mut at = None;
-        for k in it {
-            count += 1;
-            at = Some(k);
-            if count > 1 {
-                break;
-            }
-        }
-        (count, at)
+    // the one index of `it`: None if there is none (the system is
+    // singular), Some(None) if there are several
+    let single = |it: &mut dyn Iterator<Item = usize>| -> Option<Option<usize>> {
+        let first = it.next()?;
+        Some(it.next().is_none().then_some(first))
     };
     loop {
         let mut found = false;
@@ -324,11 +318,8 @@ pub(crate) fn gauss_many(
             if !row_on[r] {
                 continue;
             }
-            let (count, at) = single(&mut (0..n).filter(|&c| col_on[c] && !a[r * n + c].is_zero()));
-            if count == 0 {
-                return None;
-            }
-            let (1, Some(c)) = (count, at) else {
+            let Some(c) = single(&mut (0..n).filter(|&c| col_on[c] && !a[r * n + c].is_zero()))?
+            else {
                 continue;
             };
             // x_c from row r; substituted into the other rows
@@ -348,11 +339,8 @@ pub(crate) fn gauss_many(
             if !col_on[c] {
                 continue;
             }
-            let (count, at) = single(&mut (0..n).filter(|&r| row_on[r] && !a[r * n + c].is_zero()));
-            if count == 0 {
-                return None;
-            }
-            if let (1, Some(r)) = (count, at) {
+            if let Some(r) = single(&mut (0..n).filter(|&r| row_on[r] && !a[r * n + c].is_zero()))?
+            {
                 let b_r = bs.iter().map(|b| b[r].clone()).collect();
                 later.push((r, c, col_on.clone(), b_r));
                 row_on[r] = false;
@@ -524,24 +512,22 @@ mod tests {
         for a0 in [kkt, dense] {
             let b0: Vec<Float> = (0..n).map(|i| f(i as f64 * 0.37 - 1.0)).collect();
             let b1: Vec<Float> = (0..n).map(|i| f(1.0 / (i as f64 + 2.0))).collect();
-            let (mut x0, mut x1) = (vec![f(0.0); n], vec![f(0.0); n]);
-            let (mut y0, mut y1) = (vec![f(0.0); n], vec![f(0.0); n]);
-            let (mut c0, mut c1) = (b0.clone(), b1.clone());
-            gauss_many(
-                &mut a0.clone(),
-                &mut [&mut c0, &mut c1],
-                &mut [&mut x0, &mut x1],
-                n,
-            )
-            .unwrap();
-            let (mut d0, mut d1) = (b0.clone(), b1.clone());
-            gauss_dense(
-                &mut a0.clone(),
-                &mut [&mut d0, &mut d1],
-                &mut [&mut y0, &mut y1],
-                n,
-            )
-            .unwrap();
+            type Solver =
+                fn(&mut [Float], &mut [&mut [Float]], &mut [&mut [Float]], usize) -> Option<()>;
+            let solve = |g: Solver| {
+                let (mut x0, mut x1) = (vec![f(0.0); n], vec![f(0.0); n]);
+                let (mut c0, mut c1) = (b0.clone(), b1.clone());
+                g(
+                    &mut a0.clone(),
+                    &mut [&mut c0, &mut c1],
+                    &mut [&mut x0, &mut x1],
+                    n,
+                )
+                .unwrap();
+                (x0, x1)
+            };
+            let (x0, x1) = solve(gauss_many);
+            let (y0, y1) = solve(gauss_dense);
             for (x, y, b) in [(&x0, &y0, &b0), (&x1, &y1, &b1)] {
                 for i in 0..n {
                     let d = Float::with_val(p, &x[i] - &y[i]).abs().to_f64();
