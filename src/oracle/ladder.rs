@@ -62,8 +62,9 @@ fn one(p: u32) -> Float {
 }
 
 /// The natural scale of each column of [`crate::motion::COLUMNS`]: time
-/// sqrt(r/g), angle 1, lengths r, forces (m1 + m2) g, energy m2 g r.
-pub fn column_scales(model: &Model, p: u32) -> Vec<Float> {
+/// sqrt(r/g), angle 1, lengths r, forces (m1 + m2) g, energy m2 g r (shared
+/// by a column's estimates, and by the columns of one kind).
+pub fn column_scales(model: &Model, p: u32) -> Vec<Arc<Float>> {
     let pr = model.params();
     let r = Float::with_val(p, &pr.r());
     let g = Float::with_val(p, &pr.g);
@@ -73,38 +74,43 @@ pub fn column_scales(model: &Model, p: u32) -> Vec<Float> {
     let v = Float::with_val(p, &r / &ts);
     let f = Float::with_val(p, &rug::Rational::from(&pr.m1 + &pr.m2)) * &g;
     let e = Float::with_val(p, &pr.m2) * &g * &r;
-    let o = one(p);
+    let [ts, o, inv_ts, inv_ts2, r, v, f, e] =
+        [ts, one(p), inv_ts, inv_ts2, r, v, f, e].map(Arc::new);
+    let c = Arc::clone;
     vec![
         ts,
-        o.clone(),
-        inv_ts.clone(),
+        c(&o),
+        c(&inv_ts),
         inv_ts2,
-        o.clone(),
+        c(&o),
         o,
-        r.clone(),
-        r.clone(),
+        c(&r),
+        c(&r),
         r,
-        v.clone(),
-        inv_ts.clone(),
-        v.clone(),
-        v.clone(),
+        c(&v),
+        c(&inv_ts),
+        c(&v),
+        c(&v),
         inv_ts,
-        f.clone(),
-        f.clone(),
-        f.clone(),
+        c(&f),
+        c(&f),
+        c(&f),
         f,
-        v.clone(),
+        c(&v),
         v,
         e,
     ]
 }
 
 /// The estimates of a point's columns (all of [`crate::motion::COLUMNS`]).
-pub fn point_estimates(pt: &Point, scales: &[Float], t_text: Option<&String>) -> Vec<Estimate> {
+pub fn point_estimates(
+    pt: &Point,
+    scales: &[Arc<Float>],
+    t_text: Option<&String>,
+) -> Vec<Estimate> {
     let all: Vec<usize> = (0..crate::motion::COLUMNS.len()).collect();
     let mut out = Vec::with_capacity(all.len());
-    let scales: Vec<Arc<Float>> = scales.iter().cloned().map(Arc::new).collect();
-    push_point_estimates(pt.clone(), &scales, t_text, &all, &mut out);
+    push_point_estimates(pt.clone(), scales, t_text, &all, &mut out);
     out
 }
 

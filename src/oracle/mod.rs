@@ -456,7 +456,7 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
             for name in ["theta_dot", "N12", "F21"] {
                 let k = motion::point::column_index(name).unwrap_or(0);
                 let mut e = all[k].clone();
-                e.err += Float::with_val(p, &loc * &sc[k]) * 16u32;
+                e.err += Float::with_val(p, &loc * &*sc[k]) * 16u32;
                 out.push(e);
             }
         }
@@ -700,15 +700,15 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
             let sc = ladder::column_scales(model, p);
             let z = |i: usize, zero: bool| {
                 if zero {
-                    Estimate::zero(p, sc[i].clone())
+                    Estimate::zero_shared(p, sc[i].clone())
                 } else {
-                    Estimate::rounded(cols[i].clone(), sc[i].clone())
+                    Estimate::rounded(cols[i].clone(), (*sc[i]).clone())
                 }
             };
             Ok(vec![
                 z(18, mode.floor != motion::State::Slip(0)),
                 z(19, mode.contact != motion::State::Slip(0)),
-                Estimate::zero(p, sc[20].clone()),
+                Estimate::zero_shared(p, sc[20].clone()),
             ])
         })?;
         values.extend(extra);
@@ -759,7 +759,6 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         ans.routes.push(motion::Route::Energy);
         return Ok(ans);
     }
-    let scales_of = |m: &Model, p: u32| ladder::column_scales(m, p);
     let idx = |name: &str| motion::point::column_index(name).unwrap_or(0);
     let keys = [
         "F1",
@@ -774,7 +773,7 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
     ];
     let (v, phase, note) = at_angle(model, opts, theta, "theta", &keys, |pt| {
         let p = pt.t.prec();
-        let all = ladder::point_estimates(pt, &scales_of(model, p), None);
+        let all = ladder::point_estimates(pt, &ladder::column_scales(model, p), None);
         keys.iter().map(|k| all[idx(k)].clone()).collect()
     })?;
     let mut values: Vec<Verified> = v[..6].to_vec();

@@ -237,9 +237,7 @@ fn trajectory_block(
     first.rows = first_rows;
     let mut table = laddered(&mut runs, first, &names, n_rows + n_ev, |m| {
         let p = m.prec();
-        let sc = ladder::column_scales(model, p);
-        let shared: Vec<std::sync::Arc<Float>> =
-            sc.iter().cloned().map(std::sync::Arc::new).collect();
+        let shared = ladder::column_scales(model, p);
         let mut out = Vec::with_capacity((n_rows + n_ev) * idx.len());
         // the events' times and angles, as rows of their own columns
         let mut ev = Vec::new();
