@@ -243,23 +243,14 @@ fn judge(
             precs,
         });
     }
-    let mut bound = Float::with_val(p, &a.value - &b.value);
-    bound.abs_mut();
-    if b.diff_weight != 1 {
-        bound *= b.diff_weight;
-    }
-    bound += &b.err;
+    let bound = error_bound(a, b);
     if !b.value.is_finite() || !bound.is_finite() {
         return Err(0);
     }
     if b.value.cmp_abs(&bound) != Some(std::cmp::Ordering::Greater) {
         // indistinguishable from zero: print 0 if the bound is negligible
         // at the requested digits relative to the quantity's natural scale
-        let tiny = Float::with_val(
-            p,
-            &*b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
-        );
-        if bound <= tiny {
+        if bound <= negligible(b, digits) {
             return Ok(Verified {
                 name: name.to_string(),
                 value: b.value.clone(),
@@ -297,6 +288,28 @@ fn judge(
         }
         _ => Err(agreeing_digits(&b.value, &bound, digits)),
     }
+}
+
+/// The bound the ladder holds the higher run's value to:
+/// |v(p1) − v(p2)|·diff_weight + err(p2), at p2.
+fn error_bound(a: &Estimate, b: &Estimate) -> Float {
+    let mut bound = Float::with_val(b.value.prec(), &a.value - &b.value);
+    bound.abs_mut();
+    if b.diff_weight != 1 {
+        bound *= b.diff_weight;
+    }
+    bound += &b.err;
+    bound
+}
+
+/// An error negligible at `digits` digits of the quantity's natural scale:
+/// scale/10^digits.
+fn negligible(b: &Estimate, digits: u32) -> Float {
+    let p = b.value.prec();
+    Float::with_val(
+        p,
+        &*b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
+    )
 }
 
 /// A verified number from a value and an absolute error bound that are
@@ -341,18 +354,8 @@ fn absolute_fallback(
     if !last || !b.value.is_finite() || b.value.is_zero() {
         return None;
     }
-    let p = b.value.prec();
-    let mut bound = Float::with_val(p, &a.value - &b.value);
-    bound.abs_mut();
-    if b.diff_weight != 1 {
-        bound *= b.diff_weight;
-    }
-    bound += &b.err;
-    let tiny = Float::with_val(
-        p,
-        &*b.scale / Float::with_val(p, rug::Integer::from(rug::Integer::u_pow_u(10, digits))),
-    );
-    if !bound.is_finite() || bound > tiny {
+    let bound = error_bound(a, b);
+    if !bound.is_finite() || bound > negligible(b, digits) {
         return None;
     }
     (1..digits)
