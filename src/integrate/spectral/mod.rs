@@ -48,7 +48,7 @@ use super::gbs::Stats;
 use super::solve::{watch_value, watch_values, Event, Hit, Run, Sample, Start};
 use crate::error::Result;
 use crate::mechanics::system::{self as sy, System};
-use crate::numeric::cheb::fixed_sums::FixedSums;
+use crate::numeric::cheb::fixed_sums::LazySums;
 use crate::numeric::cheb::{smooth_at_least, Roots};
 use dependents::{dependents, moving};
 use events::{coeffs64, first_bracket, reads_positions};
@@ -310,22 +310,16 @@ pub fn run(
             None
         };
         // s(t) summed in fixed point where it applies (an output only read)
-        let mut inverse = inverse.map(|f| {
-            let fx = FixedSums::new(&[&f], p);
-            (f, fx)
-        });
+        let inverse_fx = LazySums::default();
         let mut s_at = [Float::new(p)];
         for (i, tau) in times[next..next + count].iter().enumerate() {
             if i % 64 == 0 {
                 crate::cancel::check()?;
             }
             let tau = Float::with_val(p, tau);
-            let s = match &mut inverse {
-                Some((f, fx)) => {
-                    let fixed = fx
-                        .as_mut()
-                        .is_some_and(|fx| fx.eval(&f.a, &f.b, &tau, &mut s_at));
-                    let s = if fixed {
+            let s = match &inverse {
+                Some(f) => {
+                    let s = if inverse_fx.eval(&[f], &f.a, &f.b, &tau, &mut s_at) {
                         std::mem::replace(&mut s_at[0], Float::new(p))
                     } else {
                         f.eval(&tau, p)

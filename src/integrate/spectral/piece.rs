@@ -10,7 +10,7 @@ use super::Settings;
 use crate::error::Result;
 use crate::integrate::solve::Sample;
 use crate::mechanics::system::{self as sy, Accel, System};
-use crate::numeric::cheb::fixed_sums::FixedSums;
+use crate::numeric::cheb::fixed_sums::LazySums;
 use crate::numeric::cheb::{ChebFit, Roots};
 use rug::{Assign, Float};
 
@@ -50,12 +50,10 @@ pub(super) struct Piece {
     pub(super) used: usize,
     /// Bases of the inversions' Newton steps (lower precisions, full).
     pub(super) scratch: std::cell::RefCell<(Vec<Float>, Vec<Float>)>,
-    /// The interpolants in fixed point for output rows, built at the first
-    /// (`Some(None)`: fixed point does not apply).
-    fixed: std::cell::RefCell<Option<Option<FixedSums>>>,
-    /// t(s) − t0 and dt/ds in fixed point for the inversions (built at the
-    /// first; `Some(None)`: fixed point does not apply).
-    pub(super) fixed_time: std::cell::RefCell<Option<Option<FixedSums>>>,
+    /// The interpolants in fixed point for output rows.
+    fixed: LazySums,
+    /// t(s) − t0 and dt/ds in fixed point for the inversions.
+    pub(super) fixed_time: LazySums,
 }
 
 pub(super) enum Attempt {
@@ -404,7 +402,7 @@ impl Piece {
 
     /// The state (t, q, q̇, W) at s: every interpolant on one basis;
     /// `read_only`: a state only read (an output row), whose sums are taken
-    /// in fixed point where it applies ([`FixedSums`]: within the
+    /// in fixed point where it applies ([`LazySums`]: within the
     /// interpolants' tolerance, several times cheaper than MPFR's).
     fn state(&self, s: &Float, read_only: bool) -> (Float, Vec<Float>, Vec<Float>, Float) {
         let p = s.prec();
@@ -412,13 +410,7 @@ impl Piece {
         let zero = Float::new(p);
         let fits = self.fits();
         let mut sums = vec![Float::new(p); fits.len()];
-        let fixed = read_only && {
-            let mut fx = self.fixed.borrow_mut();
-            let fx = fx.get_or_insert_with(|| FixedSums::new(&fits, p));
-            fx.as_mut()
-                .is_some_and(|fx| fx.eval(&zero, &self.len, s, &mut sums))
-        };
-        if !fixed {
+        if !(read_only && self.fixed.eval(&fits, &zero, &self.len, s, &mut sums)) {
             let mut sc = self.scratch.borrow_mut();
             let basis = &mut sc.1;
             ChebFit::basis_into(&zero, &self.len, s, self.dt.c.len(), p, basis);

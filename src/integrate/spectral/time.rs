@@ -4,7 +4,6 @@
 //! own when many outputs fall inside one piece.
 
 use super::piece::{within, Piece};
-use crate::numeric::cheb::fixed_sums::FixedSums;
 use crate::numeric::cheb::{ChebFit, Roots};
 use rug::{Assign, Float};
 
@@ -114,19 +113,15 @@ impl Piece {
         let zero = Float::new(p);
         let stop = Float::with_val(p, &self.len) >> (p as i32 / 2 + 4);
         let seed = s;
-        {
-            let mut fx = self.fixed_time.borrow_mut();
-            let fx = fx.get_or_insert_with(|| FixedSums::new(&[&self.dt, &self.rate], p));
-            if let Some(fs) = fx.as_mut() {
-                let mut fd = [Float::new(p), Float::new(p)];
-                let s = newton(Float::with_val(p, seed), lo, hi, &stop, |s| {
-                    fs.eval(&zero, &self.len, s, &mut fd)
-                        .then(|| (Float::with_val(p, &fd[0] - &target), fd[1].clone()))
-                });
-                if let Some(s) = s {
-                    return s;
-                }
-            }
+        let fits = [&self.dt, &self.rate];
+        let mut fd = [Float::new(p), Float::new(p)];
+        let fixed = newton(Float::with_val(p, seed), lo, hi, &stop, |s| {
+            self.fixed_time
+                .eval(&fits, &zero, &self.len, s, &mut fd)
+                .then(|| (Float::with_val(p, &fd[0] - &target), fd[1].clone()))
+        });
+        if let Some(s) = fixed {
+            return s;
         }
         // precision doubling: one step on each lower copy, then full steps
         let mut s = Float::with_val(p, seed);

@@ -117,6 +117,30 @@ impl FixedSums {
     }
 }
 
+/// [`FixedSums`] built at the first sum asked, for fits that do not change
+/// (a piece's interpolants): every call sums the same fits.
+#[derive(Debug, Default)]
+pub struct LazySums(std::cell::RefCell<Option<Option<FixedSums>>>);
+
+impl LazySums {
+    /// [`FixedSums::eval`] of `fits` at `v` of [a, b] (built at `v`'s
+    /// precision at the first call); `false` (out unspecified) where fixed
+    /// point does not apply, there or for these fits at all.
+    pub fn eval(
+        &self,
+        fits: &[&ChebFit],
+        a: &Float,
+        b: &Float,
+        v: &Float,
+        out: &mut [Float],
+    ) -> bool {
+        let mut fx = self.0.borrow_mut();
+        fx.get_or_insert_with(|| FixedSums::new(fits, v.prec()))
+            .as_mut()
+            .is_some_and(|fx| fx.eval(a, b, v, out))
+    }
+}
+
 fn convert<const L: usize>(s: &mut FixedSums, fits: &[&ChebFit]) -> Option<()> {
     for f in fits {
         for c in &f.c {
