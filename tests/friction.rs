@@ -1364,25 +1364,17 @@ fn a_large_mu_opens_the_contact_one_over_mu_before_the_rolling_separation() {
     }
 }
 
-/// Every column of a trajectory through a sticking phase (the energy route,
-/// whose rows' errors come from δ's: a second evaluation, or the difference
-/// of the two precisions counted twice), slip onset and a slipping phase
-/// (the spectral route, rows summed in fixed point), at 20 digits, is the
-/// 60-digit table rounded to 20 digits wherever both print digits; times
-/// from just after the start (δ below its own error bound) to next to the
-/// slip onset. Every value is within its stated error bound of the
-/// 60-digit one, those printed as 0 included.
-#[test]
-fn trajectory_digits_agree_with_a_higher_precision_in_every_phase() {
-    let m = model(law("0.3"), law("0.3"), "1/2");
-    let times: Vec<Exact> = [
-        "0", "1e-30", "1e-6", "0.5", "1", "2.5", "4", "4.156", "4.1561", "4.3", "4.6", "4.9",
-    ]
-    .iter()
-    .map(|s| Exact::parse("t", s, false).unwrap())
-    .collect();
-    let a = oracle::trajectory(&m, &times, &Options::digits(20)).unwrap();
-    let b = oracle::trajectory(&m, &times, &Options::digits(60)).unwrap();
+/// Every column of the trajectory at `times` at 20 digits against the same
+/// at 60: each value within its stated error bound of the 60-digit one (those
+/// printed as 0 included), and the 60-digit table rounded to 20 digits
+/// wherever both print digits. Returns (values compared digit by digit,
+/// bounds checked, the phases the rows lie in).
+fn rows_agree_with_60_digits(
+    m: &Model,
+    times: &[Exact],
+) -> (usize, usize, std::collections::BTreeSet<String>) {
+    let a = oracle::trajectory(m, times, &Options::digits(20)).unwrap();
+    let b = oracle::trajectory(m, times, &Options::digits(60)).unwrap();
     assert_eq!(a.rows.len(), times.len());
     let (mut compared, mut bounds) = (0, 0);
     for (ra, rb) in a.rows.iter().zip(&b.rows) {
@@ -1413,8 +1405,43 @@ fn trajectory_digits_agree_with_a_higher_precision_in_every_phase() {
             compared += 1;
         }
     }
+    let tags = a.rows.iter().map(|r| r.phase.tag()).collect();
+    (compared, bounds, tags)
+}
+
+/// Every column of a trajectory through a sticking phase (the energy route,
+/// whose rows' errors come from δ's: a second evaluation, or the difference
+/// of the two precisions counted twice), slip onset and a slipping phase
+/// (the spectral route, rows summed in fixed point, each time inverted by
+/// Newton's method), at 20 digits, against 60 digits
+/// ([`rows_agree_with_60_digits`]); times from just after the start (δ below
+/// its own error bound) to next to the slip onset.
+#[test]
+fn trajectory_digits_agree_with_a_higher_precision_in_every_phase() {
+    let m = model(law("0.3"), law("0.3"), "1/2");
+    let times: Vec<Exact> = [
+        "0", "1e-30", "1e-6", "0.5", "1", "2.5", "4", "4.156", "4.1561", "4.3", "4.6", "4.9",
+    ]
+    .iter()
+    .map(|s| Exact::parse("t", s, false).unwrap())
+    .collect();
+    let (compared, bounds, tags) = rows_agree_with_60_digits(&m, &times);
     // both phases' rows, every numeric column
     assert!(compared > 150 && bounds > 200, "{compared} {bounds}");
-    let tags: std::collections::BTreeSet<String> = a.rows.iter().map(|r| r.phase.tag()).collect();
     assert!(tags.len() >= 2, "{tags:?}");
+}
+
+/// A dense grid inside the slipping phase: 100 times in one piece, so the
+/// piece's s(t) is interpolated (its nodes inverted in fixed point) and
+/// summed in fixed point at each row, at both working precisions of 20 and
+/// of 60 digits. The two tables agree ([`rows_agree_with_60_digits`]).
+#[test]
+fn dense_rows_in_a_slipping_phase_agree_with_a_higher_precision() {
+    let m = model(law("0.3"), law("0.3"), "1/2");
+    let times: Vec<Exact> = (0..100)
+        .map(|i| Exact::parse("t", &format!("{}", 4.2 + 0.007 * i as f64), false).unwrap())
+        .collect();
+    let (compared, bounds, tags) = rows_agree_with_60_digits(&m, &times);
+    assert!(compared > 1000 && bounds > 1500, "{compared} {bounds}");
+    assert_eq!(tags.len(), 1, "{tags:?}");
 }
