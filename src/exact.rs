@@ -129,6 +129,16 @@ impl Exact {
         }
     }
 
+    /// The exact decimal text of a rational time or angle that is a
+    /// terminating decimal (echoed as given, not rounded).
+    pub fn terminating_text(&self) -> Option<String> {
+        if self.times_pi {
+            None
+        } else {
+            terminating_text(&self.coef)
+        }
+    }
+
     /// The rational value, if the number is rational.
     pub fn as_rational(&self) -> Option<&Rational> {
         if self.times_pi && self.coef != 0 {
@@ -181,14 +191,38 @@ impl fmt::Display for Exact {
 /// scientific form (when that is shorter).
 const PLAIN_MAX: usize = 24;
 
+/// (a, b, m) with d = 2^a·5^b·m and m prime to 10 (d > 0): the factors
+/// counted by a shift and by divisions by 5^13 and 5 (a decimal time's
+/// denominator 10^k costs a few machine divisions, where GMP's general
+/// `remove` costs thousands of instructions).
+pub fn split_two_five(d: &Integer) -> (u32, u32, Integer) {
+    const F13: u32 = 1_220_703_125; // 5^13
+    let twos = d.find_one(0).unwrap_or(0);
+    let mut m = Integer::from(d >> twos);
+    let mut fives = 0;
+    while m != 0 && m.is_divisible_u(F13) {
+        m.div_exact_u_mut(F13);
+        fives += 13;
+    }
+    while m != 0 && m.is_divisible_u(5) {
+        m.div_exact_u_mut(5);
+        fives += 1;
+    }
+    (twos, fives, m)
+}
+
+/// The exact decimal text of `q` when it is a terminating decimal.
+pub fn terminating_text(q: &Rational) -> Option<String> {
+    let (twos, fives, den) = split_two_five(q.denom());
+    (den == 1).then(|| decimal_of(q, twos.max(fives)))
+}
+
 /// Exact decimal text of a rational when its denominator is 2^a 5^b, else
 /// `p/q`. Plain (`0.05`, `1000`) unless that is longer than 24 characters
 /// and the scientific form is shorter (`1e-30`, `2.5e100`), so that a value
 /// such as 10^-100000 is written in a few characters, still exactly.
 pub fn rational_text(q: &Rational) -> String {
-    let mut den = q.denom().clone();
-    let twos = den.remove_factor_mut(&Integer::from(2));
-    let fives = den.remove_factor_mut(&Integer::from(5));
+    let (twos, fives, den) = split_two_five(q.denom());
     if den != 1 {
         return format!(
             "{}/{}",
@@ -196,7 +230,11 @@ pub fn rational_text(q: &Rational) -> String {
             decimal_text(q.denom(), 0)
         );
     }
-    let k = twos.max(fives);
+    decimal_of(q, twos.max(fives))
+}
+
+/// q·10^k (an integer) as the exact text of q.
+fn decimal_of(q: &Rational, k: u32) -> String {
     let scaled = if k == 0 {
         q.numer().clone()
     } else {
@@ -373,5 +411,41 @@ mod tests {
         let x = Exact::parse("x", "1/10", false).unwrap().to_float(200);
         let y = Float::with_val(200, 1) / 10u32;
         assert_eq!(x, y);
+    }
+
+    /// The factors 2 and 5 of a denominator, counted by shifts and small
+    /// divisions, against GMP's `remove`; and the exact text of terminating
+    /// decimals only.
+    #[test]
+    fn twos_and_fives() {
+        let pow = |b: u32, e: u32| Integer::from(Integer::u_pow_u(b, e));
+        let cases = [
+            Integer::from(1),
+            Integer::from(2),
+            Integer::from(5),
+            Integer::from(7),
+            pow(10, 25),
+            pow(5, 12),
+            pow(5, 13),
+            pow(5, 26) * 3u32,
+            pow(2, 70) * pow(5, 30) * 7u32,
+            pow(2, 64) * pow(5, 39) * pow(3, 40),
+            pow(10, 1000) * 11u32,
+        ];
+        for d in cases {
+            let mut r = d.clone();
+            let twos = r.remove_factor_mut(&Integer::from(2));
+            let fives = r.remove_factor_mut(&Integer::from(5));
+            assert_eq!(split_two_five(&d), (twos, fives, r), "{d}");
+        }
+        let t = |s: &str| Exact::parse("t", s, true).unwrap().terminating_text();
+        assert_eq!(
+            t("0.0048762570891260938526337").as_deref(),
+            Some("0.0048762570891260938526337")
+        );
+        assert_eq!(t("3/8").as_deref(), Some("0.375"));
+        assert_eq!(t("-1e-30").as_deref(), Some("-1e-30"));
+        assert_eq!(t("1/3"), None);
+        assert_eq!(t("pi/2"), None);
     }
 }

@@ -175,6 +175,9 @@ impl Ctx {
     /// dissipated so far (the `work` column is exactly 0).
     pub fn point(&self, sys: &mut System, mode: Mode, s: &Sample, conservative: bool) -> Point {
         let p = sys.prec;
+        // the energy first: its mass matrix leaves sin θ and cos θ in the
+        // workspace, where the columns find them
+        let energy = sys.energy(&s.q, &s.v);
         let mut state = two_state(sys, s);
         // a slipping contact's force is an applied force, not a multiplier
         state.f1 = self.tangential(sys, mode, Which::Floor, s);
@@ -209,7 +212,7 @@ impl Ctx {
             s1,
             s12,
             work: s.work.clone(),
-            energy: sys.energy(&s.q, &s.v),
+            energy,
             phase: Phase::Contact(mode),
             err: None,
             exact_zero: zero,

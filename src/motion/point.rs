@@ -150,7 +150,10 @@ pub fn two_state(sys: &System, s: &Sample) -> TwoState {
     let ith = system::th(0);
     let th = &q[ith];
     let r = &q[system::rr(0)];
-    let (sn, cs) = th.clone().sin_cos(Float::new(p));
+    let (sn, cs) = match sys.cached_trig(th) {
+        Some((sn, cs)) => (sn.clone(), cs.clone()),
+        None => th.clone().sin_cos(Float::new(p)),
+    };
     let thd = &v[ith];
     let rd = &v[system::rr(0)];
     // C2 = C1 + r (sin θ, cos θ)

@@ -59,9 +59,17 @@ pub fn approx_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
 thread_local! {
     /// [`approx_sig_into`]'s working numbers, kept between calls (a table
     /// converts tens of thousands of values at one precision).
-    static SCRATCH: std::cell::RefCell<(Float, rug::Integer)> =
-        std::cell::RefCell::new((Float::new(64), rug::Integer::new()));
+    static SCRATCH: std::cell::RefCell<(Float, rug::Integer, rug::Integer)> =
+        std::cell::RefCell::new((Float::new(64), rug::Integer::new(), rug::Integer::new()));
+    /// 10^k as integers, k = 0, 1, … (grown as asked, up to
+    /// [`POW10_INT_MAX`]).
+    static POW10_INT: std::cell::RefCell<Vec<rug::Integer>> =
+        const { std::cell::RefCell::new(Vec::new()) };
 }
+
+/// The largest power of ten [`approx_sig_into`] scales by exactly (beyond
+/// it, and for negative powers, it scales in floating point).
+const POW10_INT_MAX: i64 = 400;
 
 /// [`approx_sig`] with its digits written into `buf` (cleared first, ASCII
 /// digits), returning (sign, exponent); allocates nothing once its scratch
@@ -72,51 +80,58 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
     }
     let (m, ex) = x.to_f64_exp();
     let mut e = (m.abs().log10() + ex as f64 * std::f64::consts::LOG10_2).floor() as i64 + 1;
-    let p = x.prec() + 16;
     let n = digits as i64;
     SCRATCH.with(|sc| {
         let mut sc = sc.borrow_mut();
-        let (y, mi) = &mut *sc;
-        if y.prec() != p {
-            y.set_prec(p);
-        }
+        let (y, mi, mx) = &mut *sc;
+        // |x| = mx·2^bx exactly (mx the significand as an integer)
+        let bx = x.to_integer_exp_in_place(mx)?;
+        mx.abs_mut();
         for _ in 0..3 {
             let k = n - e;
-            let kk = u32::try_from(k.unsigned_abs()).ok()?;
-            y.assign(x.abs_ref());
-            // 10^kk at p bits, kept for later calls (a table's values share
-            // their precision, and each column mostly its exponent)
-            POW10.with(|c| {
-                let mut c = c.borrow_mut();
-                let i = match c.iter().position(|e| e.0 == p && e.1 == kk) {
-                    Some(i) => i,
-                    None => {
-                        if c.len() == POW10_KEPT {
-                            c.remove(0);
-                        }
-                        c.push((p, kk, Float::with_val(p, Float::u_pow_u(10, kk))));
-                        c.len() - 1
+            if (0..=POW10_INT_MAX).contains(&k) {
+                // exact: |x|·10^k = mx·10^k·2^bx, rounded once
+                POW10_INT.with(|c| {
+                    let mut c = c.borrow_mut();
+                    while c.len() <= k as usize {
+                        let next = match c.last() {
+                            Some(l) => rug::Integer::from(l * 10u32),
+                            None => rug::Integer::from(1u32),
+                        };
+                        c.push(next);
                     }
-                };
-                if k >= 0 {
-                    *y *= &c[i].2;
-                } else {
-                    *y /= &c[i].2;
-                }
-            });
-            // to the nearest integer, ties to even (as mpfr_get_z at RNDN),
-            // from y's bits y = m·2^ex (cheaper than mpfr_get_z)
-            let ex = y.to_integer_exp_in_place(mi)?;
-            if ex >= 0 {
-                *mi <<= ex as u32;
+                    mi.assign(&*mx * &c[k as usize]);
+                });
+                round_shift(mi, bx);
             } else {
-                let sh = ex.unsigned_abs();
-                let half = mi.get_bit(sh - 1);
-                let below = mi.find_one(0).is_some_and(|b| b + 1 < sh);
-                *mi >>= sh;
-                if half && (below || mi.get_bit(0)) {
-                    *mi += 1u32;
+                let kk = u32::try_from(k.unsigned_abs()).ok()?;
+                let p = x.prec() + 16;
+                if y.prec() != p {
+                    y.set_prec(p);
                 }
+                y.assign(x.abs_ref());
+                // 10^kk at p bits, kept for later calls (a table's values share
+                // their precision, and each column mostly its exponent)
+                POW10.with(|c| {
+                    let mut c = c.borrow_mut();
+                    let i = match c.iter().position(|e| e.0 == p && e.1 == kk) {
+                        Some(i) => i,
+                        None => {
+                            if c.len() == POW10_KEPT {
+                                c.remove(0);
+                            }
+                            c.push((p, kk, Float::with_val(p, Float::u_pow_u(10, kk))));
+                            c.len() - 1
+                        }
+                    };
+                    if k >= 0 {
+                        *y *= &c[i].2;
+                    } else {
+                        *y /= &c[i].2;
+                    }
+                });
+                let ey = y.to_integer_exp_in_place(mi)?;
+                round_shift(mi, ey);
             }
             buf.clear();
             match mi.to_u128() {
@@ -131,6 +146,22 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
         }
         None
     })
+}
+
+/// mi·2^ex (mi ≥ 0) to the nearest integer, ties to even (as mpfr_get_z at
+/// RNDN), in place: cheaper than mpfr_get_z.
+fn round_shift(mi: &mut rug::Integer, ex: i32) {
+    if ex >= 0 {
+        *mi <<= ex as u32;
+    } else {
+        let sh = ex.unsigned_abs();
+        let half = mi.get_bit(sh - 1);
+        let below = mi.find_one(0).is_some_and(|b| b + 1 < sh);
+        *mi >>= sh;
+        if half && (below || mi.get_bit(0)) {
+            *mi += 1u32;
+        }
+    }
 }
 
 /// The decimal digits of `u` appended to `buf` (u64 arithmetic: the
@@ -284,6 +315,35 @@ mod tests {
                 };
                 let gap = (value(exact) - value(approx.clone())).abs();
                 assert!(gap <= unit, "x = {v}, {d} digits: {approx:?}");
+            }
+        }
+    }
+
+    /// Where the scaling is by an integer power of ten (10^0 … 10^400) the
+    /// digits are exact: the correctly rounded ones, ties to even included,
+    /// from 1e-300 to 1e30.
+    #[test]
+    fn exactly_scaled_digits_are_correctly_rounded() {
+        let p = 200;
+        let mut vals = vec![
+            Float::with_val(p, 0.125),
+            Float::with_val(p, 0.375),
+            Float::with_val(p, 2.5),
+            Float::with_val(p, 1e30),
+        ];
+        let mut x = Float::with_val(p, 3u32).sqrt() * Float::with_val(p, 1e-300);
+        while x < 1e30 {
+            vals.push(x.clone());
+            vals.push(-x.clone());
+            x *= Float::with_val(p, 7.7e4);
+        }
+        for v in &vals {
+            for d in [1u32, 2, 17, 30, 33, 45] {
+                let e = round_sig(v, d).unwrap();
+                if d as i64 - e.2 > POW10_INT_MAX || (d as i64) < e.2 {
+                    continue;
+                }
+                assert_eq!(approx_sig(v, d).unwrap(), e, "{v} at {d} digits");
             }
         }
     }

@@ -420,13 +420,7 @@ pub fn rows_of(m: &Motion, table: Vec<Vec<Verified>>) -> Vec<Row> {
 
 /// The time of a row printed exactly when it is a terminating decimal.
 pub fn exact_times(times: &[Exact]) -> Vec<Option<String>> {
-    times
-        .iter()
-        .map(|t| {
-            (!t.times_pi && crate::integrate::energy::terminating(&t.coef))
-                .then(|| crate::exact::rational_text(&t.coef))
-        })
-        .collect()
+    times.iter().map(Exact::terminating_text).collect()
 }
 
 /// θ and its phase at the times of a θ-only motion.

@@ -51,15 +51,6 @@ pub struct RowContext {
     r1: Float,
 }
 
-/// Whether `q` has a terminating decimal expansion (its reduced denominator
-/// has no prime factors but 2 and 5).
-pub fn terminating(q: &rug::Rational) -> bool {
-    let mut d = q.denom().clone();
-    d.remove_factor_mut(&rug::Integer::from(2));
-    d.remove_factor_mut(&rug::Integer::from(5));
-    d == 1
-}
-
 /// Precision of the scans that locate brackets (refined afterwards).
 pub const SCAN_PREC: u32 = 96;
 /// Scan steps over the motion.

@@ -9,14 +9,34 @@ use crate::error::{Error, Result};
 use rug::ops::NegAssign;
 use rug::{Assign, Float};
 
+/// The same number, zero's sign included (NaN is never the same).
+fn same(a: &Float, b: &Float) -> bool {
+    a == b && a.is_sign_negative() == b.is_sign_negative()
+}
+
 impl System {
+    /// sin θ_j and cos θ_j into the workspace, each computed once per angle
+    /// (the same bits as computing it again).
     fn trig(&mut self, q: &[Float]) {
         for j in 0..self.n - 1 {
-            let (s, c) = (&mut self.ws.s[j], &mut self.ws.c[j]);
-            s.assign(&q[th(j)]);
+            let ws = &mut self.ws;
+            ws.t.assign(&q[th(j)]);
+            if same(&ws.t, &ws.trig_at[j]) {
+                continue;
+            }
+            ws.trig_at[j].assign(&ws.t);
+            ws.s[j].assign(&ws.t);
             // sin_cos_mut computes both into s (sin) and c (cos)
-            s.sin_cos_mut(c);
+            ws.s[j].sin_cos_mut(&mut ws.c[j]);
         }
+    }
+
+    /// sin θ and cos θ of the first line when the workspace holds them for
+    /// exactly `theta` at this precision (after a KKT solve or an energy at
+    /// the same angle), else `None`.
+    pub fn cached_trig(&self, theta: &Float) -> Option<(&Float, &Float)> {
+        let at = self.ws.trig_at.first()?;
+        (theta.prec() == self.prec && same(theta, at)).then(|| (&self.ws.s[0], &self.ws.c[0]))
     }
 
     /// Fills the workspace mass matrix at q (computes the trigonometry).
@@ -547,5 +567,49 @@ mod tests {
         sing[1] = f(2.0);
         let (mut b, mut x) = (vec![f(1.0), f(1.0)], vec![f(0.0), f(0.0)]);
         assert!(gauss_many(&mut sing, &mut [&mut b], &mut [&mut x], 2).is_none());
+    }
+
+    /// The workspace's sine and cosine, kept for the last angle, give the
+    /// same bits as a fresh system: accelerations and energies at states
+    /// visited in turn (the same angle again, another one, a negative zero)
+    /// against a new system for each; and the kept values are offered only
+    /// for exactly the angle they belong to.
+    #[test]
+    fn kept_trigonometry_is_the_fresh_one() {
+        use crate::exact::Exact;
+        use crate::mechanics::system::StackModel;
+        use crate::model::Ideal;
+        let p = 160;
+        let model = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+        let sm = StackModel::from_model(&model);
+        let mut kept = System::new(&sm, p).unwrap();
+        let (q0, v0) = kept.initial_state(&sm).unwrap();
+        let at = |theta: f64| {
+            let mut q = q0.clone();
+            q[th(0)] = Float::with_val(p, theta);
+            q
+        };
+        let angles = [0.1, 0.1, 0.7, -0.0, 0.0, 0.7, 1.3];
+        for &a in &angles {
+            let q = at(a);
+            let mut fresh = System::new(&sm, p).unwrap();
+            let e_kept = kept.energy(&q, &v0);
+            let e_fresh = fresh.energy(&q, &v0);
+            assert_eq!(e_kept, e_fresh);
+            let a_kept = kept.accel(&q, &v0).unwrap();
+            let a_fresh = fresh.accel(&q, &v0).unwrap();
+            for (x, y) in a_kept.qdd.iter().zip(&a_fresh.qdd) {
+                assert!(
+                    x == y && x.is_sign_negative() == y.is_sign_negative(),
+                    "{a}: {x} {y}"
+                );
+            }
+            let (s, c) = kept.cached_trig(&q[th(0)]).expect("kept for this angle");
+            let (s2, c2) = Float::with_val(p, a).sin_cos(Float::new(p));
+            assert!(*s == s2 && s.is_sign_negative() == s2.is_sign_negative() && *c == c2);
+        }
+        // another angle, another precision: not offered
+        assert!(kept.cached_trig(&Float::with_val(p, 0.5)).is_none());
+        assert!(kept.cached_trig(&Float::with_val(p + 1, 1.3)).is_none());
     }
 }

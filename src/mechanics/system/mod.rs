@@ -140,6 +140,10 @@ struct Workspace {
     x: Vec<Float>,
     s: Vec<Float>,
     c: Vec<Float>,
+    /// The angles θ_j (rounded to the precision) that `s` and `c` hold the
+    /// sine and cosine of (NaN: none yet): a sample's KKT solve, energy
+    /// and columns ask for the same angles in turn.
+    trig_at: Vec<Float>,
     t: Float,
     t2: Float,
 }
@@ -205,6 +209,7 @@ impl System {
                 x: Vec::new(),
                 s: vec![Float::new(prec); n - 1],
                 c: vec![Float::new(prec); n - 1],
+                trig_at: vec![Float::with_val(prec, f64::NAN); n - 1],
                 t: Float::new(prec),
                 t2: Float::new(prec),
             },

@@ -22,7 +22,7 @@ pub mod rigorous;
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::integrate::energy::{terminating, Route, SCAN_PREC};
+use crate::integrate::energy::{Route, SCAN_PREC};
 use crate::model::{Contact, Floor, Ideal};
 use crate::numeric::verify::{ladder, ladder_runs, ladder_table, Estimate, Run, Verified};
 use rug::{Assign, Float};
@@ -446,12 +446,7 @@ impl Oracle {
         // decimal (a denominator of 2s and 5s only; checked first, as writing
         // out a long fraction costs more than the whole row), so that a time
         // such as 0.125 at two digits is not a rounding tie to decide
-        let exact_t: Vec<Option<String>> = times
-            .iter()
-            .map(|t| {
-                (!t.times_pi && terminating(&t.coef)).then(|| crate::exact::rational_text(&t.coef))
-            })
-            .collect();
+        let exact_t = crate::oracle::ladder::exact_times(times);
         let rows = ladder_table(self.digits, &TRAJECTORY_COLUMNS, times.len(), |p, run| {
             let deltas =
                 self.route

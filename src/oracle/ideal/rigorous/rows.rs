@@ -180,8 +180,8 @@ impl Oracle {
             })
             .collect();
         // the time is an input: echoed exactly when it is a terminating decimal
-        if !t.times_pi && crate::integrate::energy::terminating(&t.coef) {
-            out[0].shown.text = crate::exact::rational_text(&t.coef);
+        if let Some(text) = t.terminating_text() {
+            out[0].shown.text = text;
         }
         Ok(out)
     }
