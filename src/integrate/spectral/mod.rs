@@ -329,7 +329,7 @@ pub fn run(
                 None => pc.invert_at(&tau),
             };
             let mut smp = if full {
-                pc.row_sample(sys, &s)?
+                pc.row_sample(sys, &s, &tau)?
             } else {
                 pc.theta_sample(&s)
             };

@@ -391,26 +391,31 @@ pub(super) fn attempt(
 impl Piece {
     /// The interpolants in the order [`Piece::state`] reads their sums:
     /// the rate, the velocities, the positions, t, the work.
-    fn fits(&self) -> Vec<&ChebFit> {
+    /// The interpolants in the order [`Piece::state`] reads them; without
+    /// t(s) for a row, whose time is the one asked.
+    fn fits(&self, with_time: bool) -> Vec<&ChebFit> {
         let mut f = vec![&self.rate];
         f.extend(self.vel.iter().map(|(_, f)| f));
         f.extend(self.pos.iter().map(|(_, f)| f));
-        f.push(&self.dt);
+        if with_time {
+            f.push(&self.dt);
+        }
         f.extend(self.work.as_ref());
         f
     }
 
     /// The state (t, q, q̇, W) at s: every interpolant on one basis;
-    /// `read_only`: a state only read (an output row), whose sums are taken
-    /// in fixed point where it applies ([`LazySums`]: within the
-    /// interpolants' tolerance, several times cheaper than MPFR's).
-    fn state(&self, s: &Float, read_only: bool) -> (Float, Vec<Float>, Vec<Float>, Float) {
+    /// `row`: the time of a state only read (an output row at the time
+    /// t(s) = τ asked), whose sums are taken in fixed point where it
+    /// applies ([`LazySums`]: within the interpolants' tolerance, several
+    /// times cheaper than MPFR's) and whose t is τ.
+    fn state(&self, s: &Float, row: Option<&Float>) -> (Float, Vec<Float>, Vec<Float>, Float) {
         let p = s.prec();
         let ith = sy::th(0);
         let zero = Float::new(p);
-        let fits = self.fits();
+        let fits = self.fits(row.is_none());
         let mut sums = vec![Float::new(p); fits.len()];
-        if !(read_only && self.fixed.eval(&fits, &zero, &self.len, s, &mut sums)) {
+        if !(row.is_some() && self.fixed.eval(&fits, &zero, &self.len, s, &mut sums)) {
             let mut sc = self.scratch.borrow_mut();
             let basis = &mut sc.1;
             ChebFit::basis_into(&zero, &self.len, s, self.dt.c.len(), p, basis);
@@ -435,7 +440,10 @@ impl Piece {
             q[*i] = Float::with_val(p, &self.q0[*i] + next());
         }
         fill_dependents(&self.deps, &self.q0, &mut q, &mut v);
-        let t = Float::with_val(p, &self.t0 + next());
+        let t = match row {
+            Some(tau) => Float::with_val(p, tau),
+            None => Float::with_val(p, &self.t0 + next()),
+        };
         let work = match &self.work {
             Some(_) => Float::with_val(p, &self.work0 + next()),
             None => self.work0.clone(),
@@ -463,18 +471,19 @@ impl Piece {
 
     /// The full sample at s (one KKT solve).
     pub(super) fn sample(&self, sys: &mut System, s: &Float) -> Result<Sample> {
-        self.sample_as(sys, s, false)
+        self.sample_as(sys, s, None)
     }
 
-    /// [`Piece::sample`] for an output row, which nothing is computed from:
-    /// the interpolants summed in fixed point (within their tolerance, far
-    /// below the row's precision, several times cheaper).
-    pub(super) fn row_sample(&self, sys: &mut System, s: &Float) -> Result<Sample> {
-        self.sample_as(sys, s, true)
+    /// [`Piece::sample`] for an output row at the time τ = t(s), which
+    /// nothing is computed from: the interpolants summed in fixed point
+    /// (within their tolerance, far below the row's precision, several
+    /// times cheaper), t(s) not summed (the row's time is τ).
+    pub(super) fn row_sample(&self, sys: &mut System, s: &Float, tau: &Float) -> Result<Sample> {
+        self.sample_as(sys, s, Some(tau))
     }
 
-    fn sample_as(&self, sys: &mut System, s: &Float, read_only: bool) -> Result<Sample> {
-        let (t, q, v, work) = self.state(s, read_only);
+    fn sample_as(&self, sys: &mut System, s: &Float, row: Option<&Float>) -> Result<Sample> {
+        let (t, q, v, work) = self.state(s, row);
         let acc = sys.accel(&q, &v)?;
         let power = if sys.has_slips() {
             sys.slip_power(&q, &v, &acc.lambda)
