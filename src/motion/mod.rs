@@ -24,6 +24,8 @@
 //!   branch, the integrators) and what it gives ([`Motion`]: the events,
 //!   rows, separation, impact and end; [`EventRec`]), with the caches
 //!   kept between runs.
+//! * `walk`: the mutable state of one run (the answer being built, the
+//!   next requested time, the energy balance, the end of the model).
 //! * [`flight`]: after separation, cylinder 2 flies ballistically and
 //!   cylinder 1 goes on under its floor law, in closed form, to the first
 //!   impact.
@@ -44,6 +46,7 @@ pub mod mode;
 pub mod point;
 pub mod request;
 pub mod sides;
+mod walk;
 pub mod watch;
 
 pub use mode::{Branch, End, Kind, Mode, Phase, State, Surface};
@@ -52,26 +55,14 @@ pub use request::{Caches, EventRec, Method, Motion, Request, Route, Until};
 pub use sides::Side;
 
 use crate::error::{Error, Result};
-use crate::exact::Exact;
 use crate::integrate::energy::Route as EnergyRoute;
 use crate::integrate::solve::{self, Event, Sample, Start, Watch};
 use crate::mechanics::system::{self as sy};
 use crate::model::{Model, Which};
 use ctx::Ctx;
 use rug::Float;
+use walk::Walk;
 use watch::What;
-
-/// A requested time after the end of the model (`what` ended it at `end`).
-fn after_end(t: &Exact, end: &Float, what: &str) -> Error {
-    Error::invalid(
-        "times",
-        t,
-        format!(
-            "must not be after {what} at t ≈ {} (the model ends there)",
-            crate::numeric::decimal::approx_text(end)
-        ),
-    )
-}
 
 /// Most mode changes followed before giving up (a Zeno cascade).
 pub const MAX_MODES: usize = 64;
@@ -106,169 +97,6 @@ pub fn default_horizon(model: &Model) -> Float {
     match t_roll {
         Some(t) => Float::with_val(prec, &t * 4u32) + ts * 50u32,
         None => ts * 200u32,
-    }
-}
-
-/// The mutable state of [`run`].
-struct Walk<'a> {
-    ctx: &'a Ctx,
-    req: &'a Request,
-    out: Motion,
-    /// Index of the next requested time.
-    next: usize,
-    /// Requested times at this precision.
-    tf: Vec<Float>,
-    e0: Float,
-    /// No work has been dissipated so far.
-    conservative: bool,
-}
-
-impl Walk<'_> {
-    fn note(&mut self, pt: &Point) {
-        let d = Float::with_val(self.ctx.wp, &pt.energy + &pt.work) - &self.e0;
-        let d = d.abs() / &self.ctx.escale;
-        if d > self.out.energy_drift {
-            self.out.energy_drift = d;
-        }
-    }
-
-    fn push_row(&mut self, pt: Point) {
-        self.note(&pt);
-        if self.req.theta_only {
-            self.out.thetas.push((pt.theta.clone(), pt.phase, None));
-        } else {
-            self.out.rows.push(pt);
-        }
-    }
-
-    /// The motion ends at `at` (`what` for messages): every time still
-    /// requested lies after the end.
-    /// The motion ends at the last event (`what` for messages): every time
-    /// still requested must lie there to within the event time's margin
-    /// (then its row is the state at the end), else it is after the end.
-    fn end_here(&mut self, end: End, what: &str) -> Result<()> {
-        let ev = self
-            .out
-            .events
-            .last()
-            .cloned()
-            .ok_or_else(|| Error::not_physical("internal: an end without an event"))?;
-        while self.next < self.req.times.len() {
-            let tt = self.tf[self.next].clone();
-            let at_end = self
-                .req
-                .sides
-                .iter()
-                .any(|(i, _, s)| *i == self.next && *s == Side::At);
-            if !at_end && sides::side_of(&tt, &ev.at.t, &ev.t_err, self.ctx.p).is_some() {
-                return Err(after_end(&self.req.times[self.next], &ev.at.t, what));
-            }
-            let mut pt = ev.at.clone();
-            pt.state.t = tt;
-            pt.err = None;
-            self.push_row(pt);
-            self.next += 1;
-        }
-        self.out.end = Some(end);
-        Ok(())
-    }
-
-    /// The angle to stop at is not reached while the cylinders touch: `what`
-    /// (the last event) comes first. A target within the event angle's
-    /// margin is the state there (Ok(true): stop); otherwise an error.
-    fn target_at_event(&mut self, what: &str) -> Result<bool> {
-        let Until::Angle { theta: th, name } = &self.req.until else {
-            return Ok(false);
-        };
-        if self.out.target.is_some() {
-            // reached already: this event lies just past it
-            return Ok(true);
-        }
-        let ev = self
-            .out
-            .events
-            .last()
-            .cloned()
-            .ok_or_else(|| Error::not_physical("internal: no event"))?;
-        let thf = th.to_float(self.ctx.wp);
-        let decided_at = matches!(self.req.target_side, Some((_, Side::At)));
-        if decided_at || sides::side_of(&thf, &ev.at.theta, &ev.theta_err, self.ctx.p).is_none() {
-            self.out.target = Some(ev.at.clone());
-            return Ok(true);
-        }
-        Err(Error::invalid(
-            name,
-            th,
-            format!(
-                "must be reached while the cylinders touch: {what} at theta = {}",
-                crate::numeric::decimal::to_sig(&ev.at.theta, 12)
-            ),
-        ))
-    }
-
-    /// The flight from a separation state (of `mode` in its system) to the
-    /// first impact; the separation event itself is pushed by the caller.
-    fn fly(&mut self, mode: Mode, s: &Sample, at: &Point) -> Result<()> {
-        let sys = self.ctx.system(mode)?;
-        let fli = flight::Flight::new(self.ctx, &sys, mode, s, at)?;
-        self.out.routes.push(Route::Flight);
-        // the state just after separation: the flight's first; the
-        // impact's time inherits the separation's error (its closed form
-        // starts from the separation state)
-        let mut imp_err = Float::new(self.ctx.wp);
-        if let Some(ev) = self.out.events.last_mut() {
-            if ev.kind == Kind::Separation {
-                ev.after = Some(fli.point(&s.t));
-                imp_err = Float::with_val(self.ctx.wp, &ev.t_err) * 16u32;
-            }
-        }
-        for e in fli.events() {
-            self.out.events.push(e);
-        }
-        while self.next < self.tf.len() {
-            let tt = self.tf[self.next].clone();
-            let pt = if tt > fli.impact.t {
-                // after the impact: only within its time's margin (the
-                // state at the impact), else outside the model
-                let err = imp_err.clone();
-                let at_end = self
-                    .req
-                    .sides
-                    .iter()
-                    .any(|(i, _, s)| *i == self.next && *s == Side::At);
-                if !at_end && sides::side_of(&tt, &fli.impact.t, &err, self.ctx.p).is_some() {
-                    return Err(after_end(
-                        &self.req.times[self.next],
-                        &fli.impact.t,
-                        "the first impact",
-                    ));
-                }
-                let mut pt = fli.point(&fli.impact.t);
-                pt.state.t = tt;
-                pt
-            } else {
-                fli.point(&tt)
-            };
-            self.push_row(pt);
-            self.next += 1;
-        }
-        let imp_pt = fli.point(&fli.impact.t);
-        self.note(&imp_pt);
-        let theta_err = Float::with_val(self.ctx.wp, imp_pt.theta_dot.abs_ref()) * &imp_err;
-        self.out.events.push(EventRec {
-            kind: Kind::Impact,
-            which: None,
-            phase: None,
-            at: imp_pt,
-            t_err: imp_err,
-            theta_err,
-            after: None,
-            also: Vec::new(),
-        });
-        self.out.separation = Some(at.clone());
-        self.out.end = Some(End::Impact(fli.impact.surface));
-        self.out.impact = Some(fli.impact);
-        Ok(())
     }
 }
 
