@@ -3,8 +3,9 @@
 //! under the panels in either layout.
 
 use super::canvas::{text_width, Canvas, Doc};
+use super::marks::{draw_marker, own_text};
 use super::model::{ColorBar, Figure, LegendEntry};
-use super::render::{draw_marker, own_text, LABEL, MARK_R, TICK};
+use super::render::{LABEL, MARK_R, TICK};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::cell::RefCell;

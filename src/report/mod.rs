@@ -53,6 +53,7 @@ pub mod fig_variants;
 pub mod friction;
 pub mod labels;
 pub mod legend;
+pub mod marks;
 pub mod math;
 pub mod model;
 pub mod page;
