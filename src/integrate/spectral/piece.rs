@@ -5,7 +5,7 @@
 //! state and samples anywhere on the piece.
 
 use super::dependents::{fill_dependents, Dependent};
-use super::time::lower_copies;
+use super::time::{lower_copies, lower_count};
 use super::Settings;
 use crate::error::Result;
 use crate::integrate::solve::Sample;
@@ -54,6 +54,9 @@ pub(super) struct Piece {
     fixed: LazySums,
     /// t(s) − t0 and dt/ds in fixed point for the inversions.
     pub(super) fixed_time: LazySums,
+    /// The lower copies in fixed point (one per copy of `lower`), for the
+    /// first Newton steps of the inversions.
+    pub(super) fixed_lower: Vec<LazySums>,
 }
 
 pub(super) enum Attempt {
@@ -378,6 +381,9 @@ pub(super) fn attempt(
         work,
         deps: su.deps.clone(),
         lower: lower_copies(&dt, &rfit, p),
+        fixed_lower: std::iter::repeat_with(LazySums::default)
+            .take(lower_count(p))
+            .collect(),
         used,
         scratch: Default::default(),
         fixed: Default::default(),

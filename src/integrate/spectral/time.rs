@@ -25,13 +25,19 @@ fn cut(f: &ChebFit, q: u32) -> ChebFit {
 /// The lower copies of `dt` and `rate` for precision doubling: 128, 256, …
 /// bits up to 3/4 p (then one or two full steps end it).
 pub(super) fn lower_copies(dt: &ChebFit, rate: &ChebFit, p: u32) -> Vec<(u32, ChebFit, ChebFit)> {
-    let mut out = Vec::new();
-    let mut q = 128u32;
-    while 4 * q <= 3 * p {
-        out.push((q, cut(dt, q), cut(rate, q)));
-        q *= 2;
-    }
-    out
+    lower_precisions(p)
+        .map(|q| (q, cut(dt, q), cut(rate, q)))
+        .collect()
+}
+
+/// How many lower copies a piece at p bits has.
+pub(super) fn lower_count(p: u32) -> usize {
+    lower_precisions(p).count()
+}
+
+/// 128, 256, … bits up to 3/4 p.
+fn lower_precisions(p: u32) -> impl Iterator<Item = u32> {
+    std::iter::successors(Some(128u32), |q| q.checked_mul(2)).take_while(move |q| 4 * q <= 3 * p)
 }
 
 impl Piece {
@@ -115,7 +121,22 @@ impl Piece {
         let seed = s;
         let fits = [&self.dt, &self.rate];
         let mut fd = [Float::new(p), Float::new(p)];
-        let fixed = newton(Float::with_val(p, seed), lo, hi, &stop, |s| {
+        // precision doubling in fixed point too: one step on each lower
+        // copy (a fraction of a full step's sums: fewer terms, fewer limbs)
+        let mut s_fx = Float::with_val(p, seed);
+        for ((q, dt, rate), fx) in self.lower.iter().zip(&self.fixed_lower) {
+            let sq = Float::with_val(*q, &s_fx);
+            let mut out = [Float::new(*q), Float::new(*q)];
+            if !fx.eval(&[dt, rate], &Float::new(*q), &dt.b, &sq, &mut out) {
+                break;
+            }
+            let step = (Float::with_val(*q, &out[0] - &target)) / &out[1];
+            if step.is_finite() {
+                s_fx -= &step;
+                s_fx.assign(s_fx.clone().max(&lo.0).min(&hi.0));
+            }
+        }
+        let fixed = newton(s_fx, lo, hi, &stop, |s| {
             self.fixed_time
                 .eval(&fits, &zero, &self.len, s, &mut fd)
                 .then(|| (Float::with_val(p, &fd[0] - &target), fd[1].clone()))
