@@ -35,9 +35,20 @@ pub(super) fn lower_count(p: u32) -> usize {
     lower_precisions(p).count()
 }
 
-/// 128, 256, … bits up to 3/4 p.
+/// 128, 256, … bits up to 3/4 p, and then, where the last of them is below
+/// p/2 + 16, one at p/2 + 16 rounded up to whole limbs if its fixed-point
+/// sums take fewer limbs than the full precision's: Newton converged there
+/// leaves a full-precision step below 2^−(p/2+4) L, so that one full step
+/// ends the inversion.
 fn lower_precisions(p: u32) -> impl Iterator<Item = u32> {
-    std::iter::successors(Some(128u32), |q| q.checked_mul(2)).take_while(move |q| 4 * q <= 3 * p)
+    let pow: Vec<u32> = std::iter::successors(Some(128u32), |q| q.checked_mul(2))
+        .take_while(|q| 4 * q <= 3 * p)
+        .collect();
+    let half = (p / 2 + 16).div_ceil(64) * 64;
+    let last = pow.last().copied().unwrap_or(0);
+    let limbs = |q: u32| (q + 8).div_ceil(64);
+    let extra = (last < p / 2 + 16 && half > last && limbs(half) < limbs(p)).then_some(half);
+    pow.into_iter().chain(extra)
 }
 
 impl Piece {
@@ -121,19 +132,32 @@ impl Piece {
         let seed = s;
         let fits = [&self.dt, &self.rate];
         let mut fd = [Float::new(p), Float::new(p)];
-        // precision doubling in fixed point too: one step on each lower
-        // copy (a fraction of a full step's sums: fewer terms, fewer limbs)
+        // precision doubling in fixed point too: one Newton step on each
+        // lower copy (a fraction of a full step's sums: fewer terms, fewer
+        // limbs), and more on a copy that can take s to p/2 + 8 bits (about
+        // 50 from the f64 steps, twice as many after each step, at most
+        // q − 10 on a copy of q bits), after which one full step ends it
         let mut s_fx = Float::with_val(p, seed);
-        for ((q, dt, rate), fx) in self.lower.iter().zip(&self.fixed_lower) {
-            let sq = Float::with_val(*q, &s_fx);
-            let mut out = [Float::new(*q), Float::new(*q)];
-            if !fx.eval(&[dt, rate], &Float::new(*q), &dt.b, &sq, &mut out) {
-                break;
-            }
-            let step = (Float::with_val(*q, &out[0] - &target)) / &out[1];
-            if step.is_finite() {
+        let mut good = 50u32;
+        let enough = p / 2 + 8;
+        'copies: for ((q, dt, rate), fx) in self.lower.iter().zip(&self.fixed_lower) {
+            let q = *q;
+            let zero_q = Float::new(q);
+            let mut out = [Float::new(q), Float::new(q)];
+            let mut steps = 0;
+            while good < q - 10 && (steps == 0 || (q - 10 >= enough && good < enough)) {
+                let sq = Float::with_val(q, &s_fx);
+                if !fx.eval(&[dt, rate], &zero_q, &dt.b, &sq, &mut out) {
+                    break 'copies;
+                }
+                let step = Float::with_val(q, &out[0] - &target) / &out[1];
+                if !step.is_finite() {
+                    break 'copies;
+                }
                 s_fx -= &step;
                 s_fx.assign(s_fx.clone().max(&lo.0).min(&hi.0));
+                good = (2 * good).min(q - 10);
+                steps += 1;
             }
         }
         let fixed = newton(s_fx, lo, hi, &stop, |s| {
@@ -192,4 +216,32 @@ fn newton(
         }
     }
     Some(s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The lower precisions: powers of two up to 3/4 p, then one at
+    /// p/2 + 16 rounded up to whole limbs where the powers stop short of
+    /// it and its sums take fewer limbs than the full precision's.
+    #[test]
+    fn lower_precisions_reach_half_the_precision_where_it_pays() {
+        let of = |p: u32| lower_precisions(p).collect::<Vec<_>>();
+        // 30 digits: 171 and 226 bits (a 192-bit copy would sum in as many
+        // limbs as the full precision)
+        assert_eq!(of(171), [128]);
+        assert_eq!(of(226), [128]);
+        // 100 digits: 439 and 515 bits
+        assert_eq!(of(439), [128, 256]);
+        assert_eq!(of(515), [128, 256, 320]);
+        assert_eq!(of(1000), [128, 256, 512, 576]);
+        assert!(of(150).is_empty());
+        for p in (64..4000).step_by(7) {
+            let qs = of(p);
+            assert!(qs.windows(2).all(|w| w[0] < w[1]), "{p}: {qs:?}");
+            assert!(qs.iter().all(|&q| q + 32 < p), "{p}: {qs:?}");
+            assert_eq!(lower_count(p), qs.len());
+        }
+    }
 }
