@@ -310,7 +310,7 @@ pub fn run(
             None
         };
         // s(t) summed in fixed point where it applies (an output only read)
-        let inverse_fx = LazySums::default();
+        let inverse_fx = LazySums::at(piece::fixed_prec(tol, p));
         let mut s_at = [Float::new(p)];
         for (i, tau) in times[next..next + count].iter().enumerate() {
             if i % 64 == 0 {

@@ -9,17 +9,18 @@
 //! the basis T_k(x) comes from the three-term recurrence in fixed point and
 //! each sum from one exact accumulation, rounded once.
 //!
-//! Accuracy: with F = 64(L − 1) fraction bits chosen ≥ the working
-//! precision wp + 8, the coefficients are rounded to 2^−F; the recurrence
-//! (stable for |x| ≤ 1: an error made at step j reaches T_k multiplied by
-//! U_{k−j−1}(x), |U_m| ≤ m + 1) leaves T_k within k²·2^−F; the accumulation
-//! truncates once. Every sum is within (n² + n)·2^−F·max(1, Σ|c_k|) of the
-//! exact sum of the coefficients: at most 2^−(wp−9)·max(1, Σ|c_k|) for the
-//! n ≤ 256 allowed. The spectral route's interpolants are good to 2^−(p−8)
-//! at an answer precision p at least 25 bits below its working precision
-//! wp ([`crate::integrate::solve::Opts::for_prec`]): the sums add at most 2^−24
-//! of that, to values only read (the rows of a trajectory), never carried
-//! on into the motion.
+//! Accuracy: with F = 64(L − 1) fraction bits chosen ≥ the precision
+//! asked for, prec, plus 8, the point x and the coefficients are rounded to
+//! 2^−F; the recurrence (stable for |x| ≤ 1: an error made at step j
+//! reaches T_k multiplied by U_{k−j−1}(x), |U_m| ≤ m + 1) leaves T_k within
+//! k²·2^−F; the accumulation truncates once. Every sum is within
+//! (n² + n)·2^−F·max(1, Σ|c_k|) of the exact sum of the coefficients: at
+//! most 2^−(prec−9)·max(1, Σ|c_k|) for the n ≤ 256 allowed. The spectral
+//! route asks for 16 bits beyond its interpolants' tolerance 2^−b
+//! ([`crate::integrate::solve::Opts::for_prec`]; `fixed_prec` in
+//! `integrate/spectral/piece.rs`): the sums add at most 2^−7 of that
+//! tolerance, to values only read (the rows of a trajectory and their
+//! times), never carried on into the motion.
 
 use super::ChebFit;
 use crate::numeric::fixed::{self, Acc, Conv, Fx};
@@ -104,7 +105,8 @@ impl FixedSums {
     /// fit, each rounded to its own precision); `false` (out unspecified)
     /// where a value left the fixed-point range.
     pub fn eval(&mut self, a: &Float, b: &Float, v: &Float, out: &mut [Float]) -> bool {
-        let p = self.prec;
+        // x to the fixed point's own fraction bits (at least the precision)
+        let p = self.prec.max(64 * (self.limbs as u32 - 1));
         // x = (2v − a − b)/(b − a), as ChebFit::basis_into
         let mut x = Float::with_val(p, v * 2u32);
         x -= a;
@@ -120,12 +122,26 @@ impl FixedSums {
 /// [`FixedSums`] built at the first sum asked, for fits that do not change
 /// (a piece's interpolants): every call sums the same fits.
 #[derive(Debug, Default)]
-pub struct LazySums(std::cell::RefCell<Option<Option<FixedSums>>>);
+pub struct LazySums {
+    sums: std::cell::RefCell<Option<Option<FixedSums>>>,
+    /// The precision the sums are built for (None: the point's).
+    prec: Option<u32>,
+}
 
 impl LazySums {
-    /// [`FixedSums::eval`] of `fits` at `v` of [a, b] (built at `v`'s
-    /// precision at the first call); `false` (out unspecified) where fixed
-    /// point does not apply, there or for these fits at all.
+    /// Sums built for precision `prec` ([`FixedSums::new`]): within
+    /// 2^−(prec−9)·max(1, Σ|c_k|), whatever the point's precision.
+    pub fn at(prec: u32) -> Self {
+        LazySums {
+            sums: Default::default(),
+            prec: Some(prec),
+        }
+    }
+
+    /// [`FixedSums::eval`] of `fits` at `v` of [a, b] (built at the first
+    /// call, for this one's precision or else `v`'s); `false` (out
+    /// unspecified) where fixed point does not apply, there or for these
+    /// fits at all.
     pub fn eval(
         &self,
         fits: &[&ChebFit],
@@ -134,8 +150,8 @@ impl LazySums {
         v: &Float,
         out: &mut [Float],
     ) -> bool {
-        let mut fx = self.0.borrow_mut();
-        fx.get_or_insert_with(|| FixedSums::new(fits, v.prec()))
+        let mut fx = self.sums.borrow_mut();
+        fx.get_or_insert_with(|| FixedSums::new(fits, self.prec.unwrap_or(v.prec())))
             .as_mut()
             .is_some_and(|fx| fx.eval(a, b, v, out))
     }
