@@ -1441,6 +1441,14 @@ fn trajectory_digits_agree_with_a_higher_precision_in_every_phase() {
     assert!(tags.len() >= 2, "{tags:?}");
 }
 
+/// 100 times 0.007 apart from t = 4.2, inside the slipping phase of the
+/// main cylinders with μ = 0.3 at both contacts (one spectral piece).
+fn slipping_grid() -> Vec<Exact> {
+    (0..100)
+        .map(|i| Exact::parse("t", &format!("{}", 4.2 + 0.007 * i as f64), false).unwrap())
+        .collect()
+}
+
 /// A dense grid inside the slipping phase: 100 times in one piece, so the
 /// piece's s(t) is interpolated (its nodes inverted in fixed point) and
 /// summed in fixed point at each row, at both working precisions of 20 and
@@ -1448,9 +1456,7 @@ fn trajectory_digits_agree_with_a_higher_precision_in_every_phase() {
 #[test]
 fn dense_rows_in_a_slipping_phase_agree_with_a_higher_precision() {
     let m = model(law("0.3"), law("0.3"), "1/2");
-    let times: Vec<Exact> = (0..100)
-        .map(|i| Exact::parse("t", &format!("{}", 4.2 + 0.007 * i as f64), false).unwrap())
-        .collect();
+    let times = slipping_grid();
     let (compared, bounds, tags) = rows_agree_with_60_digits(&m, &times);
     assert!(compared > 1000 && bounds > 1500, "{compared} {bounds}");
     assert_eq!(tags.len(), 1, "{tags:?}");
@@ -1463,9 +1469,7 @@ fn dense_rows_in_a_slipping_phase_agree_with_a_higher_precision() {
 #[test]
 fn dense_rows_in_a_slipping_phase_agree_at_100_digits() {
     let m = model(law("0.3"), law("0.3"), "1/2");
-    let times: Vec<Exact> = (0..100)
-        .map(|i| Exact::parse("t", &format!("{}", 4.2 + 0.007 * i as f64), false).unwrap())
-        .collect();
+    let times = slipping_grid();
     let (compared, bounds, tags) = rows_agree_with_more_digits(&m, &times, 100, 140);
     assert!(compared > 1000 && bounds > 1500, "{compared} {bounds}");
     assert_eq!(tags.len(), 1, "{tags:?}");

@@ -60,16 +60,20 @@ impl Walk<'_> {
         }
     }
 
+    /// The last event so far (an end or a target at an event has one).
+    fn last_event(&self) -> Result<EventRec> {
+        self.out
+            .events
+            .last()
+            .cloned()
+            .ok_or_else(|| Error::not_physical("internal: no event before the end"))
+    }
+
     /// The motion ends at the last event (`what` for messages): every time
     /// still requested must lie there to within the event time's margin
     /// (then its row is the state at the end), else it is after the end.
     pub(super) fn end_here(&mut self, end: End, what: &str) -> Result<()> {
-        let ev = self
-            .out
-            .events
-            .last()
-            .cloned()
-            .ok_or_else(|| Error::not_physical("internal: an end without an event"))?;
+        let ev = self.last_event()?;
         while self.next < self.req.times.len() {
             let tt = self.tf[self.next].clone();
             let at_end = self
@@ -101,12 +105,7 @@ impl Walk<'_> {
             // reached already: this event lies just past it
             return Ok(true);
         }
-        let ev = self
-            .out
-            .events
-            .last()
-            .cloned()
-            .ok_or_else(|| Error::not_physical("internal: no event"))?;
+        let ev = self.last_event()?;
         let thf = th.to_float(self.ctx.wp);
         let decided_at = matches!(self.req.target_side, Some((_, Side::At)));
         if decided_at || sides::side_of(&thf, &ev.at.theta, &ev.theta_err, self.ctx.p).is_none() {

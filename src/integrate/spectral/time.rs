@@ -24,30 +24,36 @@ fn cut(f: &ChebFit, q: u32) -> ChebFit {
 
 /// The lower copies of `dt` and `rate` for precision doubling: 128, 256, …
 /// bits up to 3/4 p (then one or two full steps end it).
-pub(super) fn lower_copies(dt: &ChebFit, rate: &ChebFit, p: u32) -> Vec<(u32, ChebFit, ChebFit)> {
-    lower_precisions(p)
+pub(super) fn lower_copies(
+    dt: &ChebFit,
+    rate: &ChebFit,
+    p: u32,
+    fx: u32,
+) -> Vec<(u32, ChebFit, ChebFit)> {
+    lower_precisions(p, fx)
         .map(|q| (q, cut(dt, q), cut(rate, q)))
         .collect()
 }
 
-/// How many lower copies a piece at p bits has.
-pub(super) fn lower_count(p: u32) -> usize {
-    lower_precisions(p).count()
+/// How many lower copies a piece at p bits (full sums in fixed point for
+/// `fx` bits) has.
+pub(super) fn lower_count(p: u32, fx: u32) -> usize {
+    lower_precisions(p, fx).count()
 }
 
 /// 128, 256, … bits up to 3/4 p, and then, where the last of them is below
 /// p/2 + 16, one at p/2 + 16 rounded up to whole limbs if its fixed-point
-/// sums take fewer limbs than the full precision's: Newton converged there
-/// leaves a full-precision step below 2^−(p/2+4) L, so that one full step
-/// ends the inversion.
-fn lower_precisions(p: u32) -> impl Iterator<Item = u32> {
+/// sums take fewer limbs than the full steps' (built for `fx` bits):
+/// Newton converged there leaves a full-precision step below
+/// 2^−(p/2+4) L, so that one full step ends the inversion.
+fn lower_precisions(p: u32, fx: u32) -> impl Iterator<Item = u32> {
     let pow: Vec<u32> = std::iter::successors(Some(128u32), |q| q.checked_mul(2))
         .take_while(|q| 4 * q <= 3 * p)
         .collect();
     let half = (p / 2 + 16).div_ceil(64) * 64;
     let last = pow.last().copied().unwrap_or(0);
     let limbs = |q: u32| (q + 8).div_ceil(64);
-    let extra = (last < p / 2 + 16 && half > last && limbs(half) < limbs(p)).then_some(half);
+    let extra = (last < p / 2 + 16 && half > last && limbs(half) < limbs(fx)).then_some(half);
     pow.into_iter().chain(extra)
 }
 
@@ -118,17 +124,19 @@ impl Piece {
                 break;
             }
         }
-        // full precision: t(s) and dt/ds summed in fixed point where it
-        // applies (the steps' sums several times cheaper than MPFR's, as
-        // accurate: FixedSums), else precision doubling in MPFR. The fixed
-        // sums' error is absolute, 2^−(wp−9) at most for a piece whose time
-        // span is below 1: s is then found to that absolute error in t, which
-        // for a piece shorter than about 2^−25 exceeds the interpolants' own
-        // tolerance. Only output rows read s, and the ladder's two
-        // precisions compare those rows, so such a loss shows in their
-        // verified digits, never silently.
+        // then t(s) and dt/ds summed in fixed point where it applies (several
+        // times cheaper than MPFR's: FixedSums, built for 16 bits beyond the
+        // interpolants' tolerance, `fixed_prec`), else precision doubling in
+        // MPFR. The fixed sums' error is absolute, 2^−(b+7)·max(1, Σ|c_k|)
+        // for a tolerance 2^−b: s is found to that error in t over the rate,
+        // and Newton stops at that resolution (`fixed_floor`) if it is above
+        // the usual 2^−(p/2+4) L (a piece far shorter than its time unit).
+        // Only output rows and the state at the last time asked read s, and
+        // the ladder's two precisions compare them, so a loss shows in
+        // their verified digits, never silently.
         let zero = Float::new(p);
         let stop = Float::with_val(p, &self.len) >> (p as i32 / 2 + 4);
+        let stop_fx = Float::with_val(p, &self.fixed_floor).max(&stop);
         let seed = s;
         let fits = [&self.dt, &self.rate];
         let mut fd = [Float::new(p), Float::new(p)];
@@ -160,7 +168,7 @@ impl Piece {
                 steps += 1;
             }
         }
-        let fixed = newton(s_fx, lo, hi, &stop, |s| {
+        let fixed = newton(s_fx, lo, hi, &stop_fx, |s| {
             self.fixed_time
                 .eval(&fits, &zero, &self.len, s, &mut fd)
                 .then(|| (Float::with_val(p, &fd[0] - &target), fd[1].clone()))
@@ -227,21 +235,24 @@ mod tests {
     /// it and its sums take fewer limbs than the full precision's.
     #[test]
     fn lower_precisions_reach_half_the_precision_where_it_pays() {
-        let of = |p: u32| lower_precisions(p).collect::<Vec<_>>();
-        // 30 digits: 171 and 226 bits (a 192-bit copy would sum in as many
-        // limbs as the full precision)
-        assert_eq!(of(171), [128]);
-        assert_eq!(of(226), [128]);
-        // 100 digits: 439 and 515 bits
-        assert_eq!(of(439), [128, 256]);
-        assert_eq!(of(515), [128, 256, 320]);
-        assert_eq!(of(1000), [128, 256, 512, 576]);
-        assert!(of(150).is_empty());
+        // the full steps' sums built for 16 bits beyond a tolerance 8 bits
+        // below the answer precision, the working precision some 55 above it
+        let of = |p: u32, fx: u32| lower_precisions(p, fx).collect::<Vec<_>>();
+        // 30 digits: working precisions 171 and 226 bits, full sums for 132
+        // and 179 (a 192-bit copy would sum in as many limbs)
+        assert_eq!(of(171, 132), [128]);
+        assert_eq!(of(226, 179), [128]);
+        // 100 digits: 439 and 515 bits, full sums for 365 and 441
+        assert_eq!(of(439, 365), [128, 256]);
+        assert_eq!(of(515, 441), [128, 256, 320]);
+        assert_eq!(of(515, 300), [128, 256]);
+        assert_eq!(of(1000, 900), [128, 256, 512, 576]);
+        assert!(of(150, 120).is_empty());
         for p in (64..4000).step_by(7) {
-            let qs = of(p);
+            let qs = of(p, p);
             assert!(qs.windows(2).all(|w| w[0] < w[1]), "{p}: {qs:?}");
             assert!(qs.iter().all(|&q| q + 32 < p), "{p}: {qs:?}");
-            assert_eq!(lower_count(p), qs.len());
+            assert_eq!(lower_count(p, p), qs.len());
         }
     }
 }

@@ -18,9 +18,10 @@
 //! most 2^−(prec−9)·max(1, Σ|c_k|) for the n ≤ 256 allowed. The spectral
 //! route asks for 16 bits beyond its interpolants' tolerance 2^−b
 //! ([`crate::integrate::solve::Opts::for_prec`]; `fixed_prec` in
-//! `integrate/spectral/piece.rs`): the sums add at most 2^−7 of that
-//! tolerance, to values only read (the rows of a trajectory and their
-//! times), never carried on into the motion.
+//! `integrate/spectral/piece.rs`): for an interpolant of unit scale the
+//! sums add at most 2^−7 of its tolerance, to values only read (the rows
+//! of a trajectory, their times, the state at the last time asked), never
+//! carried on into the motion.
 
 use super::ChebFit;
 use crate::numeric::fixed::{self, Acc, Conv, Fx};
