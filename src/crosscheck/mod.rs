@@ -7,7 +7,7 @@
 //!   constraint rows of every contact model, and the KKT solve for q̈ and the
 //!   multipliers λ, which are the constraint forces (for n = 2: F1, F21, N12,
 //!   N1 of the paper's eqs. 110–114).
-//! * [`gbs`]: Gragg–Bulirsch–Stoer extrapolation on `rug::Float` with error
+//! * [`crate::integrate::gbs`]: Gragg–Bulirsch–Stoer extrapolation on `rug::Float` with error
 //!   estimation, step-size and order control (ODEX-style), so the local
 //!   error can be driven to hundreds of digits.
 //! * [`solve`]: the driver: integrates y = (q, q̇), samples at given times,
@@ -15,7 +15,7 @@
 //!   re-integration from the step's start and Newton's method safeguarded
 //!   by the bracket, measures constraint drift (and projects back onto the
 //!   manifold if it ever exceeds 2^−(prec+8); it has not in any case run).
-//! * [`spec`]: the `--stack` SPEC syntax (`stack_report("help", ..)` prints it).
+//! * [`crate::stack::spec`]: the `--stack` SPEC syntax (`stack_report("help", ..)` prints it).
 //! * [`golden`]: every number of a golden data file recomputed by this route.
 //!
 //! The route shares with the first only the model and the precision ladder
@@ -33,7 +33,7 @@
 //! the watched function starts at exactly 0 (a start from rest).
 //!
 //! Entry points: [`verify_report`] (both routes on a set of cases, a table
-//! of agreeing digits), [`stack_report`] (footnote 3: n ≥ 2 cylinders),
+//! of agreeing digits), [`crate::stack::stack_report`] (footnote 3: n ≥ 2 cylinders),
 //! [`two_cylinder`] (route 2 for a [`Ideal`] at one precision).
 
 pub mod golden;

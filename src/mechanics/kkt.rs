@@ -4,8 +4,10 @@
 //! multipliers. At a state on the constraint manifold (y1 = r1, r = r1 + r2,
 //! ẏ1 = ṙ = 0) the accelerations and multipliers solve the KKT system
 //!
+//! ```text
 //! [ M  −Jᵀ ] [ q̈ ]   [ h ]
 //! [ J   0  ] [ λ ] = [ 0 ]
+//! ```
 //!
 //! with M(q) the 6×6 mass matrix, h the gravity and velocity terms and J the
 //! constraint rows. The multipliers are the constraint forces: λ(f1) = F1,

@@ -49,7 +49,7 @@ pub const THETA: usize = 3;
 /// The exact reduced dynamics of a model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Reduced {
-    /// K(c) = q[0] + q[1] c + q[2] c²  (M_eff / (m2 r²)).
+    /// K(c) = `q[0] + q[1] c + q[2] c²`  (M_eff / (m2 r²)).
     pub q: [Rational; 3],
     /// For x1, φ1, ψ2: v_i = gamma_i + (alpha_i + beta_i cosθ) θ̇.
     pub alpha: [Rational; 3],

@@ -119,7 +119,7 @@ pub struct Request {
     /// Digits requested (for messages).
     pub digits: u32,
     /// Decided sides of requested times at events: (row, event index,
-    /// side), applied to every run ([`sides::apply_sides`]).
+    /// side), applied to every run ([`super::sides::apply_sides`]).
     pub sides: Vec<(usize, usize, Side)>,
     /// The decided side of the target angle at an event.
     pub target_side: Option<(usize, Side)>,
@@ -190,7 +190,7 @@ pub struct Motion {
     /// closed branch). Empty where the motion is unique.
     pub windows: Vec<(Float, Option<Float>)>,
     /// Per row: the event whose time it cannot be told apart from at this
-    /// precision ([`sides::mark_near`]).
+    /// precision ([`super::sides::mark_near`]).
     pub near: Vec<Option<usize>>,
     /// The event whose angle the target cannot be told apart from.
     pub target_near: Option<usize>,

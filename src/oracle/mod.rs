@@ -10,7 +10,7 @@
 //! * [`trajectory`]: every column at given times, through every phase.
 //!
 //! Each is the hybrid motion of [`crate::motion`] computed at the two
-//! working precisions of the precision ladder ([`ladder`]). Where the
+//! working precisions of the precision ladder ([`ladder`](mod@ladder)). Where the
 //! question stays inside a conservative phase of an ideal model (`time`
 //! and `forces` before the cylinders part, on the `stay` branch) the
 //! energy route of [`ideal::Oracle`] answers directly: the same numbers,

@@ -189,7 +189,7 @@ pub fn cell_edges(g: &[f64]) -> Vec<f64> {
     e
 }
 
-/// Clips the polyline `pts` to [x0,x1]×[y0,y1]: the visible pieces
+/// Clips the polyline `pts` to `[x0,x1]×[y0,y1]`: the visible pieces
 /// (Liang–Barsky per segment; a non-finite point breaks the line).
 pub fn clip_polyline(
     pts: &[(f64, f64)],

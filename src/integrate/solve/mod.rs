@@ -1,5 +1,5 @@
 //! Time integration of the index-reduced constrained equations with event
-//! location: the driver around [`super::gbs`] and [`super::system`].
+//! location: the driver around [`super::gbs`] and [`crate::mechanics::system`].
 //!
 //! The state is y = (q, q̇) in all 3n coordinates; f(y) = (q̇, q̈) with q̈
 //! from the KKT solve at y. The constraints are linear in q and q̇ on the

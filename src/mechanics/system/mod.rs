@@ -76,7 +76,7 @@ pub fn rr(j: usize) -> usize {
     5 + 3 * j
 }
 
-/// The cylinder (0-based) whose spin coordinate is q[i], if any.
+/// The cylinder (0-based) whose spin coordinate is `q[i]`, if any.
 pub fn spin_cylinder(i: usize) -> Option<usize> {
     if i == PHI1 {
         Some(0)

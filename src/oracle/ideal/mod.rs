@@ -272,7 +272,7 @@ impl Oracle {
     /// findings of [`Oracle::separation`]).
     ///
     /// Method: N12·K²/m2 is a polynomial of degree ≤ 5 in c = cos θ
-    /// ([`crate::mechanics::dynamics::Dyn::n12_polynomial`]); its sign changes
+    /// ([`crate::mechanics::polys::N12Poly`]); its sign changes
     /// on [−1, cos θ0] are isolated at 64 bits by the monotone pieces between
     /// the roots of its derivatives (so, unlike a scan, no pair of close roots
     /// is missed), the largest one (the first in θ) is refined by Newton steps

@@ -12,7 +12,7 @@ use rug::Float;
 impl Engine {
     /// The half-angle integrand's Chebyshev interpolants over v ∈ [0, √Δσ]
     /// (σ = v²: the start's 1/√σ is gone, the integrand is analytic on the
-    /// interval), on pieces graded towards the start ([`Engine::breakpoints`])
+    /// interval), on pieces graded towards the start (`breakpoints`)
     /// with N per piece from the Bernstein ρ of the nearest singularity
     /// ([`crate::mechanics::dynamics::HalfAngleTime::singular_sin2`], mapped
     /// by v = ±√σ) so that the coefficients fall ~20 bits below the working
@@ -145,7 +145,7 @@ impl Engine {
     }
 
     /// The value `integral` of `fits` as a time, with its error (the
-    /// interpolants' errors, [`Engine::cheb_answer_raw`], and the roundings
+    /// interpolants' errors, `Engine::cheb_answer_raw`, and the roundings
     /// of the factor and the sum).
     pub fn cheb_answer(&self, fits: &[ChebFit], integral: Float) -> (Float, Float) {
         let p = self.prec();

@@ -43,7 +43,7 @@ pub struct Engine {
     pub use_cheb: bool,
     /// Chebyshev point tables built so far, by number of points.
     roots: HashMap<usize, Roots>,
-    /// The ρ of each graded piece (`breakpoints` in [`cheb_time`]): 3 by default; another
+    /// The ρ of each graded piece (`breakpoints` in `cheb_time`): 3 by default; another
     /// value grades the interval differently (an independent check).
     pub cheb_target: f64,
 }
