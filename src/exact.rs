@@ -194,11 +194,18 @@ const PLAIN_MAX: usize = 24;
 /// (a, b, m) with d = 2^a·5^b·m and m prime to 10 (d > 0): the factors
 /// counted by a shift and by divisions by 5^13 and 5 (a decimal time's
 /// denominator 10^k costs a few machine divisions, where GMP's general
-/// `remove` costs thousands of instructions).
+/// `remove` costs thousands of instructions); GMP's `remove` beyond 4096
+/// bits, where one division per 5^13 would grow quadratically.
 pub fn split_two_five(d: &Integer) -> (u32, u32, Integer) {
     const F13: u32 = 1_220_703_125; // 5^13
     let twos = d.find_one(0).unwrap_or(0);
     let mut m = Integer::from(d >> twos);
+    if m.significant_bits() > 4096 {
+        // a denominator of thousands of digits (a long decimal input):
+        // GMP's remove, by squared powers, not a division per 5^13
+        let fives = m.remove_factor_mut(&Integer::from(5));
+        return (twos, fives, m);
+    }
     let mut fives = 0;
     while m != 0 && m.is_divisible_u(F13) {
         m.div_exact_u_mut(F13);
@@ -431,6 +438,8 @@ mod tests {
             pow(2, 70) * pow(5, 30) * 7u32,
             pow(2, 64) * pow(5, 39) * pow(3, 40),
             pow(10, 1000) * 11u32,
+            pow(10, 5000),
+            pow(5, 4000) * pow(3, 10),
         ];
         for d in cases {
             let mut r = d.clone();

@@ -5,7 +5,7 @@
 //! state and samples anywhere on the piece.
 
 use super::dependents::{fill_dependents, Dependent};
-use super::time::{lower_copies, lower_count};
+use super::time::{lower_copies, Lower};
 use super::Settings;
 use crate::error::Result;
 use crate::integrate::solve::Sample;
@@ -37,10 +37,10 @@ pub(super) struct Piece {
     /// W(s) − W(0) (None without slipping contacts).
     work: Option<ChebFit>,
     deps: Vec<Dependent>,
-    /// t(s) − t0 and dt/ds at 128, 256, … bits up to 3p/4, their
-    /// coefficients cut where they fall below the precision (the first
-    /// Newton steps of an inversion).
-    pub(super) lower: Vec<(u32, ChebFit, ChebFit)>,
+    /// t(s) − t0 and dt/ds at 128, 256, … bits up to 3p/4 (and one near
+    /// p/2 where it pays), their coefficients cut where they fall below the
+    /// precision (the first Newton steps of an inversion).
+    pub(super) lower: Vec<Lower>,
     /// t(s) − t0 and dt/ds in f64 (Newton seeds).
     pub(super) dt64: Vec<f64>,
     pub(super) rate64: Vec<f64>,
@@ -54,9 +54,6 @@ pub(super) struct Piece {
     fixed: LazySums,
     /// t(s) − t0 and dt/ds in fixed point for the inversions.
     pub(super) fixed_time: LazySums,
-    /// The lower copies in fixed point (one per copy of `lower`), for the
-    /// first Newton steps of the inversions.
-    pub(super) fixed_lower: Vec<LazySums>,
     /// The smallest Newton step in s the fixed-point t(s) resolves
     /// ([`resolution`]): the inversions in fixed point stop there.
     pub(super) fixed_floor: Float,
@@ -418,9 +415,6 @@ pub(super) fn attempt(
         work,
         deps: su.deps.clone(),
         lower: lower_copies(&dt, &rfit, p, fx),
-        fixed_lower: std::iter::repeat_with(LazySums::default)
-            .take(lower_count(p, fx))
-            .collect(),
         used,
         scratch: Default::default(),
         fixed: LazySums::at(fx),
@@ -434,9 +428,8 @@ pub(super) fn attempt(
 
 impl Piece {
     /// The interpolants in the order [`Piece::state`] reads their sums:
-    /// the rate, the velocities, the positions, t, the work.
-    /// The interpolants in the order [`Piece::state`] reads them; without
-    /// t(s) for a row, whose time is the one asked.
+    /// the rate, the velocities, the positions, t (not for a row, whose
+    /// time is the one asked), the work.
     fn fits(&self, with_time: bool) -> Vec<&ChebFit> {
         let mut f = vec![&self.rate];
         f.extend(self.vel.iter().map(|(_, f)| f));
