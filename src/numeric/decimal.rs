@@ -45,9 +45,11 @@ thread_local! {
 const POW10_KEPT: usize = 32;
 
 /// `x` to `digits` significant decimal digits *within one unit of the last
-/// digit* (not always correctly rounded), as [`round_sig`]'s (sign, digits,
-/// exponent): |x| scaled by a power of ten and rounded to an integer, at a
-/// precision where that product is exact to far below a unit. Cheaper than
+/// digit*, as [`round_sig`]'s (sign, digits, exponent): |x| scaled by a
+/// power of ten and rounded to an integer once — exactly where the power is
+/// 10^0 … 10^400 (its significand times that integer: the correctly rounded
+/// digits), else in floating point at a precision where the product is
+/// exact to far below a unit (not always correctly rounded). Cheaper than
 /// MPFR's correctly rounded conversion; for callers that allow for the unit
 /// (the precision ladder's fast judgement). Needs digits·log2(10) < prec(x).
 pub fn approx_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
