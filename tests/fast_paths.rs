@@ -481,3 +481,39 @@ fn a_tiny_time_from_a_moving_start_is_the_taylor_polynomial() {
         );
     }
 }
+
+/// A table whose early rows need δ to full relative accuracy (x1, φ1, φ2 are
+/// of order δ ≈ θ̈0 t²/2, 2e-12 at t = 1e-5) and whose later rows do not: the
+/// Taylor route (below 600 bits) takes the early ones from a short run with
+/// the extra fixed-point bits and the rest from a run without them. Every
+/// column of every row matches the same table at 200 digits (the Chebyshev
+/// route) rounded to 30, and the small columns carry all 30 digits.
+#[test]
+fn early_rows_keep_their_relative_digits_beside_late_ones() {
+    let m = t3_model();
+    let times: Vec<Exact> = ["0.00001", "0.001", "0.05", "0.7", "2", "4.5"]
+        .iter()
+        .map(|t| q(t))
+        .collect();
+    let lo = Oracle::new(&m, 30).unwrap().trajectory(&times).unwrap();
+    let first = cylroll::numeric::verify::precisions(30, 0);
+    let hi = Oracle::new(&m, 200).unwrap().trajectory(&times).unwrap();
+    for (r, (a, b)) in lo.iter().zip(&hi).enumerate() {
+        assert_eq!(a[0].text, b[0].text, "t is printed as given");
+        for (va, vb) in a.iter().zip(b).skip(1) {
+            if vb.text == "0" {
+                assert_eq!(va.text, "0", "{} row {r}", va.name);
+                continue;
+            }
+            assert_eq!(va.digits, 30, "{} row {r}", va.name);
+            assert_eq!(va.text, rounded(&vb.text, 30), "{} row {r}", va.name);
+            // verified at the ladder's first rung: the early rows' δ had
+            // its relative digits without climbing
+            assert_eq!(va.precs, first, "{} row {r}", va.name);
+        }
+    }
+    // the small columns really are small at the first row
+    let x1 = Float::parse(&lo[0][6].text).map(|f| Float::with_val(64, f));
+    assert_eq!(lo[0][6].name, "x1");
+    assert!(x1.unwrap().abs() < 1e-10);
+}

@@ -385,7 +385,7 @@ impl<const L: usize> Acc<L> {
 }
 
 /// r·u truncated (u ≥ 0), as a number of the same scale.
-#[inline]
+#[inline(always)]
 fn mul_u<const L: usize>(r: &Fx<L>, u: &Fx<L>, prod: &mut [u64]) -> Fx<L> {
     let lf = Fx::<L>::LF;
     let prod = &mut prod[..2 * L + 2];

@@ -141,6 +141,15 @@ fn limbs(prec: u32, extra: u32) -> Option<usize> {
     fixed::limbs_for(lf + 1)
 }
 
+/// Fraction bits a run at working precision `prec` carries beyond its own
+/// need for free: its limb count's fraction bits less `prec` and the guard
+/// bits (an output needing no more than these extra bits is as accurate
+/// from a run without extra bits).
+pub fn spare_frac_bits(prec: u32) -> u32 {
+    let l = limbs(prec, 0).unwrap_or(fixed::SIZES[fixed::SIZES.len() - 1]) as u32;
+    (64 * (l - 1)).saturating_sub(prec + guard_bits(prec))
+}
+
 /// The precision (bits) at which times should be given to [`integrate`] and
 /// [`TaylorRun::delta_at`] for working precision `prec` and `extra` bits.
 pub fn time_prec_for(prec: u32, extra: u32) -> u32 {

@@ -373,9 +373,8 @@ impl Route {
             .filter(|t| !t.is_zero())
             .map(|t| t.to_f64())
             .fold(f64::INFINITY, f64::min);
-        let lt = t_min.max(1e-300).log2();
-        let extra = if rel_delta && lt < 0.0 {
-            ((-2.0 * lt).ceil() as u32 + 8).min(p)
+        let extra = if rel_delta {
+            extra_bits_at(t_min, p)
         } else {
             0
         };
@@ -419,7 +418,7 @@ impl Route {
         };
         let mut out = match cheb {
             Some(out) => out,
-            None => self.deltas_taylor(times, tt_all, i_max, p, extra, digits)?,
+            None => self.deltas_taylor(times, tt_all, i_max, p, rel_delta, digits)?,
         };
         let t_last = Float::with_val(tq, &tt_all[i_max]);
         let (d, eps) = out[i_max].clone();
@@ -474,29 +473,68 @@ impl Route {
     }
 
     /// δ and its error at each time by one Taylor run to the last time
-    /// ([`crate::numeric::taylor`], dense output), `extra` fixed-point bits.
+    /// ([`crate::numeric::taylor`], dense output); with `rel_delta`, the
+    /// times whose δ needs more fixed-point bits for its relative accuracy
+    /// than the run carries spare ([`extra_bits_at`]) from a second, short
+    /// run with those bits.
     pub fn deltas_taylor(
         &mut self,
         times: &[Exact],
         tt_all: &[Float],
         i_max: usize,
         p: u32,
-        extra: u32,
+        rel_delta: bool,
         digits: u32,
     ) -> Result<Vec<(Float, Float)>> {
         let rhs = self.taylor_rhs(p)?;
         let th0 = self.work.start().theta0.to_float(p);
         let td0 = Float::with_val(p, &self.work.start().thetadot0);
         let t_end = tt_all[i_max].clone();
-        let mut traj = taylor::integrate(&rhs, &th0, &td0, &t_end, p, extra)?;
+        // the times whose relative accuracy needs more fraction bits than
+        // the run's limbs carry spare (δ ≈ θ̈0 t²/2 at small t): one short run
+        // with those bits to the latest of them, the rest from the main run
+        // (a limb more for the whole run would cost every row); one run
+        // with them when the last time needs them too
+        let spare = taylor::spare_frac_bits(p);
+        let needs: Vec<bool> = times
+            .iter()
+            .zip(tt_all)
+            .map(|(t, tt)| rel_delta && !t.is_zero() && extra_bits_at(tt.to_f64(), p) > spare)
+            .collect();
+        let short_end = times
+            .iter()
+            .zip(tt_all)
+            .zip(&needs)
+            .filter(|(_, &n)| n)
+            .map(|((_, tt), _)| (extra_bits_at(tt.to_f64(), p), tt))
+            .fold(None, |m: Option<(u32, &Float)>, (e, tt)| match m {
+                Some((e0, t0)) => Some((e0.max(e), if tt > t0 { tt } else { t0 })),
+                None => Some((e, tt)),
+            });
+        // (end, extra bits) of the main run, then of the short one
+        let plan = match short_end {
+            Some((extra, _)) if needs[i_max] => vec![(&t_end, extra)],
+            Some((extra, te)) => vec![(&t_end, 0), (te, extra)],
+            None => vec![(&t_end, 0)],
+        };
+        let mut runs = plan
+            .into_iter()
+            .map(|(te, extra)| taylor::integrate(&rhs, &th0, &td0, te, p, extra))
+            .collect::<Result<Vec<_>>>()?;
+        let (traj, short) = runs.split_at_mut(1);
+        let (traj, mut short) = (&mut traj[0], short.first_mut());
         let mut out = Vec::with_capacity(times.len());
         let mut floor = Float::new(p);
-        for (t, tt) in times.iter().zip(tt_all) {
+        for ((t, tt), &n) in times.iter().zip(tt_all).zip(&needs) {
             if t.is_zero() {
                 out.push((Float::new(p), Float::new(p)));
                 continue;
             }
-            let (d, mut e) = traj.delta_at(tt).ok_or_else(|| Error::NotConverged {
+            let run = match short.as_mut() {
+                Some(s) if n => s,
+                _ => &mut *traj,
+            };
+            let (d, mut e) = run.delta_at(tt).ok_or_else(|| Error::NotConverged {
                 quantity: "theta(t)".into(),
                 requested: digits,
                 reached: format!("no Taylor output at {p} bits"),
@@ -596,17 +634,16 @@ impl Route {
         let d2 = Float::with_val(p, d + derr);
         let st2 = e.dynm.state(&d2);
         let vals = |st: &crate::mechanics::dynamics::State, e: &Engine| -> Vec<Float> {
-            let pos = e.dynm.positions(st, &tf);
+            let pos = e.dynm.positions_phi2(st, &tf);
             let f = e.dynm.forces(st);
             let x2 = Float::with_val(p, rr * &st.s) + &pos[0];
             let y2 = Float::with_val(p, rr * &st.c) + r1;
-            let phi2 = Float::with_val(p, &pos[2] + &st.theta);
             vec![
                 st.theta.clone(),
                 st.thetadot.clone(),
                 st.thetaddot.clone(),
                 pos[1].clone(),
-                phi2,
+                pos[2].clone(),
                 pos[0].clone(),
                 x2,
                 y2,
@@ -675,7 +712,7 @@ impl Route {
         // correctly rounded exact parameter)
         let (r, r1, r2) = (&e.dynm.r, &e.dynm.r1, &e.dynm.r2);
         let st = e.dynm.state(delta);
-        let pos = e.dynm.positions(&st, t);
+        let pos = e.dynm.positions_phi2(&st, t);
         let f = e.dynm.forces(&st);
         // T + V with V = m1 g y1 + m2 g y2 (y1 = r1): the constrained
         // system's zero of the potential
@@ -696,10 +733,9 @@ impl Route {
         } else {
             Float::new(p)
         };
-        let phi2 = Float::with_val(p, &pos[2] + &st.theta);
         let phi2_dot = Float::with_val(p, sd + td);
         // the state's own values moved into the columns
-        let [x1, phi1, _] = pos;
+        let [x1, phi1, phi2] = pos;
         let [xd, pd, _] = st.v;
         let vals = vec![
             Float::with_val(p, t),
@@ -730,5 +766,17 @@ impl Route {
             .map(|(v, odd)| if odd { self.odd(v) } else { v })
             .collect();
         Ok((out, energy))
+    }
+}
+
+/// Fraction bits beyond the working precision `p` that δ needs at time `t`
+/// for full relative accuracy (δ ≈ θ̈0 t²/2 at small t: 2 log2(1/t) and 8
+/// more; none from t = 1 on), at most `p`.
+pub fn extra_bits_at(t: f64, p: u32) -> u32 {
+    let lt = t.max(1e-300).log2();
+    if lt < 0.0 {
+        ((-2.0 * lt).ceil() as u32 + 8).min(p)
+    } else {
+        0
     }
 }

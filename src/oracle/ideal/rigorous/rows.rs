@@ -150,11 +150,12 @@ impl Oracle {
                 .add(&k.beta[i].mul(&ds))
         };
         let pr = self.route.work.params();
-        // φ2(0) = 0 for every contact model (README, "Conventions")
-        let psi0 = k.th0.neg();
+        // φ2(0) = 0 for every contact model (README, "Conventions"):
+        // ψ0 = −θ0, so φ2 = ψ2 + θ = (ψ2 − ψ0) + δ, the constants cancelled
+        // exactly rather than by two interval sums
         let x1 = pos(X1);
         let phi1 = pos(PHI1);
-        let phi2 = pos(PSI2).add(&psi0).add(&th);
+        let phi2 = pos(PSI2).add(&delta);
         let x2 = k.r.mul(&th.sin()).add(&x1);
         let y2 = k.r.mul(&th.cos()).add_q(&pr.r1);
         let cols = [
