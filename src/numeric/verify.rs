@@ -222,25 +222,48 @@ fn judge(
     a: &Estimate,
     b: &Estimate,
 ) -> std::result::Result<Verified, u32> {
+    judged(digits, a, b).map(|j| j.verified(name, precs, || b.value.clone()))
+}
+
+/// What [`judge`] decides of a value, without the value itself (a table's
+/// values are moved into their [`Verified`], not copied).
+struct Judged {
+    /// The value printed instead of the higher run's (an exact zero).
+    value: Option<Float>,
+    text: String,
+    digits: u32,
+    err_bound: Float,
+}
+
+impl Judged {
+    fn verified(self, name: &str, precs: (u32, u32), value: impl FnOnce() -> Float) -> Verified {
+        Verified {
+            name: name.to_string(),
+            value: self.value.unwrap_or_else(value),
+            text: self.text,
+            digits: self.digits,
+            err_bound: self.err_bound,
+            precs,
+        }
+    }
+}
+
+fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged, u32> {
     let p = b.value.prec();
     if let Some(text) = &b.exact_text {
-        return Ok(Verified {
-            name: name.to_string(),
-            value: b.value.clone(),
+        return Ok(Judged {
+            value: None,
             text: text.clone(),
             digits,
             err_bound: Float::new(p),
-            precs,
         });
     }
     if a.exact_zero && b.exact_zero {
-        return Ok(Verified {
-            name: name.to_string(),
-            value: Float::new(p),
+        return Ok(Judged {
+            value: Some(Float::new(p)),
             text: "0".to_string(),
             digits,
             err_bound: Float::new(p),
-            precs,
         });
     }
     let bound = error_bound(a, b);
@@ -251,25 +274,21 @@ fn judge(
         // indistinguishable from zero: print 0 if the bound is negligible
         // at the requested digits relative to the quantity's natural scale
         if bound <= negligible(b, digits) {
-            return Ok(Verified {
-                name: name.to_string(),
-                value: b.value.clone(),
+            return Ok(Judged {
+                value: None,
                 text: "0".to_string(),
                 digits: 0,
                 err_bound: bound,
-                precs,
             });
         }
         return Err(0);
     }
     if let Some(text) = fast_text(&b.value, &bound, digits) {
-        return Ok(Verified {
-            name: name.to_string(),
-            value: b.value.clone(),
+        return Ok(Judged {
+            value: None,
             text,
             digits,
             err_bound: bound,
-            precs,
         });
     }
     let lo = Float::with_val(p, &b.value - &bound);
@@ -277,13 +296,11 @@ fn judge(
     match (round_sig(&lo, digits), round_sig(&hi, digits)) {
         (Some(a), Some(b2)) if a == b2 => {
             let (neg, d, e) = a;
-            Ok(Verified {
-                name: name.to_string(),
-                value: b.value.clone(),
+            Ok(Judged {
+                value: None,
                 text: render(neg, &d, e),
                 digits,
                 err_bound: bound,
-                precs,
             })
         }
         _ => Err(agreeing_digits(&b.value, &bound, digits)),
@@ -343,14 +360,7 @@ pub fn verified_from(name: &str, value: Float, err: Float, digits: u32) -> Resul
 /// [`Verified::digits`]) instead of failing the whole answer. Only at the
 /// last rung (`last`), so that a value that more precision would verify in
 /// full is never cut short.
-fn absolute_fallback(
-    last: bool,
-    name: &str,
-    digits: u32,
-    precs: (u32, u32),
-    a: &Estimate,
-    b: &Estimate,
-) -> Option<Verified> {
+fn absolute_fallback(last: bool, digits: u32, a: &Estimate, b: &Estimate) -> Option<Judged> {
     if !last || !b.value.is_finite() || b.value.is_zero() {
         return None;
     }
@@ -358,9 +368,7 @@ fn absolute_fallback(
     if !bound.is_finite() || bound > negligible(b, digits) {
         return None;
     }
-    (1..digits)
-        .rev()
-        .find_map(|d| judge(name, d, precs, a, b).ok())
+    (1..digits).rev().find_map(|d| judged(d, a, b).ok())
 }
 
 /// Runs `f` at two precisions (climbing the ladder if needed) and verifies
@@ -447,8 +455,10 @@ where
             }
             let mut out = Vec::with_capacity(names.len());
             let mut row_failed = None;
+            // the higher run's values move into the verified ones
+            let mut bs = row_b.drain(..);
             for (i, name) in names.iter().enumerate() {
-                let (Some(ea), Some(eb)) = (row_a.get(i), row_b.get(i)) else {
+                let (Some(ea), Some(eb)) = (row_a.get(i), bs.next()) else {
                     return Err(Error::NotConverged {
                         quantity: name.to_string(),
                         requested: digits,
@@ -457,10 +467,10 @@ where
                     });
                 };
                 let last = attempt + 1 == MAX_ATTEMPTS;
-                match judge(name, digits, precs, ea, eb)
-                    .or_else(|r| absolute_fallback(last, name, digits, precs, ea, eb).ok_or(r))
+                match judged(digits, ea, &eb)
+                    .or_else(|r| absolute_fallback(last, digits, ea, &eb).ok_or(r))
                 {
-                    Ok(v) => out.push(v),
+                    Ok(j) => out.push(j.verified(name, precs, || eb.value)),
                     Err(reached) => {
                         let diff = Float::with_val(precs.1, &ea.value - &eb.value).abs();
                         row_failed = Some((
@@ -513,6 +523,38 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Only the higher run's error estimate counts: the lower run's may be
+    /// anything (a table's lower run leaves it zero, uncomputed), and the
+    /// higher run's widens the bound.
+    #[test]
+    fn the_lower_runs_error_is_not_read() {
+        let table = |low_err: f64, high_err: f64| {
+            ladder_table(30, &["a", "b"], 2, |p, run| {
+                let e = if run == Run::Low { low_err } else { high_err };
+                Ok([(1u32, 3u32), (2, 7), (5, 11), (13, 17)]
+                    .iter()
+                    .map(|&(n, d)| {
+                        let v = Float::with_val(p, n) / d;
+                        Estimate::new(v, Float::with_val(p, e), Float::with_val(p, 1u32))
+                    })
+                    .collect())
+            })
+        };
+        let base = table(0.0, 1e-40).unwrap();
+        for low in [1e-10, 1.0, 1e30] {
+            let t = table(low, 1e-40).unwrap();
+            for (ra, rb) in t.iter().zip(&base) {
+                for (a, b) in ra.iter().zip(rb) {
+                    assert_eq!((&a.text, a.digits, a.precs), (&b.text, b.digits, b.precs));
+                    assert_eq!(a.err_bound, b.err_bound);
+                }
+            }
+        }
+        assert_eq!(base[0][0].text, "0.333333333333333333333333333333");
+        // the higher run's error is read: 1e-20 leaves no 30 digits
+        assert!(table(0.0, 1e-20).is_err());
+    }
 
     #[test]
     fn verifies_a_correct_computation() {

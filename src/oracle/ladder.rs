@@ -110,19 +110,21 @@ pub fn point_estimates(
 ) -> Vec<Estimate> {
     let all: Vec<usize> = (0..crate::motion::COLUMNS.len()).collect();
     let mut out = Vec::with_capacity(all.len());
-    push_point_estimates(pt.clone(), scales, t_text, &all, &mut out);
+    push_point_estimates(pt.clone(), scales, t_text, &all, Run::High, &mut out);
     out
 }
 
 /// The estimates of the columns `idx` (indices of [`crate::motion::COLUMNS`],
 /// each at most once) of a point, in that order, appended to `out`: the
 /// point's values moved into them (a table's rows are the bulk of its
-/// work).
+/// work). On the ladder's lower run (`run`) a value without an error of
+/// its own gets none (zero): the ladder reads only the higher run's.
 pub fn push_point_estimates(
     pt: Point,
     scales: &[Arc<Float>],
     t_text: Option<&String>,
     idx: &[usize],
+    run: Run,
     out: &mut Vec<Estimate>,
 ) {
     let zero = pt.exact_zero;
@@ -146,6 +148,7 @@ pub fn push_point_estimates(
         let mut e = match err {
             Some(err) if err.prec() == p => Estimate::shared(v, err, sc),
             Some(err) => Estimate::shared(v, Float::with_val(p, &err), sc),
+            None if run == Run::Low => Estimate::shared(v, Float::new(p), sc),
             None => integrated_shared(v, sc),
         };
         if i == 0 {
@@ -333,13 +336,14 @@ fn within_digits(t: &Float, end: &Float, digits: u32) -> bool {
 
 /// Runs the motion at both precisions of each rung, the first run (at
 /// p1 of the first rung) fixing the skeleton; every other run must match
-/// it. `est` gives the estimates of one run (`rows` rows of `names`).
+/// it. `est` gives the estimates of one run (`rows` rows of `names`); the
+/// run is passed along (the lower run's error estimates are not read).
 pub fn laddered(
     runs: &mut Runs,
     first: Motion,
     names: &[String],
     rows: usize,
-    est: impl Fn(Motion) -> Result<Vec<Estimate>>,
+    est: impl Fn(Motion, Run) -> Result<Vec<Estimate>>,
 ) -> Result<Vec<Vec<Verified>>> {
     let digits = runs.req.digits;
     let sig = signature(&first);
@@ -373,7 +377,7 @@ pub fn laddered(
             });
         }
         check_balance(&m, digits)?;
-        est(m)
+        est(m, run)
     };
     if rows == 1 {
         ladder_runs(digits, &refs, f).map(|r| vec![r])

@@ -429,7 +429,7 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     if has_impact {
         names.extend(IMPACT_KEYS.map(String::from));
     }
-    let vals = laddered(&mut runs, first.clone(), &names, 1, |m| {
+    let vals = laddered(&mut runs, first.clone(), &names, 1, |m, _| {
         let m = &m;
         let mut out = Vec::new();
         event_estimates(m, &mut out);
@@ -625,7 +625,7 @@ fn at_angle(
             runs.side_bits
         )
     });
-    let rows = laddered(&mut runs, first, &names, 1, |m| {
+    let rows = laddered(&mut runs, first, &names, 1, |m, _| {
         let m = &m;
         m.target
             .as_ref()

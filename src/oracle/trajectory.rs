@@ -235,7 +235,7 @@ fn trajectory_block(
     let first_rows = std::mem::take(&mut first.rows);
     let kept = first.clone();
     first.rows = first_rows;
-    let mut table = laddered(&mut runs, first, &names, n_rows + n_ev, |m| {
+    let mut table = laddered(&mut runs, first, &names, n_rows + n_ev, |m, run| {
         let p = m.prec();
         let shared = ladder::column_scales(model, p);
         let mut out = Vec::with_capacity((n_rows + n_ev) * idx.len());
@@ -251,7 +251,7 @@ fn trajectory_block(
             }
         } else {
             for (pt, text) in m.rows.into_iter().zip(&exact_t) {
-                ladder::push_point_estimates(pt, &shared, text.as_ref(), &idx, &mut out);
+                ladder::push_point_estimates(pt, &shared, text.as_ref(), &idx, run, &mut out);
             }
         }
         for pair in ev.chunks(2) {
@@ -346,10 +346,16 @@ pub fn theta_at_times(
     let mut first = runs.at(p1, Run::Low)?;
     runs.resolve_sides(&mut first)?;
     let phases = ladder::theta_phases(&first);
-    let rows = laddered(&mut runs, first, &["theta".to_string()], times.len(), |m| {
-        let m = &m;
-        Ok(ladder::theta_estimates(m))
-    })?;
+    let rows = laddered(
+        &mut runs,
+        first,
+        &["theta".to_string()],
+        times.len(),
+        |m, _| {
+            let m = &m;
+            Ok(ladder::theta_estimates(m))
+        },
+    )?;
     Ok((
         rows.into_iter()
             .filter_map(|r| r.into_iter().next())
