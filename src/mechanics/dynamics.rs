@@ -61,6 +61,10 @@ pub struct Dyn {
     pub psi0: Float,
     /// Columns of B for the kept cyclic coordinates (conserved momenta).
     pub b_cyclic: Vec<[Float; 4]>,
+    /// Products of the constants the forces and the energy use, each
+    /// rounded as those formulas round it: m1 + m2, (m1 + m2) g, r m2,
+    /// (r r) m2, (m2 g) r.
+    consts: [Float; 5],
 }
 
 /// The state of the system at one angle.
@@ -124,6 +128,12 @@ impl Dyn {
         // φ1 does; a rolling contact then reads r2 φ2 = r1(φ1 − θ + θ0), the
         // paper's eq. 2 with its constant (the paper's φ2 is φ2 − r1 θ0/r2)
         let psi0 = Float::with_val(prec, -&th0);
+        let (m1, m2) = (f(&p.m1), f(&p.m2));
+        let m12 = Float::with_val(prec, &m1 + &m2);
+        let m12g = Float::with_val(prec, &m12 * &g);
+        let rm2 = Float::with_val(prec, &r * &m2);
+        let rrm2 = Float::with_val(prec, &r * &r) * &m2;
+        let m2gr = Float::with_val(prec, &m2 * &g) * &r;
         Ok(Dyn {
             prec,
             floor: model.floor(),
@@ -134,8 +144,8 @@ impl Dyn {
             q,
             h0,
             gr,
-            m1: f(&p.m1),
-            m2: f(&p.m2),
+            m1,
+            m2,
             i1: f(&(Rational3::prod(&p.k1, &p.m1, &p.r1) * &p.r1)),
             i2: f(&(Rational3::prod(&p.k2, &p.m2, &p.r2) * &p.r2)),
             r1,
@@ -151,13 +161,17 @@ impl Dyn {
                 .iter()
                 .map(|col| [f(&col[0]), f(&col[1]), f(&col[2]), f(&col[3])])
                 .collect(),
+            consts: [m12, m12g, rm2, rrm2, m2gr],
         })
     }
 
     /// K(c) = q0 + q1 c + q2 c².
     pub fn k_of(&self, c: &Float) -> Float {
-        let t = Float::with_val(self.prec, &self.q[2] * c) + &self.q[1];
-        Float::with_val(self.prec, t * c) + &self.q[0]
+        let mut t = Float::with_val(self.prec, &self.q[2] * c);
+        t += &self.q[1];
+        t *= c;
+        t += &self.q[0];
+        t
     }
 
     /// Trigonometry at δ: (sin θ, cos θ, sin(θ0+δ/2), cos(θ0+δ/2), sin(δ/2)).
@@ -165,11 +179,20 @@ impl Dyn {
         let p = self.prec;
         let half = Float::with_val(p, delta / 2u32);
         let (sh, ch) = half.sin_cos(Float::new(p));
-        let sm = Float::with_val(p, &self.s0 * &ch) + Float::with_val(p, &self.c0 * &sh);
-        let cm = Float::with_val(p, &self.c0 * &ch) - Float::with_val(p, &self.s0 * &sh);
+        // each sum of two products rounded as written, one temporary reused
+        let mut t = Float::with_val(p, &self.c0 * &sh);
+        let mut sm = Float::with_val(p, &self.s0 * &ch);
+        sm += &t;
+        t.assign(&self.s0 * &sh);
+        let mut cm = Float::with_val(p, &self.c0 * &ch);
+        cm -= &t;
         // θ = (θ0 + δ/2) + δ/2
-        let s = Float::with_val(p, &sm * &ch) + Float::with_val(p, &cm * &sh);
-        let c = Float::with_val(p, &cm * &ch) - Float::with_val(p, &sm * &sh);
+        t.assign(&cm * &sh);
+        let mut s = Float::with_val(p, &sm * &ch);
+        s += &t;
+        t.assign(&sm * &sh);
+        let mut c = Float::with_val(p, &cm * &ch);
+        c -= &t;
         [s, c, sm, cm, sh]
     }
 
@@ -221,7 +244,11 @@ impl Dyn {
     pub fn state(&self, delta: &Float) -> State {
         let p = self.prec;
         let [s, c, sm, cm, sh] = self.trig(delta);
-        let h = Float::with_val(p, &sm * &sh) * &self.gr * 4u32 + &self.h0;
+        // the formulas' roundings, in place on a few temporaries
+        let mut h = Float::with_val(p, &sm * &sh);
+        h *= &self.gr;
+        h *= 4u32;
+        h += &self.h0;
         let k = self.k_of(&c);
         let td2 = Float::with_val(p, &h / &k);
         let thetadot = if td2.is_sign_negative() {
@@ -230,17 +257,27 @@ impl Dyn {
             Float::with_val(p, td2.sqrt_ref())
         };
         // θ̈ = [ (g/r) sinθ + ½ sinθ (q1 + 2 q2 c) θ̇² ] / K
-        let dk = Float::with_val(p, &self.q[2] * &c) * 2u32 + &self.q[1];
-        let num = Float::with_val(p, &dk * &td2) / 2u32 + &self.gr;
-        let thetaddot = Float::with_val(p, num * &s) / &k;
+        let mut thetaddot = Float::with_val(p, &self.q[2] * &c);
+        thetaddot *= 2u32;
+        thetaddot += &self.q[1];
+        thetaddot *= &td2;
+        thetaddot /= 2u32;
+        thetaddot += &self.gr;
+        thetaddot *= &s;
+        thetaddot /= &k;
         let mut v: [Float; 3] = [Float::new(p), Float::new(p), Float::new(p)];
         let mut a: [Float; 3] = [Float::new(p), Float::new(p), Float::new(p)];
         let s_td2 = Float::with_val(p, &s * &td2);
+        // lin = β c + α; v = lin θ̇ + γ; a = lin θ̈ − β s θ̇²
+        let (mut lin, mut u) = (h, k);
         for i in 0..3 {
-            let lin = Float::with_val(p, &self.beta[i] * &c) + &self.alpha[i];
-            v[i] = Float::with_val(p, &lin * &thetadot) + &self.gamma[i];
-            a[i] =
-                Float::with_val(p, &lin * &thetaddot) - Float::with_val(p, &self.beta[i] * &s_td2);
+            lin.assign(&self.beta[i] * &c);
+            lin += &self.alpha[i];
+            v[i].assign(&lin * &thetadot);
+            v[i] += &self.gamma[i];
+            a[i].assign(&lin * &thetaddot);
+            u.assign(&self.beta[i] * &s_td2);
+            a[i] -= &u;
         }
         let ds = Float::with_val(p, &cm * &sh) * 2u32;
         let theta = Float::with_val(p, &self.th0 + delta);
@@ -278,11 +315,13 @@ impl Dyn {
     fn moved(&self, st: &State, t: &Float) -> [Float; 3] {
         let p = self.prec;
         let mut out: [Float; 3] = [Float::new(p), Float::new(p), Float::new(p)];
+        let mut u = Float::new(p);
         for (i, o) in out.iter_mut().enumerate() {
-            let x = Float::with_val(p, &self.gamma[i] * t)
-                + Float::with_val(p, &self.alpha[i] * &st.delta)
-                + Float::with_val(p, &self.beta[i] * &st.ds);
-            *o = x;
+            o.assign(&self.gamma[i] * t);
+            u.assign(&self.alpha[i] * &st.delta);
+            *o += &u;
+            u.assign(&self.beta[i] * &st.ds);
+            *o += &u;
         }
         out
     }
@@ -294,25 +333,41 @@ impl Dyn {
     pub fn forces(&self, st: &State) -> Forces {
         let p = self.prec;
         let ax = &st.a[X1];
+        let [m12, m12g, ..] = &self.consts;
         let td2 = Float::with_val(p, st.thetadot.square_ref());
-        let n12 = (Float::with_val(p, &self.g * &st.c) + Float::with_val(p, ax * &st.s)
-            - Float::with_val(p, &self.r * &td2))
-            * &self.m2;
+        // (g c + ẍ1 s − r θ̇²) m2, summed as written
+        let mut t = Float::with_val(p, ax * &st.s);
+        let mut n12 = Float::with_val(p, &self.g * &st.c);
+        n12 += &t;
+        t.assign(&self.r * &td2);
+        n12 -= &t;
+        n12 *= &self.m2;
         let f21 = match self.contact {
             Contact::Roll => Float::with_val(p, &self.i2 * &st.a[PSI2]) / &self.r2,
             Contact::Slip => Float::new(p),
         };
-        let m12 = Float::with_val(p, &self.m1 + &self.m2);
+        let mut u = Float::new(p);
         let f1 = match self.floor {
             Floor::Slip => Float::new(p),
             _ => {
-                let tang =
-                    Float::with_val(p, &st.c * &st.thetaddot) - Float::with_val(p, &st.s * &td2);
-                Float::with_val(p, &m12 * ax) + tang * &self.r * &self.m2
+                // (m1 + m2) ẍ1 + (c θ̈ − s θ̇²) r m2
+                t.assign(&st.c * &st.thetaddot);
+                u.assign(&st.s * &td2);
+                t -= &u;
+                t *= &self.r;
+                t *= &self.m2;
+                let mut f1 = Float::with_val(p, m12 * ax);
+                f1 += &t;
+                f1
             }
         };
-        let rad = Float::with_val(p, &st.s * &st.thetaddot) + Float::with_val(p, &st.c * &td2);
-        let n1 = Float::with_val(p, &m12 * &self.g) - rad * &self.r * &self.m2;
+        // (m1 + m2) g − (s θ̈ + c θ̇²) r m2
+        t.assign(&st.s * &st.thetaddot);
+        u.assign(&st.c * &td2);
+        t += &u;
+        t *= &self.r;
+        t *= &self.m2;
+        let n1 = Float::with_val(p, m12g - &t);
         Forces { f1, n1, f21, n12 }
     }
 
@@ -321,14 +376,29 @@ impl Dyn {
         let p = self.prec;
         let [xd, pd, sd] = &st.v;
         let td = &st.thetadot;
-        let m12 = Float::with_val(p, &self.m1 + &self.m2);
-        let mut t = Float::with_val(p, &m12 * xd) * xd;
-        t += Float::with_val(p, &self.i1 * pd) * pd;
-        t += Float::with_val(p, &self.i2 * sd) * sd;
-        t += Float::with_val(p, &self.r * &self.m2) * &st.c * xd * td * 2u32;
-        t += Float::with_val(p, &self.r * &self.r) * &self.m2 * td * td;
+        let [m12, _, rm2, rrm2, m2gr] = &self.consts;
+        // the terms rounded as (m1+m2) ẋ1 ẋ1 + I1 φ̇1 φ̇1 + I2 ψ̇2 ψ̇2
+        // + (r m2) c ẋ1 θ̇ 2 + ((r r) m2) θ̇ θ̇, halved, + ((m2 g) r) c
+        let mut t = Float::with_val(p, m12 * xd);
+        t *= xd;
+        let mut u = Float::with_val(p, &self.i1 * pd);
+        u *= pd;
+        t += &u;
+        u.assign(&self.i2 * sd);
+        u *= sd;
+        t += &u;
+        u.assign(rm2 * &st.c);
+        u *= xd;
+        u *= td;
+        u *= 2u32;
+        t += &u;
+        u.assign(rrm2 * td);
+        u *= td;
+        t += &u;
         t /= 2u32;
-        t + Float::with_val(p, &self.m2 * &self.g) * &self.r * &st.c
+        u.assign(m2gr * &st.c);
+        t += &u;
+        t
     }
 }
 
