@@ -467,6 +467,7 @@ pub fn sample_at(ctx: &Ctx, mode: Mode, pt: &Point) -> Result<Sample> {
         lambda: acc.lambda,
         work: Float::new(wp),
         power: Float::new(wp),
+        trig: Vec::new(),
     })
 }
 

@@ -176,7 +176,9 @@ impl Ctx {
     pub fn point(&self, sys: &mut System, mode: Mode, s: &Sample, conservative: bool) -> Point {
         let p = sys.prec;
         // the energy first: its mass matrix leaves sin θ and cos θ in the
-        // workspace, where the columns find them
+        // workspace, where the columns find them (put back from the sample
+        // where it kept them)
+        sys.prime_trig(&s.q, &s.trig);
         let energy = sys.energy(&s.q, &s.v);
         let mut state = two_state(sys, s);
         // a slipping contact's force is an applied force, not a multiplier

@@ -49,6 +49,7 @@ pub fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<
         lambda: a1.lambda,
         work: Float::new(p),
         power: Float::new(p),
+        trig: Vec::new(),
     };
     let n12 = lam(&sys, &s1, Row::Normal(0));
     if !n12.is_sign_positive() || n12.is_zero() {

@@ -711,6 +711,7 @@ fn sample(
         lambda: acc.lambda,
         work: work.clone(),
         power: Float::new(t.prec()),
+        trig: Vec::new(),
     }
 }
 

@@ -56,6 +56,11 @@ pub struct Sample {
     pub work: Float,
     /// Its rate, the sliding power Σ μk N |s| (0 without slipping contacts).
     pub power: Float,
+    /// sin θ_j and cos θ_j of each line as the sample's KKT solve computed
+    /// them ([`System::trig_kept`]; empty: not kept): a row's energy and
+    /// columns, made after the run, find them instead of computing them
+    /// again.
+    pub trig: Vec<Float>,
 }
 
 /// A located event.
@@ -199,6 +204,7 @@ fn sample(sys: &mut System, t: &Float, y: &[Float]) -> Result<Sample> {
         lambda: acc.lambda,
         work,
         power,
+        trig: Vec::new(),
     })
 }
 

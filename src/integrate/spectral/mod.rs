@@ -185,6 +185,7 @@ pub fn run(
             lambda: Vec::new(),
             work: work0.clone(),
             power: Float::new(p),
+            trig: Vec::new(),
         };
         behind(&smp, cap)
     };
@@ -200,6 +201,7 @@ pub fn run(
             lambda: first.lambda.clone(),
             work: work0.clone(),
             power: Float::new(p),
+            trig: Vec::new(),
         };
         events
             .iter()

@@ -397,6 +397,7 @@ pub(super) fn attempt(
                 lambda: std::mem::take(&mut lambdas[k]),
                 work: Float::with_val(p, work0 + &wv[k]),
                 power: std::mem::replace(&mut powers[k], Float::new(p)),
+                trig: Vec::new(),
             },
         ));
     }
@@ -503,6 +504,7 @@ impl Piece {
             lambda: Vec::new(),
             work: Float::new(p),
             power: Float::new(p),
+            trig: Vec::new(),
         }
     }
 
@@ -527,6 +529,11 @@ impl Piece {
         } else {
             Float::new(sys.prec)
         };
+        // a row's point is made after the run: it finds these again
+        let trig = match row {
+            Some(_) => sys.trig_kept(&q),
+            None => Vec::new(),
+        };
         Ok(Sample {
             t,
             q,
@@ -535,6 +542,7 @@ impl Piece {
             lambda: acc.lambda,
             work,
             power,
+            trig,
         })
     }
 

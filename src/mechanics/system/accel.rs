@@ -31,6 +31,42 @@ impl System {
         }
     }
 
+    /// sin θ_j and cos θ_j of every line (in turn) when the workspace holds
+    /// them for exactly q's angles, else empty: for a [`crate::integrate::solve::Sample`]
+    /// to carry to [`System::prime_trig`].
+    pub fn trig_kept(&self, q: &[Float]) -> Vec<Float> {
+        let ws = &self.ws;
+        let mut out = Vec::with_capacity(2 * ws.s.len());
+        for j in 0..self.n - 1 {
+            let th = &q[th(j)];
+            if th.prec() != self.prec || !same(th, &ws.trig_at[j]) {
+                return Vec::new();
+            }
+            out.push(ws.s[j].clone());
+            out.push(ws.c[j].clone());
+        }
+        out
+    }
+
+    /// Puts back sin θ_j and cos θ_j that [`System::trig_kept`] gave at q
+    /// (nothing if `trig` is empty or of another precision): the same bits
+    /// [`System::trig`] would compute.
+    pub fn prime_trig(&mut self, q: &[Float], trig: &[Float]) {
+        if trig.len() != 2 * (self.n - 1) || trig.iter().any(|x| x.prec() != self.prec) {
+            return;
+        }
+        for j in 0..self.n - 1 {
+            let th = &q[th(j)];
+            if th.prec() != self.prec {
+                return;
+            }
+            let ws = &mut self.ws;
+            ws.trig_at[j].assign(th);
+            ws.s[j].assign(&trig[2 * j]);
+            ws.c[j].assign(&trig[2 * j + 1]);
+        }
+    }
+
     /// sin θ and cos θ of the first line when the workspace holds them for
     /// exactly `theta` at this precision (after a KKT solve or an energy at
     /// the same angle), else `None`.
@@ -39,12 +75,22 @@ impl System {
         (theta.prec() == self.prec && same(theta, at)).then(|| (&self.ws.s[0], &self.ws.c[0]))
     }
 
-    /// Fills the workspace mass matrix at q (computes the trigonometry).
+    /// Fills the workspace mass matrix at q (computes the trigonometry);
+    /// kept where it already is the matrix at q's angles and lengths (the
+    /// only coordinates it depends on: the same bits as building it again).
     pub(super) fn mass_matrix(&mut self, q: &[Float]) {
         self.trig(q);
         let nq = self.nq();
         let nl = self.n - 1;
         let ws = &mut self.ws;
+        let at = |j: usize| if j % 2 == 0 { th(j / 2) } else { rr(j / 2) };
+        if (0..2 * nl).all(|j| same(&q[at(j)], &ws.m_at[j])) {
+            return;
+        }
+        for (j, m) in ws.m_at.iter_mut().enumerate() {
+            m.set_prec(q[at(j)].prec());
+            m.assign(&q[at(j)]);
+        }
         for x in ws.m.iter_mut() {
             x.assign(0u32);
         }
@@ -490,6 +536,49 @@ pub(crate) fn gauss(a: &mut [Float], b: &mut [Float], x: &mut [Float], n: usize)
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The workspace's kept trigonometry and mass matrix are the bits a
+    /// fresh system computes: an energy after a solve at another state, with
+    /// the sample's sin and cos put back or not, equals a fresh system's;
+    /// the kept values are refused at other angles or precisions.
+    #[test]
+    fn kept_trigonometry_and_mass_matrix_are_the_fresh_bits() {
+        use crate::exact::Exact;
+        use crate::mechanics::system::StackModel;
+        use crate::model::Ideal;
+        let p = 150;
+        let model = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
+        let sm = StackModel::from_model(&model);
+        let fresh = || System::new(&sm, p).unwrap();
+        let mut sys = fresh();
+        let (q0, v0) = sys.initial_state(&sm).unwrap();
+        // a second state: another angle and another centre distance
+        let mut q1 = q0.clone();
+        q1[th(0)] += 0.25f64;
+        q1[rr(0)] += 1e-3f64;
+        let mut v1 = v0.clone();
+        v1[th(0)] += 0.5f64;
+        sys.accel(&q0, &v0).unwrap();
+        let kept = sys.trig_kept(&q0);
+        assert_eq!(kept.len(), 2);
+        assert!(sys.trig_kept(&q1).is_empty());
+        let e_fresh = fresh().energy(&q1, &v1);
+        let e_kept = sys.energy(&q1, &v1);
+        assert_eq!(e_kept, e_fresh);
+        // back at q0 through the kept values, after the workspace moved on
+        sys.prime_trig(&q0, &kept);
+        assert_eq!(sys.energy(&q0, &v0), fresh().energy(&q0, &v0));
+        // values of another precision are not put back
+        let mut other = System::new(&sm, p + 64).unwrap();
+        other.accel(&q1, &v1).unwrap();
+        other.prime_trig(&q0, &kept);
+        assert!(other.cached_trig(&q0[th(0)]).is_none());
+        // a wrong value put back would show: the check is not vacuous
+        let mut bad = kept.clone();
+        bad[0] += 1e-30f64;
+        sys.prime_trig(&q1, &bad);
+        assert_ne!(sys.energy(&q1, &v1), e_fresh);
+    }
 
     /// The reduced solve against plain elimination and against the
     /// residual, on a KKT-shaped system (a mass block, two singleton

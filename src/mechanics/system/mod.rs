@@ -144,6 +144,9 @@ struct Workspace {
     /// sine and cosine of (NaN: none yet): a sample's KKT solve, energy
     /// and columns ask for the same angles in turn.
     trig_at: Vec<Float>,
+    /// The θ_j and r_j (as given) that `m` is the mass matrix at (NaN:
+    /// none yet): a sample's energy asks for the matrix its KKT solve built.
+    m_at: Vec<Float>,
     t: Float,
     t2: Float,
 }
@@ -210,6 +213,7 @@ impl System {
                 s: vec![Float::new(prec); n - 1],
                 c: vec![Float::new(prec); n - 1],
                 trig_at: vec![Float::with_val(prec, f64::NAN); n - 1],
+                m_at: vec![Float::with_val(prec, f64::NAN); 2 * (n - 1)],
                 t: Float::new(prec),
                 t2: Float::new(prec),
             },
