@@ -50,7 +50,7 @@ impl System {
 
     /// Puts back sin θ_j and cos θ_j that [`System::trig_kept`] gave at q
     /// (nothing if `trig` is empty or of another precision): the same bits
-    /// [`System::trig`] would compute.
+    /// the workspace would compute for that angle.
     pub fn prime_trig(&mut self, q: &[Float], trig: &[Float]) {
         if trig.len() != 2 * (self.n - 1) || trig.iter().any(|x| x.prec() != self.prec) {
             return;
