@@ -63,7 +63,8 @@ pub struct Dyn {
     pub b_cyclic: Vec<[Float; 4]>,
     /// Products of the constants the forces and the energy use, each
     /// rounded as those formulas round it: m1 + m2, (m1 + m2) g, r m2,
-    /// (r r) m2, (m2 g) r.
+    /// (r r) m2, (m2 g) r (from `m1`, `m2`, `r`, `g` as [`Dyn::new`] sets
+    /// them: those fields are not to be changed afterwards).
     consts: [Float; 5],
 }
 
@@ -407,15 +408,15 @@ impl Dyn {
     /// p_j = B_jᵀ M(θ) v, from the full velocities.
     pub fn momenta(&self, st: &State) -> Vec<Float> {
         let p = self.prec;
-        let m12 = Float::with_val(p, &self.m1 + &self.m2);
-        let m2r = Float::with_val(p, &self.m2 * &self.r);
+        let m12 = &self.consts[0];
+        let m2r = &self.consts[2];
         // M v with v = (ẋ1, φ̇1, ψ̇2, θ̇)
         let mv = [
-            Float::with_val(p, &m12 * &st.v[0]) + Float::with_val(p, &m2r * &st.c) * &st.thetadot,
+            Float::with_val(p, m12 * &st.v[0]) + Float::with_val(p, m2r * &st.c) * &st.thetadot,
             Float::with_val(p, &self.i1 * &st.v[1]),
             Float::with_val(p, &self.i2 * &st.v[2]),
-            Float::with_val(p, &m2r * &st.c) * &st.v[0]
-                + Float::with_val(p, &m2r * &self.r) * &st.thetadot,
+            Float::with_val(p, m2r * &st.c) * &st.v[0]
+                + Float::with_val(p, m2r * &self.r) * &st.thetadot,
         ];
         self.b_cyclic
             .iter()

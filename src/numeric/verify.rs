@@ -228,7 +228,8 @@ fn judge(
 /// What [`judge`] decides of a value, without the value itself (a table's
 /// values are moved into their [`Verified`], not copied).
 struct Judged {
-    /// The value printed instead of the higher run's (an exact zero).
+    /// The value the [`Verified`] holds instead of the higher run's (an
+    /// exact zero).
     value: Option<Float>,
     text: String,
     digits: u32,

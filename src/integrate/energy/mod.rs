@@ -366,8 +366,10 @@ impl Route {
             Some(t) => Float::with_val(p, t),
             None => self.t_s_at(p)?,
         };
-        // fixed-point bits for the smallest positive time: δ ≈ θ̈0 t²/2 there
-        // (only the trajectory's rows need δ to full relative accuracy)
+        // the bits the smallest positive time needs beyond p, δ ≈ θ̈0 t²/2
+        // there (only the trajectory's rows need δ to full relative
+        // accuracy): the times' precision and the Chebyshev route's (the
+        // Taylor route gives them to the times that need them)
         let t_min = times
             .iter()
             .filter(|t| !t.is_zero())
@@ -523,6 +525,12 @@ impl Route {
             .collect::<Result<Vec<_>>>()?;
         let (traj, short) = runs.split_at_mut(1);
         let (traj, mut short) = (&mut traj[0], short.first_mut());
+        let no_output = |t: &Float| Error::NotConverged {
+            quantity: "theta(t)".into(),
+            requested: digits,
+            reached: format!("no Taylor output at {p} bits"),
+            detail: format!("t = {}", crate::numeric::decimal::to_sig(t, 20)),
+        };
         let mut out = Vec::with_capacity(times.len());
         let mut floor = Float::new(p);
         for ((t, tt), &n) in times.iter().zip(tt_all).zip(&needs) {
@@ -534,12 +542,7 @@ impl Route {
                 Some(s) if n => s,
                 _ => &mut *traj,
             };
-            let (d, mut e) = run.delta_at(tt).ok_or_else(|| Error::NotConverged {
-                quantity: "theta(t)".into(),
-                requested: digits,
-                reached: format!("no Taylor output at {p} bits"),
-                detail: format!("t = {}", crate::numeric::decimal::to_sig(tt, 20)),
-            })?;
+            let (d, mut e) = run.delta_at(tt).ok_or_else(|| no_output(tt))?;
             floor.assign(d.abs_ref());
             floor >>= p as i32 - 8;
             if e < floor {
@@ -547,6 +550,25 @@ impl Route {
             }
             e <<= 1;
             out.push((d, e));
+        }
+        // the short run answers to the main one (which the energy
+        // quadrature certifies at the last time): at the short run's last
+        // time the two agree within their error estimates
+        if let (Some(s), Some((_, te))) = (short, short_end) {
+            let (ds, es) = s.delta_at(te).ok_or_else(|| no_output(te))?;
+            let (dm, em) = traj.delta_at(te).ok_or_else(|| no_output(te))?;
+            let mut room = Float::with_val(p, &es + &em) << 1u32;
+            room += Float::with_val(p, dm.abs_ref()) >> (p as i32 - 8);
+            if Float::with_val(p, &ds - &dm).abs() > room {
+                return Err(Error::NotConverged {
+                    quantity: "theta(t)".into(),
+                    requested: digits,
+                    reached: format!(
+                        "the small times' Taylor run disagrees with the main run at {p} bits"
+                    ),
+                    detail: format!("t = {}", crate::numeric::decimal::to_sig(te, 20)),
+                });
+            }
         }
         Ok(out)
     }

@@ -56,10 +56,11 @@ pub struct Sample {
     pub work: Float,
     /// Its rate, the sliding power Σ μk N |s| (0 without slipping contacts).
     pub power: Float,
-    /// sin θ_j and cos θ_j of each line as the sample's KKT solve computed
-    /// them ([`System::trig_kept`]; empty: not kept): a row's energy and
-    /// columns, made after the run, find them instead of computing them
-    /// again.
+    /// θ_j, sin θ_j and cos θ_j of each line as the sample's KKT solve
+    /// computed them ([`System::trig_kept`]; empty: not kept): a row's
+    /// energy and columns, made after the run, find them instead of
+    /// computing them again ([`System::prime_trig`] takes them only for
+    /// the same angles).
     pub trig: Vec<Float>,
 }
 

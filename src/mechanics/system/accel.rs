@@ -31,39 +31,43 @@ impl System {
         }
     }
 
-    /// sin θ_j and cos θ_j of every line (in turn) when the workspace holds
-    /// them for exactly q's angles, else empty: for a [`crate::integrate::solve::Sample`]
-    /// to carry to [`System::prime_trig`].
+    /// θ_j, sin θ_j and cos θ_j of every line (in turn) when the workspace
+    /// holds the sine and cosine for exactly q's angles, else empty: for a
+    /// [`crate::integrate::solve::Sample`] to carry to [`System::prime_trig`].
     pub fn trig_kept(&self, q: &[Float]) -> Vec<Float> {
         let ws = &self.ws;
-        let mut out = Vec::with_capacity(2 * ws.s.len());
+        let mut out = Vec::with_capacity(3 * ws.s.len());
         for j in 0..self.n - 1 {
             let th = &q[th(j)];
             if th.prec() != self.prec || !same(th, &ws.trig_at[j]) {
                 return Vec::new();
             }
+            out.push(th.clone());
             out.push(ws.s[j].clone());
             out.push(ws.c[j].clone());
         }
         out
     }
 
-    /// Puts back sin θ_j and cos θ_j that [`System::trig_kept`] gave at q
-    /// (nothing if `trig` is empty or of another precision): the same bits
-    /// the workspace would compute for that angle.
-    pub fn prime_trig(&mut self, q: &[Float], trig: &[Float]) {
-        if trig.len() != 2 * (self.n - 1) || trig.iter().any(|x| x.prec() != self.prec) {
+    /// Puts back the sines and cosines that [`System::trig_kept`] gave, where
+    /// q's angles are the very ones they were kept for at this precision
+    /// (else nothing): the same bits the workspace would compute there.
+    pub fn prime_trig(&mut self, q: &[Float], kept: &[Float]) {
+        let n = self.n - 1;
+        let fits = kept.len() == 3 * n
+            && kept.iter().all(|x| x.prec() == self.prec)
+            && (0..n).all(|j| {
+                let th = &q[th(j)];
+                th.prec() == self.prec && same(th, &kept[3 * j])
+            });
+        if !fits {
             return;
         }
-        for j in 0..self.n - 1 {
-            let th = &q[th(j)];
-            if th.prec() != self.prec {
-                return;
-            }
-            let ws = &mut self.ws;
-            ws.trig_at[j].assign(th);
-            ws.s[j].assign(&trig[2 * j]);
-            ws.c[j].assign(&trig[2 * j + 1]);
+        let ws = &mut self.ws;
+        for j in 0..n {
+            ws.trig_at[j].assign(&kept[3 * j]);
+            ws.s[j].assign(&kept[3 * j + 1]);
+            ws.c[j].assign(&kept[3 * j + 2]);
         }
     }
 
@@ -538,9 +542,10 @@ mod tests {
     use super::*;
 
     /// The workspace's kept trigonometry and mass matrix are the bits a
-    /// fresh system computes: an energy after a solve at another state, with
-    /// the sample's sin and cos put back or not, equals a fresh system's;
-    /// the kept values are refused at other angles or precisions.
+    /// fresh system computes: an energy after a solve at another state (or
+    /// at another centre distance alone), with the sample's sin and cos put
+    /// back or not, equals a fresh system's; kept values are refused at
+    /// another angle or precision, and used where they fit.
     #[test]
     fn kept_trigonometry_and_mass_matrix_are_the_fresh_bits() {
         use crate::exact::Exact;
@@ -549,8 +554,8 @@ mod tests {
         let p = 150;
         let model = Ideal::paper_default(Exact::parse("theta0", "1/10", false).unwrap());
         let sm = StackModel::from_model(&model);
-        let fresh = || System::new(&sm, p).unwrap();
-        let mut sys = fresh();
+        let fresh = |p: u32| System::new(&sm, p).unwrap();
+        let mut sys = fresh(p);
         let (q0, v0) = sys.initial_state(&sm).unwrap();
         // a second state: another angle and another centre distance
         let mut q1 = q0.clone();
@@ -558,26 +563,42 @@ mod tests {
         q1[rr(0)] += 1e-3f64;
         let mut v1 = v0.clone();
         v1[th(0)] += 0.5f64;
+        // a third: the centre distance alone moved (the mass matrix's key)
+        let mut q2 = q0.clone();
+        q2[rr(0)] += 1e-3f64;
+        sys.accel(&q0, &v0).unwrap();
+        assert_eq!(sys.energy(&q2, &v1), fresh(p).energy(&q2, &v1));
         sys.accel(&q0, &v0).unwrap();
         let kept = sys.trig_kept(&q0);
-        assert_eq!(kept.len(), 2);
+        assert_eq!(kept.len(), 3);
         assert!(sys.trig_kept(&q1).is_empty());
-        let e_fresh = fresh().energy(&q1, &v1);
-        let e_kept = sys.energy(&q1, &v1);
-        assert_eq!(e_kept, e_fresh);
+        let e_fresh = fresh(p).energy(&q1, &v1);
+        assert_eq!(sys.energy(&q1, &v1), e_fresh);
+        // kept at q0, offered at q1: refused (the workspace keeps q1's)
+        sys.prime_trig(&q1, &kept);
+        let (s1, c1) = q1[th(0)].clone().sin_cos(Float::new(p));
+        assert_eq!(sys.cached_trig(&q1[th(0)]), Some((&s1, &c1)));
+        assert_eq!(sys.energy(&q1, &v1), e_fresh);
         // back at q0 through the kept values, after the workspace moved on
         sys.prime_trig(&q0, &kept);
-        assert_eq!(sys.energy(&q0, &v0), fresh().energy(&q0, &v0));
-        // values of another precision are not put back
-        let mut other = System::new(&sm, p + 64).unwrap();
-        other.accel(&q1, &v1).unwrap();
-        other.prime_trig(&q0, &kept);
-        assert!(other.cached_trig(&q0[th(0)]).is_none());
-        // a wrong value put back would show: the check is not vacuous
-        let mut bad = kept.clone();
-        bad[0] += 1e-30f64;
-        sys.prime_trig(&q1, &bad);
-        assert_ne!(sys.energy(&q1, &v1), e_fresh);
+        assert_eq!(sys.cached_trig(&q0[th(0)]), Some((&kept[1], &kept[2])));
+        assert_eq!(sys.energy(&q0, &v0), fresh(p).energy(&q0, &v0));
+        // kept at p, offered to a system at p + 64 at the same angle: refused
+        let hi =
+            |q: &[Float]| -> Vec<Float> { q.iter().map(|x| Float::with_val(p + 64, x)).collect() };
+        let mut other = fresh(p + 64);
+        other.accel(&hi(&q1), &hi(&v1)).unwrap();
+        other.prime_trig(&hi(&q0), &kept);
+        assert!(other.cached_trig(&hi(&q0)[th(0)]).is_none());
+        // where they fit they are used as given: a wrong sine or cosine
+        // would show (in the kinetic energy at v1, in the potential)
+        for k in [1, 2] {
+            let mut bad = kept.clone();
+            bad[k] += 1e-30f64;
+            sys.accel(&q1, &v1).unwrap();
+            sys.prime_trig(&q0, &bad);
+            assert_ne!(sys.energy(&q0, &v1), fresh(p).energy(&q0, &v1), "{k}");
+        }
     }
 
     /// The reduced solve against plain elimination and against the

@@ -21,7 +21,8 @@ impl System {
             let mut row = Float::new(p);
             for (mk, vk) in self.ws.m[i * nq..(i + 1) * nq].iter().zip(v) {
                 // the matrix is sparse: a zero entry adds an exact zero
-                // to a sum that starts at +0 (it cannot change it)
+                // (the velocities are finite) to a sum that starts at +0:
+                // it cannot change it
                 if !mk.is_zero() {
                     row += mk * vk;
                 }
