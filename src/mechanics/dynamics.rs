@@ -61,11 +61,26 @@ pub struct Dyn {
     pub psi0: Float,
     /// Columns of B for the kept cyclic coordinates (conserved momenta).
     pub b_cyclic: Vec<[Float; 4]>,
-    /// Products of the constants the forces and the energy use, each
-    /// rounded as those formulas round it: m1 + m2, (m1 + m2) g, r m2,
-    /// (r r) m2, (m2 g) r (from `m1`, `m2`, `r`, `g` as [`Dyn::new`] sets
-    /// them: those fields are not to be changed afterwards).
-    consts: [Float; 5],
+    /// Products of the constants the forces, the energy and the momenta
+    /// use, each rounded as those formulas round it.
+    k: Products,
+}
+
+/// Products of [`Dyn`]'s constants, each rounded as the formulas that use
+/// them round it, from `m1`, `m2`, `r`, `g` as [`Dyn::new`] sets them (those
+/// fields are not to be changed afterwards).
+#[derive(Debug, Clone)]
+struct Products {
+    /// m1 + m2.
+    m12: Float,
+    /// (m1 + m2) g.
+    m12g: Float,
+    /// r m2.
+    rm2: Float,
+    /// (r r) m2.
+    rrm2: Float,
+    /// (m2 g) r.
+    m2gr: Float,
 }
 
 /// The state of the system at one angle.
@@ -162,7 +177,13 @@ impl Dyn {
                 .iter()
                 .map(|col| [f(&col[0]), f(&col[1]), f(&col[2]), f(&col[3])])
                 .collect(),
-            consts: [m12, m12g, rm2, rrm2, m2gr],
+            k: Products {
+                m12,
+                m12g,
+                rm2,
+                rrm2,
+                m2gr,
+            },
         })
     }
 
@@ -334,7 +355,7 @@ impl Dyn {
     pub fn forces(&self, st: &State) -> Forces {
         let p = self.prec;
         let ax = &st.a[X1];
-        let [m12, m12g, ..] = &self.consts;
+        let Products { m12, m12g, .. } = &self.k;
         let td2 = Float::with_val(p, st.thetadot.square_ref());
         // (g c + ẍ1 s − r θ̇²) m2, summed as written
         let mut t = Float::with_val(p, ax * &st.s);
@@ -377,7 +398,13 @@ impl Dyn {
         let p = self.prec;
         let [xd, pd, sd] = &st.v;
         let td = &st.thetadot;
-        let [m12, _, rm2, rrm2, m2gr] = &self.consts;
+        let Products {
+            m12,
+            rm2,
+            rrm2,
+            m2gr,
+            ..
+        } = &self.k;
         // the terms rounded as (m1+m2) ẋ1 ẋ1 + I1 φ̇1 φ̇1 + I2 ψ̇2 ψ̇2
         // + (r m2) c ẋ1 θ̇ 2 + ((r r) m2) θ̇ θ̇, halved, + ((m2 g) r) c
         let mut t = Float::with_val(p, m12 * xd);
@@ -408,8 +435,7 @@ impl Dyn {
     /// p_j = B_jᵀ M(θ) v, from the full velocities.
     pub fn momenta(&self, st: &State) -> Vec<Float> {
         let p = self.prec;
-        let m12 = &self.consts[0];
-        let m2r = &self.consts[2];
+        let (m12, m2r) = (&self.k.m12, &self.k.rm2);
         // M v with v = (ẋ1, φ̇1, ψ̇2, θ̇)
         let mv = [
             Float::with_val(p, m12 * &st.v[0]) + Float::with_val(p, m2r * &st.c) * &st.thetadot,

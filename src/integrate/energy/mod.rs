@@ -420,7 +420,7 @@ impl Route {
         };
         let mut out = match cheb {
             Some(out) => out,
-            None => self.deltas_taylor(times, tt_all, i_max, p, rel_delta, digits)?,
+            None => self.deltas_taylor(times, tt_all, i_max, p, extra, digits)?,
         };
         let t_last = Float::with_val(tq, &tt_all[i_max]);
         let (d, eps) = out[i_max].clone();
@@ -475,48 +475,45 @@ impl Route {
     }
 
     /// δ and its error at each time by one Taylor run to the last time
-    /// ([`crate::numeric::taylor`], dense output); with `rel_delta`, the
-    /// times whose δ needs more fixed-point bits for its relative accuracy
-    /// than the run carries spare ([`extra_bits_at`]) from a second, short
-    /// run with those bits.
+    /// ([`crate::numeric::taylor`], dense output); the times whose δ needs
+    /// more fixed-point bits for its relative accuracy than the run carries
+    /// spare ([`extra_bits_at`], at most `extra`) from a second, short run
+    /// with `extra` bits.
     pub fn deltas_taylor(
         &mut self,
         times: &[Exact],
         tt_all: &[Float],
         i_max: usize,
         p: u32,
-        rel_delta: bool,
+        extra: u32,
         digits: u32,
     ) -> Result<Vec<(Float, Float)>> {
         let rhs = self.taylor_rhs(p)?;
         let th0 = self.work.start().theta0.to_float(p);
         let td0 = Float::with_val(p, &self.work.start().thetadot0);
         let t_end = tt_all[i_max].clone();
-        // the times whose relative accuracy needs more fraction bits than
-        // the run's limbs carry spare (δ ≈ θ̈0 t²/2 at small t): one short run
-        // with those bits to the latest of them, the rest from the main run
-        // (a limb more for the whole run would cost every row); one run
-        // with them when the last time needs them too
+        // `extra` is what the smallest time needs (extra_bits_at never
+        // grows with t). The times that need more fraction bits than the
+        // run's limbs carry spare come from one short run with `extra`, to
+        // the latest of them, the rest from the main run (a limb more for
+        // the whole run would cost every row); one run with `extra` when
+        // the last time needs it too
         let spare = taylor::spare_frac_bits(p);
         let needs: Vec<bool> = times
             .iter()
             .zip(tt_all)
-            .map(|(t, tt)| rel_delta && !t.is_zero() && extra_bits_at(tt.to_f64(), p) > spare)
+            .map(|(t, tt)| extra > spare && !t.is_zero() && extra_bits_at(tt.to_f64(), p) > spare)
             .collect();
-        let short_end = times
+        // the latest time that needs the bits
+        let short_end = tt_all
             .iter()
-            .zip(tt_all)
             .zip(&needs)
-            .filter(|(_, &n)| n)
-            .map(|((_, tt), _)| (extra_bits_at(tt.to_f64(), p), tt))
-            .fold(None, |m: Option<(u32, &Float)>, (e, tt)| match m {
-                Some((e0, t0)) => Some((e0.max(e), if tt > t0 { tt } else { t0 })),
-                None => Some((e, tt)),
-            });
+            .filter_map(|(tt, &n)| n.then_some(tt))
+            .max_by(|a, b| a.total_cmp(b));
         // (end, extra bits) of the main run, then of the short one
         let plan = match short_end {
-            Some((extra, _)) if needs[i_max] => vec![(&t_end, extra)],
-            Some((extra, te)) => vec![(&t_end, 0), (te, extra)],
+            Some(_) if needs[i_max] => vec![(&t_end, extra)],
+            Some(te) => vec![(&t_end, 0), (te, extra)],
             None => vec![(&t_end, 0)],
         };
         let mut runs = plan
@@ -554,7 +551,7 @@ impl Route {
         // the short run answers to the main one (which the energy
         // quadrature certifies at the last time): at the short run's last
         // time the two agree within their error estimates
-        if let (Some(s), Some((_, te))) = (short, short_end) {
+        if let (Some(s), Some(te)) = (short, short_end) {
             let (ds, es) = s.delta_at(te).ok_or_else(|| no_output(te))?;
             let (dm, em) = traj.delta_at(te).ok_or_else(|| no_output(te))?;
             let mut room = Float::with_val(p, &es + &em) << 1u32;
