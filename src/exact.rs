@@ -447,6 +447,20 @@ mod tests {
             let fives = r.remove_factor_mut(&Integer::from(5));
             assert_eq!(split_two_five(&d), (twos, fives, r), "{d}");
         }
+        // beyond 4096 bits the split is GMP's remove itself: held to the
+        // exponents the cases are built from, not to that same call
+        assert_eq!(
+            split_two_five(&pow(10, 5000)),
+            (5000, 5000, Integer::from(1))
+        );
+        assert_eq!(
+            split_two_five(&(pow(5, 4000) * pow(3, 10))),
+            (0, 4000, pow(3, 10))
+        );
+        assert_eq!(
+            split_two_five(&(pow(2, 70) * pow(5, 30) * 7u32)),
+            (70, 30, Integer::from(7))
+        );
         let t = |s: &str| Exact::parse("t", s, true).unwrap().terminating_text();
         assert_eq!(
             t("0.0048762570891260938526337").as_deref(),

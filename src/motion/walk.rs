@@ -25,7 +25,7 @@ fn after_end(t: &Exact, end: &Float, what: &str) -> Error {
     )
 }
 
-/// The mutable state of [`run`].
+/// The mutable state of [`super::run`].
 pub(super) struct Walk<'a> {
     pub(super) ctx: &'a Ctx,
     pub(super) req: &'a Request,
@@ -69,6 +69,21 @@ impl Walk<'_> {
             .ok_or_else(|| Error::not_physical("internal: no event before the end"))
     }
 
+    /// The next requested time `tt` lies at the end `end` (`what` for
+    /// messages) to within the end time's margin `err`, or was decided to
+    /// lie there (`Side::At`); else it is after the end of the model.
+    fn within_end(&self, tt: &Float, end: &Float, err: &Float, what: &str) -> Result<()> {
+        let at_end = self
+            .req
+            .sides
+            .iter()
+            .any(|(i, _, s)| *i == self.next && *s == Side::At);
+        if !at_end && sides::side_of(tt, end, err, self.ctx.p).is_some() {
+            return Err(after_end(&self.req.times[self.next], end, what));
+        }
+        Ok(())
+    }
+
     /// The motion ends at the last event (`what` for messages): every time
     /// still requested must lie there to within the event time's margin
     /// (then its row is the state at the end), else it is after the end.
@@ -76,14 +91,7 @@ impl Walk<'_> {
         let ev = self.last_event()?;
         while self.next < self.req.times.len() {
             let tt = self.tf[self.next].clone();
-            let at_end = self
-                .req
-                .sides
-                .iter()
-                .any(|(i, _, s)| *i == self.next && *s == Side::At);
-            if !at_end && sides::side_of(&tt, &ev.at.t, &ev.t_err, self.ctx.p).is_some() {
-                return Err(after_end(&self.req.times[self.next], &ev.at.t, what));
-            }
+            self.within_end(&tt, &ev.at.t, &ev.t_err, what)?;
             let mut pt = ev.at.clone();
             pt.state.t = tt;
             pt.err = None;
@@ -146,19 +154,7 @@ impl Walk<'_> {
             let pt = if tt > fli.impact.t {
                 // after the impact: only within its time's margin (the
                 // state at the impact), else outside the model
-                let err = imp_err.clone();
-                let at_end = self
-                    .req
-                    .sides
-                    .iter()
-                    .any(|(i, _, s)| *i == self.next && *s == Side::At);
-                if !at_end && sides::side_of(&tt, &fli.impact.t, &err, self.ctx.p).is_some() {
-                    return Err(after_end(
-                        &self.req.times[self.next],
-                        &fli.impact.t,
-                        "the first impact",
-                    ));
-                }
+                self.within_end(&tt, &fli.impact.t, &imp_err, "the first impact")?;
                 let mut pt = fli.point(&fli.impact.t);
                 pt.state.t = tt;
                 pt

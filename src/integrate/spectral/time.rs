@@ -4,7 +4,7 @@
 //! own when many outputs fall inside one piece.
 
 use super::piece::{within, Piece};
-use crate::numeric::cheb::fixed_sums::LazySums;
+use crate::numeric::cheb::fixed_sums::{FixedSums, LazySums};
 use crate::numeric::cheb::{ChebFit, Roots};
 use rug::{Assign, Float};
 
@@ -58,7 +58,9 @@ fn lower_precisions(p: u32, fx: u32) -> impl Iterator<Item = u32> {
         .collect();
     let half = (p / 2 + 16).div_ceil(64) * 64;
     let last = pow.last().copied().unwrap_or(0);
-    let limbs = |q: u32| (q + 8).div_ceil(64);
+    // the sums' own limb counts (with the rounding up to an instantiated
+    // size): a copy that takes as many limbs saves nothing
+    let limbs = |q: u32| FixedSums::limbs(q).unwrap_or(usize::MAX);
     let extra = (last < p / 2 + 16 && half > last && limbs(half) < limbs(fx)).then_some(half);
     pow.into_iter().chain(extra)
 }
@@ -102,8 +104,10 @@ impl Piece {
     }
 
     /// s in [0, L] where t(s) = tau (t increasing in s): Newton's method in
-    /// f64 from the bracket's linear interpolation, then at full precision
-    /// (each step on one basis) until the step is below 2^(−p/2) L.
+    /// f64 from the bracket's linear interpolation, then on the lower copies
+    /// of t(s) and dt/ds (precision doubling, [`lower_precisions`]), then at
+    /// full precision until a step is below 2^−(p/2+4) L, or below the fixed
+    /// sums' resolution where that is coarser (`fixed_floor`).
     pub(super) fn invert(&self, tau: &Float, lo: &(Float, Float), hi: &(Float, Float)) -> Float {
         let p = tau.prec();
         let mut sc = self.scratch.borrow_mut();
@@ -130,16 +134,6 @@ impl Piece {
                 break;
             }
         }
-        // then t(s) and dt/ds summed in fixed point where it applies (several
-        // times cheaper than MPFR's: FixedSums, built for 16 bits beyond the
-        // interpolants' tolerance, `fixed_prec`), else precision doubling in
-        // MPFR. The fixed sums' error is absolute, 2^−(b+7)·max(1, Σ|c_k|)
-        // for a tolerance 2^−b: s is found to that error in t over the rate,
-        // and Newton stops at that resolution (`fixed_floor`) if it is above
-        // the usual 2^−(p/2+4) L (a piece far shorter than its time unit).
-        // Only output rows and the state at the last time asked read s, and
-        // the ladder's two precisions compare them, so a loss shows in
-        // their verified digits, never silently.
         let zero = Float::new(p);
         let stop = Float::with_val(p, &self.len) >> (p as i32 / 2 + 4);
         // precision doubling: Newton steps on the lower copies (sums in

@@ -75,7 +75,7 @@ impl FixedSums {
     /// precision beyond the instantiated sizes, a coefficient of 2^60 or
     /// more, a fit longer than 256).
     pub fn new(fits: &[&ChebFit], prec: u32) -> Option<Self> {
-        let limbs = fixed::limbs_for((prec as usize + 8).div_ceil(64) + 1)?;
+        let limbs = Self::limbs(prec)?;
         let lens: Vec<usize> = fits.iter().map(|f| f.c.len()).collect();
         let n = lens.iter().copied().max()?.max(2);
         if n > 256 {
@@ -102,6 +102,12 @@ impl FixedSums {
         Some(s)
     }
 
+    /// The limbs of sums built for `prec` bits (8 more fraction bits, one
+    /// integer limb, rounded up to an instantiated size; `None` beyond).
+    pub fn limbs(prec: u32) -> Option<usize> {
+        fixed::limbs_for((prec as usize + 8).div_ceil(64) + 1)
+    }
+
     /// The sum of each fit at `v` of the interval [a, b] into `out` (one per
     /// fit, each rounded to its own precision); `false` (out unspecified)
     /// where a value left the fixed-point range.
@@ -122,11 +128,11 @@ impl FixedSums {
 
 /// [`FixedSums`] built at the first sum asked, for fits that do not change
 /// (a piece's interpolants): every call sums the same fits.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct LazySums {
     sums: std::cell::RefCell<Option<Option<FixedSums>>>,
-    /// The precision the sums are built for (None: the point's).
-    prec: Option<u32>,
+    /// The precision the sums are built for.
+    prec: u32,
 }
 
 impl LazySums {
@@ -135,12 +141,12 @@ impl LazySums {
     pub fn at(prec: u32) -> Self {
         LazySums {
             sums: Default::default(),
-            prec: Some(prec),
+            prec,
         }
     }
 
     /// [`FixedSums::eval`] of `fits` at `v` of [a, b] (built at the first
-    /// call, for this one's precision or else `v`'s); `false` (out
+    /// call, for [`LazySums::at`]'s precision); `false` (out
     /// unspecified) where fixed point does not apply, there or for these
     /// fits at all.
     pub fn eval(
@@ -152,7 +158,7 @@ impl LazySums {
         out: &mut [Float],
     ) -> bool {
         let mut fx = self.sums.borrow_mut();
-        fx.get_or_insert_with(|| FixedSums::new(fits, self.prec.unwrap_or(v.prec())))
+        fx.get_or_insert_with(|| FixedSums::new(fits, self.prec))
             .as_mut()
             .is_some_and(|fx| fx.eval(a, b, v, out))
     }
