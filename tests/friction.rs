@@ -1092,6 +1092,131 @@ fn units_only_rescale_the_motion() {
     );
 }
 
+/// The significant digits of a printed number (no sign, point or exponent).
+fn mantissa(text: &str) -> String {
+    let m = text.split(['e', 'E']).next().unwrap_or("");
+    m.chars()
+        .filter(char::is_ascii_digit)
+        .collect::<String>()
+        .trim_start_matches('0')
+        .to_string()
+}
+
+/// The main frictional case (μ = 0.3 at both contacts, from rest at θ0 =
+/// 1/10) with g = 10^k: the same motion in the time unit 10^(−k/2).
+fn main_mu_0_3_with_g(k: i32) -> Model {
+    let n = rug::Integer::from(rug::Integer::u_pow_u(10, k.unsigned_abs()));
+    let mut p = Params::identical_solid();
+    p.g = if k >= 0 {
+        Rational::from(n)
+    } else {
+        Rational::from((1, n))
+    };
+    Model::new(
+        p,
+        law("0.3"),
+        law("0.3"),
+        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+    )
+    .unwrap()
+}
+
+#[test]
+fn extreme_units_cost_and_verify_as_the_unit_model() {
+    // g sets only the time unit sqrt(r/g): from g = 10^-20 to 10^40 the
+    // spectral route takes the unit model's pieces and evaluations (it asks
+    // for the velocity terms at the natural rate; at θ̇ = 1 with g/r = 10^20
+    // they were the difference of two accelerations 10^20 times their size,
+    // and the route cut the slipping phase into hundreds of pieces), and
+    // every value verifies at the ladder's first rung with the same digits,
+    // shifted by the unit (an event's time is known relative to the time
+    // unit, not to one second: at g = 10^30 the absolute floor of 1 s made
+    // the slip onset fail at 29 digits and the ladder climb; the impact
+    // state's error carries the separation time's error at the state's rate
+    // of change, not at one unit per second)
+    let unit = main_mu_0_3_with_g(0);
+    let cost = run(&unit, PREC, &[]).work_done;
+    let first = cylroll::numeric::verify::precisions(30, 0);
+    let u = separation(&unit, 30);
+    let evs = |x: &Answer| {
+        x.events
+            .iter()
+            .flat_map(|e| [e.t.clone(), e.theta.clone()])
+            .collect::<Vec<_>>()
+    };
+    for k in [-20, 20, 30, 40] {
+        let m = main_mu_0_3_with_g(k);
+        assert_eq!(run(&m, PREC, &[]).work_done, cost, "g = 1e{k}");
+        let a = separation(&m, 30);
+        assert_eq!(a.values.len(), u.values.len());
+        for (x, y) in u
+            .values
+            .iter()
+            .chain(&evs(&u))
+            .zip(a.values.iter().chain(&evs(&a)))
+        {
+            assert_eq!(y.precs, first, "g = 1e{k}: {} climbed the ladder", y.name);
+            assert_eq!(y.digits, x.digits, "g = 1e{k}: {}", y.name);
+            assert_eq!(
+                mantissa(&y.text),
+                mantissa(&x.text),
+                "g = 1e{k}: {}",
+                y.name
+            );
+        }
+    }
+}
+
+#[test]
+fn extreme_units_give_the_unit_model_s_rows() {
+    // every column of a table through both phases (the slipping rows read
+    // off the spectral pieces' sums, each summed relative to its own scale:
+    // with one absolute error for all, at g = 10^-20 the work just after
+    // slip onset, 10^-29 of a unit 2·10^-20, printed a wrong 30th digit as
+    // verified) at g = 10^-20 and 10^60 is the unit model's, digit for
+    // digit; and no row is taken for one at an event (a time's margin is
+    // relative to the time unit: at g = 10^60 a margin of 2^-100 s put every
+    // row within it, and each was placed again at doubling precision)
+    let times: Vec<&str> = vec![
+        "0.5",
+        "2",
+        "4",
+        "4.1594472970245580562965461",
+        "4.1691998112028102440018135",
+        "4.5",
+        "4.9",
+    ];
+    let unit = main_mu_0_3_with_g(0);
+    let ex = |k: i32| -> Vec<Exact> {
+        times
+            .iter()
+            .map(|t| exact(&format!("{t}e{}", -k / 2)))
+            .collect()
+    };
+    let opts = Options::digits(30);
+    let u = oracle::trajectory(&unit, &ex(0), &opts).unwrap();
+    let near0 = run(&unit, PREC, &ex(0)).near;
+    assert!(near0.iter().all(Option::is_none), "{near0:?}");
+    for k in [-20, 60] {
+        let m = main_mu_0_3_with_g(k);
+        assert_eq!(run(&m, PREC, &ex(k)).near, near0, "g = 1e{k}");
+        let a = oracle::trajectory(&m, &ex(k), &opts).unwrap();
+        assert_eq!(a.rows.len(), u.rows.len());
+        for (r, (x, y)) in u.rows.iter().zip(&a.rows).enumerate() {
+            assert_eq!(x.phase, y.phase, "g = 1e{k}, row {r}");
+            for (vx, vy) in x.values.iter().zip(&y.values).skip(1) {
+                assert_eq!(vy.digits, vx.digits, "g = 1e{k}, row {r}: {}", vy.name);
+                assert_eq!(
+                    mantissa(&vy.text),
+                    mantissa(&vx.text),
+                    "g = 1e{k}, row {r}: {}",
+                    vy.name
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn few_digits_and_extreme_units_take_the_same_decisions() {
     // the zero tests of the mode decision and the flight scale with the

@@ -78,6 +78,21 @@ pub fn lam(sys: &System, s: &Sample, r: Row) -> Float {
 }
 
 impl Ctx {
+    /// The thresholds below which each watched function counts as 0 (at a
+    /// start, or at a target angle): √tol of its natural scale
+    /// ([`crate::integrate::solve::Watch::scale`]), in the order of `events`.
+    pub fn snaps(&self, events: &[crate::integrate::solve::Event]) -> Vec<Float> {
+        let units = crate::integrate::solve::Units {
+            ts: self.ts.clone(),
+            r: self.base_r.clone(),
+            force: Float::with_val(self.wp, &self.escale / &self.base_r),
+        };
+        events
+            .iter()
+            .map(|e| e.watch.scale(&units) * &self.rel_tiny)
+            .collect()
+    }
+
     /// The fixed parts of the motion of `model` at working precision `prec`.
     ///
     /// Errors: a model the constrained system cannot represent.

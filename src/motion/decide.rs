@@ -167,7 +167,10 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
     let rdd = free_normal_accel(ctx, &sys, q, v);
     let opens = rdd.is_sign_positive() && !rdd.is_zero();
     let theta = q[sy::th(0)].to_f64();
-    let at = format!("t = {:.12}, theta = {:.12}", t.to_f64(), theta);
+    let at = format!(
+        "t = {}, theta = {theta:.12}",
+        crate::numeric::decimal::to_sig(t, 12)
+    );
     // Coulomb's law: a contact at rest relative to its partner sticks if the
     // force that holds it is within μs N; sliding from rest is the
     // continuation only where sticking is not (this settles the choice

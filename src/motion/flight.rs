@@ -309,8 +309,8 @@ impl Flight {
                 quantity: "separation".into(),
                 requested: 0,
                 reached: format!(
-                    "at separation (t = {:.12}) the free motion would move the cylinders into each other",
-                    self.ts.to_f64()
+                    "at separation (t = {}) the free motion would move the cylinders into each other",
+                    crate::numeric::decimal::to_sig(&self.ts, 12)
                 ),
                 detail: "N12 = 0 while the contact cannot open: no consistent continuation of \
                          the rigid-body model"

@@ -184,6 +184,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             windows: Vec::new(),
             near: Vec::new(),
             target_near: None,
+            ts: ctx.ts.clone(),
         },
         next: 0,
         tf: req.times.iter().map(|t| t.to_float(wp)).collect(),
@@ -403,7 +404,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 .last()
                 .map_or_else(|| Float::new(wp), |e| Float::with_val(wp, &e.theta_err));
             let passed = !ahead.is_sign_positive()
-                || sides::side_of(&th.to_float(wp), &q[sy::th(0)], &err, prec).is_none();
+                || sides::side_of(&th.to_float(wp), &q[sy::th(0)], &err, prec, None).is_none();
             if passed {
                 let acc = sys.accel(&q, &v)?;
                 let smp = sample(&t, &q, &v, acc, &work);
@@ -416,7 +417,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             q: &q,
             v: &v,
             work: work.clone(),
-            snap: Float::with_val(wp, &ctx.escale / &ctx.ts) * &ctx.rel_tiny,
+            snap: ctx.snaps(&ws.events),
         };
         let times = &w.tf[w.next..];
         let spectral = match req.method {
@@ -491,8 +492,8 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                     quantity: "motion".into(),
                     requested: req.digits,
                     reached: format!(
-                        "no end of the motion before t = {:.6} (the horizon searched)",
-                        t_end.to_f64()
+                        "no end of the motion before t = {} (the horizon searched)",
+                        crate::numeric::decimal::to_sig(&t_end, 7)
                     ),
                     detail: "the horizon is four times the rolling model's separation time".into(),
                 });
@@ -533,18 +534,23 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 // an event whose watch is already 0 at the angle (to the
                 // integration's accuracy) lies at the angle itself
                 let vals = solve::watch_values(ws.events.iter().map(|e| &e.watch), &hit.at);
-                let snap = Float::with_val(wp, &ctx.escale / &ctx.ts) * &ctx.rel_tiny;
-                let at_zero = ws.what.iter().zip(&vals).find_map(|(wt, g)| {
-                    let kind = match wt {
-                        What::Separation => (Kind::Separation, Some(Which::Contact)),
-                        What::LiftOff => (Kind::LiftOff, Some(Which::Floor)),
-                        What::FloorImpact => (Kind::Impact, None),
-                        What::Cone(c) => (Kind::SlipOnset, Some(*c)),
-                        What::SlipZero(c) => (Kind::Stick, Some(*c)),
-                        _ => return None,
-                    };
-                    (Float::with_val(wp, g.abs_ref()) <= snap).then_some(kind)
-                });
+                let snaps = ctx.snaps(&ws.events);
+                let at_zero = ws
+                    .what
+                    .iter()
+                    .zip(&vals)
+                    .zip(&snaps)
+                    .find_map(|((wt, g), snap)| {
+                        let kind = match wt {
+                            What::Separation => (Kind::Separation, Some(Which::Contact)),
+                            What::LiftOff => (Kind::LiftOff, Some(Which::Floor)),
+                            What::FloorImpact => (Kind::Impact, None),
+                            What::Cone(c) => (Kind::SlipOnset, Some(*c)),
+                            What::SlipZero(c) => (Kind::Stick, Some(*c)),
+                            _ => return None,
+                        };
+                        (Float::with_val(wp, g.abs_ref()) <= *snap).then_some(kind)
+                    });
                 w.out.target = Some(at.clone());
                 if let Some((kind, which)) = at_zero {
                     w.out.events.push(ev(kind, which, None));
@@ -690,8 +696,8 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         requested: req.digits,
         reached: format!("more than {MAX_MODES} mode changes"),
         detail: format!(
-            "stopped at t = {:.12} (a Zeno cascade of stick-slip events?)",
-            t.to_f64()
+            "stopped at t = {} (a Zeno cascade of stick-slip events?)",
+            crate::numeric::decimal::to_sig(&t, 12)
         ),
     })
 }
@@ -720,8 +726,8 @@ fn grazing(name: &str, t: &Float, mode: Mode) -> Error {
         quantity: "mode".into(),
         requested: 0,
         reached: format!(
-            "event {name} at t = {:.12} leaves the mode {} unchanged",
-            t.to_f64(),
+            "event {name} at t = {} leaves the mode {} unchanged",
+            crate::numeric::decimal::to_sig(t, 12),
             mode.tag()
         ),
         detail: "a grazing event the rigid-body model cannot resolve at this precision".into(),

@@ -194,6 +194,9 @@ pub struct Motion {
     pub near: Vec<Option<usize>>,
     /// The event whose angle the target cannot be told apart from.
     pub target_near: Option<usize>,
+    /// The time unit sqrt(r/g) of the model: the natural scale of its
+    /// times (a time's margin at an event is relative to it).
+    pub ts: Float,
 }
 
 impl Motion {

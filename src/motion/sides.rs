@@ -32,21 +32,28 @@ pub enum Side {
 /// The margin within which a value cannot be told from an event's at the
 /// ladder's precision `p` (the integrators' tolerance is 2^−(p−8), their
 /// working precision higher): four times the event's error estimate and
-/// the integration's.
-fn margin(v: &Float, err: &Float, p: u32) -> Float {
+/// the integration's, relative to |v| plus the value's natural scale
+/// (`scale`: the time unit for a time; None, 1, for an angle) — not 1,
+/// which for a motion in microseconds would put every time near its event.
+fn margin(v: &Float, err: &Float, p: u32, scale: Option<&Float>) -> Float {
     let wp = v.prec();
-    let one = Float::with_val(wp, 1u32);
-    let floor = (Float::with_val(wp, v.abs_ref()) + &one) >> (p as i32 - 24);
+    let mut floor = Float::with_val(wp, v.abs_ref());
+    match scale {
+        Some(s) => floor += s,
+        None => floor += 1u32,
+    }
+    floor >>= p as i32 - 24;
     (Float::with_val(wp, err) + floor) * 4u32
 }
 
-/// The event nearest `t` in time, if `t` is within its margin.
-pub fn near_in_time(events: &[EventRec], t: &Float, p: u32) -> Option<usize> {
+/// The event nearest `t` in time, if `t` is within its margin (`ts` the
+/// time unit).
+pub fn near_in_time(events: &[EventRec], t: &Float, p: u32, ts: &Float) -> Option<usize> {
     events
         .iter()
         .enumerate()
         .filter(|(_, e)| {
-            Float::with_val(t.prec(), t - &e.at.t).abs() <= margin(&e.at.t, &e.t_err, p)
+            Float::with_val(t.prec(), t - &e.at.t).abs() <= margin(&e.at.t, &e.t_err, p, Some(ts))
         })
         .min_by(|(_, a), (_, b)| {
             let da = Float::with_val(t.prec(), t - &a.at.t).abs();
@@ -63,7 +70,7 @@ pub fn near_in_angle(events: &[EventRec], theta: &Float, p: u32) -> Option<usize
         .enumerate()
         .filter(|(_, e)| {
             Float::with_val(theta.prec(), theta - &e.at.theta).abs()
-                <= margin(&e.at.theta, &e.theta_err, p)
+                <= margin(&e.at.theta, &e.theta_err, p, None)
         })
         .min_by(|(_, a), (_, b)| {
             let da = Float::with_val(theta.prec(), theta - &a.at.theta).abs();
@@ -73,12 +80,12 @@ pub fn near_in_angle(events: &[EventRec], theta: &Float, p: u32) -> Option<usize
         .map(|(k, _)| k)
 }
 
-/// The side of `x` (a time or an angle) relative to an event at `ev`
-/// (its value and error) at the ladder's precision `p`, or None within the
-/// margin.
-pub fn side_of(x: &Float, ev: &Float, err: &Float, p: u32) -> Option<Side> {
+/// The side of `x` (a time, `scale` the time unit; or an angle, None)
+/// relative to an event at `ev` (its value and error) at the ladder's
+/// precision `p`, or None within the margin.
+pub fn side_of(x: &Float, ev: &Float, err: &Float, p: u32, scale: Option<&Float>) -> Option<Side> {
     let d = Float::with_val(x.prec(), x - ev);
-    if d.clone().abs() <= margin(ev, err, p) {
+    if d.clone().abs() <= margin(ev, err, p, scale) {
         None
     } else if d.is_sign_negative() {
         Some(Side::Before)
@@ -95,7 +102,7 @@ pub fn mark_near(m: &mut Motion, req: &Request, p: u32) {
         .times
         .iter()
         .take(n)
-        .map(|t| near_in_time(&m.events, &t.to_float(m.prec()), p))
+        .map(|t| near_in_time(&m.events, &t.to_float(m.prec()), p, &m.ts))
         .collect();
     m.target_near = m
         .target
@@ -192,11 +199,12 @@ pub fn trim_events(m: &mut Motion, req: &Request, p: u32) {
         // the events found just past the angle are not the answer's
         let th = target.theta.clone();
         m.events
-            .retain(|e| side_of(&th, &e.at.theta, &e.theta_err, p) != Some(Side::Before));
+            .retain(|e| side_of(&th, &e.at.theta, &e.theta_err, p, None) != Some(Side::Before));
     }
     if req.until == super::Until::LastTime {
         if let Some(last) = req.times.last() {
             let tl = last.to_float(m.prec());
+            let ts = m.ts.clone();
             let i_last = req.times.len() - 1;
             let mut k = 0usize;
             m.events.retain(|e| {
@@ -210,7 +218,7 @@ pub fn trim_events(m: &mut Motion, req: &Request, p: u32) {
                 k += 1;
                 match decided {
                     Some(s) => s != Side::Before,
-                    None => side_of(&tl, &e.at.t, &e.t_err, p) != Some(Side::Before),
+                    None => side_of(&tl, &e.at.t, &e.t_err, p, Some(&ts)) != Some(Side::Before),
                 }
             });
             if m.end.is_some() && m.events.last().is_none_or(|e| !e.kind.ends()) {

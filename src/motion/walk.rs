@@ -78,7 +78,7 @@ impl Walk<'_> {
             .sides
             .iter()
             .any(|(i, _, s)| *i == self.next && *s == Side::At);
-        if !at_end && sides::side_of(tt, end, err, self.ctx.p).is_some() {
+        if !at_end && sides::side_of(tt, end, err, self.ctx.p, Some(&self.ctx.ts)).is_some() {
             return Err(after_end(&self.req.times[self.next], end, what));
         }
         Ok(())
@@ -116,7 +116,9 @@ impl Walk<'_> {
         let ev = self.last_event()?;
         let thf = th.to_float(self.ctx.wp);
         let decided_at = matches!(self.req.target_side, Some((_, Side::At)));
-        if decided_at || sides::side_of(&thf, &ev.at.theta, &ev.theta_err, self.ctx.p).is_none() {
+        if decided_at
+            || sides::side_of(&thf, &ev.at.theta, &ev.theta_err, self.ctx.p, None).is_none()
+        {
             self.out.target = Some(ev.at.clone());
             return Ok(true);
         }

@@ -37,8 +37,11 @@ pub fn signature(m: &Motion) -> Vec<String> {
 }
 
 /// An integrated value: its own error estimate is a few units of the
-/// integrator's tolerance (the comparison of the two precisions carries
-/// the real weight).
+/// integrators' tolerance, relative to |v| plus the quantity's natural
+/// scale as their error tests are (the comparison of the two precisions
+/// carries the real weight). The scale, not 1: a time of 10^−15 s in a
+/// motion whose time unit is that small is not known to 10^−45 s absolutely
+/// because a unit of 1 s would allow it.
 pub fn integrated(v: &Float, scale: Float) -> Estimate {
     integrated_owned(v.clone(), scale)
 }
@@ -52,7 +55,7 @@ pub fn integrated_owned(v: Float, scale: Float) -> Estimate {
 pub fn integrated_shared(v: Float, scale: Arc<Float>) -> Estimate {
     let p = v.prec();
     let mut err = Float::with_val(p, v.abs_ref());
-    err += 1u32;
+    err += &*scale;
     err >>= p as i32 - 24;
     Estimate::shared(v, err, scale)
 }
@@ -160,11 +163,12 @@ pub fn push_point_estimates(
     }
 }
 
-/// The estimates of each event's time and angle.
-pub fn event_estimates(m: &Motion, out: &mut Vec<Estimate>) {
+/// The estimates of each event's time (natural scale `ts`, the time unit
+/// sqrt(r/g) of [`column_scales`]) and angle.
+pub fn event_estimates(m: &Motion, ts: &Float, out: &mut Vec<Estimate>) {
     for e in &m.events {
         let p = e.at.t.prec();
-        let mut te = integrated(&e.at.t, one(p));
+        let mut te = integrated(&e.at.t, Float::with_val(p, ts));
         te.err += Float::with_val(p, &e.t_err);
         out.push(te);
         let mut th = integrated(&e.at.theta, one(p));
@@ -269,7 +273,7 @@ impl Runs<'_> {
                 }
                 let ev = &m.events[k];
                 let t = self.req.times[i].to_float(q);
-                match motion::sides::side_of(&t, &ev.at.t, &ev.t_err, q) {
+                match motion::sides::side_of(&t, &ev.at.t, &ev.t_err, q, Some(&m.ts)) {
                     // past the end of the model by less than the digits
                     // asked resolve (the end's time printed to more digits
                     // and read back): the state at the end
@@ -288,7 +292,8 @@ impl Runs<'_> {
                 if same(k) {
                     let ev = &m.events[k];
                     let th = theta.to_float(q);
-                    if let Some(side) = motion::sides::side_of(&th, &ev.at.theta, &ev.theta_err, q)
+                    if let Some(side) =
+                        motion::sides::side_of(&th, &ev.at.theta, &ev.theta_err, q, None)
                     {
                         // past the separation (or the end) by less than the
                         // digits asked resolve: the state at it

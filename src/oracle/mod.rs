@@ -432,16 +432,22 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     let vals = laddered(&mut runs, first.clone(), &names, 1, |m, _| {
         let m = &m;
         let mut out = Vec::new();
-        event_estimates(m, &mut out);
         let p = m.prec();
+        let sc = ladder::column_scales(model, p);
+        let scale = |name: &str| {
+            let k = motion::point::column_index(name).unwrap_or(0);
+            Float::with_val(p, &*sc[k])
+        };
+        let ts = &sc[0];
+        event_estimates(m, &sc[0], &mut out);
         if let Some(i) = sep_ev {
             out.push(out[2 * i + 1].clone());
             out.push(out[2 * i].clone());
             let w = &m.events[i].at.work;
             out.push(if m.events[i].at.is_exact_zero(20) {
-                Estimate::zero(p, Float::with_val(p, 1u32))
+                Estimate::zero(p, scale("work"))
             } else {
-                integrated(w, Float::with_val(p, 1u32))
+                integrated(w, scale("work"))
             });
         }
         if let Some(i) = ind_ev {
@@ -449,7 +455,6 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
             out.push(out[2 * i].clone());
             // the state there, with the event's location error carried
             let ev = &m.events[i];
-            let sc = ladder::column_scales(model, p);
             let all = ladder::point_estimates(&ev.at, &sc, None);
             let loc = Float::with_val(p, &ev.theta_err)
                 + Float::with_val(p, &ev.t_err) * Float::with_val(p, ev.at.theta_dot.abs_ref());
@@ -464,19 +469,22 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
             let ev_err = sep_ev
                 .map(|i| m.events[i].t_err.clone())
                 .unwrap_or_else(|| Float::new(p));
-            for v in [
-                &imp.t,
-                &imp.x1,
-                &imp.x2,
-                &imp.y2,
-                &imp.vx1,
-                &imp.phi1_dot,
-                &imp.vx2,
-                &imp.vy2,
-                &imp.psi2_dot,
+            for (v, column) in [
+                (&imp.t, "t"),
+                (&imp.x1, "x1"),
+                (&imp.x2, "x2"),
+                (&imp.y2, "y2"),
+                (&imp.vx1, "x1_dot"),
+                (&imp.phi1_dot, "phi1_dot"),
+                (&imp.vx2, "x2_dot"),
+                (&imp.vy2, "y2_dot"),
+                (&imp.psi2_dot, "phi2_dot"),
             ] {
-                let mut e = integrated(v, Float::with_val(p, 1u32));
-                e.err += Float::with_val(p, &ev_err) * 16u32;
+                // the separation time's error moves the state there by its
+                // rate of change: 16 natural scales per time unit
+                let sc = scale(column);
+                let mut e = integrated(v, sc.clone());
+                e.err += Float::with_val(p, &ev_err * sc) / &**ts * 16u32;
                 out.push(e);
             }
         }
@@ -650,7 +658,11 @@ pub fn time(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         return Ok(ans);
     }
     let (v, phase, note) = at_angle(model, opts, theta, "to", &["t"], |pt| {
-        vec![integrated(&pt.t, Float::with_val(pt.t.prec(), 1u32))]
+        let p = pt.t.prec();
+        vec![integrated(
+            &pt.t,
+            Float::with_val(p, &*ladder::column_scales(model, p)[0]),
+        )]
     })?;
     ans.values = v;
     ans.phase = Some(phase);

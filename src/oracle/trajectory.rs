@@ -241,7 +241,7 @@ fn trajectory_block(
         let mut out = Vec::with_capacity((n_rows + n_ev) * idx.len());
         // the events' times and angles, as rows of their own columns
         let mut ev = Vec::new();
-        event_estimates(&m, &mut ev);
+        event_estimates(&m, &shared[0], &mut ev);
         if theta_only {
             for ((t, th), text) in times.iter().zip(ladder::theta_estimates(&m)).zip(&exact_t) {
                 let mut te = ladder::integrated_shared(t.to_float(p), shared[0].clone());

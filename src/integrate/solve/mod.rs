@@ -18,7 +18,7 @@
 mod locate;
 mod watch;
 
-pub use watch::{watch_value, watch_values, Watch};
+pub use watch::{watch_value, watch_values, Units, Watch};
 
 use super::gbs::{Gbs, Rhs, Stats, Stepper};
 use crate::error::{Error, Result};
@@ -246,13 +246,13 @@ pub fn run(
         q: q0,
         v: v0,
         work: Float::new(opts.prec),
-        snap: Float::new(opts.prec),
+        snap: Vec::new(),
     };
     run_from(sys, &start, times, t_end, events, opts)
 }
 
 /// Where a run starts: time, state, dissipated work so far, and the
-/// threshold below which a watched function's initial |value| counts as 0
+/// thresholds below which a watched function's initial |value| counts as 0
 /// (a function that starts on its boundary, e.g. a slip velocity just after
 /// slip onset, is watched only once it has left it).
 #[derive(Debug, Clone)]
@@ -265,8 +265,10 @@ pub struct Start<'a> {
     pub v: &'a [Float],
     /// Work dissipated before t.
     pub work: Float,
-    /// Snap threshold for initial event values.
-    pub snap: Float,
+    /// Snap threshold for each event's initial value, in the order of the
+    /// events (a small multiple of its [`Watch::scale`]); none (0) for an
+    /// event beyond the list.
+    pub snap: Vec<Float>,
 }
 
 /// [`run`] from a given start (a later mode of a motion with friction):
@@ -313,9 +315,14 @@ pub fn run_with<I: Stepper>(
     cur.work = Float::with_val(p, &start.work);
     let mut gprev: Vec<Float> = events
         .iter()
-        .map(|e| {
+        .enumerate()
+        .map(|(k, e)| {
             let g = watch_value(&e.watch, &cur);
-            if Float::with_val(p, g.abs_ref()) <= start.snap {
+            if start
+                .snap
+                .get(k)
+                .is_some_and(|s| Float::with_val(p, g.abs_ref()) <= *s)
+            {
                 Float::new(p)
             } else {
                 g

@@ -6,7 +6,7 @@
 
 use super::Sample;
 use crate::error::Result;
-use crate::mechanics::system::System;
+use crate::mechanics::system::{self as sy, System};
 use rug::Float;
 
 /// What an event watches.
@@ -53,6 +53,48 @@ pub enum Watch {
         /// offset.
         offset: Float,
     },
+}
+
+/// The natural units of a motion, in which a watched function is measured
+/// ([`Watch::scale`]): its time unit sqrt(r/g), its length r, its force.
+#[derive(Debug, Clone)]
+pub struct Units {
+    /// Time sqrt(r/g).
+    pub ts: Float,
+    /// Length r.
+    pub r: Float,
+    /// Force (m2 g).
+    pub force: Float,
+}
+
+impl Watch {
+    /// The natural scale of the watched function in `u`: a force for a
+    /// multiplier, a length or an angle (1) for a coordinate, that over the
+    /// time unit for a rate, r/ts² for a free normal acceleration, the
+    /// largest of its terms' for a combination. A threshold such as "this
+    /// function starts at 0" is a small multiple of it, so that a motion in
+    /// other units (g = 10^−40 or 10^40) takes the same decisions.
+    pub fn scale(&self, u: &Units) -> Float {
+        let p = u.ts.prec();
+        let coord = |i: usize| {
+            // x1, y1 and the r_j are lengths; φ1, the ψ and the θ_j angles
+            if i == sy::X1 || i == sy::Y1 || (i >= sy::rr(0) && (i - sy::rr(0)) % 3 == 0) {
+                u.r.clone()
+            } else {
+                Float::with_val(p, 1u32)
+            }
+        };
+        match self {
+            Watch::Multiplier(_) => u.force.clone(),
+            Watch::Rate(i) => coord(*i) / &u.ts,
+            Watch::Coord(i) | Watch::Reach { i, .. } => coord(*i),
+            Watch::Lin(terms) => terms.iter().fold(Float::new(p), |m, (w, c)| {
+                m.max(&(w.scale(u) * Float::with_val(p, c.abs_ref())))
+            }),
+            Watch::FreeNormal { .. } => Float::with_val(p, &u.r / &u.ts) / &u.ts,
+            Watch::Height { .. } => u.r.clone(),
+        }
+    }
 }
 
 /// The value of a watched function at a sample.

@@ -205,9 +205,14 @@ pub fn run(
         };
         events
             .iter()
-            .map(|e| {
+            .enumerate()
+            .map(|(k, e)| {
                 let g = watch_value(&e.watch, &smp0);
-                (Float::with_val(p, g.abs_ref()) > start.snap).then_some(g)
+                let zero = match start.snap.get(k) {
+                    Some(s) => Float::with_val(p, g.abs_ref()) <= *s,
+                    None => g.is_zero(),
+                };
+                (!zero).then_some(g)
             })
             .collect()
     };
@@ -470,7 +475,7 @@ mod tests {
         for mut sys in modes() {
             for (theta, thd) in [(0.2, 0.3), (0.7, -1.1), (1.3, 2.5)] {
                 let q = coords(theta);
-                let (a, ab) = sys.accel_pair(&q, 0).unwrap();
+                let (a, ab) = sys.accel_pair(&q, 0, 0).unwrap();
                 let v = vec![f(0.3), f(0.0), f(-0.7), f(1.1), f(thd), f(0.0)];
                 let acc = sys.accel(&q, &v).unwrap();
                 let u = Float::with_val(P, f(thd).square_ref());
@@ -532,7 +537,7 @@ mod tests {
             q,
             v,
             work: Float::new(P),
-            snap: Float::new(P),
+            snap: Vec::new(),
         }
     }
 

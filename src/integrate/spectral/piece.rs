@@ -54,9 +54,6 @@ pub(super) struct Piece {
     fixed: LazySums,
     /// t(s) − t0 and dt/ds in fixed point for the inversions.
     pub(super) fixed_time: LazySums,
-    /// The smallest Newton step in s the fixed-point t(s) resolves
-    /// ([`resolution`]): the inversions in fixed point stop there.
-    pub(super) fixed_floor: Float,
 }
 
 pub(super) enum Attempt {
@@ -71,33 +68,13 @@ pub(super) enum Attempt {
 /// for ([`LazySums`]: the rows, their times and the state at the last time
 /// asked, values only read): 16 bits beyond the interpolants' tolerance
 /// tol = 2^−b, at most the working precision p, in fewer limbs than p would
-/// take (at 30 digits 4 instead of 5). The sums are then within
-/// 2^−(b+7)·max(1, Σ|c_k|) of the exact ones, absolutely: 2^−7 of the
-/// tolerance for an interpolant of unit scale, and far below the rows' own
-/// error estimates (a few units of 2^−(b−16), relative to max(1, |v|)). The
-/// tolerance is relative to each interpolant's scale (`within`), so for a
-/// piece much shorter than its time unit the s(t) interpolant may miss its
-/// own and each row is inverted alone (slower, as accurate).
+/// take (at 30 digits 4 instead of 5). Each interpolant is summed in its
+/// own scale, within 2^−(b+6)·Σ|c_k| of the exact sum: 2^−6 of its
+/// tolerance, which is relative to its scale too (`within`), and far below
+/// the rows' own error estimates (a few units of 2^−(b−16)).
 pub(super) fn fixed_prec(tol: &Float, p: u32) -> u32 {
     let b = tol.get_exp().map_or(p, |e| (1 - e).max(1) as u32);
     (b + 16).min(p)
-}
-
-/// The smallest step in s that t(s) − t0 summed in fixed point for `fx`
-/// bits resolves on a piece of length `len` and time span Δt = Σ c_k (the
-/// fit at s = L): its absolute error 2^−(fx−9)·max(1, Σ|c_k|), with four
-/// bits to spare, over the mean rate Δt/L (at most 1/L of the span when
-/// Δt < 1). Newton in fixed point stops there rather than step in the
-/// sums' noise to its last iteration.
-fn resolution(dt: &ChebFit, len: &Float, fx: u32) -> Float {
-    let p = len.prec();
-    let span = dt.c.iter().fold(Float::new(p), |a, c| a + c).abs();
-    let total = dt.c.iter().fold(Float::new(p), |a, c| a + c.clone().abs());
-    let scale = Float::with_val(p, total.max(&Float::with_val(p, 1u32)));
-    if span.is_zero() {
-        return Float::with_val(p, len);
-    }
-    (Float::with_val(p, len * &scale) / span) >> (fx as i32 - 13)
 }
 
 /// Whether the fit's last coefficients are below tol·(max |f| + floor);
@@ -123,17 +100,27 @@ fn theta_at(th0: &Float, dir: i32, m: u32, s: &Float) -> Float {
     Float::with_val(p, th0 + sm * dir)
 }
 
-/// a and b of q̈ = a + b θ̇² (and of λ) at angle θ: two KKT solves.
-fn probe(sys: &mut System, q: &mut [Float], th: &Float) -> Result<(Accel, Accel)> {
+/// a and b of q̈ = a + b θ̇² (and of λ) at angle θ: two KKT solves, the
+/// second at θ̇ = 2^k ([`System::accel_pair`]; b is their difference over
+/// 4^k, exactly).
+fn probe(sys: &mut System, q: &mut [Float], th: &Float, k: i32) -> Result<(Accel, Accel)> {
     q[sy::th(0)].assign(th);
-    let (a0, mut a1) = sys.accel_pair(q, 0)?;
+    let (a0, mut a1) = sys.accel_pair(q, 0, k)?;
     for (x, y) in a1.qdd.iter_mut().zip(&a0.qdd) {
         *x -= y;
+        *x >>= 2 * k;
     }
     for (x, y) in a1.lambda.iter_mut().zip(&a0.lambda) {
         *x -= y;
+        *x >>= 2 * k;
     }
     Ok((a0, a1))
+}
+
+/// k with 2^k the power of two nearest the natural rate 1/ts (within a
+/// factor 2): where [`probe`] asks for the velocity terms.
+pub(super) fn rate_exp(ts: &Float) -> i32 {
+    ts.get_exp().map_or(0, |e| 1 - e)
 }
 
 /// x + y·u for vectors.
@@ -183,9 +170,10 @@ pub(super) fn attempt(
     let mut used = 0usize;
     let mut parts = Vec::with_capacity(n);
     let mut qp = q0.to_vec();
+    let k = rate_exp(&su.sc.ts);
     for s in &pts {
         crate::cancel::check()?;
-        parts.push(probe(sys, &mut qp, &theta_at(th0, dir, m, s))?);
+        parts.push(probe(sys, &mut qp, &theta_at(th0, dir, m, s), k)?);
         *evals += 2;
     }
     // θ'(s) = σ m s^(m−1)
@@ -420,7 +408,6 @@ pub(super) fn attempt(
         scratch: Default::default(),
         fixed: LazySums::at(fx),
         fixed_time: LazySums::at(fx),
-        fixed_floor: resolution(&dt, len, fx),
         dt64: dt.to_f64(),
         rate64: rfit.to_f64(),
         nodes,
@@ -550,39 +537,5 @@ impl Piece {
     pub(super) fn t_end(&self) -> Float {
         let p = self.len.prec();
         Float::with_val(p, &self.t0 + self.dt.eval(&self.len, p))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The inversions' resolution in s: the fixed-point error of t(s),
-    /// 2^−(fx−9)·max(1, Σ|c_k|), over the mean rate Δt/L, with four bits
-    /// to spare; for t(s) = t0 + Δt (1 + x)/2 on [0, L] (c = [Δt/2, Δt/2]).
-    #[test]
-    fn resolution_is_the_sums_error_over_the_rate() {
-        let p = 200;
-        let f = |x: f64| Float::with_val(p, x);
-        let fit = |dt: f64| ChebFit {
-            a: f(0.0),
-            b: f(0.5),
-            c: vec![f(dt / 2.0), f(dt / 2.0)],
-            fmax: f(dt),
-        };
-        let len = f(0.5);
-        // a span below 1: L·2^−(fx−13)/Δt
-        let r = resolution(&fit(1e-20), &len, 179);
-        let want = Float::with_val(p, &len / f(1e-20)) >> (179 - 13);
-        assert!((Float::with_val(p, &r / &want) - 1u32).abs() < 1e-12);
-        // a span of 8: Σ|c| = 8 scales the error as 1/Δt does the step
-        let r = resolution(&fit(8.0), &len, 179);
-        let want = Float::with_val(p, &len) >> (179 - 13);
-        assert!((Float::with_val(p, &r / &want) - 1u32).abs() < 1e-12);
-        // no span: the whole piece (nothing to resolve)
-        assert_eq!(resolution(&fit(0.0), &len, 179), len);
-        // an ordinary piece resolves far below the usual stop 2^−(p/2+4) L
-        let r = resolution(&fit(0.3), &len, 179);
-        assert!(r < Float::with_val(p, &len) >> (226 / 2 + 4));
     }
 }

@@ -106,8 +106,7 @@ impl Piece {
     /// s in [0, L] where t(s) = tau (t increasing in s): Newton's method in
     /// f64 from the bracket's linear interpolation, then on the lower copies
     /// of t(s) and dt/ds (precision doubling, [`lower_precisions`]), then at
-    /// full precision until a step is below 2^−(p/2+4) L, or below the fixed
-    /// sums' resolution where that is coarser (`fixed_floor`).
+    /// full precision until a step is below 2^−(p/2+4) L.
     pub(super) fn invert(&self, tau: &Float, lo: &(Float, Float), hi: &(Float, Float)) -> Float {
         let p = tau.prec();
         let mut sc = self.scratch.borrow_mut();
@@ -171,19 +170,13 @@ impl Piece {
         }
         // full precision: t(s) and dt/ds summed in fixed point where it
         // applies (several times cheaper than MPFR's: FixedSums, built for
-        // 16 bits beyond the interpolants' tolerance, `fixed_prec`), else in
-        // MPFR. The fixed sums' error is absolute, 2^−(b+7)·max(1, Σ|c_k|)
-        // for a tolerance 2^−b: s is found to that error in t over the rate,
-        // and Newton stops at that resolution (`fixed_floor`) if it is above
-        // the usual 2^−(p/2+4) L (a piece far shorter than its time unit).
-        // Only output rows and the state at the last time asked read s, and
-        // the ladder's two precisions compare them, so a loss shows in
-        // their verified digits, never silently.
+        // 16 bits beyond the interpolants' tolerance, `fixed_prec`, each in
+        // its own scale), else in MPFR. Only output rows and the state at
+        // the last time asked read s.
         let fits = [&self.dt, &self.rate];
         let mut fd = [Float::new(p), Float::new(p)];
-        let stop_fx = Float::with_val(p, &self.fixed_floor).max(&stop);
         let after_lower = s.clone();
-        if let Some(s) = newton(s, lo, hi, &stop_fx, |s| {
+        if let Some(s) = newton(s, lo, hi, &stop, |s| {
             self.fixed_time
                 .eval(&fits, &zero, &self.len, s, &mut fd)
                 .then(|| (Float::with_val(p, &fd[0] - &target), fd[1].clone()))

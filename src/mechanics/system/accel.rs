@@ -243,13 +243,17 @@ impl System {
         Ok(Accel { qdd, lambda })
     }
 
-    /// The accelerations and multipliers at q for θ̇_j = 0 and θ̇_j = 1 (every
-    /// other rate 0), from one elimination with two right-hand sides. With
-    /// ṙ = 0 the equations depend on the rates only through the θ̇_j², so
-    /// q̈ = a + b θ̇_j² with a the first and a + b the second.
+    /// The accelerations and multipliers at q for θ̇_j = 0 and θ̇_j = 2^k
+    /// (every other rate 0), from one elimination with two right-hand
+    /// sides. With ṙ = 0 the equations depend on the rates only through the
+    /// θ̇_j², so q̈ = a + b θ̇_j² with a the first and a + b 4^k the second.
+    /// 2^k should be near the motion's natural rate sqrt(g/r): there the
+    /// two terms are of one size and b = (second − a)/4^k loses nothing to
+    /// cancellation (at θ̇ = 1 with g/r = 10^20, b would be the difference of
+    /// two numbers 10^20 times larger than itself).
     ///
     /// Errors: a singular system.
-    pub fn accel_pair(&mut self, q: &[Float], j: usize) -> Result<(Accel, Accel)> {
+    pub fn accel_pair(&mut self, q: &[Float], j: usize, k: i32) -> Result<(Accel, Accel)> {
         let nq = self.nq();
         let nk = nq + self.rows.len();
         let p = self.prec;
@@ -258,6 +262,7 @@ impl System {
         // the second right-hand side: the rates enter h only (the rows'
         // right-hand sides carry −ṙ θ̇, which is 0 for both)
         v[th(j)].assign(1u32);
+        v[th(j)] <<= k;
         self.forces_h(q, &v);
         let mut b1 = self.ws.b[..nk].to_vec();
         for (x, h) in b1.iter_mut().zip(&self.ws.h[..nq]) {
