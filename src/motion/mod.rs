@@ -359,7 +359,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         crate::cancel::check()?;
         let mut sys = ctx.system(mode)?;
         // the branch watch (parting becoming lawful) while the contact holds
-        let branch_watch = !ctx.held && std::env::var("NOBW").is_err();
+        let branch_watch = !ctx.held;
         let mut ws = watch::of_mode(&ctx, &sys, mode, branch_watch);
         if let Some(th) = &target_theta {
             ws.events.push(Event {
