@@ -92,13 +92,25 @@ fn malformed_candidates_are_named() {
         ("t,theta\n0,0.05,1\n", "fields"),
         ("t,theta\n0,nan\n", "not finite"),
         ("t,theta\n100,1\n", "every row, from row 1, is after it"),
-        ("t,theta\n0,0.05\n1,abc\n", "row 2, column theta"),
-        ("t,theta\n0,0.05\n1,1/3\n", "row 2, column theta"),
+        ("t,theta\n0,0.05\n1,abc\n", "row 2 (line 3), column theta"),
+        ("t,theta\n0,0.05\n1,1/3\n", "row 2 (line 3), column theta"),
         (
             "t,theta\n0,0.05\n0.5,0.05\n0.25,0.05\n",
-            "row 3: t = 0.25 is before",
+            "row 3 (line 4): t = 0.25 is before",
         ),
-        ("t,theta\n-1,0.05\n", "row 1: t = -1 is before the start"),
+        (
+            "t,theta\n-1,0.05\n",
+            "row 1 (line 2): t = -1 is before the start",
+        ),
+        // blank lines are skipped, and counted in the line named
+        (
+            "\nt,theta\n\n0,0.05\n\n1,abc\n",
+            "row 2 (line 6), column theta",
+        ),
+        (
+            "t,theta\n0,0.05\n\n1,0.05,7\n",
+            "row 2 (line 4) has 3 fields",
+        ),
     ] {
         let out = run(csv, &[]);
         assert_eq!(out.status.code(), Some(2), "{csv:?}");

@@ -36,6 +36,11 @@ pub trait Source {
     fn name(&self) -> &str;
     /// A reader from the first byte.
     fn open(&self) -> Result<Box<dyn BufRead + '_>>;
+    /// Whether messages name a row's line as well (a file the user can open
+    /// at that line; not text made in memory, e.g. from Python arrays).
+    fn lines(&self) -> bool {
+        true
+    }
 }
 
 /// A candidate held in memory as CSV text.
@@ -49,6 +54,9 @@ pub struct Text<'a> {
 impl Source for Text<'_> {
     fn name(&self) -> &str {
         &self.name
+    }
+    fn lines(&self) -> bool {
+        false
     }
     fn open(&self) -> Result<Box<dyn BufRead + '_>> {
         Ok(Box::new(std::io::Cursor::new(self.text.as_bytes())))
@@ -116,6 +124,11 @@ pub struct Rows<'a> {
     pub header: Header,
     /// Data rows read so far.
     pub rows: usize,
+    /// Lines of the file read so far (the header and blank lines count):
+    /// a row's line, for messages that point into the file.
+    line: usize,
+    /// Whether messages name the line ([`Source::lines`]).
+    show_lines: bool,
     max_rows: usize,
     /// The previous row's time (rows must be in time order).
     prev_t: Option<Exact>,
@@ -127,8 +140,11 @@ impl<'a> Rows<'a> {
         let source = src.name().to_string();
         let mut reader = src.open()?;
         let mut buf = Vec::new();
+        let mut line = 0usize;
         let header = loop {
-            match next_line(&mut reader, &mut buf, &source)? {
+            let next = next_line(&mut reader, &mut buf, &source)?;
+            line += 1;
+            match next {
                 None => return Err(refuse(&source, "is empty; expected a header row")),
                 Some(l) if l.trim().is_empty() => continue,
                 Some(l) => break crate::model::input::strip_bom(&l).to_string(),
@@ -141,6 +157,8 @@ impl<'a> Rows<'a> {
             source,
             header,
             rows: 0,
+            line,
+            show_lines: src.lines(),
             max_rows: lim.max_rows,
             prev_t: None,
         })
@@ -181,6 +199,7 @@ impl<'a> Rows<'a> {
             let Some(line) = next_line(&mut self.reader, &mut self.buf, &self.source)? else {
                 return Ok(None);
             };
+            self.line += 1;
             if line.trim().is_empty() {
                 continue;
             }
@@ -197,8 +216,13 @@ impl<'a> Rows<'a> {
             if self.rows % 4096 == 0 {
                 crate::cancel::check()?;
             }
-            let (t, cells) = parse_row(&line, self.rows, &self.header, &self.source)?;
-            let row = self.rows;
+            // a row named by its number among the data rows (and its line)
+            let row = if self.show_lines {
+                format!("{} (line {})", self.rows, self.line)
+            } else {
+                self.rows.to_string()
+            };
+            let (t, cells) = parse_row(&line, &row, &self.header, &self.source)?;
             if t.signum() < 0 {
                 return Err(refuse(
                     &self.source,
@@ -217,7 +241,7 @@ impl<'a> Rows<'a> {
                 }
             }
             self.prev_t = Some(t.clone());
-            return Ok(Some((row, t, cells)));
+            return Ok(Some((self.rows, t, cells)));
         }
     }
 }
@@ -299,8 +323,8 @@ fn next_line<R: BufRead + ?Sized>(
     Ok(Some(text.trim_end_matches(['\n', '\r']).to_string()))
 }
 
-/// One data row (1-based `row`) parsed against the header.
-fn parse_row(line: &str, row: usize, h: &Header, source: &str) -> Result<(Exact, Vec<Cell>)> {
+/// One data row (`row` names it in messages) parsed against the header.
+fn parse_row(line: &str, row: &str, h: &Header, source: &str) -> Result<(Exact, Vec<Cell>)> {
     let cells: Vec<&str> = line.split(',').map(|c| c.trim()).collect();
     if cells.len() != h.cols.len() {
         return Err(refuse(
