@@ -129,6 +129,28 @@ impl Exact {
         }
     }
 
+    /// The order of two numbers: exact for rationals; a multiple of π is
+    /// compared after rounding to 256 bits.
+    pub fn cmp_value(&self, other: &Exact) -> std::cmp::Ordering {
+        if !self.times_pi && !other.times_pi {
+            self.coef.cmp(&other.coef)
+        } else {
+            let (a, b) = (self.to_float(256), other.to_float(256));
+            a.partial_cmp(&b).unwrap_or(std::cmp::Ordering::Equal)
+        }
+    }
+
+    /// Whether the number is at most `x`: decided exactly for a rational
+    /// (no rounding to a precision first); a multiple of π (never a time)
+    /// is rounded to 64 bits more than `x` carries first.
+    pub fn le_float(&self, x: &Float) -> bool {
+        if self.times_pi {
+            self.to_float(x.prec() + 64) <= *x
+        } else {
+            *x >= self.coef
+        }
+    }
+
     /// The exact decimal text of a rational time or angle that is a
     /// terminating decimal (echoed as given, not rounded).
     pub fn terminating_text(&self) -> Option<String> {
@@ -350,6 +372,35 @@ fn parse_decimal(s: &str) -> Option<Rational> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn compares_exactly_not_after_rounding() {
+        // 1/3 lies strictly between its two 64-bit neighbours: exactly above
+        // the one below, below the one above, whichever the rounding picks
+        let third = Exact::parse("t", "1/3", false).unwrap();
+        let down = Float::with_val_round(64, &third.coef, rug::float::Round::Down).0;
+        let up = Float::with_val_round(64, &third.coef, rug::float::Round::Up).0;
+        assert!(down < up);
+        assert!(!third.le_float(&down));
+        assert!(third.le_float(&up));
+        // the rounded value is one of them: comparing it would call 1/3 ≤ down
+        // or 1/3 > up for one of the two
+        let near = third.to_float(64);
+        assert!(near == down || near == up);
+        let tenth = Exact::parse("t", "0.1", false).unwrap();
+        assert_eq!(tenth.cmp_value(&third), std::cmp::Ordering::Less);
+        assert_eq!(third.cmp_value(&third.clone()), std::cmp::Ordering::Equal);
+        let pi_6 = Exact::parse("x", "pi/6", true).unwrap();
+        // π/6 = 0.5236 against 1/2 and 11/20
+        assert_eq!(
+            pi_6.cmp_value(&Exact::parse("x", "1/2", true).unwrap()),
+            std::cmp::Ordering::Greater
+        );
+        assert_eq!(
+            pi_6.cmp_value(&Exact::parse("x", "11/20", true).unwrap()),
+            std::cmp::Ordering::Less
+        );
+    }
 
     #[test]
     fn parses_exact_forms() {

@@ -264,7 +264,7 @@ pub fn first_phase(
     let covered = wants
         .times
         .iter()
-        .take_while(|t| t.to_float(p + 16) <= t_end)
+        .take_while(|t| t.le_float(&t_end))
         .count();
     let times = &wants.times[..covered];
     let mut rows = Vec::new();
@@ -282,13 +282,13 @@ pub fn first_phase(
             Some(&t_end),
         )?;
         for (i, (t, (d, derr))) in times.iter().zip(deltas).enumerate() {
-            let tf = t.to_float(p);
             if wants.theta_only {
                 let th = Float::with_val(p, &th0w + &d);
                 let ulps = Float::with_val(p, th.abs_ref()) >> (p as i32 - 4);
                 thetas.push((route.odd(th), Phase::Contact(mode), Some(derr + ulps)));
                 continue;
             }
+            let tf = t.to_float(p);
             let (a, energy) = route.columns_at(&d, &tf, p)?;
             // the columns' errors from δ's: only the higher run's error
             // estimate counts on the ladder (the lower run's value is the

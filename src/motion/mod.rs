@@ -185,9 +185,9 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             near: Vec::new(),
             target_near: None,
             ts: ctx.ts.clone(),
+            times: req.times.iter().map(|t| t.to_float(wp)).collect(),
         },
         next: 0,
-        tf: req.times.iter().map(|t| t.to_float(wp)).collect(),
         e0,
         conservative: true,
     };
@@ -217,7 +217,12 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         // an event's margin): an event that the last time cannot be told
         // apart from is located too
         Until::LastTime => {
-            let last = w.tf.last().cloned().unwrap_or_else(|| Float::new(wp));
+            let last = w
+                .out
+                .times
+                .last()
+                .cloned()
+                .unwrap_or_else(|| Float::new(wp));
             let bits = crate::numeric::bits_for_digits(req.digits.max(1)) as i32;
             let beyond = (Float::with_val(wp, last.abs_ref()) + &ctx.ts) >> (bits / 4 + 4);
             last + beyond
@@ -419,7 +424,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             work: work.clone(),
             snap: ctx.snaps(&ws.events),
         };
-        let times = &w.tf[w.next..];
+        let times = &w.out.times[w.next..];
         let spectral = match req.method {
             Method::Auto | Method::Spectral => crate::integrate::spectral::run(
                 &mut sys,

@@ -197,6 +197,10 @@ pub struct Motion {
     /// The time unit sqrt(r/g) of the model: the natural scale of its
     /// times (a time's margin at an event is relative to it).
     pub ts: Float,
+    /// The requested times at the working precision (converted once: a
+    /// rational's conversion is a division, and a table reads them in
+    /// several places).
+    pub times: Vec<Float>,
 }
 
 impl Motion {

@@ -98,11 +98,11 @@ pub fn side_of(x: &Float, ev: &Float, err: &Float, p: u32, scale: Option<&Float>
 /// this precision.
 pub fn mark_near(m: &mut Motion, req: &Request, p: u32) {
     let n = m.rows.len().max(m.thetas.len());
-    m.near = req
+    m.near = m
         .times
         .iter()
-        .take(n)
-        .map(|t| near_in_time(&m.events, &t.to_float(m.prec()), p, &m.ts))
+        .take(n.min(req.times.len()))
+        .map(|t| near_in_time(&m.events, t, p, &m.ts))
         .collect();
     m.target_near = m
         .target

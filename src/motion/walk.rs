@@ -32,8 +32,6 @@ pub(super) struct Walk<'a> {
     pub(super) out: Motion,
     /// Index of the next requested time.
     pub(super) next: usize,
-    /// Requested times at this precision.
-    pub(super) tf: Vec<Float>,
     /// The energy at the start.
     pub(super) e0: Float,
     /// No work has been dissipated so far.
@@ -90,7 +88,7 @@ impl Walk<'_> {
     pub(super) fn end_here(&mut self, end: End, what: &str) -> Result<()> {
         let ev = self.last_event()?;
         while self.next < self.req.times.len() {
-            let tt = self.tf[self.next].clone();
+            let tt = self.out.times[self.next].clone();
             self.within_end(&tt, &ev.at.t, &ev.t_err, what)?;
             let mut pt = ev.at.clone();
             pt.state.t = tt;
@@ -151,8 +149,8 @@ impl Walk<'_> {
         for e in fli.events() {
             self.out.events.push(e);
         }
-        while self.next < self.tf.len() {
-            let tt = self.tf[self.next].clone();
+        while self.next < self.out.times.len() {
+            let tt = self.out.times[self.next].clone();
             let pt = if tt > fli.impact.t {
                 // after the impact: only within its time's margin (the
                 // state at the impact), else outside the model

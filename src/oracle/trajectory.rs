@@ -235,7 +235,7 @@ fn trajectory_block(
     let first_rows = std::mem::take(&mut first.rows);
     let kept = first.clone();
     first.rows = first_rows;
-    let mut table = laddered(&mut runs, first, &names, n_rows + n_ev, |m, run| {
+    let mut table = laddered(&mut runs, first, &names, n_rows + n_ev, |mut m, run| {
         let p = m.prec();
         let shared = ladder::column_scales(model, p);
         let mut out = Vec::with_capacity((n_rows + n_ev) * idx.len());
@@ -243,8 +243,13 @@ fn trajectory_block(
         let mut ev = Vec::new();
         event_estimates(&m, &shared[0], &mut ev);
         if theta_only {
-            for ((t, th), text) in times.iter().zip(ladder::theta_estimates(&m)).zip(&exact_t) {
-                let mut te = ladder::integrated_shared(t.to_float(p), shared[0].clone());
+            let tf = std::mem::take(&mut m.times);
+            for ((t, th), text) in tf
+                .into_iter()
+                .zip(ladder::theta_estimates(&m))
+                .zip(&exact_t)
+            {
+                let mut te = ladder::integrated_shared(t, shared[0].clone());
                 te.exact_text = text.clone();
                 out.push(te);
                 out.push(th);

@@ -373,8 +373,8 @@ impl Route {
         let t_min = times
             .iter()
             .filter(|t| !t.is_zero())
-            .map(|t| t.to_f64())
-            .fold(f64::INFINITY, f64::min);
+            .min_by(|a, b| a.cmp_value(b))
+            .map_or(f64::INFINITY, Exact::to_f64);
         let extra = if rel_delta {
             extra_bits_at(t_min, p)
         } else {
