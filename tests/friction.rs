@@ -1168,6 +1168,43 @@ fn extreme_units_cost_and_verify_as_the_unit_model() {
 }
 
 #[test]
+fn a_large_mu_finds_its_close_cone_roots_in_any_units() {
+    // μ = 10^9 puts the cone polynomial's two roots ~1/μ apart near the
+    // parting, with a dip between them of the size of its μ-free part; the
+    // isolation's extra bits come from the ratio of the two sizes. From the
+    // sum in absolute units, at g = 10^-20 (or masses 10^-10) the bits were
+    // too few: the pair was missed (the rolling model's θs printed as
+    // verified, 1.2e-10 off) or no sign change was found
+    let at = |mu: &str, g: i32, m: &str| {
+        let mut p = Params::identical_solid();
+        p.g = main_mu_0_3_with_g(g).params().g.clone();
+        p.m1 = q(m);
+        p.m2 = q(m);
+        Model::new(
+            p,
+            law(mu),
+            law(mu),
+            Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+        )
+        .unwrap()
+    };
+    for (mu, g, m) in [("1e9", -20, "1"), ("1e8", 0, "1e-10"), ("1e14", -30, "1")] {
+        let unit = separation(&at(mu, 0, "1"), 30);
+        let a = separation(&at(mu, g, m), 30);
+        let kinds = |x: &Answer| x.events.iter().map(|e| e.kind).collect::<Vec<_>>();
+        assert_eq!(kinds(&a), kinds(&unit), "mu {mu}, g 1e{g}, m {m}");
+        for name in ["theta_s", "work_s"] {
+            let (x, y) = (unit.value(name).unwrap(), a.value(name).unwrap());
+            assert_eq!(
+                mantissa(&y.text),
+                mantissa(&x.text),
+                "mu {mu}, g 1e{g}, m {m}: {name}"
+            );
+        }
+    }
+}
+
+#[test]
 fn extreme_units_give_the_unit_model_s_rows() {
     // every column of a table through both phases (the slipping rows read
     // off the spectral pieces' sums, each summed relative to its own scale:

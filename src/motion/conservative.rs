@@ -113,14 +113,14 @@ pub fn first_phase(
     // the other events that can end the phase, as roots of polynomials in c
     if !ctx.held {
         let hp = route.n1_poly();
-        if let Some((d, e)) = route.first_root("lift-off", &hp, &ds, p)? {
+        if let Some((d, e)) = route.first_root("lift-off", &hp, None, &ds, p)? {
             refined.push((Ending::LiftOff, d, e));
         }
     }
     for w in [Which::Floor, Which::Contact] {
         if let Law::Coulomb { mu_s, .. } = ctx.law(w) {
-            let hp = route.cone_poly(w, mu_s);
-            if let Some((d, e)) = route.first_root("slip onset", &hp, &ds, p)? {
+            let (hp, unit) = route.cone_poly(w, mu_s);
+            if let Some((d, e)) = route.first_root("slip onset", &hp, Some(&unit), &ds, p)? {
                 refined.push((Ending::Cone(w), d, e));
             }
         }
@@ -143,7 +143,7 @@ pub fn first_phase(
         let hp = route.free_normal_poly();
         if route.sign_at_start(&hp)? > 0 {
             starts_open = true;
-        } else if let Some(found) = route.first_root("branch point", &hp, &ds, p)? {
+        } else if let Some(found) = route.first_root("branch point", &hp, None, &ds, p)? {
             branch_found = Some(found);
         }
     }
@@ -339,16 +339,28 @@ pub fn first_phase(
                 .law(w)
                 .static_coef()
                 .ok_or_else(|| Error::not_physical("internal: a cone without a coefficient"))?;
-            let hp = route.cone_poly(w, &mu);
-            root_or(route.first_root("slip onset", &hp, &ds, wp)?, &d_end, wp)
+            let (hp, unit) = route.cone_poly(w, &mu);
+            root_or(
+                route.first_root("slip onset", &hp, Some(&unit), &ds, wp)?,
+                &d_end,
+                wp,
+            )
         }
         Ending::LiftOff => {
             let hp = route.n1_poly();
-            root_or(route.first_root("lift-off", &hp, &ds, wp)?, &d_end, wp)
+            root_or(
+                route.first_root("lift-off", &hp, None, &ds, wp)?,
+                &d_end,
+                wp,
+            )
         }
         Ending::BranchPart => {
             let hp = route.free_normal_poly();
-            root_or(route.first_root("branch point", &hp, &ds, wp)?, &d_end, wp)
+            root_or(
+                route.first_root("branch point", &hp, None, &ds, wp)?,
+                &d_end,
+                wp,
+            )
         }
         Ending::FloorImpact => {
             let pr = route.work.params();

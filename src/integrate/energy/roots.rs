@@ -47,8 +47,11 @@ impl Route {
 
     /// μ² (N K²)² − (1 − c²)(F K²/sin θ)² of a contact while it rolls: ≥ 0
     /// exactly where |F| ≤ μ N (N > 0), so its fall through 0 is where
-    /// rolling would first need more friction than μ (a slip onset).
-    pub fn cone_poly(&mut self, which: Which, mu: &Rational) -> HPoly {
+    /// rolling would first need more friction than μ (a slip onset); and
+    /// its μ-free part −(1 − c²)(F K²)², whose size is that of the dip
+    /// between the two roots a large μ puts close together (the scale
+    /// [`Route::first_root`] isolates them against).
+    pub fn cone_poly(&mut self, which: Which, mu: &Rational) -> (HPoly, HPoly) {
         let fp = self.force_polys();
         let (a, b) = match which {
             Which::Floor => (HPoly::linear(&fp.f1), HPoly::linear(&fp.n1)),
@@ -65,9 +68,11 @@ impl Route {
         };
         let one_m_c2 = HPoly::constant(&[Rational::from(1), Rational::new(), Rational::from(-1)]);
         let mu2 = Rational::from(mu.square_ref());
-        HPoly::default()
+        let free = HPoly::default().add_scaled(&one_m_c2.mul(&a).mul(&a), &Rational::from(-1));
+        let cone = HPoly::default()
             .add_scaled(&b.mul(&b), &mu2)
-            .add_scaled(&one_m_c2.mul(&a).mul(&a), &Rational::from(-1))
+            .add_scaled(&free, &Rational::from(1));
+        (cone, free)
     }
 
     /// N1·K² as a polynomial in c.
@@ -92,13 +97,16 @@ impl Route {
 
     /// The first sign change of `hp` in θ on (θ0, θ_end) (working frame;
     /// `delta_end` = θ_end − θ0, needed to a few bits): δ = θ − θ0 there and
-    /// its error bound at `p` bits, or None.
+    /// its error bound at `p` bits, or None. `unit`: a polynomial whose size
+    /// is the natural scale of `hp`'s values (the μ-free part of a cone
+    /// polynomial), or None where that is `hp`'s own.
     ///
     /// Errors: a root the refinement cannot verify.
     pub fn first_root(
         &mut self,
         name: &str,
         hp: &HPoly,
+        unit: Option<&HPoly>,
         delta_end: &Float,
         p: u32,
     ) -> Result<Option<(Float, Float)>> {
@@ -106,12 +114,18 @@ impl Route {
             let d = &self.engine(ISO)?.dynm;
             (d.c0.clone(), N12Poly::a_h(d))
         };
-        // isolation at 64 bits plus the coefficients' magnitude: a cone
-        // polynomial carries μ², and for a large μ its two roots around
-        // N12 = 0 lie ~1/μ apart with |P| = O(1) between them, a dip that
-        // 64-bit Horner sums of O(μ²) terms cannot see (the pair would be
-        // merged and the slip onset missed)
-        let iso = isolation_bits(&hp.at(&a_h, ISO));
+        // isolation at 64 bits plus the coefficients' magnitude over the
+        // values' natural scale: a cone polynomial carries μ², and for a
+        // large μ its two roots around N12 = 0 lie ~1/μ apart with a dip
+        // between them of the size of its μ-free part, which 64-bit Horner
+        // sums of μ² times larger terms cannot see (the pair would be merged
+        // and the slip onset missed). The ratio, not the sum in absolute
+        // units: a model in other units (g = 10^-20) has the same roots.
+        let coef = hp.at(&a_h, ISO);
+        let iso = isolation_bits(
+            &coef,
+            &unit.map_or_else(|| coef.clone(), |u| u.at(&a_h, ISO)),
+        );
         // the end of the range at the precision it is known to (a root ~1/μ
         // before θs must not fall outside a 64-bit rounding of cos θs)
         let ep = iso.max(delta_end.prec());
@@ -148,21 +162,24 @@ impl Route {
 
 /// The precision at which the sign changes of a polynomial with these
 /// coefficients are isolated: 64 bits, plus the binary magnitude of the sum
-/// of the coefficients' absolute values above 1 (Horner's rounding error at
-/// c in [−1, 1] is about that sum times 2^−prec), so that a dip of order 1
+/// of the coefficients' absolute values over that of `unit`'s (the natural
+/// scale of its values) where above 1: Horner's rounding error at c in
+/// [−1, 1] is about the sum times 2^−prec, so that a dip of the unit's size
 /// between two close roots keeps its sign. Capped at 64 + 8192 bits.
-fn isolation_bits(coef: &[Float]) -> u32 {
-    let sum: f64 = coef.iter().map(|c| c.to_f64().abs()).sum();
-    let extra = if sum.is_finite() && sum > 1.0 {
-        sum.log2().ceil() as u32
-    } else if sum.is_finite() {
-        0
-    } else {
-        // beyond f64: the largest exponent
-        coef.iter()
-            .filter_map(|c| c.get_exp())
-            .max()
-            .map_or(0, |e| e.max(0) as u32 + 8)
+fn isolation_bits(coef: &[Float], unit: &[Float]) -> u32 {
+    // log2 of Σ|c_k|, in f64 where it fits, else from the exponents
+    let log_sum = |cs: &[Float]| -> Option<f64> {
+        let sum: f64 = cs.iter().map(|c| c.to_f64().abs()).sum();
+        if sum.is_finite() && sum > 0.0 {
+            Some(sum.log2())
+        } else {
+            let e = cs.iter().filter_map(|c| c.get_exp()).max()?;
+            Some(f64::from(e) + (cs.len() as f64).log2())
+        }
     };
-    ISO + extra.min(8192)
+    let extra = match (log_sum(coef), log_sum(unit)) {
+        (Some(a), Some(u)) if a > u => (a - u).ceil().min(8192.0) as u32,
+        _ => 0,
+    };
+    ISO + extra
 }

@@ -239,7 +239,7 @@ impl Oracle {
         }
         let th0 = self.route.work.start().theta0.to_float(64);
         let ds = Float::with_val(64, theta_s.value.clone().abs() - th0.abs());
-        let Some((d, err)) = self.route.first_root("branch point", &hp, &ds, 64)? else {
+        let Some((d, err)) = self.route.first_root("branch point", &hp, None, &ds, 64)? else {
             return Ok(None);
         };
         // coinciding with θs within both bounds: no branch point
@@ -252,7 +252,7 @@ impl Oracle {
             let (ds, _) = self.route.delta_s(p)?;
             let (d, err) = self
                 .route
-                .first_root("branch point", &hp, &ds, p)?
+                .first_root("branch point", &hp, None, &ds, p)?
                 .ok_or_else(|| {
                     Error::not_physical("internal: the branch point was lost at a higher precision")
                 })?;
