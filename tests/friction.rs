@@ -1205,6 +1205,33 @@ fn a_large_mu_finds_its_close_cone_roots_in_any_units() {
 }
 
 #[test]
+fn the_note_on_an_abrupt_parting_holds_in_any_units() {
+    // with μ = 10 the contact opens while N12 is still 0.0194 m2 g (a note
+    // says so); with μ = 0.3 N12 falls to 0 there. The test is against the
+    // unit m2 g and on the sign: in absolute newtons a rounding residual
+    // of 10^8 N at g = 10^60 made the note (with a negative N12 "> 0") and
+    // 0.0194·10^-20 N at g = 10^-20 lost it
+    let opens = |a: &Answer| {
+        a.notes
+            .iter()
+            .any(|n| n.contains("the contact opens while N12"))
+    };
+    for (mu, want) in [("10", true), ("0.3", false)] {
+        for k in [-20, 0, 60] {
+            let p = main_mu_0_3_with_g(k).params().clone();
+            let m = Model::new(
+                p,
+                law(mu),
+                law(mu),
+                Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+            )
+            .unwrap();
+            assert_eq!(opens(&separation(&m, 20)), want, "mu {mu}, g 1e{k}");
+        }
+    }
+}
+
+#[test]
 fn extreme_units_give_the_unit_model_s_rows() {
     // every column of a table through both phases (the slipping rows read
     // off the spectral pieces' sums, each summed relative to its own scale:

@@ -503,8 +503,14 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     ans.routes = first.routes.clone();
     ans.notes = motion_notes(&first, opts);
     if let (Some(i), Some(imp)) = (sep_ev, &first.impact) {
+        // N12 at the parting, against 10^-12 of its unit m2 g (not of one
+        // newton: in other units a rounding residual passed, a genuine force
+        // did not), and positive: a residual of either sign is the ordinary
+        // parting where N12 falls to 0
         let n = first.events[i].at.n12.to_f64();
-        if n.abs() > 1e-12 && opts.branch == Branch::Stay {
+        let pr = model.params();
+        let unit = rug::Rational::from(&pr.m2 * &pr.g).to_f64();
+        if n > 1e-12 * unit && opts.branch == Branch::Stay {
             ans.notes.push(format!(
                 "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
                  event no mode with the contact closed is consistent and the free motion \
