@@ -473,6 +473,53 @@ fn stacks_of_three_and_four_open_a_contact() {
     }
 }
 
+/// A stack in other units is the same motion: at g = 10^-60 … 10^60 the
+/// three-cylinder stack opens the same contact at the unit stack's θ, at a
+/// time scaled by 10^(-k/2), verified at the first rung with the same
+/// digits and no projection (the finite-difference rate of a multiplier, the
+/// event time's tolerance and the constraint drift in seconds and metres,
+/// not in the stack's units, made g = 10^40 fail to verify the opening and
+/// g = 10^60 find another contact open first).
+#[test]
+fn a_stack_in_other_units_is_the_same_motion() {
+    let field = |rep: &str, key: &str| -> (String, String) {
+        let l = rep
+            .lines()
+            .find(|l| l.starts_with(key) && l[key.len()..].trim_start().starts_with('='))
+            .unwrap_or_else(|| panic!("{key} in {rep}"))
+            .to_string();
+        let v = l.split('=').nth(1).unwrap().trim().to_string();
+        let mut it = v.split_whitespace();
+        let num = it.next().unwrap().to_string();
+        let mant: String = num
+            .split(['e', 'E'])
+            .next()
+            .unwrap()
+            .chars()
+            .filter(char::is_ascii_digit)
+            .collect::<String>()
+            .trim_start_matches('0')
+            .to_string();
+        (mant, it.collect::<Vec<_>>().join(" "))
+    };
+    let unit = stack_report("n=3;theta0=0.1,0.05", 30, false).unwrap();
+    for g in ["1e-60", "1e40", "1e60"] {
+        let rep = stack_report(&format!("n=3;theta0=0.1,0.05;g={g}"), 30, false).unwrap();
+        assert!(rep.contains("first_opening = N23"), "g = {g}: {rep}");
+        assert!(rep.contains("(0 projections)"), "g = {g}: {rep}");
+        for key in ["t_open", "theta1"] {
+            let (mu, du) = field(&unit, key);
+            let (mg, dg) = field(&rep, key);
+            assert_eq!(mg, mu, "g = {g}: {key}");
+            assert_eq!(
+                dg.split(';').next(),
+                du.split(';').next(),
+                "g = {g}: {key} digits"
+            );
+        }
+    }
+}
+
 /// A turning point θ̇ = 0 is located to full precision: a two-cylinder
 /// stack thrown towards the top (θ̇0 < 0) stops where energy says,
 /// (g/r) cos θt = K(θ0) θ̇0²/2 + (g/r) cos θ0 with K = 1 + k2 − A(cos θ − k2)²

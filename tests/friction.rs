@@ -1232,6 +1232,21 @@ fn the_note_on_an_abrupt_parting_holds_in_any_units() {
 }
 
 #[test]
+fn a_small_time_has_its_digits_in_any_units() {
+    // t = 10^-30 after the start in the paper's units is t = 1 at
+    // g = 10^-60: δ ≈ θ̈0 t²/2 needs its extra fraction bits counted in the
+    // model's time unit (counted in seconds, the row at g = 10^-60 had
+    // none: θ̇ verified to 30 digits where the unit model has 33)
+    let opts = Options::digits(40);
+    let unit = oracle::trajectory(&main_mu_0_3_with_g(0), &[exact("1e-30")], &opts).unwrap();
+    let slow = oracle::trajectory(&main_mu_0_3_with_g(-60), &[exact("1")], &opts).unwrap();
+    for (x, y) in unit.rows[0].values.iter().zip(&slow.rows[0].values).skip(1) {
+        assert_eq!(y.digits, x.digits, "{}", y.name);
+        assert_eq!(mantissa(&y.text), mantissa(&x.text), "{}", y.name);
+    }
+}
+
+#[test]
 fn extreme_units_give_the_unit_model_s_rows() {
     // every column of a table through both phases (the slipping rows read
     // off the spectral pieces' sums, each summed relative to its own scale:

@@ -541,7 +541,7 @@ pub fn report(digits: u32) -> Result<VerifyReport> {
             description: case.model.describe(),
             rows,
             route2: Some(format!(
-                "constraint drift {}, energy change {}, momentum change {}; {} steps ({} rejected), {} evaluations, column <= {}",
+                "constraint drift {} (of r, r/ts), energy change {}, momentum change {}; {} steps ({} rejected), {} evaluations, column <= {}",
                 short(&rep.run.run.max_drift),
                 short(&rep.run.energy_drift),
                 short(&rep.run.momentum_drift),

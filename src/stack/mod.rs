@@ -372,7 +372,7 @@ pub fn report(spec: &Spec, digits: u32, json: bool) -> Result<String> {
         ));
     }
     notes.push(format!(
-        "conservation at {p2} bits: max |E - E0|/scale = {}, max |p - p0|/scale = {} over {} conserved momenta; constraint drift {} ({} projections)",
+        "conservation at {p2} bits: max |E - E0|/scale = {}, max |p - p0|/scale = {} over {} conserved momenta; constraint drift {} of the units r, r/ts ({} projections)",
         short(&fin.energy_drift),
         short(&fin.momentum_drift),
         fin.p0.len(),

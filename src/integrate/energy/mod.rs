@@ -320,6 +320,14 @@ impl Route {
         Ok(())
     }
 
+    /// log2 of the time unit [`extra_bits_at`] counts small times in,
+    /// sqrt(r/(2g)) (in f64).
+    fn log2_time_unit(&self) -> f64 {
+        let pr = self.work.params();
+        let r_over_2g = rug::Rational::from(&pr.r() / &pr.g) / 2u32;
+        log2_f64(&Float::with_val(64, &r_over_2g)) / 2.0
+    }
+
     /// t_s at precision `p` (cached: a fact of the model).
     pub fn t_s_at(&mut self, p: u32) -> Result<Float> {
         if let Some(t) = self.caches.t_s_at.get(&p) {
@@ -370,13 +378,14 @@ impl Route {
         // there (only the trajectory's rows need δ to full relative
         // accuracy): the times' precision and the Chebyshev route's (the
         // Taylor route gives them to the times that need them)
-        let t_min = times
+        let log2_ts = self.log2_time_unit();
+        let log2_t_min = times
             .iter()
             .filter(|t| !t.is_zero())
             .min_by(|a, b| a.cmp_value(b))
-            .map_or(f64::INFINITY, Exact::to_f64);
+            .map_or(f64::INFINITY, |t| log2_f64(&t.to_float(64)));
         let extra = if rel_delta {
-            extra_bits_at(t_min, p)
+            extra_bits_at(log2_t_min - log2_ts, p)
         } else {
             0
         };
@@ -499,10 +508,13 @@ impl Route {
         // the whole run would cost every row); one run with `extra` when
         // the last time needs it too
         let spare = taylor::spare_frac_bits(p);
+        let log2_ts = self.log2_time_unit();
         let needs: Vec<bool> = times
             .iter()
             .zip(tt_all)
-            .map(|(t, tt)| extra > spare && !t.is_zero() && extra_bits_at(tt.to_f64(), p) > spare)
+            .map(|(t, tt)| {
+                extra > spare && !t.is_zero() && extra_bits_at(log2_f64(tt) - log2_ts, p) > spare
+            })
             .collect();
         // the latest time that needs the bits
         let short_end = tt_all
@@ -788,11 +800,24 @@ impl Route {
     }
 }
 
+/// log2 |x| in f64 for any exponent (−∞ for 0), from the mantissa and the
+/// exponent apart (no MPFR logarithm, no f64 overflow).
+fn log2_f64(x: &Float) -> f64 {
+    if x.is_zero() {
+        return f64::NEG_INFINITY;
+    }
+    let (m, e) = x.to_f64_exp();
+    m.abs().log2() + f64::from(e)
+}
+
 /// Fraction bits beyond the working precision `p` that δ needs at time `t`
-/// for full relative accuracy (δ ≈ θ̈0 t²/2 at small t: 2 log2(1/t) and 8
-/// more; none from t = 1 on), at most `p`.
-pub fn extra_bits_at(t: f64, p: u32) -> u32 {
-    let lt = t.max(1e-300).log2();
+/// for full relative accuracy (δ ≈ θ̈0 t²/2 at small t, θ̈0 of the order of
+/// g/r: 2 log2(T/t) and 8 more; none from t = T on), at most `p`. `log2_t`
+/// is log2(t/T), the time in the unit T = sqrt(r/(2g)) (the mean radius's;
+/// 1 in the paper's units, for which the 8 bits were set): in seconds, a
+/// motion in microseconds would take every row as small, one in hours none.
+pub fn extra_bits_at(log2_t: f64, p: u32) -> u32 {
+    let lt = log2_t.max(-1e6);
     if lt < 0.0 {
         ((-2.0 * lt).ceil() as u32 + 8).min(p)
     } else {

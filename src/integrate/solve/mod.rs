@@ -124,7 +124,8 @@ pub struct Opts {
     pub h0: Float,
     /// Largest extrapolation column.
     pub kmax: usize,
-    /// Drift above which the state is projected back onto the manifold.
+    /// Drift ([`System::drift`], in the system's units) above which the
+    /// state is projected back onto the manifold.
     pub project_above: Float,
     /// Longest step allowed (None: only the output times limit it). A cap
     /// keeps the error control honest where the solution is tiny and grows

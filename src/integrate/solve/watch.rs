@@ -202,10 +202,12 @@ pub(super) fn rate_of(sys: &mut System, w: &Watch, s: &Sample) -> Result<Float> 
 }
 
 /// dλ/dt of every multiplier at a sample: a central difference along the
-/// flow with step ε = 2^−(prec/3) (relative error about 2^−(2 prec/3)).
+/// flow with step ε = ts·2^−(prec/3), ts the system's time unit (relative
+/// error about 2^−(2 prec/3); a step of 2^−(prec/3) seconds would span many
+/// time units of a fast motion, e.g. g = 10^40).
 fn lambda_rates(sys: &mut System, s: &Sample) -> Result<Vec<Float>> {
     let p = sys.prec;
-    let eps = Float::with_val(p, 1u32) >> (p as i32 / 3);
+    let eps = sys.units().1 >> (p as i32 / 3);
     let shifted = |sign: i32| {
         let q: Vec<Float> =
             s.q.iter()

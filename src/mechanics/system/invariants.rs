@@ -97,19 +97,33 @@ impl System {
             .collect()
     }
 
+    /// The natural units of the system: its length r = ρ1 + ρ2 (the first
+    /// line of centres) and its time sqrt(r/g).
+    pub fn units(&self) -> (Float, Float) {
+        let p = self.prec;
+        let r = Float::with_val(p, &self.rho[0] + &self.rho[1]);
+        let ts = Float::with_val(p, &r / &self.g).sqrt();
+        (r, ts)
+    }
+
     /// The residuals of the position and velocity constraints at (q, q̇),
     /// relative to their values at (q0, q̇0): the drift of the integration.
-    /// Returns the largest absolute residual (lengths and angles in the
-    /// model's units; velocities as they are).
+    /// Returns the largest residual in the system's units ([`System::units`]):
+    /// a length over r, a velocity over r/ts (an angle, the held φ1, over 1,
+    /// its rate over 1/ts), so that one threshold serves every model.
     pub fn drift(&self, q: &[Float], v: &[Float], q0: &[Float]) -> Float {
         let p = self.prec;
+        let (r, ts) = self.units();
         let mut worst = Float::new(p);
-        let mut upd = |x: Float| {
-            let a = x.abs();
+        let mut upd = |x: Float, unit: &Float| {
+            let a = x.abs() / unit;
             if a > worst {
                 worst = a;
             }
         };
+        let one = Float::with_val(p, 1u32);
+        let inv_ts = Float::with_val(p, ts.recip_ref());
+        let r_ts = Float::with_val(p, &r / &ts);
         let pos = |q: &[Float], row: Row| -> Float {
             match row {
                 Row::FloorNormal => q[Y1].clone(),
@@ -135,7 +149,8 @@ impl System {
             }
         };
         for &row in &self.rows {
-            upd(pos(q, row) - pos(q0, row));
+            let angle = row == Row::Hold;
+            upd(pos(q, row) - pos(q0, row), if angle { &one } else { &r });
             let (coefs, _) = self.row_coeffs(row, q, v);
             if let Row::Massless(_) = row {
                 continue;
@@ -144,7 +159,7 @@ impl System {
             for (i, c) in coefs {
                 s += &c * &v[i];
             }
-            upd(s);
+            upd(s, if angle { &inv_ts } else { &r_ts });
         }
         worst
     }

@@ -147,7 +147,7 @@ pub struct LazySums {
 
 impl LazySums {
     /// Sums built for precision `prec` ([`FixedSums::new`]): within
-    /// 2^−(prec−9)·max(1, Σ|c_k|), whatever the point's precision.
+    /// 2^−(prec−10)·Σ|c_k| of each fit, whatever the point's precision.
     pub fn at(prec: u32) -> Self {
         LazySums {
             sums: Default::default(),
