@@ -119,11 +119,13 @@ def test_malformed_candidates_name_the_row():
 
 
 def test_a_file_is_named_in_its_refusals(tmp_path):
+    # a file's refusal names the data row and its line (a blank line counts
+    # in the line, not in the rows); arrays name the row alone (above)
     p = tmp_path / "engine.csv"
-    p.write_text("t,theta\n0,0.1\n1,x\n")
+    p.write_text("t,theta\n0,0.1\n\n1,x\n")
     with pytest.raises(cylroll.InvalidParameterError) as e:
         cylroll.check(p, "mujoco_main")
-    assert "engine.csv" in str(e.value) and "row 2, column theta" in str(e.value)
+    assert "engine.csv" in str(e.value) and "row 2 (line 4), column theta" in str(e.value)
 
 
 def test_the_mode_column_is_compared(golden_dir):
