@@ -277,7 +277,9 @@ impl Runs<'_> {
                     // past the end of the model by less than the digits
                     // asked resolve (the end's time printed to more digits
                     // and read back): the state at the end
-                    Some(Side::After) if ev.kind.ends() && within_digits(&t, &ev.at.t, digits) => {
+                    Some(Side::After)
+                        if ev.kind.ends() && within_digits(&t, &ev.at.t, digits, &m.ts) =>
+                    {
                         decided.push((i, k, Side::At));
                         false
                     }
@@ -299,7 +301,7 @@ impl Runs<'_> {
                         // digits asked resolve: the state at it
                         let at_end = (ev.kind == motion::Kind::Separation || ev.kind.ends())
                             && side == Side::After
-                            && within_digits(&th, &ev.at.theta, digits);
+                            && within_digits(&th, &ev.at.theta, digits, &one(q));
                         target_side = Some((k, if at_end { Side::At } else { side }));
                         if at_end {
                             self.target_at = Some(k);
@@ -331,10 +333,11 @@ impl Runs<'_> {
 }
 
 /// Whether `t` and `end` agree to more than `digits` significant digits
-/// (|t − end| ≤ (|end| + 1)·10^−(digits+3)).
-fn within_digits(t: &Float, end: &Float, digits: u32) -> bool {
+/// (|t − end| ≤ (|end| + scale)·10^−(digits+3), `scale` the natural scale:
+/// the time unit for a time, 1 for an angle).
+fn within_digits(t: &Float, end: &Float, digits: u32, scale: &Float) -> bool {
     let p = t.prec();
-    let tol = (Float::with_val(p, end.abs_ref()) + 1u32)
+    let tol = (Float::with_val(p, end.abs_ref()) + scale)
         / Float::with_val(p, Float::u_pow_u(10, digits + 3));
     Float::with_val(p, t - end).abs() <= tol
 }

@@ -77,8 +77,7 @@ impl Watch {
     pub fn scale(&self, u: &Units) -> Float {
         let p = u.ts.prec();
         let coord = |i: usize| {
-            // x1, y1 and the r_j are lengths; φ1, the ψ and the θ_j angles
-            if i == sy::X1 || i == sy::Y1 || (i >= sy::rr(0) && (i - sy::rr(0)) % 3 == 0) {
+            if sy::is_length(i) {
                 u.r.clone()
             } else {
                 Float::with_val(p, 1u32)

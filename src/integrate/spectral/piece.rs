@@ -265,6 +265,7 @@ pub(super) fn attempt(
         })
         .collect();
     let vscale = Float::with_val(p, &su.sc.r / &su.sc.ts);
+    let inv_ts = Float::with_val(p, su.sc.ts.recip_ref());
     let mut vel = Vec::new();
     let mut vnodes: Vec<Vec<Float>> = (0..n)
         .map(|k| {
@@ -288,10 +289,12 @@ pub(super) fn attempt(
             })
             .collect();
         let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
+        // a rate's floor: r/ts for a length, 1/ts for an angle (φ1, ψ2)
+        let unit = if sy::is_length(i) { &vscale } else { &inv_ts };
         if !within(
             &fit,
             su.tol,
-            &Float::with_val(p, &vscale * &inv_len),
+            &Float::with_val(p, unit * &inv_len),
             &mut used,
         ) {
             return Ok(Attempt::Shorter);
@@ -317,10 +320,12 @@ pub(super) fn attempt(
             .map(|k| Float::with_val(p, &vnodes[k][i] * &rate[k]))
             .collect();
         let fit = ChebFit::from_values(&zero, len, su.roots, p, &f);
+        let one = Float::with_val(p, 1u32);
+        let unit = if sy::is_length(i) { &su.sc.r } else { &one };
         if !within(
             &fit,
             su.tol,
-            &Float::with_val(p, &su.sc.r * &inv_len),
+            &Float::with_val(p, unit * &inv_len),
             &mut used,
         ) {
             return Ok(Attempt::Shorter);

@@ -75,6 +75,11 @@ pub fn th(j: usize) -> usize {
 pub fn rr(j: usize) -> usize {
     5 + 3 * j
 }
+/// Whether coordinate `i` is a length (x1, y1, the r_j), not an angle (φ1,
+/// the ψ and θ_j): its natural scale is then r, else 1.
+pub fn is_length(i: usize) -> bool {
+    i == X1 || i == Y1 || (i >= rr(0) && (i - rr(0)) % 3 == 0)
+}
 
 /// The cylinder (0-based) whose spin coordinate is `q[i]`, if any.
 pub fn spin_cylinder(i: usize) -> Option<usize> {
@@ -246,5 +251,22 @@ impl System {
     /// then integrated as an extra state).
     pub fn has_slips(&self) -> bool {
         !self.slips.is_empty()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The lengths among the coordinates of a stack of four (three lines):
+    /// x1, y1 and each line's r_j; φ1, every ψ and every θ_j are angles.
+    #[test]
+    fn lengths_are_x1_y1_and_the_separations() {
+        let lengths: Vec<usize> = (0..rr(2) + 1).filter(|&i| is_length(i)).collect();
+        assert_eq!(lengths, [X1, Y1, rr(0), rr(1), rr(2)]);
+        for j in 0..3 {
+            assert!(!is_length(th(j)) && !is_length(psi(j)));
+        }
+        assert!(!is_length(PHI1));
     }
 }
