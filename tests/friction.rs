@@ -10,7 +10,7 @@ use cylroll::crosscheck::routes;
 use cylroll::exact::Exact;
 use cylroll::model::{Law, Model, Params, Start, Which};
 use cylroll::motion::{self, Caches, End, Kind, Phase, Request, Until};
-use cylroll::numeric::verify::Run;
+use cylroll::numeric::verify::{Run, Verified};
 use cylroll::oracle::{self, Answer, Options};
 use rug::ops::Pow;
 use rug::{Float, Rational};
@@ -1121,6 +1121,13 @@ fn main_mu_0_3_with_g(k: i32) -> Model {
     .unwrap()
 }
 
+/// `y` has `x`'s verified digits: as many, and the same significant ones
+/// (a model in other units scales the numbers by powers of ten).
+fn same_digits(x: &Verified, y: &Verified, what: &str) {
+    assert_eq!(y.digits, x.digits, "{what}: {}", y.name);
+    assert_eq!(mantissa(&y.text), mantissa(&x.text), "{what}: {}", y.name);
+}
+
 #[test]
 fn extreme_units_cost_and_verify_as_the_unit_model() {
     // g sets only the time unit sqrt(r/g): from g = 10^-20 to 10^40 the
@@ -1156,13 +1163,7 @@ fn extreme_units_cost_and_verify_as_the_unit_model() {
             .zip(a.values.iter().chain(&evs(&a)))
         {
             assert_eq!(y.precs, first, "g = 1e{k}: {} climbed the ladder", y.name);
-            assert_eq!(y.digits, x.digits, "g = 1e{k}: {}", y.name);
-            assert_eq!(
-                mantissa(&y.text),
-                mantissa(&x.text),
-                "g = 1e{k}: {}",
-                y.name
-            );
+            same_digits(x, y, &format!("g = 1e{k}"));
         }
     }
 }
@@ -1195,11 +1196,7 @@ fn a_large_mu_finds_its_close_cone_roots_in_any_units() {
         assert_eq!(kinds(&a), kinds(&unit), "mu {mu}, g 1e{g}, m {m}");
         for name in ["theta_s", "work_s"] {
             let (x, y) = (unit.value(name).unwrap(), a.value(name).unwrap());
-            assert_eq!(
-                mantissa(&y.text),
-                mantissa(&x.text),
-                "mu {mu}, g 1e{g}, m {m}: {name}"
-            );
+            same_digits(x, y, &format!("mu {mu}, g 1e{g}, m {m}"));
         }
     }
 }
@@ -1241,8 +1238,7 @@ fn a_small_time_has_its_digits_in_any_units() {
     let unit = oracle::trajectory(&main_mu_0_3_with_g(0), &[exact("1e-30")], &opts).unwrap();
     let slow = oracle::trajectory(&main_mu_0_3_with_g(-60), &[exact("1")], &opts).unwrap();
     for (x, y) in unit.rows[0].values.iter().zip(&slow.rows[0].values).skip(1) {
-        assert_eq!(y.digits, x.digits, "{}", y.name);
-        assert_eq!(mantissa(&y.text), mantissa(&x.text), "{}", y.name);
+        same_digits(x, y, "t = 1e-30 against t = 1 at g = 1e-60");
     }
 }
 
@@ -1284,13 +1280,7 @@ fn extreme_units_give_the_unit_model_s_rows() {
         for (r, (x, y)) in u.rows.iter().zip(&a.rows).enumerate() {
             assert_eq!(x.phase, y.phase, "g = 1e{k}, row {r}");
             for (vx, vy) in x.values.iter().zip(&y.values).skip(1) {
-                assert_eq!(vy.digits, vx.digits, "g = 1e{k}, row {r}: {}", vy.name);
-                assert_eq!(
-                    mantissa(&vy.text),
-                    mantissa(&vx.text),
-                    "g = 1e{k}, row {r}: {}",
-                    vy.name
-                );
+                same_digits(vx, vy, &format!("g = 1e{k}, row {r}"));
             }
         }
     }
