@@ -549,7 +549,15 @@ fn rows_after_the_end_of_the_model_are_reported_not_refused() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("cand.csv") && err.contains("row 2: t = 7.5 is after the end"),
+        err.contains("cand.csv") && err.contains("row 2 (line 3): t = 7.5 is after the end"),
+        "{err}"
+    );
+    // a blank line counts in the line named, not in the rows
+    std::fs::write(&path, "t,theta\n0,0.05\n\n7.5,1\n").unwrap();
+    let out = check_file(&path, &["--case", "main_roll_roll", "--past-end", "refuse"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("row 2 (line 4): t = 7.5 is after the end"),
         "{err}"
     );
 }

@@ -1140,7 +1140,9 @@ fn extreme_units_cost_and_verify_as_the_unit_model() {
     // unit, not to one second: at g = 10^30 the absolute floor of 1 s made
     // the slip onset fail at 29 digits and the ladder climb; the impact
     // state's error carries the separation time's error at the state's rate
-    // of change, not at one unit per second)
+    // of change, not at one unit per second; at g = 10^-330 the first
+    // sliding piece's length added 10^-300 to an acceleration of 10^-330
+    // and the slip onset was refused as grazing)
     let unit = main_mu_0_3_with_g(0);
     let cost = run(&unit, PREC, &[]).work_done;
     let first = cylroll::numeric::verify::precisions(30, 0);
@@ -1151,7 +1153,7 @@ fn extreme_units_cost_and_verify_as_the_unit_model() {
             .flat_map(|e| [e.t.clone(), e.theta.clone()])
             .collect::<Vec<_>>()
     };
-    for k in [-20, 20, 30, 40] {
+    for k in [-330, -20, 20, 30, 40] {
         let m = main_mu_0_3_with_g(k);
         assert_eq!(run(&m, PREC, &[]).work_done, cost, "g = 1e{k}");
         let a = separation(&m, 30);
@@ -1205,16 +1207,17 @@ fn a_large_mu_finds_its_close_cone_roots_in_any_units() {
 fn the_note_on_an_abrupt_parting_holds_in_any_units() {
     // with μ = 10 the contact opens while N12 is still 0.0194 m2 g (a note
     // says so); with μ = 0.3 N12 falls to 0 there. The test is against the
-    // unit m2 g and on the sign: in absolute newtons a rounding residual
-    // of 10^8 N at g = 10^60 made the note (with a negative N12 "> 0") and
-    // 0.0194·10^-20 N at g = 10^-20 lost it
+    // unit m2 g and on the sign, in MPFR: in absolute newtons a rounding
+    // residual of 10^8 N at g = 10^60 made the note (with a negative N12
+    // "> 0") and 0.0194·10^-20 N at g = 10^-20 lost it; in f64 g = 10^±400
+    // lost it
     let opens = |a: &Answer| {
         a.notes
             .iter()
             .any(|n| n.contains("the contact opens while N12"))
     };
     for (mu, want) in [("10", true), ("0.3", false)] {
-        for k in [-20, 0, 60] {
+        for k in [-400, -20, 0, 60, 400] {
             let p = main_mu_0_3_with_g(k).params().clone();
             let m = Model::new(
                 p,

@@ -609,9 +609,10 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
                     return Err(read::refuse(
                         src.name(),
                         format!(
-                            "row {row}: t = {t} is after the end of the model (the {kind} at t = \
+                            "row {}: t = {t} is after the end of the model (the {kind} at t = \
                              {te_text} on the {} branch), where the reference ends (past-end \
                              'report' leaves such rows out and reports them)",
+                            rows.label(),
                             branch.followed.name()
                         ),
                     ));

@@ -193,6 +193,16 @@ impl<'a> Rows<'a> {
         Ok(())
     }
 
+    /// The last data row read, as messages name it: its number among the
+    /// data rows, and its line in a file ("3 (line 5)").
+    pub fn label(&self) -> String {
+        if self.show_lines {
+            format!("{} (line {})", self.rows, self.line)
+        } else {
+            self.rows.to_string()
+        }
+    }
+
     /// The next data row: (its 1-based number, t, the other cells).
     pub fn next_row(&mut self) -> Result<Option<(usize, Exact, Vec<Cell>)>> {
         loop {
@@ -216,12 +226,7 @@ impl<'a> Rows<'a> {
             if self.rows % 4096 == 0 {
                 crate::cancel::check()?;
             }
-            // a row named by its number among the data rows (and its line)
-            let row = if self.show_lines {
-                format!("{} (line {})", self.rows, self.line)
-            } else {
-                self.rows.to_string()
-            };
+            let row = self.label();
             let (t, cells) = parse_row(&line, &row, &self.header, &self.source)?;
             if t.signum() < 0 {
                 return Err(refuse(

@@ -507,12 +507,14 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         // newton: in other units a rounding residual passed, a genuine force
         // did not), and positive: a residual of either sign is the ordinary
         // parting where N12 falls to 0
-        let n = first.events[i].at.n12.to_f64();
+        // (compared in MPFR: in f64 a unit beyond 10^±308 overflows)
+        let n = &first.events[i].at.n12;
         let pr = model.params();
-        let unit = rug::Rational::from(&pr.m2 * &pr.g).to_f64();
-        if n > 1e-12 * unit && opts.branch == Branch::Stay {
+        let unit = Float::with_val(n.prec(), &rug::Rational::from(&pr.m2 * &pr.g))
+            / Float::with_val(n.prec(), Float::u_pow_u(10, 12));
+        if *n > unit && opts.branch == Branch::Stay {
             ans.notes.push(format!(
-                "the contact opens while N12 = {n:.6e} > 0 in the last closed mode: at that \
+                "the contact opens while N12 = {n:.7e} > 0 in the last closed mode: at that \
                  event no mode with the contact closed is consistent and the free motion \
                  separates, so the normal force drops to 0 at once"
             ));

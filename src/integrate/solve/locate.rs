@@ -153,7 +153,7 @@ fn hermite_root(h: f64, g0: f64, d0: f64, g1: f64, d1: f64) -> f64 {
 /// by re-integrating from y0 with step s at `column`: a start from the cubic
 /// Hermite interpolant of g, then Newton's method on s (dg/dt from
 /// [`rate_of`]) safeguarded by the bracket, until the correction is below
-/// (|t| + 1)·tol/16. Returns (s, the state there, the error estimate).
+/// (|t| + ts)·tol/16, ts the time unit. Returns (s, the state there, the error estimate).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn locate<I: Stepper>(
     sys: &mut System,

@@ -93,9 +93,13 @@ fn behind(s: &Sample, cap: f64) -> Float {
     let p = s.t.prec();
     let ith = sy::th(0);
     let acc = Float::with_val(p, s.qdd[ith].abs_ref());
-    let d =
-        Float::with_val(p, s.v[ith].square_ref()) / (acc * 2u32 + Float::with_val(p, 1e-300f64));
-    Float::with_val(p, cap).min(&(d * 1.5f64))
+    let cap = Float::with_val(p, cap);
+    if acc.is_zero() {
+        // θ̇ does not slow down: nothing behind the start
+        return cap;
+    }
+    let d = Float::with_val(p, s.v[ith].square_ref()) / (acc * 2u32);
+    cap.min(&(d * 1.5f64))
 }
 
 /// A mode from `start` by spectral integration in the angle: outputs at
