@@ -330,7 +330,10 @@ fn check_quotes_the_candidates_times_as_given_and_the_parting_angle_it_used() {
     // reference parts at (the fit rounded to 10 digits, here exactly 1)
     has(
         &err,
-        &["row 120: t = 1e2 is after", "on the part-at 1 branch"],
+        &[
+            "row 120 (line 121): t = 1e2 is after",
+            "on the part-at 1 branch",
+        ],
     );
     // the end of the model: the verified digits of its time, 20 by default
     let end = err
