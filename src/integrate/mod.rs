@@ -23,7 +23,5 @@ pub const TOL_GUARD: u32 = 8;
 
 /// The natural time scale sqrt(r/g) of a stack (r = r1 + r2).
 pub fn time_scale(sm: &StackModel, prec: u32) -> Float {
-    let r = Float::with_val(prec, &sm.r[0]) + Float::with_val(prec, &sm.r[1]);
-    let g = Float::with_val(prec, &sm.g);
-    Float::with_val(prec, r / g).sqrt()
+    sm.units(prec).ts
 }

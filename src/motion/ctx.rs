@@ -82,11 +82,7 @@ impl Ctx {
     /// start, or at a target angle): √tol of its natural scale
     /// ([`crate::integrate::solve::Watch::scale`]), in the order of `events`.
     pub fn snaps(&self, events: &[crate::integrate::solve::Event]) -> Vec<Float> {
-        let units = crate::integrate::solve::Units {
-            ts: self.ts.clone(),
-            r: self.base_r.clone(),
-            force: Float::with_val(self.wp, &self.escale / &self.base_r),
-        };
+        let units = self.base.units(self.wp);
         events
             .iter()
             .map(|e| e.watch.scale(&units) * &self.rel_tiny)

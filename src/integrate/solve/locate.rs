@@ -174,7 +174,7 @@ pub(super) fn locate<I: Stepper>(
     let (s1, gb) = ends[1];
     // the event time to the integrator's tolerance relative to |t| plus the
     // time unit (not plus one second)
-    let unit = Float::with_val(p, &sys.units().1);
+    let unit = Float::with_val(p, &sys.units.ts);
     let tol = Float::with_val(p, Float::with_val(p, t + h).abs() + unit) * gbs.tol() / 16u32;
     // bracket [a, b] with g(a) of the sign of ga
     let neg_a = ga.is_sign_negative();

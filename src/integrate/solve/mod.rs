@@ -18,7 +18,8 @@
 mod locate;
 mod watch;
 
-pub use watch::{watch_value, watch_values, Units, Watch};
+pub use crate::mechanics::system::Units;
+pub use watch::{watch_value, watch_values, Watch};
 
 use super::gbs::{Gbs, Rhs, Stats, Stepper};
 use crate::error::{Error, Result};

@@ -6,7 +6,7 @@
 
 use super::Sample;
 use crate::error::Result;
-use crate::mechanics::system::{self as sy, System};
+use crate::mechanics::system::{self as sy, System, Units};
 use rug::Float;
 
 /// What an event watches.
@@ -53,18 +53,6 @@ pub enum Watch {
         /// offset.
         offset: Float,
     },
-}
-
-/// The natural units of a motion, in which a watched function is measured
-/// ([`Watch::scale`]): its time unit sqrt(r/g), its length r, its force.
-#[derive(Debug, Clone)]
-pub struct Units {
-    /// Time sqrt(r/g).
-    pub ts: Float,
-    /// Length r.
-    pub r: Float,
-    /// Force (m2 g).
-    pub force: Float,
 }
 
 impl Watch {
@@ -206,7 +194,7 @@ pub(super) fn rate_of(sys: &mut System, w: &Watch, s: &Sample) -> Result<Float> 
 /// time units of a fast motion, e.g. g = 10^40).
 fn lambda_rates(sys: &mut System, s: &Sample) -> Result<Vec<Float>> {
     let p = sys.prec;
-    let eps = sys.units().1 >> (p as i32 / 3);
+    let eps = Float::with_val(p, &sys.units.ts) >> (p as i32 / 3);
     let shifted = |sign: i32| {
         let q: Vec<Float> =
             s.q.iter()

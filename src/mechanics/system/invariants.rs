@@ -97,15 +97,6 @@ impl System {
             .collect()
     }
 
-    /// The natural units of the system: its length r = ρ1 + ρ2 (the first
-    /// line of centres) and its time sqrt(r/g).
-    pub fn units(&self) -> (Float, Float) {
-        let p = self.prec;
-        let r = Float::with_val(p, &self.rho[0] + &self.rho[1]);
-        let ts = Float::with_val(p, &r / &self.g).sqrt();
-        (r, ts)
-    }
-
     /// The residuals of the position and velocity constraints at (q, q̇),
     /// relative to their values at (q0, q̇0): the drift of the integration.
     /// Returns the largest residual in the system's units ([`System::units`]):
@@ -113,7 +104,7 @@ impl System {
     /// its rate over 1/ts), so that one threshold serves every model.
     pub fn drift(&self, q: &[Float], v: &[Float], q0: &[Float]) -> Float {
         let p = self.prec;
-        let (r, ts) = self.units();
+        let (r, ts) = (&self.units.r, &self.units.ts);
         let mut worst = Float::new(p);
         let mut upd = |x: Float, unit: &Float| {
             let a = x.abs() / unit;
@@ -123,7 +114,7 @@ impl System {
         };
         let one = Float::with_val(p, 1u32);
         let inv_ts = Float::with_val(p, ts.recip_ref());
-        let r_ts = Float::with_val(p, &r / &ts);
+        let r_ts = Float::with_val(p, r / ts);
         let pos = |q: &[Float], row: Row| -> Float {
             match row {
                 Row::FloorNormal => q[Y1].clone(),
@@ -150,7 +141,7 @@ impl System {
         };
         for &row in &self.rows {
             let angle = row == Row::Hold;
-            upd(pos(q, row) - pos(q0, row), if angle { &one } else { &r });
+            upd(pos(q, row) - pos(q0, row), if angle { &one } else { r });
             let (coefs, _) = self.row_coeffs(row, q, v);
             if let Row::Massless(_) = row {
                 continue;

@@ -49,7 +49,7 @@ mod stack_model;
 mod state;
 
 pub use rows::{Row, SlipTerm, Tangent};
-pub use stack_model::StackModel;
+pub use stack_model::{StackModel, Units};
 
 use crate::error::Result;
 use crate::model::{Contact, Floor};
@@ -121,6 +121,9 @@ pub struct System {
     pub inertia: Vec<Float>,
     /// g.
     pub g: Float,
+    /// The natural units ([`StackModel::units`]): every threshold of the
+    /// time integrators is relative to them.
+    pub units: Units,
     /// Mass above line j: Σ_{i>j} m_i.
     above: Vec<Float>,
     /// Total mass.
@@ -203,6 +206,7 @@ impl System {
             rho,
             inertia,
             g: f(&model.g),
+            units: model.units(prec),
             above,
             mtot,
             rows,

@@ -34,7 +34,29 @@ pub struct StackModel {
     pub omega0: Rational,
 }
 
+/// The natural units of a motion, in which tolerances and thresholds are
+/// measured: its time unit sqrt(r/g), its length r (the first line of
+/// centres, r1 + r2) and its force (the upper body's weight m2 g).
+#[derive(Debug, Clone)]
+pub struct Units {
+    /// Time sqrt(r/g).
+    pub ts: Float,
+    /// Length r.
+    pub r: Float,
+    /// Force m2 g.
+    pub force: Float,
+}
+
 impl StackModel {
+    /// The stack's natural units at `prec` bits.
+    pub fn units(&self, prec: u32) -> Units {
+        let r = Float::with_val(prec, &self.r[0]) + Float::with_val(prec, &self.r[1]);
+        let g = Float::with_val(prec, &self.g);
+        let ts = Float::with_val(prec, &r / &g).sqrt();
+        let force = Float::with_val(prec, &self.m[1]) * &g;
+        Units { ts, r, force }
+    }
+
     /// Number of cylinders.
     pub fn n(&self) -> usize {
         self.m.len()
