@@ -818,8 +818,11 @@ fn json_types_the_lower_bounds() {
 }
 
 /// A closed standard output (`>&-`) is exit 4 with a one-line error before
-/// anything is computed, while `> /dev/null` is an ordinary exit 0; a
-/// friction coefficient `S,K` is one quoted CSV field.
+/// anything is computed, while `> /dev/null` is an ordinary exit 0, opened
+/// write-only as a shell does or read-write as Python's `subprocess.DEVNULL`
+/// does (once refused as closed: Rust's runtime puts a read-write /dev/null
+/// in place of a closed descriptor); a friction coefficient `S,K` is one
+/// quoted CSV field.
 #[test]
 fn a_closed_stdout_is_exit_4_and_csv_fields_are_quoted() {
     let bin = assert_cmd::cargo::cargo_bin("cylroll");
@@ -840,6 +843,7 @@ fn a_closed_stdout_is_exit_4_and_csv_fields_are_quoted() {
     );
     assert_eq!(err.lines().count(), 1, "{err}");
     assert_eq!(run("> /dev/null").status.code(), Some(0));
+    assert_eq!(run("1<> /dev/null").status.code(), Some(0));
     let out = cyl()
         .args(["separation", "--theta0", "0.1", "--mu-contact", "0.5,0.4"])
         .args(["--digits", "10", "--format", "csv"])

@@ -709,9 +709,8 @@ pub fn run(cli: Cli) -> Result<(Output, i32)> {
 /// Entry point used by `main`: prints or reports the error, returns the exit code.
 pub fn main_with(args: Vec<String>) -> i32 {
     // a closed standard output (`>&-`): Rust's runtime reopens a closed
-    // descriptor 1 on /dev/null (read-write) before main, so the answer
-    // would vanish with exit 0. A shell's `> /dev/null` opens it write-only;
-    // read-write /dev/null on descriptor 1 is the runtime's replacement.
+    // descriptor 1 on /dev/null before main, so the answer would vanish
+    // with exit 0; the probe saw it closed before that
     if stdout_was_closed() {
         eprintln!("error: cannot write standard output: it is closed (nothing was computed)");
         return 4;
@@ -744,23 +743,33 @@ pub fn main_with(args: Vec<String>) -> i32 {
     }
 }
 
-/// Whether descriptor 1 is the runtime's stand-in for a closed standard
-/// output: /dev/null opened read-write (Linux: /proc/self/fd and fdinfo).
-fn stdout_was_closed() -> bool {
-    #[cfg(target_os = "linux")]
-    {
-        let target = std::fs::read_link("/proc/self/fd/1");
-        if target.is_ok_and(|t| t == std::path::Path::new("/dev/null")) {
-            let info = std::fs::read_to_string("/proc/self/fdinfo/1").unwrap_or_default();
-            let flags = info
-                .lines()
-                .find_map(|l| l.strip_prefix("flags:"))
-                .and_then(|f| u32::from_str_radix(f.trim(), 8).ok());
-            // O_ACCMODE = 3, O_RDWR = 2
-            return flags.is_some_and(|f| f & 3 == 2);
-        }
+/// Descriptor 1 was closed when the process started (`>&-`), as the probe
+/// [`probe_stdout`] found it before Rust's runtime replaced it.
+static STDOUT_CLOSED_AT_START: std::sync::atomic::AtomicBool =
+    std::sync::atomic::AtomicBool::new(false);
+
+/// The probe, run by the C runtime among the program's initialisers (the
+/// `.init_array` section), before Rust's runtime: that reopens a closed
+/// descriptor 0–2 on /dev/null, after which a closed standard output can no
+/// longer be told from `/dev/null` opened read-write, as Python's
+/// `subprocess.DEVNULL` opens it (an ordinary place to discard output).
+#[cfg(target_os = "linux")]
+#[used]
+#[link_section = ".init_array"]
+static PROBE_STDOUT: extern "C" fn() = probe_stdout;
+
+#[cfg(target_os = "linux")]
+extern "C" fn probe_stdout() {
+    // SAFETY: fcntl(F_GETFD) on a descriptor number reads its flags and
+    // touches no memory of ours
+    if unsafe { libc::fcntl(1, libc::F_GETFD) } == -1 {
+        STDOUT_CLOSED_AT_START.store(true, std::sync::atomic::Ordering::Relaxed);
     }
-    false
+}
+
+/// Whether standard output was closed when the process started.
+fn stdout_was_closed() -> bool {
+    STDOUT_CLOSED_AT_START.load(std::sync::atomic::Ordering::Relaxed)
 }
 
 /// A message on one line: clap's multi-line errors (tip, usage) joined, the
