@@ -111,6 +111,36 @@ pub(super) fn first_bracket(
         .map(|w| (at(&w[0]), at(&w[1])))
 }
 
+/// A bracket of the interpolant's sign change in (lo, hi) of [0, len],
+/// narrowed by bisection in f64 to a few units of f64's last place. The
+/// coefficients are scaled by 2^−e, the largest in [1/2, 1), so that the
+/// signs hold in any units (a force of 10^−400 N is not 0 in f64, nor one
+/// of 10^400 N infinite).
+fn bisect64(fit: &ChebFit, len: &Float, lo: &Float, hi: &Float) -> (f64, f64) {
+    let e = fit.c.iter().filter_map(Float::get_exp).max().unwrap_or(0);
+    let c64: Vec<f64> = fit
+        .c
+        .iter()
+        .map(|c| Float::with_val(53, c >> e).to_f64())
+        .collect();
+    let lenf = len.to_f64();
+    let g = |s: f64| ChebFit::eval_f64(&c64, 0.0, lenf, s);
+    let (mut a, mut b) = (lo.to_f64(), hi.to_f64());
+    let neg_a = g(a).is_sign_negative();
+    for _ in 0..60 {
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            break;
+        }
+        if g(mid).is_sign_negative() == neg_a {
+            a = mid;
+        } else {
+            b = mid;
+        }
+    }
+    (a, b)
+}
+
 impl Piece {
     /// The first root in (lo, hi) of a watched function, from its
     /// interpolant over the points (its values `vals` at the points,
@@ -130,21 +160,10 @@ impl Piece {
         let zero = Float::new(p);
         let fit = ChebFit::from_values(&zero, &self.len, su.roots, p, &desc);
         let d = fit.derivative();
-        // bisection at 64 bits to a seed, then Newton at full precision
-        let f64fit = fit.rounded(64);
-        let mut a = Float::with_val(64, lo);
-        let mut b = Float::with_val(64, hi);
-        let fa = f64fit.eval(&a, 64);
-        let neg_a = fa.is_sign_negative();
-        for _ in 0..60 {
-            let mid = Float::with_val(64, &a + &b) >> 1;
-            if f64fit.eval(&mid, 64).is_sign_negative() == neg_a {
-                a = mid;
-            } else {
-                b = mid;
-            }
-        }
-        let mut s = Float::with_val(p, &a + &b) >> 1;
+        // bisection in f64 to a seed, then Newton at full precision
+        let (a, b) = bisect64(&fit, &self.len, lo, hi);
+        let mut s = Float::with_val(p, 0.5 * (a + b));
+        s.assign(s.clone().max(lo).min(hi));
         let stop = Float::with_val(p, &self.len) >> (p as i32 - 8);
         for _ in 0..40 {
             let step = fit.eval(&s, p) / d.eval(&s, p);
@@ -157,7 +176,7 @@ impl Piece {
             }
         }
         if !s.is_finite() {
-            s = Float::with_val(p, &a + &b) >> 1;
+            s = Float::with_val(p, 0.5 * (a + b));
         }
         s.assign(s.clone().max(lo).min(hi));
         // one correction by the exact value
@@ -184,5 +203,32 @@ impl Piece {
             Float::with_val(p, &su.sc.ts * su.tol)
         };
         Ok((s, smp, t_err))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numeric::cheb::Roots;
+
+    /// The seed's bracket holds the root of an interpolant in any units:
+    /// g(s) = s − 0.3 on [0, 1] scaled by 2^k, k = −1500 … 1500 (beyond
+    /// f64's range both ways), brackets 0.3 to f64's precision.
+    #[test]
+    fn the_seed_brackets_the_root_in_any_units() {
+        let p = 200;
+        let roots = Roots::new(16, p);
+        let (zero, len) = (Float::new(p), Float::with_val(p, 1u32));
+        let pts = ChebFit::points(&zero, &len, &roots, p);
+        let (lo, hi) = (Float::with_val(p, 0.1), Float::with_val(p, 0.9));
+        for k in [-1500i32, -400, 0, 400, 1500] {
+            let vals: Vec<Float> = pts
+                .iter()
+                .map(|s| Float::with_val(p, s - 0.3) << k)
+                .collect();
+            let fit = ChebFit::from_values(&zero, &len, &roots, p, &vals);
+            let (a, b) = bisect64(&fit, &len, &lo, &hi);
+            assert!(a <= 0.3 && 0.3 <= b && b - a < 1e-14, "2^{k}: [{a}, {b}]");
+        }
     }
 }
