@@ -485,6 +485,10 @@ fn gauss_dense(
         .map(|f| f.prec())
         .unwrap_or(64);
     let mut f = Float::new(p);
+    // each pivot's reciprocal, for the eliminations below it and the back
+    // substitution of every right-hand side: one division per column (a
+    // division costs several multiplications at a few limbs)
+    let mut inv = vec![Float::new(p); n];
     for col in 0..n {
         let mut piv = col;
         for i in col + 1..n {
@@ -505,12 +509,13 @@ fn gauss_dense(
         }
         let (top, bottom) = a.split_at_mut((col + 1) * n);
         let prow = &top[col * n..];
+        inv[col].assign(prow[col].recip_ref());
         for ii in 0..n - col - 1 {
             let row = &mut bottom[ii * n..(ii + 1) * n];
             if row[col].is_zero() {
                 continue;
             }
-            f.assign(&row[col] / &prow[col]);
+            f.assign(&row[col] * &inv[col]);
             for j in col + 1..n {
                 if !prow[j].is_zero() {
                     row[j] -= &f * &prow[j];
@@ -531,7 +536,7 @@ fn gauss_dense(
                     s -= &a[i * n + j] * &x[j];
                 }
             }
-            x[i].assign(&s / &a[i * n + i]);
+            x[i].assign(&s * &inv[i]);
         }
     }
     Some(())
