@@ -30,6 +30,20 @@ pub fn bits_for_digits(digits: u32) -> u32 {
     ((digits as f64) * std::f64::consts::LOG2_10).ceil() as u32
 }
 
+/// The binary exponent e of the largest of `vals` in magnitude (None where
+/// every one is 0 or not finite): 2^−e brings them into (−1, 1), the
+/// largest to at least 1/2.
+pub fn max_exp<'a>(vals: impl IntoIterator<Item = &'a Float>) -> Option<i32> {
+    vals.into_iter().filter_map(Float::get_exp).max()
+}
+
+/// v·2^−e in f64 (the scaling exact, one rounding). With e from
+/// [`max_exp`] a set of values keeps its signs and ratios in f64 in any
+/// units, where unscaled 10^−400 would be 0 and 10^400 infinite.
+pub fn scaled_f64(v: &Float, e: i32) -> f64 {
+    Float::with_val(53, v >> e).to_f64()
+}
+
 /// A new Float of value 0 at `prec` bits.
 pub fn zero(prec: u32) -> Float {
     Float::new(prec)

@@ -167,15 +167,14 @@ impl Route {
 /// [−1, 1] is about the sum times 2^−prec, so that a dip of the unit's size
 /// between two close roots keeps its sign. Capped at 64 + 8192 bits.
 fn isolation_bits(coef: &[Float], unit: &[Float]) -> u32 {
-    // log2 of Σ|c_k|, in f64 where it fits, else from the exponents
+    // log2 of Σ|c_k|: e + log2 Σ|c_k 2^−e|, the sum in f64 in any units
     let log_sum = |cs: &[Float]| -> Option<f64> {
-        let sum: f64 = cs.iter().map(|c| c.to_f64().abs()).sum();
-        if sum.is_finite() && sum > 0.0 {
-            Some(sum.log2())
-        } else {
-            let e = cs.iter().filter_map(|c| c.get_exp()).max()?;
-            Some(f64::from(e) + (cs.len() as f64).log2())
-        }
+        let e = crate::numeric::max_exp(cs)?;
+        let sum: f64 = cs
+            .iter()
+            .map(|c| crate::numeric::scaled_f64(c, e).abs())
+            .sum();
+        Some(f64::from(e) + sum.log2())
     };
     let extra = match (log_sum(coef), log_sum(unit)) {
         (Some(a), Some(u)) if a > u => (a - u).ceil().min(8192.0) as u32,

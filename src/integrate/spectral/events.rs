@@ -8,6 +8,7 @@ use crate::error::Result;
 use crate::integrate::solve::{watch_value, Event, Sample, Watch};
 use crate::mechanics::system::{self as sy, System};
 use crate::numeric::cheb::ChebFit;
+use crate::numeric::{max_exp, scaled_f64};
 use rug::{Assign, Float};
 
 /// Whether a watched function reads a coordinate other than θ.
@@ -27,10 +28,12 @@ const BETWEEN: usize = 4;
 
 /// The Chebyshev coefficients, in f64, of the interpolant of values at the
 /// N points (`asc`: ascending s, i.e. the points in reverse order), by the
-/// direct cosine sum (`cos[m]` = cos(mπ/2N), m < 4N).
+/// direct cosine sum (`cos[m]` = cos(mπ/2N), m < 4N); of the values scaled
+/// by 2^−e, e = [`max_exp`] of them, so that they hold in any units.
 pub(super) fn coeffs64(asc: &[Float], cos: &[f64]) -> Vec<f64> {
     let n = asc.len();
-    let f: Vec<f64> = asc.iter().rev().map(Float::to_f64).collect();
+    let e = max_exp(asc).unwrap_or(0);
+    let f: Vec<f64> = asc.iter().rev().map(|v| scaled_f64(v, e)).collect();
     (0..n)
         .map(|k| {
             // the angle index k(2j + 1) mod 4N, stepped by 2k < 4N
@@ -57,7 +60,7 @@ pub(super) fn coeffs64(asc: &[Float], cos: &[f64]) -> Vec<f64> {
 /// value at s = 0 (None: on its boundary there, not watched), over the
 /// points — and [`BETWEEN`] samples of its interpolant `c64` in each gap,
 /// where values below 10^−12 of the largest count as 0 — to its value at
-/// the end.
+/// the end. `c64` is [`coeffs64`] of `vals` (in their scale 2^−e).
 pub(super) fn first_bracket(
     nodes: &[&Float],
     len: &Float,
@@ -68,7 +71,12 @@ pub(super) fn first_bracket(
 ) -> Option<(Float, Float)> {
     let p = len.prec();
     let lenf = len.to_f64();
-    let big = vals.iter().map(|v| v.to_f64().abs()).fold(0.0, f64::max);
+    // the interpolant's scale, coeffs64's
+    let e = max_exp(vals).unwrap_or(0);
+    let big = vals
+        .iter()
+        .map(|v| scaled_f64(v, e).abs())
+        .fold(0.0, f64::max);
     let floor = 1e-12 * big;
     // the sequence of (s, sign, the point itself) with the interpolant's
     // samples between points
@@ -112,17 +120,12 @@ pub(super) fn first_bracket(
 }
 
 /// A bracket of the interpolant's sign change in (lo, hi) of [0, len],
-/// narrowed by bisection in f64 to a few units of f64's last place. The
-/// coefficients are scaled by 2^−e, the largest in [1/2, 1), so that the
-/// signs hold in any units (a force of 10^−400 N is not 0 in f64, nor one
-/// of 10^400 N infinite).
+/// narrowed by bisection in f64 to a few units of f64's last place, on the
+/// coefficients scaled by 2^−e ([`max_exp`], [`scaled_f64`]: the signs
+/// hold in any units).
 fn bisect64(fit: &ChebFit, len: &Float, lo: &Float, hi: &Float) -> (f64, f64) {
-    let e = fit.c.iter().filter_map(Float::get_exp).max().unwrap_or(0);
-    let c64: Vec<f64> = fit
-        .c
-        .iter()
-        .map(|c| Float::with_val(53, c >> e).to_f64())
-        .collect();
+    let e = max_exp(&fit.c).unwrap_or(0);
+    let c64: Vec<f64> = fit.c.iter().map(|c| scaled_f64(c, e)).collect();
     let lenf = len.to_f64();
     let g = |s: f64| ChebFit::eval_f64(&c64, 0.0, lenf, s);
     let (mut a, mut b) = (lo.to_f64(), hi.to_f64());
@@ -162,8 +165,8 @@ impl Piece {
         let d = fit.derivative();
         // bisection in f64 to a seed, then Newton at full precision
         let (a, b) = bisect64(&fit, &self.len, lo, hi);
-        let mut s = Float::with_val(p, 0.5 * (a + b));
-        s.assign(s.clone().max(lo).min(hi));
+        let seed = Float::with_val(p, 0.5 * (a + b)).max(lo).min(hi);
+        let mut s = seed.clone();
         let stop = Float::with_val(p, &self.len) >> (p as i32 - 8);
         for _ in 0..40 {
             let step = fit.eval(&s, p) / d.eval(&s, p);
@@ -176,7 +179,7 @@ impl Piece {
             }
         }
         if !s.is_finite() {
-            s = Float::with_val(p, 0.5 * (a + b));
+            s = seed;
         }
         s.assign(s.clone().max(lo).min(hi));
         // one correction by the exact value

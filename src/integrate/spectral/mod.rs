@@ -503,7 +503,10 @@ mod tests {
     }
 
     /// A watched function that dips below zero and comes back between two
-    /// points is found by the samples of its interpolant between them.
+    /// points is found by the samples of its interpolant between them, in
+    /// any units: the same bracket with every value scaled by 2^k, k = −1500
+    /// … 1500 (beyond f64's range both ways: unscaled, the samples were 0 or
+    /// infinite and the graze was lost).
     #[test]
     fn a_graze_between_two_points_is_bracketed() {
         let n = 16;
@@ -516,22 +519,28 @@ mod tests {
         let (lo, hi) = (asc[9].to_f64(), asc[10].to_f64());
         let c = (lo + hi) / 2.0;
         let d = ((hi - lo) / 6.0).powi(2);
-        let g = |x: &Float| -> Float { Float::with_val(P, (x.to_f64() - c).powi(2) - d) };
-        let vals: Vec<Float> = asc.iter().map(|x| g(x)).collect();
-        assert!(vals.iter().all(|v| v.is_sign_positive()));
         let cos: Vec<f64> = (0..4 * n)
             .map(|m| (m as f64 * std::f64::consts::PI / (2 * n) as f64).cos())
             .collect();
-        let c64 = coeffs64(&vals, &cos);
-        let end = g(&len);
-        let start = g(&Float::new(P));
-        let (a, b) =
-            first_bracket(&asc, &len, Some(&start), &vals, &end, &c64).expect("the graze is seen");
-        let root = c - d.sqrt();
-        assert!(a.to_f64() <= root && root <= b.to_f64(), "{a} {b} {root}");
-        assert!(a.to_f64() >= lo && b.to_f64() <= hi);
-        // without the samples between points there is no sign change
-        assert!(first_bracket(&asc, &len, Some(&start), &vals, &end, &[0.0]).is_none());
+        let mut first = None;
+        for k in [0, -1500, -400, 400, 1500] {
+            let g = |x: &Float| -> Float { Float::with_val(P, (x.to_f64() - c).powi(2) - d) << k };
+            let vals: Vec<Float> = asc.iter().map(|x| g(x)).collect();
+            assert!(vals.iter().all(|v| v.is_sign_positive()));
+            let c64 = coeffs64(&vals, &cos);
+            let end = g(&len);
+            let start = g(&Float::new(P));
+            let (a, b) = first_bracket(&asc, &len, Some(&start), &vals, &end, &c64)
+                .unwrap_or_else(|| panic!("the graze is seen at 2^{k}"));
+            let root = c - d.sqrt();
+            assert!(a.to_f64() <= root && root <= b.to_f64(), "{a} {b} {root}");
+            assert!(a.to_f64() >= lo && b.to_f64() <= hi);
+            // the same bracket in every unit
+            let first = first.get_or_insert((a.clone(), b.clone()));
+            assert_eq!((&first.0, &first.1), (&a, &b), "2^{k}");
+            // without the samples between points there is no sign change
+            assert!(first_bracket(&asc, &len, Some(&start), &vals, &end, &[0.0]).is_none());
+        }
     }
 
     /// A start at t = 0 with nothing dissipated and no snapping.

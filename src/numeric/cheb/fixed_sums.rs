@@ -95,7 +95,7 @@ impl FixedSums {
         // the exponent of each fit's largest coefficient (0 for a zero fit)
         let exps = fits
             .iter()
-            .map(|f| f.c.iter().filter_map(Float::get_exp).max().unwrap_or(0))
+            .map(|f| crate::numeric::max_exp(&f.c).unwrap_or(0))
             .collect();
         let mut s = FixedSums {
             limbs,
