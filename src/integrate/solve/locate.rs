@@ -8,6 +8,7 @@ use super::{sample, Dae, Sample};
 use crate::error::{Error, Result};
 use crate::integrate::gbs::Stepper;
 use crate::mechanics::system::System;
+use crate::numeric::{max_exp, scaled_f64};
 use rug::Float;
 
 /// The watched function and the state at t + x, re-integrated from the
@@ -89,25 +90,23 @@ pub(super) fn dip<I: Stepper>(
         return Ok(None);
     }
     let d1 = rate_cached(sys, watch, s1, c1)?;
-    let hf = h.to_f64();
-    let (g0, g1, r0, r1) = (ga.to_f64(), gb.to_f64(), d0.to_f64(), d1.to_f64());
-    let val = |x: f64| hermite(hf, g0, r0, g1, r1, x);
-    // the interpolant's closest approach to zero, on a fine grid
+    let c = hermite_data(ga, &d0, gb, &d1, h);
+    // the interpolant's closest approach to zero, on a fine grid of u = x/h
     let sgn = if pos { 1.0 } else { -1.0 };
-    let (mut xm, mut vm) = (0.0, f64::INFINITY);
+    let (mut um, mut vm) = (0.0, f64::INFINITY);
     for k in 1..128 {
-        let x = hf * k as f64 / 128.0;
-        let v = sgn * val(x);
+        let u = k as f64 / 128.0;
+        let v = sgn * hermite(&c, u);
         if v < vm {
-            (xm, vm) = (x, v);
+            (um, vm) = (u, v);
         }
     }
     // reaches zero, or comes within a tenth of the smaller end value
-    if vm > 0.1 * (g0.abs().min(g1.abs())) {
+    if vm > 0.1 * (c[0].abs().min(c[2].abs())) {
         return Ok(None);
     }
     let p = gbs.prec();
-    let x = Float::with_val(p, xm);
+    let x = Float::with_val(p, h * um);
     let (gx, smp) = watch_after(sys, gbs, (y0, f0, t, column), &x, watch)?;
     if !gx.is_zero() && gx.is_sign_negative() != pos {
         return Ok(None);
@@ -115,23 +114,34 @@ pub(super) fn dip<I: Stepper>(
     Ok(Some((x, gx, smp)))
 }
 
-/// The cubic Hermite interpolant at x ∈ [0, h] of g with values g0, g1 and
-/// slopes d0, d1 at the ends (f64: for starting points only).
-fn hermite(h: f64, g0: f64, d0: f64, g1: f64, d1: f64, x: f64) -> f64 {
-    let u = x / h;
+/// The cubic Hermite data of g over a step of length h, in f64 for
+/// starting points only: g0, h·g'0, g1, h·g'1 scaled by one power of two
+/// ([`max_exp`], [`scaled_f64`]), so that they hold in any units (a force
+/// of 10^−400 N is not 0 in f64, nor a rate of 10^400 N/s infinite).
+fn hermite_data(g0: &Float, d0: &Float, g1: &Float, d1: &Float, h: &Float) -> [f64; 4] {
+    let p = g0.prec().max(h.prec());
+    let hd0 = Float::with_val(p, d0 * h);
+    let hd1 = Float::with_val(p, d1 * h);
+    let e = max_exp([g0, &hd0, g1, &hd1]).unwrap_or(0);
+    [g0, &hd0, g1, &hd1].map(|v| scaled_f64(v, e))
+}
+
+/// The cubic Hermite interpolant of [`hermite_data`] `c` at u = x/h in
+/// [0, 1].
+fn hermite(c: &[f64; 4], u: f64) -> f64 {
     let h00 = 2.0 * u * u * u - 3.0 * u * u + 1.0;
     let h10 = u * u * u - 2.0 * u * u + u;
     let h01 = -2.0 * u * u * u + 3.0 * u * u;
     let h11 = u * u * u - u * u;
-    h00 * g0 + h10 * h * d0 + h01 * g1 + h11 * h * d1
+    h00 * c[0] + h10 * c[1] + h01 * c[2] + h11 * c[3]
 }
 
-/// The root in (0, h) of the cubic Hermite interpolant of g with values
-/// and slopes at both ends (f64: only a starting point).
-fn hermite_root(h: f64, g0: f64, d0: f64, g1: f64, d1: f64) -> f64 {
-    let val = |x: f64| hermite(h, g0, d0, g1, d1, x);
+/// The root u = x/h in (0, 1) of the cubic Hermite interpolant of
+/// [`hermite_data`] `c` (f64: only a starting point).
+fn hermite_root(c: &[f64; 4]) -> f64 {
+    let val = |u: f64| hermite(c, u);
     // bisection on the cubic keeps the sign change of the ends
-    let (mut a, mut b) = (0.0, h);
+    let (mut a, mut b) = (0.0, 1.0);
     let fa = val(a);
     for _ in 0..60 {
         let m = 0.5 * (a + b);
@@ -184,9 +194,9 @@ pub(super) fn locate<I: Stepper>(
     let mut b = h.clone();
     let d0 = rate_of(sys, watch, s0)?;
     let d1 = rate_of(sys, watch, s1)?;
-    let hf = Float::with_val(p, &b - &a).to_f64();
-    let guess = hermite_root(hf, ga.to_f64(), d0.to_f64(), gb.to_f64(), d1.to_f64());
-    let mut x = Float::with_val(p, guess) + &a;
+    let width = Float::with_val(p, &b - &a);
+    let guess = hermite_root(&hermite_data(ga, &d0, gb, &d1, &width));
+    let mut x = width * guess + &a;
     if !(x > a && x < b) {
         x = Float::with_val(p, &a + &b) / 2u32;
     }
@@ -219,4 +229,34 @@ pub(super) fn locate<I: Stepper>(
         reached: format!("bracket width {:.3e}", Float::with_val(p, &b - &a).to_f64()),
         detail: format!("inside the step from t = {:.6e}", t.to_f64()),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The Hermite starting point in any units: g(x) = x − 0.3 on a step of
+    /// h = 1 (g0 = −0.3, g1 = 0.7, slopes 1), every value scaled by 2^k and
+    /// the step by 2^j, k and j beyond f64's range both ways, gives the
+    /// root u = 0.3 and the same closest approach of a dip; unscaled, the
+    /// values were 0 or infinite in f64.
+    #[test]
+    fn the_hermite_start_holds_in_any_units() {
+        let p = 200;
+        for (k, j) in [(0, 0), (-1500, 0), (1500, 0), (-400, 700), (400, -700)] {
+            let sc = |x: f64| Float::with_val(p, x) << k;
+            let h = Float::with_val(p, 1u32) << j;
+            // slope in units of value per step length
+            let d = Float::with_val(p, 1u32) << (k - j);
+            let c = hermite_data(&sc(-0.3), &d, &sc(0.7), &d, &h);
+            let u = hermite_root(&c);
+            assert!((u - 0.3).abs() < 1e-12, "2^{k}, h = 2^{j}: u = {u}");
+            // g = (x − 1/2)² − 1/100 on [0, 1]: values 0.24 at both ends,
+            // slopes ∓1, least −0.01 at u = 1/2
+            let c = hermite_data(&sc(0.24), &(-d.clone()), &sc(0.24), &d, &h);
+            // (a cubic interpolates the quadratic exactly)
+            let r = hermite(&c, 0.5) / c[0];
+            assert!((r + 0.01 / 0.24).abs() < 1e-12, "2^{k}, h = 2^{j}: {r}");
+        }
+    }
 }
