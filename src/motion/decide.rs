@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::integrate::solve::Sample;
 use crate::mechanics::system::{self as sy, Row, System, Tangent};
 use crate::model::{Law, Which};
+use crate::numeric::decimal::to_sig as sig;
 use rug::Float;
 
 /// Why a candidate mode is not consistent (None: it is).
@@ -53,12 +54,12 @@ pub fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<
     };
     let n12 = lam(&sys, &s1, Row::Normal(0));
     if !n12.is_sign_positive() || n12.is_zero() {
-        return Ok(Some(format!("N12 would be {:.3e} <= 0", n12.to_f64())));
+        return Ok(Some(format!("N12 would be {} <= 0", sig(&n12, 4))));
     }
     if !ctx.held {
         let n1 = lam(&sys, &s1, Row::FloorNormal);
         if !n1.is_sign_positive() || n1.is_zero() {
-            return Ok(Some(format!("N1 would be {:.3e} <= 0", n1.to_f64())));
+            return Ok(Some(format!("N1 would be {} <= 0", sig(&n1, 4))));
         }
     }
     for (w, st) in [(Which::Floor, mode.floor), (Which::Contact, mode.contact)] {
@@ -69,9 +70,9 @@ pub fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<
                 let vscale = Float::with_val(p, &ctx.base_r / &ctx.ts);
                 if Float::with_val(p, s0.abs_ref()) > vscale * &ctx.rel_tiny {
                     return Ok(Some(format!(
-                        "the {} slides (slip speed {:.3e}): it cannot stick",
+                        "the {} slides (slip speed {}): it cannot stick",
                         w.name(),
-                        s0.to_f64()
+                        sig(&s0, 4)
                     )));
                 }
                 let n = lam(&sys, &s1, normal_row(w));
@@ -82,9 +83,9 @@ pub fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<
                 let room = Float::with_val(p, &mu * &n) - Float::with_val(p, f.abs_ref());
                 if room.is_sign_negative() {
                     return Ok(Some(format!(
-                        "sticking at the {} would need |F|/N = {:.6e} > mu_s",
+                        "sticking at the {} would need |F|/N = {} > mu_s",
                         w.name(),
-                        (Float::with_val(p, f.abs_ref()) / &n).to_f64()
+                        sig(&(Float::with_val(p, f.abs_ref()) / &n), 7)
                     )));
                 }
             }
@@ -92,10 +93,10 @@ pub fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<
                 let s = sys.slip_speed(tangent(w), &q1, &v2);
                 if s.is_zero() || s.is_sign_negative() != (sg < 0) {
                     return Ok(Some(format!(
-                        "slipping {} at the {} would need a slip speed of that sign (it would be {:.3e})",
+                        "slipping {} at the {} would need a slip speed of that sign (it would be {})",
                         if sg > 0 { "forwards" } else { "backwards" },
                         w.name(),
-                        s.to_f64()
+                        sig(&s, 4)
                     )));
                 }
             }
@@ -167,10 +168,7 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
     let rdd = free_normal_accel(ctx, &sys, q, v);
     let opens = rdd.is_sign_positive() && !rdd.is_zero();
     let theta = q[sy::th(0)].to_f64();
-    let at = format!(
-        "t = {}, theta = {theta:.12}",
-        crate::numeric::decimal::to_sig(t, 12)
-    );
+    let at = format!("t = {}, theta = {theta:.12}", sig(t, 12));
     // Coulomb's law: a contact at rest relative to its partner sticks if the
     // force that holds it is within μs N; sliding from rest is the
     // continuation only where sticking is not (this settles the choice
@@ -204,9 +202,9 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
             reached: format!("no consistent continuation at {at}"),
             detail: format!(
                 "every candidate fails ({}; the contact cannot open: free relative normal \
-                 acceleration {:.3e}): a Painlevé-type inconsistency of the rigid-body model",
+                 acceleration {}): a Painlevé-type inconsistency of the rigid-body model",
                 why.join("; "),
-                rdd.to_f64()
+                sig(&rdd, 4)
             ),
         }),
         (n, o) => Err(Error::NotConverged {
@@ -244,4 +242,64 @@ pub fn alternatives(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<V
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::Exact;
+    use crate::model::{Model, Params, Start};
+
+    /// The main case (μ = 0.3, rest at θ0 = 1/10) with g = 10^k.
+    fn main_with_g(k: i32) -> Model {
+        let n = rug::Integer::from(rug::Integer::u_pow_u(10, k.unsigned_abs()));
+        let mut p = Params::identical_solid();
+        p.g = if k >= 0 {
+            rug::Rational::from(n)
+        } else {
+            rug::Rational::from((1, n))
+        };
+        let mu = || Law::parse_mu("mu", "0.3").unwrap();
+        let start = Start::rest(Exact::parse("theta0", "1/10", false).unwrap());
+        Model::new(p, mu(), mu(), start).unwrap()
+    }
+
+    /// Why a mode fails, in any units: at the start of the main case,
+    /// sliding backwards at the contact would need a slip speed of that
+    /// sign, and the message quotes the speed it would have. At g = 10^-1000
+    /// (a speed of 1.4·10^-516, 0 in f64: the message read "(it would be
+    /// 0.000e0)", contradicting itself) its digits are those at g = 1, the
+    /// power of ten moved by 500.
+    #[test]
+    fn a_failing_mode_quotes_its_numbers_in_any_units() {
+        let why = |k: i32| {
+            let ctx = Ctx::new(&main_with_g(k), 120).unwrap();
+            let stick = Mode {
+                floor: State::Stick,
+                contact: State::Stick,
+            };
+            let (q, v) = ctx.system(stick).unwrap().initial_state(&ctx.base).unwrap();
+            let back = Mode {
+                floor: State::Stick,
+                contact: State::Slip(-1),
+            };
+            inconsistency(&ctx, back, &q, &v)
+                .unwrap()
+                .expect("the mode fails")
+        };
+        let (unit, tiny) = (why(0), why(-1000));
+        let number = |s: &str| -> String {
+            let at = s.find("it would be ").expect(s) + "it would be ".len();
+            s[at..].trim_end_matches(')').to_string()
+        };
+        let (a, b) = (number(&unit), number(&tiny));
+        let (ma, ea) = a.split_once('e').expect(&a);
+        let (mb, eb) = b.split_once('e').expect(&b);
+        assert_eq!(ma, mb, "{unit} / {tiny}");
+        assert_eq!(
+            ea.parse::<i64>().unwrap() - 500,
+            eb.parse::<i64>().unwrap(),
+            "{unit} / {tiny}"
+        );
+    }
 }

@@ -8,6 +8,7 @@ use super::{sample, Dae, Sample};
 use crate::error::{Error, Result};
 use crate::integrate::gbs::Stepper;
 use crate::mechanics::system::System;
+use crate::numeric::decimal::to_sig;
 use crate::numeric::{max_exp, scaled_f64};
 use rug::Float;
 
@@ -226,8 +227,8 @@ pub(super) fn locate<I: Stepper>(
     Err(Error::NotConverged {
         quantity: "event time".into(),
         requested: 0,
-        reached: format!("bracket width {:.3e}", Float::with_val(p, &b - &a).to_f64()),
-        detail: format!("inside the step from t = {:.6e}", t.to_f64()),
+        reached: format!("bracket width {}", to_sig(&Float::with_val(p, &b - &a), 4)),
+        detail: format!("inside the step from t = {}", to_sig(t, 7)),
     })
 }
 

@@ -365,7 +365,11 @@ pub fn run_with<I: Stepper>(
             return Err(Error::NotConverged {
                 quantity: "integration".into(),
                 requested: 0,
-                reached: format!("{} steps to t = {:.6e}", opts.max_steps, t.to_f64()),
+                reached: format!(
+                    "{} steps to t = {}",
+                    opts.max_steps,
+                    crate::numeric::decimal::to_sig(&t, 7)
+                ),
                 detail: "the integrator cannot follow this motion (extreme parameters?)".into(),
             });
         }
