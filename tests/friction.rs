@@ -1671,3 +1671,57 @@ fn dense_rows_in_a_slipping_phase_agree_at_100_digits() {
     assert!(compared > 1000 && bounds > 1500, "{compared} {bounds}");
     assert_eq!(tags.len(), 1, "{tags:?}");
 }
+
+/// Every scalar of `separation` (θs, ts, the work, the first impact's time
+/// and state) at 20 digits lies within its stated error bound of the same at
+/// 60 digits, in the frictional cases with a separation and an impact
+/// (rolling then sliding, sliding from the start, static above kinetic, a
+/// light slippery floor) and in SI-like units: the printed bounds checked
+/// by a second precision. The impact state's bound carries the separation
+/// time's error as a first-order term (16 natural units per time unit, not
+/// derived column by column; the error enters at second order, N12 being 0
+/// at the parting), and the bounds hold with or without it.
+#[test]
+fn separation_scalars_lie_within_their_bounds_of_60_digits() {
+    let si = {
+        let mut p = Params::identical_solid();
+        p.g = Rational::from((981, 100));
+        p.r1 = Rational::from((3, 100));
+        p.r2 = Rational::from((5, 100));
+        p.m2 = Rational::from((7, 10));
+        Model::new(
+            p,
+            law("0.3"),
+            law("0.3"),
+            Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+        )
+        .unwrap()
+    };
+    let cases = [
+        model(law("0.3"), law("0.3"), "1/2"),
+        model(law("1"), law("1"), "1/2"),
+        model(law("0.05"), law("1"), "1/2"),
+        model(law("0.5,0.3"), law("0.5,0.3"), "1/2"),
+        si,
+    ];
+    let mut impacts = 0;
+    for m in &cases {
+        let (a, b) = (separation(m, 20), separation(m, 60));
+        for x in &a.values {
+            let Some(y) = b.value(&x.name) else { continue };
+            let err = Float::with_val(PREC, &x.value - &y.value).abs();
+            let slack = Float::with_val(PREC, 10u32).pow(-50);
+            assert!(
+                err <= Float::with_val(PREC, &x.err_bound + &slack),
+                "{}: {} off by {:.3e}, above its bound {:.3e}",
+                m.describe(),
+                x.name,
+                err.to_f64(),
+                x.err_bound.to_f64()
+            );
+            impacts += usize::from(x.name.ends_with("_impact"));
+        }
+    }
+    // the impact state was there to check: 9 values in each case
+    assert_eq!(impacts, 9 * cases.len());
+}

@@ -480,8 +480,13 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
                 (&imp.vy2, "y2_dot"),
                 (&imp.psi2_dot, "phi2_dot"),
             ] {
-                // the separation time's error moves the state there by its
-                // rate of change: 16 natural scales per time unit
+                // the separation time's error δt: a first-order term of 16
+                // natural scales per time unit, which over-covers it (at the
+                // parting N12 = 0, so the free and the constrained motions
+                // share their accelerations and a flight started δt later
+                // along the motion differs at second order in δt). Checked
+                // against 60 digits (tests/friction.rs,
+                // separation_scalars_lie_within_their_bounds_of_60_digits)
                 let sc = scale(column);
                 let mut e = integrated(v, sc.clone());
                 e.err += Float::with_val(p, &ev_err * sc) / &**ts * 16u32;
