@@ -689,3 +689,42 @@ fn projection_restores_the_constraints() {
     );
     assert_eq!(q[system::th(1)], theta);
 }
+
+/// The second route's conservation checks in any units: the two-cylinder
+/// run of the paper's model at g = 10^-40 and 10^40 reports the energy and
+/// momentum drifts of g = 1 (each relative to the motion's own sizes,
+/// Σ m ρ g and Σ m ρ · ρ0/ts): the momentum drift was absolute, 10^20 times
+/// the unit model's at g = 10^40, and the energy's scale |E0| + m2 g a
+/// force, not an energy.
+#[test]
+fn the_second_route_s_drifts_are_relative_in_any_units() {
+    let prec = 160;
+    let drifts = |k: i32| {
+        let mut p = Params::identical_solid();
+        let n = Rational::from(rug::Integer::from(10u32).pow(k.unsigned_abs()));
+        p.g = if k >= 0 { n } else { n.recip() };
+        let ts = Float::with_val(prec, Float::with_val(prec, &p.r()) / &p.g).sqrt();
+        let start = Start::rest(Exact::parse("theta0", "1/10", false).unwrap());
+        let m = Ideal::new(p, Floor::Roll, Contact::Roll, start).unwrap();
+        let opts = TwoOpts {
+            phi1_events: false,
+            reach: Vec::new(),
+        };
+        let t_end = Float::with_val(prec, &ts * 20u32);
+        let run = two_cylinder(&m, prec, &[], &t_end, &opts).unwrap();
+        (run.energy_drift.to_f64(), run.momentum_drift.to_f64())
+    };
+    let (e0, p0) = drifts(0);
+    assert!(e0 < 1e-30 && p0 < 1e-30, "g = 1: {e0:e} {p0:e}");
+    for k in [-40, 40] {
+        let (e, p) = drifts(k);
+        // the same motion in another time unit: the same relative drifts,
+        // up to the rounding of a different run
+        for (x, x0, what) in [(e, e0, "energy"), (p, p0, "momentum")] {
+            assert!(
+                x < 1e-30 && x <= 100.0 * x0.max(1e-40),
+                "g = 1e{k}: {what} {x:e} against {x0:e}"
+            );
+        }
+    }
+}

@@ -209,9 +209,7 @@ pub fn two_cylinder(
     // conservation over every recorded state
     let e0 = sys.energy(&q0, &v0);
     let p0 = sys.momenta(&q0, &v0);
-    let escale = Float::with_val(prec, e0.abs_ref()) + Float::with_val(prec, &sys.g * &sys.m[1]);
-    // momenta: absolute drift
-    let one = Float::with_val(prec, 1u32);
-    (out.energy_drift, out.momentum_drift) = sys.drifts(run.states(), &e0, &p0, &escale, &one);
+    let (escale, pscale) = sys.drift_scales(&e0);
+    (out.energy_drift, out.momentum_drift) = sys.drifts(run.states(), &e0, &p0, &escale, &pscale);
     Ok(out)
 }

@@ -140,14 +140,7 @@ pub fn solve_stack(spec: &Spec, prec: u32, times: &[Float]) -> Result<StackSolut
     }
     let e0 = sys.energy(&q0, &v0);
     let p0 = sys.momenta(&q0, &v0);
-    let mut escale = Float::with_val(prec, e0.abs_ref());
-    let mut mr = Float::new(prec);
-    for i in 0..sm.n() {
-        mr += &sys.m[i] * &sys.rho[i];
-    }
-    escale += Float::with_val(prec, &mr * &sys.g);
-    // momentum scale: Σ m r · sqrt(g / r1)-like speeds: m r² / time scale
-    let pscale = Float::with_val(prec, &mr / &ts) * &sys.rho[0];
+    let (escale, pscale) = sys.drift_scales(&e0);
     let (energy_drift, momentum_drift) = sys.drifts(run.states(), &e0, &p0, &escale, &pscale);
     Ok(StackSolution {
         prec: requested,

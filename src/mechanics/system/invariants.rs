@@ -41,6 +41,20 @@ impl System {
         t + vpot
     }
 
+    /// The scales [`System::drifts`] measures in, from the start's energy
+    /// `e0`: energy |E0| + Σ m_i ρ_i g, momentum Σ m_i ρ_i · ρ_0 / ts (ts
+    /// the time unit): relative to the motion's own sizes in any units.
+    pub fn drift_scales(&self, e0: &Float) -> (Float, Float) {
+        let p = self.prec;
+        let mut mr = Float::new(p);
+        for (m, rho) in self.m.iter().zip(&self.rho) {
+            mr += Float::with_val(p, m * rho);
+        }
+        let escale = Float::with_val(p, e0.abs_ref()) + Float::with_val(p, &mr * &self.g);
+        let pscale = Float::with_val(p, &mr / &self.units.ts) * &self.rho[0];
+        (escale, pscale)
+    }
+
     /// The largest drifts of energy and momenta from `e0`, `p0` over the
     /// given states (q, q̇): |E − E0|/escale and max_c |p_c − p_c0|/pscale.
     pub fn drifts<'a>(
