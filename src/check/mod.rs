@@ -422,20 +422,27 @@ struct Judge<'a> {
 }
 
 /// A chunk of candidate rows: (row, t, cells).
-type Chunk = Vec<(usize, Exact, Vec<Cell>)>;
+type Chunk = Vec<(read::RowLabel, Exact, Vec<Cell>)>;
 
 /// An error of the oracle on a chunk of rows, naming the candidate and the
 /// row (the row whose time the message quotes, else the chunk's rows).
 fn at_rows(e: Error, source: &str, chunk: &Chunk) -> Error {
-    let (first, last) = (
-        chunk.first().map_or(0, |c| c.0),
-        chunk.last().map_or(0, |c| c.0),
-    );
+    // "rows 3-7", with the lines where the rows have them: "rows 3-7 (lines 5-9)"
+    let span = match (chunk.first(), chunk.last()) {
+        (Some(a), Some(b)) => {
+            let (a, b) = (a.0, b.0);
+            match (a.line(), b.line()) {
+                (Some(la), Some(lb)) => format!("rows {}-{} (lines {la}-{lb})", a.row, b.row),
+                _ => format!("rows {}-{}", a.row, b.row),
+            }
+        }
+        _ => "rows 0-0".to_string(),
+    };
     let rows = |value: &str| {
         chunk
             .iter()
             .find(|c| c.1.to_string() == value)
-            .map_or(format!("rows {first}-{last}"), |c| format!("row {}", c.0))
+            .map_or(span.clone(), |c| format!("row {}", c.0))
     };
     let e = e.map_invalid(|name, value| {
         (
@@ -445,7 +452,7 @@ fn at_rows(e: Error, source: &str, chunk: &Chunk) -> Error {
     });
     match e {
         Error::NotPhysical { what } => Error::NotPhysical {
-            what: format!("candidate {source}, rows {first}-{last}: {what}"),
+            what: format!("candidate {source}, {span}: {what}"),
         },
         Error::NotConverged {
             quantity,
@@ -453,7 +460,7 @@ fn at_rows(e: Error, source: &str, chunk: &Chunk) -> Error {
             reached,
             detail,
         } => Error::NotConverged {
-            quantity: format!("candidate {source}, rows {first}-{last}: {quantity}"),
+            quantity: format!("candidate {source}, {span}: {quantity}"),
             requested,
             reached,
             detail,
@@ -597,7 +604,7 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
             .map_err(|e| at_rows(e, src.name(), chunk))?
             .rows;
         for ((row, t, vals), orow) in chunk.iter().zip(&orows) {
-            judge.row(*row, t, vals, orow)?;
+            judge.row(row.row, t, vals, orow)?;
         }
         chunk.clear();
         Ok(())
@@ -624,7 +631,7 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
                 continue;
             }
         }
-        chunk.push((row, t, cells));
+        chunk.push((rows.label(), t, cells));
         if chunk.len() == CHUNK_ROWS {
             flush(&mut chunk, &mut judge)?;
         }
@@ -855,6 +862,27 @@ impl Judge<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The oracle's refusal on a chunk of candidate rows names the row whose
+    /// time it quotes with its line in the file, and otherwise the chunk's
+    /// rows and lines (the README: every refusal names the file, the data
+    /// row and its line); rows of an array have no lines.
+    #[test]
+    fn a_refusal_on_a_chunk_names_the_rows_and_their_lines() {
+        let t = |s: &str| Exact::parse("t", s, false).unwrap();
+        let chunk: Chunk = vec![
+            (read::RowLabel::new(3, Some(5)), t("0.5"), Vec::new()),
+            (read::RowLabel::new(4, Some(7)), t("0.75"), Vec::new()),
+        ];
+        let msg = |e: Error| e.to_string();
+        let one = msg(at_rows(Error::invalid("t", "0.75", "x"), "c.csv", &chunk));
+        assert!(one.contains("candidate c.csv, row 4 (line 7)"), "{one}");
+        let all = msg(at_rows(Error::not_physical("no"), "c.csv", &chunk));
+        assert!(all.contains("rows 3-4 (lines 5-7)"), "{all}");
+        let arr: Chunk = vec![(read::RowLabel::new(3, None), t("0.5"), Vec::new())];
+        let bare = msg(at_rows(Error::invalid("t", "0.5", "x"), "array", &arr));
+        assert!(bare.contains("row 3)") && !bare.contains("line"), "{bare}");
+    }
 
     #[test]
     fn the_column_indices_name_their_columns() {

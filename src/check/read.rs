@@ -195,11 +195,10 @@ impl<'a> Rows<'a> {
 
     /// The last data row read, as messages name it: its number among the
     /// data rows, and its line in a file ("3 (line 5)").
-    pub fn label(&self) -> String {
-        if self.show_lines {
-            format!("{} (line {})", self.rows, self.line)
-        } else {
-            self.rows.to_string()
+    pub fn label(&self) -> RowLabel {
+        RowLabel {
+            row: self.rows,
+            line: self.show_lines.then_some(self.line),
         }
     }
 
@@ -227,7 +226,7 @@ impl<'a> Rows<'a> {
                 crate::cancel::check()?;
             }
             let row = self.label();
-            let (t, cells) = parse_row(&line, &row, &self.header, &self.source)?;
+            let (t, cells) = parse_row(&line, row, &self.header, &self.source)?;
             if t.signum() < 0 {
                 return Err(refuse(
                     &self.source,
@@ -329,7 +328,38 @@ fn next_line<R: BufRead + ?Sized>(
 }
 
 /// One data row (`row` names it in messages) parsed against the header.
-fn parse_row(line: &str, row: &str, h: &Header, source: &str) -> Result<(Exact, Vec<Cell>)> {
+/// A data row as messages name it: its number among the data rows, and its
+/// line in a file ("3 (line 5)"; arrays from Python have no lines). Kept for
+/// every row, written out only in a message.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RowLabel {
+    /// The row's 1-based number among the data rows.
+    pub row: usize,
+    line: Option<usize>,
+}
+
+impl RowLabel {
+    /// Row `row`, on line `line` of its file if it has lines.
+    pub fn new(row: usize, line: Option<usize>) -> Self {
+        RowLabel { row, line }
+    }
+
+    /// The row's line in its file, if it has one.
+    pub fn line(&self) -> Option<usize> {
+        self.line
+    }
+}
+
+impl std::fmt::Display for RowLabel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.line {
+            Some(l) => write!(f, "{} (line {l})", self.row),
+            None => write!(f, "{}", self.row),
+        }
+    }
+}
+
+fn parse_row(line: &str, row: RowLabel, h: &Header, source: &str) -> Result<(Exact, Vec<Cell>)> {
     let cells: Vec<&str> = line.split(',').map(|c| c.trim()).collect();
     if cells.len() != h.cols.len() {
         return Err(refuse(
