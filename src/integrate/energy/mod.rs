@@ -321,11 +321,9 @@ impl Route {
     }
 
     /// log2 of the time unit [`extra_bits_at`] counts small times in,
-    /// sqrt(r/(2g)) (in f64).
+    /// sqrt(r/(2g)) = [`Route::scale_time`]/√2 (in f64).
     fn log2_time_unit(&self) -> f64 {
-        let pr = self.work.params();
-        let r_over_2g = rug::Rational::from(&pr.r() / &pr.g) / 2u32;
-        log2_f64(&Float::with_val(64, &r_over_2g)) / 2.0
+        log2_f64(&self.scale_time(64)) - 0.5
     }
 
     /// t_s at precision `p` (cached: a fact of the model).
