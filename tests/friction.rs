@@ -1725,3 +1725,24 @@ fn separation_scalars_lie_within_their_bounds_of_60_digits() {
     // the impact state was there to check: 9 values in each case
     assert_eq!(impacts, 9 * cases.len());
 }
+
+/// Beyond f64's range of time units (g = 10^-700: √(r/g) = 1.4·10^350):
+/// rows of the sliding phase print the unit model's digits (the sliding
+/// pieces' f64 seeds are scaled), and a row of the rolling phase is refused,
+/// not printed wrong (its Taylor integrator steps in f64 on absolute times:
+/// the README's stated limit).
+#[test]
+fn beyond_f64_time_units_sliding_rows_hold_and_rolling_rows_are_refused() {
+    let opts = Options::digits(30);
+    let sliding = [exact("4.5"), exact("4.9")];
+    let unit = oracle::trajectory(&main_mu_0_3_with_g(0), &sliding, &opts).unwrap();
+    let far = [exact("4.5e350"), exact("4.9e350")];
+    let slow = oracle::trajectory(&main_mu_0_3_with_g(-700), &far, &opts).unwrap();
+    for (ru, rs) in unit.rows.iter().zip(&slow.rows) {
+        for (x, y) in ru.values.iter().zip(&rs.values).skip(1) {
+            same_digits(x, y, "a sliding row at g = 1e-700");
+        }
+    }
+    let rolling = oracle::trajectory(&main_mu_0_3_with_g(-700), &[exact("1e350")], &opts);
+    assert!(rolling.is_err(), "a rolling row at g = 1e-700 was printed");
+}

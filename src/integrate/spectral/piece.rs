@@ -41,9 +41,12 @@ pub(super) struct Piece {
     /// p/2 where it pays), their coefficients cut where they fall below the
     /// precision (the first Newton steps of an inversion).
     pub(super) lower: Vec<Lower>,
-    /// t(s) − t0 and dt/ds in f64 (Newton seeds).
+    /// t(s) − t0 and dt/ds in f64 (Newton seeds), both scaled by
+    /// 2^−`t64_exp` (the exponent of t(s) − t0's largest coefficient), so
+    /// that they hold in any unit of time.
     pub(super) dt64: Vec<f64>,
     pub(super) rate64: Vec<f64>,
+    pub(super) t64_exp: i32,
     /// The samples at the points, in ascending s, with their s.
     pub(super) nodes: Vec<(Float, Sample)>,
     /// The most coefficients any interpolant needed (above its tolerance).
@@ -394,6 +397,8 @@ pub(super) fn attempt(
             },
         ));
     }
+    // the f64 seeds' time scale
+    let t64_exp = crate::numeric::max_exp(&dt.c).unwrap_or(0);
     Ok(Attempt::Done(Box::new(Piece {
         m,
         dir,
@@ -413,8 +418,17 @@ pub(super) fn attempt(
         scratch: Default::default(),
         fixed: LazySums::at(fx),
         fixed_time: LazySums::at(fx),
-        dt64: dt.to_f64(),
-        rate64: rfit.to_f64(),
+        dt64: dt
+            .c
+            .iter()
+            .map(|c| crate::numeric::scaled_f64(c, t64_exp))
+            .collect(),
+        rate64: rfit
+            .c
+            .iter()
+            .map(|c| crate::numeric::scaled_f64(c, t64_exp))
+            .collect(),
+        t64_exp,
         nodes,
     })))
 }

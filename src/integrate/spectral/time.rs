@@ -6,6 +6,7 @@
 use super::piece::{within, Piece};
 use crate::numeric::cheb::fixed_sums::{FixedSums, LazySums};
 use crate::numeric::cheb::{ChebFit, Roots};
+use crate::numeric::scaled_f64;
 use rug::{Assign, Float};
 
 /// `f` rounded to q bits without the trailing coefficients below
@@ -113,11 +114,13 @@ impl Piece {
         let (low, full) = &mut *sc;
         let target = Float::with_val(p, tau - &self.t0);
         let (a, b) = (lo.0.to_f64(), hi.0.to_f64());
-        let (ta, tb) = (lo.1.to_f64(), hi.1.to_f64());
         let len = self.len.to_f64();
-        let tg = target.to_f64();
-        let mut s = if tb > ta {
-            a + (b - a) * ((tau.to_f64() - ta) / (tb - ta))
+        // times in f64 in the scale of dt64 (any unit of time)
+        let tg = scaled_f64(&target, self.t64_exp);
+        // the bracket's linear interpolation, its ratio of times in MPFR
+        let width = Float::with_val(p, &hi.1 - &lo.1);
+        let mut s = if width.is_sign_positive() && !width.is_zero() {
+            a + (b - a) * (Float::with_val(p, tau - &lo.1) / &width).to_f64()
         } else {
             a
         };
