@@ -1726,23 +1726,62 @@ fn separation_scalars_lie_within_their_bounds_of_60_digits() {
     assert_eq!(impacts, 9 * cases.len());
 }
 
-/// Beyond f64's range of time units (g = 10^-700: √(r/g) = 1.4·10^350):
-/// rows of the sliding phase print the unit model's digits (the sliding
-/// pieces' f64 seeds are scaled), and a row of the rolling phase is refused,
-/// not printed wrong (its Taylor integrator steps in f64 on absolute times:
-/// the README's stated limit).
+/// Beyond f64's range of time units (g = 10^∓700: √(r/g) = 10^±350): rows
+/// of the rolling phase and of the sliding phase print the unit model's
+/// digits, scaled. The sliding pieces' f64 seeds are scaled by powers of two;
+/// the rolling phase's Taylor integrator steps in a time unit 2^k near √(r/g)
+/// (it stepped in f64 on absolute times and refused these rows: "step size
+/// collapsed").
 #[test]
-fn beyond_f64_time_units_sliding_rows_hold_and_rolling_rows_are_refused() {
+fn beyond_f64_time_units_rows_print_the_unit_models_digits() {
     let opts = Options::digits(30);
-    let sliding = [exact("4.5"), exact("4.9")];
-    let unit = oracle::trajectory(&main_mu_0_3_with_g(0), &sliding, &opts).unwrap();
-    let far = [exact("4.5e350"), exact("4.9e350")];
-    let slow = oracle::trajectory(&main_mu_0_3_with_g(-700), &far, &opts).unwrap();
-    for (ru, rs) in unit.rows.iter().zip(&slow.rows) {
-        for (x, y) in ru.values.iter().zip(&rs.values).skip(1) {
-            same_digits(x, y, "a sliding row at g = 1e-700");
+    // rolling (stick/stick) rows before the slip onset at t = 4.156, sliding
+    // rows after it
+    let times = ["0.25", "1", "3", "4.5", "4.9"];
+    let unit_times: Vec<Exact> = times.iter().map(|t| exact(t)).collect();
+    let unit = oracle::trajectory(&main_mu_0_3_with_g(0), &unit_times, &opts).unwrap();
+    for (g, e) in [(-700, "e350"), (700, "e-350")] {
+        let far: Vec<Exact> = times.iter().map(|t| exact(&format!("{t}{e}"))).collect();
+        let scaled = oracle::trajectory(&main_mu_0_3_with_g(g), &far, &opts)
+            .unwrap_or_else(|err| panic!("g = 1e{g}: {err}"));
+        let mut modes = Vec::new();
+        for (ru, rs) in unit.rows.iter().zip(&scaled.rows) {
+            assert_eq!(ru.phase, rs.phase, "g = 1e{g}");
+            modes.push(rs.phase.tag());
+            for (x, y) in ru.values.iter().zip(&rs.values).skip(1) {
+                same_digits(x, y, &format!("a row at g = 1e{g}"));
+            }
+        }
+        // both kinds of row were there to check
+        assert!(modes.iter().any(|m| m == "stick/stick"), "{modes:?}");
+        assert!(modes.iter().any(|m| m != "stick/stick"), "{modes:?}");
+    }
+    // the ideal models roll on the same integrator: rolling contacts, and
+    // a frictionless floor (μ = ∞ and μ = 0)
+    for floor in ["inf", "0"] {
+        let with_g = |k: i32| {
+            let n = rug::Integer::from(rug::Integer::u_pow_u(10, k.unsigned_abs()));
+            let mut p = Params::identical_solid();
+            p.g = if k >= 0 {
+                Rational::from(n)
+            } else {
+                Rational::from((1, n))
+            };
+            let start = Start::rest(Exact::parse("theta0", "1/10", false).unwrap());
+            Model::new(p, law(floor), law("inf"), start).unwrap()
+        };
+        let times = ["0.25", "1", "2"];
+        let unit_times: Vec<Exact> = times.iter().map(|t| exact(t)).collect();
+        let unit = oracle::trajectory(&with_g(0), &unit_times, &opts).unwrap();
+        for (g, e) in [(-700, "e350"), (700, "e-350")] {
+            let far: Vec<Exact> = times.iter().map(|t| exact(&format!("{t}{e}"))).collect();
+            let scaled = oracle::trajectory(&with_g(g), &far, &opts)
+                .unwrap_or_else(|err| panic!("floor {floor}, g = 1e{g}: {err}"));
+            for (ru, rs) in unit.rows.iter().zip(&scaled.rows) {
+                for (x, y) in ru.values.iter().zip(&rs.values).skip(1) {
+                    same_digits(x, y, &format!("floor {floor}, g = 1e{g}"));
+                }
+            }
         }
     }
-    let rolling = oracle::trajectory(&main_mu_0_3_with_g(-700), &[exact("1e350")], &opts);
-    assert!(rolling.is_err(), "a rolling row at g = 1e-700 was printed");
 }

@@ -495,10 +495,19 @@ impl Route {
         extra: u32,
         digits: u32,
     ) -> Result<Vec<(Float, Float)>> {
-        let rhs = self.taylor_rhs(p)?;
+        // the integrator runs in a time unit 2^k near the model's √(r/g)
+        // (exact rescalings: θ̈ = F(θ) gains 4^k, θ̇ 2^k, times 2^−k; its f64
+        // step control then never sees a time or rate beyond f64's range,
+        // and in the unit model k = 0)
+        let k = log2_f64(&self.scale_time(64)).round() as i32;
+        let mut rhs = self.taylor_rhs(p)?;
+        for e in rhs.e.iter_mut() {
+            *e <<= 2 * k;
+        }
         let th0 = self.work.start().theta0.to_float(p);
-        let td0 = Float::with_val(p, &self.work.start().thetadot0);
-        let t_end = tt_all[i_max].clone();
+        let td0 = Float::with_val(p, &self.work.start().thetadot0) << k;
+        let in_unit = |t: &Float| Float::with_val(t.prec(), t >> k);
+        let t_end = in_unit(&tt_all[i_max]);
         // `extra` is what the smallest time needs (extra_bits_at never
         // grows with t). The times that need more fraction bits than the
         // run's limbs carry spare come from one short run with `extra`, to
@@ -520,8 +529,9 @@ impl Route {
             .zip(&needs)
             .filter_map(|(tt, &n)| n.then_some(tt))
             .max_by(|a, b| a.total_cmp(b));
+        let short_unit = short_end.map(in_unit);
         // (end, extra bits) of the main run, then of the short one
-        let plan = match short_end {
+        let plan = match &short_unit {
             Some(_) if needs[i_max] => vec![(&t_end, extra)],
             Some(te) => vec![(&t_end, 0), (te, extra)],
             None => vec![(&t_end, 0)],
@@ -549,7 +559,14 @@ impl Route {
                 Some(s) if n => s,
                 _ => &mut *traj,
             };
-            let (d, mut e) = run.delta_at(tt).ok_or_else(|| no_output(tt))?;
+            let scaled;
+            let tu = if k == 0 {
+                tt
+            } else {
+                scaled = in_unit(tt);
+                &scaled
+            };
+            let (d, mut e) = run.delta_at(tu).ok_or_else(|| no_output(tt))?;
             floor.assign(d.abs_ref());
             floor >>= p as i32 - 8;
             if e < floor {
@@ -561,9 +578,9 @@ impl Route {
         // the short run answers to the main one (which the energy
         // quadrature certifies at the last time): at the short run's last
         // time the two agree within their error estimates
-        if let (Some(s), Some(te)) = (short, short_end) {
-            let (ds, es) = s.delta_at(te).ok_or_else(|| no_output(te))?;
-            let (dm, em) = traj.delta_at(te).ok_or_else(|| no_output(te))?;
+        if let (Some(s), Some(te), Some(tu)) = (short, short_end, &short_unit) {
+            let (ds, es) = s.delta_at(tu).ok_or_else(|| no_output(te))?;
+            let (dm, em) = traj.delta_at(tu).ok_or_else(|| no_output(te))?;
             let mut room = Float::with_val(p, &es + &em) << 1u32;
             room += Float::with_val(p, dm.abs_ref()) >> (p as i32 - 8);
             if Float::with_val(p, &ds - &dm).abs() > room {
