@@ -9,7 +9,7 @@
 
 use super::ctx::Ctx;
 use super::mode::{Branch, Kind, Mode, Phase};
-use super::point::{Point, TwoState, COLUMNS};
+use super::point::{col, Point, TwoState, COLUMNS};
 use super::EventRec;
 use crate::error::{Error, Result};
 use crate::exact::Exact;
@@ -394,16 +394,15 @@ pub fn first_phase(
 /// The columns that are exactly 0 in a conservative mode.
 fn zero_bits(ctx: &Ctx, mode: Mode) -> u32 {
     let _ = ctx;
-    let bit = Point::zero_bit;
-    let mut z = bit("work");
+    let mut z = 1 << col!("work");
     use super::mode::State;
     match mode.floor {
-        State::Stick | State::Held => z |= bit("s1"),
-        State::Slip(_) => z |= bit("F1"),
+        State::Stick | State::Held => z |= 1 << col!("s1"),
+        State::Slip(_) => z |= 1 << col!("F1"),
     }
     match mode.contact {
-        State::Stick | State::Held => z |= bit("s12"),
-        State::Slip(_) => z |= bit("F21"),
+        State::Stick | State::Held => z |= 1 << col!("s12"),
+        State::Slip(_) => z |= 1 << col!("F21"),
     }
     z
 }

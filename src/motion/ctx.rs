@@ -3,7 +3,7 @@
 //! state.
 
 use super::mode::{Mode, Phase, State};
-use super::point::{two_state, Point};
+use super::point::{col, two_state, Point};
 use crate::error::{Error, Result};
 use crate::integrate::solve::{Opts, Sample};
 use crate::integrate::{time_scale, TOL_GUARD};
@@ -196,29 +196,28 @@ impl Ctx {
         state.f1 = self.tangential(sys, mode, Which::Floor, s);
         state.f21 = self.tangential(sys, mode, Which::Contact, s);
         let mut zero = 0u32;
-        let bit = Point::zero_bit;
         let s1 = match mode.floor {
             State::Stick | State::Held => {
-                zero |= bit("s1");
+                zero |= 1 << col!("s1");
                 Float::new(p)
             }
             State::Slip(_) => sys.slip_speed(Tangent::Floor, &s.q, &s.v),
         };
         let s12 = match mode.contact {
             State::Stick | State::Held => {
-                zero |= bit("s12");
+                zero |= 1 << col!("s12");
                 Float::new(p)
             }
             State::Slip(_) => sys.slip_speed(Tangent::Line(0), &s.q, &s.v),
         };
         if mode.floor == State::Slip(0) {
-            zero |= bit("F1");
+            zero |= 1 << col!("F1");
         }
         if mode.contact == State::Slip(0) {
-            zero |= bit("F21");
+            zero |= 1 << col!("F21");
         }
         if conservative {
-            zero |= bit("work");
+            zero |= 1 << col!("work");
         }
         Point {
             state,

@@ -19,7 +19,7 @@
 
 use super::ctx::Ctx;
 use super::mode::{Kind, Mode, Phase, State, Surface};
-use super::point::{Point, TwoState};
+use super::point::{col, Point, TwoState};
 use super::EventRec;
 use crate::error::{Error, Result};
 use crate::integrate::solve::Sample;
@@ -457,13 +457,12 @@ impl Flight {
         } else {
             State::Stick
         };
-        let bit = Point::zero_bit;
-        let mut zero = bit("F21") | bit("N12") | bit("s12");
+        let mut zero = (1 << col!("F21")) | (1 << col!("N12")) | (1 << col!("s12"));
         if matches!(floor, State::Stick | State::Held) {
-            zero |= bit("s1");
+            zero |= 1 << col!("s1");
         }
         if self.work.is_zero() && self.tau_stick.is_none() {
-            zero |= bit("work");
+            zero |= 1 << col!("work");
         }
         // energy T + V
         let half = |m: &Float, v: &Float| {

@@ -33,10 +33,43 @@ pub const COLUMNS: [&str; 21] = [
     "work",
 ];
 
-/// Index of a column in [`COLUMNS`].
+/// Index of a column in [`COLUMNS`] (`None` for a name that is not one):
+/// for names read at run time; in the code, [`col!`].
 pub fn column_index(name: &str) -> Option<usize> {
     COLUMNS.iter().position(|c| *c == name)
 }
+
+/// Index of a column in [`COLUMNS`]; a name that is not a column panics,
+/// which in a `const` context — the [`col!`] macro, the form every use in
+/// the code takes — fails the build (`cargo build`; `cargo check` does not
+/// evaluate it), not a silent column 0.
+pub const fn column(name: &str) -> usize {
+    let n = name.as_bytes();
+    let mut i = 0;
+    while i < COLUMNS.len() {
+        let c = COLUMNS[i].as_bytes();
+        if c.len() == n.len() {
+            let mut j = 0;
+            while j < n.len() && c[j] == n[j] {
+                j += 1;
+            }
+            if j == n.len() {
+                return i;
+            }
+        }
+        i += 1;
+    }
+    panic!("not a column of motion::COLUMNS")
+}
+
+/// The index of column `$name` in [`COLUMNS`], found at compile time
+/// ([`column`]): `col!("N12")`.
+macro_rules! col {
+    ($name:literal) => {
+        const { $crate::motion::point::column($name) }
+    };
+}
+pub(crate) use col;
 
 /// The mechanical state at one time, in the conventions of the README:
 /// θ (in flight the direction of the line of centres), its rates, the
@@ -263,9 +296,21 @@ impl Point {
     pub fn is_exact_zero(&self, i: usize) -> bool {
         self.exact_zero & (1 << i) != 0
     }
+}
 
-    /// The bit of column `name` in [`Point::exact_zero`].
-    pub fn zero_bit(name: &str) -> u32 {
-        column_index(name).map_or(0, |i| 1 << i)
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_column_is_found_at_its_index() {
+        for (i, name) in COLUMNS.iter().enumerate() {
+            assert_eq!(column(name), i, "{name}");
+        }
+        assert_eq!(col!("t"), 0);
+        assert_eq!(col!("work"), COLUMNS.len() - 1);
+        // a prefix or an extension of a name is not that column
+        assert!(std::panic::catch_unwind(|| column("theta_do")).is_err());
+        assert!(std::panic::catch_unwind(|| column("N12x")).is_err());
     }
 }

@@ -31,6 +31,7 @@ pub use trajectory::{
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::model::{Law, Model, Which};
+use crate::motion::point::col;
 use crate::motion::{self, Branch, Caches, Kind, Method, Motion, Phase, Request, Until};
 use crate::numeric::verify::{ladder, precisions, Estimate, Run, Verified};
 use ladder::{event_estimates, event_names, events_of, integrated, laddered, Runs};
@@ -434,10 +435,7 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         let mut out = Vec::new();
         let p = m.prec();
         let sc = ladder::column_scales(model, p);
-        let scale = |name: &str| {
-            let k = motion::point::column_index(name).unwrap_or(0);
-            Float::with_val(p, &*sc[k])
-        };
+        let work_scale = || Float::with_val(p, &*sc[col!("work")]);
         let ts = &sc[0];
         event_estimates(m, &sc[0], &mut out);
         if let Some(i) = sep_ev {
@@ -445,9 +443,9 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
             out.push(out[2 * i].clone());
             let w = &m.events[i].at.work;
             out.push(if m.events[i].at.is_exact_zero(20) {
-                Estimate::zero(p, scale("work"))
+                Estimate::zero(p, work_scale())
             } else {
-                integrated(w, scale("work"))
+                integrated(w, work_scale())
             });
         }
         if let Some(i) = ind_ev {
@@ -458,8 +456,7 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
             let all = ladder::point_estimates(&ev.at, &sc, None);
             let loc = Float::with_val(p, &ev.theta_err)
                 + Float::with_val(p, &ev.t_err) * Float::with_val(p, ev.at.theta_dot.abs_ref());
-            for name in ["theta_dot", "N12", "F21"] {
-                let k = motion::point::column_index(name).unwrap_or(0);
+            for k in [col!("theta_dot"), col!("N12"), col!("F21")] {
                 let mut e = all[k].clone();
                 e.err += Float::with_val(p, &loc * &*sc[k]) * 16u32;
                 out.push(e);
@@ -470,15 +467,15 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
                 .map(|i| m.events[i].t_err.clone())
                 .unwrap_or_else(|| Float::new(p));
             for (v, column) in [
-                (&imp.t, "t"),
-                (&imp.x1, "x1"),
-                (&imp.x2, "x2"),
-                (&imp.y2, "y2"),
-                (&imp.vx1, "x1_dot"),
-                (&imp.phi1_dot, "phi1_dot"),
-                (&imp.vx2, "x2_dot"),
-                (&imp.vy2, "y2_dot"),
-                (&imp.psi2_dot, "phi2_dot"),
+                (&imp.t, col!("t")),
+                (&imp.x1, col!("x1")),
+                (&imp.x2, col!("x2")),
+                (&imp.y2, col!("y2")),
+                (&imp.vx1, col!("x1_dot")),
+                (&imp.phi1_dot, col!("phi1_dot")),
+                (&imp.vx2, col!("x2_dot")),
+                (&imp.vy2, col!("y2_dot")),
+                (&imp.psi2_dot, col!("phi2_dot")),
             ] {
                 // the separation time's error δt: a first-order term of 16
                 // natural scales per time unit, which over-covers it (at the
@@ -487,7 +484,7 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
                 // along the motion differs at second order in δt). Checked
                 // against 60 digits (tests/friction.rs,
                 // separation_scalars_lie_within_their_bounds_of_60_digits)
-                let sc = scale(column);
+                let sc = Float::with_val(p, &*sc[column]);
                 let mut e = integrated(v, sc.clone());
                 e.err += Float::with_val(p, &ev_err * sc) / &**ts * 16u32;
                 out.push(e);
@@ -784,22 +781,22 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         ans.routes.push(motion::Route::Energy);
         return Ok(ans);
     }
-    let idx = |name: &str| motion::point::column_index(name).unwrap_or(0);
-    let keys = [
-        "F1",
-        "N1",
-        "F21",
-        "N12",
-        "theta_dot",
-        "theta_ddot",
-        "s1",
-        "s12",
-        "work",
+    let cols = [
+        col!("F1"),
+        col!("N1"),
+        col!("F21"),
+        col!("N12"),
+        col!("theta_dot"),
+        col!("theta_ddot"),
+        col!("s1"),
+        col!("s12"),
+        col!("work"),
     ];
+    let keys = cols.map(|k| motion::COLUMNS[k]);
     let (v, phase, note) = at_angle(model, opts, theta, "theta", &keys, |pt| {
         let p = pt.t.prec();
         let all = ladder::point_estimates(pt, &ladder::column_scales(model, p), None);
-        keys.iter().map(|k| all[idx(k)].clone()).collect()
+        cols.iter().map(|&k| all[k].clone()).collect()
     })?;
     let mut values: Vec<Verified> = v[..6].to_vec();
     let mode = phase.mode();

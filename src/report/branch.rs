@@ -32,8 +32,8 @@ impl BranchData {
     /// The gap between the cylinders' surfaces along a track, in units of
     /// r₁ (0 while they touch).
     pub fn gap(&self, tr: &Track) -> (Vec<(f64, f64)>, Vec<String>) {
-        let col = |n: &str| crate::motion::point::column_index(n).unwrap_or(0);
-        let (x1, x2, y2) = (col("x1"), col("x2"), col("y2"));
+        use crate::motion::point::col;
+        let (x1, x2, y2) = (col!("x1"), col!("x2"), col!("y2"));
         let (r1, r) = self.radii;
         tr.map(|v| ((v[x2] - v[x1]).hypot(v[y2] - r1) - r) / r1)
     }
