@@ -309,3 +309,32 @@ fn the_branch_point_from_rest_at_the_top() {
     let a = oracle::separation(&slip, &Options::digits(digits)).unwrap();
     assert!(a.value("theta_indeterminate").is_none(), "{:?}", a.notes);
 }
+
+#[test]
+fn a_light_upper_cylinder_separates_as_on_a_fixed_one() {
+    // m2 = 10^-40 m1: the lower cylinder moves by O(m2/m1), far below the
+    // 30 digits, so θs is the fixed cylinder's: cos θs = 2 cos θ0/(3 + k2)
+    // (k2 = 0 on a frictionless contact), whatever the floor. The motion's
+    // energy balance was measured with the potential's zero at the floor,
+    // whose constant m1 g r1, rounded to 2^-p m1 g r, swamped the upper
+    // cylinder's energy m2 g r: every law failed from m2 = 10^-6 m1 on
+    use cylroll::model::{Law, Model};
+    use cylroll::oracle::{self, Options};
+    let theta0 = Rational::from((1, 10));
+    let digits = 30;
+    let p = digits * 4 + 64;
+    let law = |s: &str| Law::parse_mu("mu", s).unwrap();
+    for floor in ["inf", "0"] {
+        for (contact, k) in [("inf", "1/2"), ("0", "0")] {
+            let mut pr = Params::identical_solid();
+            pr.m2 = q("1e-40");
+            let start = Start::rest(Exact::parse("theta0", "1/10", true).unwrap());
+            let m = Model::new(pr, law(floor), law(contact), start).unwrap();
+            let s = oracle::separation(&m, &Options::digits(digits))
+                .unwrap_or_else(|e| panic!("mu {floor}/{contact}: {e}"));
+            let th = s.value("theta_s").expect("theta_s");
+            let c = Float::with_val(p, &theta0).cos() * 2u32 / Float::with_val(p, q("3") + q(k));
+            assert_eq!(th.text, to_sig(&c.acos(), digits), "mu {floor}/{contact}");
+        }
+    }
+}

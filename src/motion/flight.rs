@@ -472,8 +472,10 @@ impl Flight {
         energy += half(&self.m2, &self.vx2);
         energy += half(&self.m2, &vy2);
         energy += half(&self.i2, &self.w2);
-        energy += Float::with_val(p, &self.m1 * &self.r1) * &self.g;
-        energy += Float::with_val(p, &self.m2 * &y2) * &self.g;
+        // heights above cylinder 1's centre (System::energy's zero): m1's
+        // is 0, cylinder 1 on the floor
+        let h2 = Float::with_val(p, &y2 - &self.r1);
+        energy += Float::with_val(p, &self.m2 * &h2) * &self.g;
         Point {
             state: TwoState {
                 t: Float::with_val(p, t),

@@ -760,9 +760,9 @@ impl Route {
         let st = e.dynm.state(delta);
         let pos = e.dynm.positions_phi2(&st, t);
         let f = e.dynm.forces(&st);
-        // T + V with V = m1 g y1 + m2 g y2 (y1 = r1): the constrained
-        // system's zero of the potential
-        let energy = e.dynm.energy(&st) + &e.v0;
+        // T + V with V = m2 g (y2 − r1) = m2 g r cos θ: heights above
+        // cylinder 1's centre, System::energy's zero of the potential
+        let energy = e.dynm.energy(&st);
         let [xd, pd, sd] = &st.v;
         let td = &st.thetadot;
         let x2 = Float::with_val(p, r * &st.s) + &pos[0];

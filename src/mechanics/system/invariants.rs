@@ -30,8 +30,13 @@ impl System {
             t += &row * &v[i];
         }
         t /= 2u32;
-        // heights: y1, then y_{i} = y_{i-1} + r c
-        let mut y = Float::with_val(p, &q[Y1]);
+        // heights above cylinder 1's centre at rest on the floor (y1 = ρ1,
+        // the potential's zero): y1 − ρ1 (exactly 0 on the floor), then
+        // y_i = y_{i−1} + r c. With the floor's height as zero, E would
+        // carry the constant Σ m_i g ρ1, and its rounding, m1 g ρ1 2^−p,
+        // would swamp a light upper cylinder's energy m2 g r (at m2 = 10^−6
+        // m1 the energy balance failed at 30 digits)
+        let mut y = Float::with_val(p, &q[Y1] - &self.rho[0]);
         let mut vpot = Float::with_val(p, &self.m[0] * &y);
         for i in 1..self.n {
             y += &q[rr(i - 1)] * &self.ws.c[i - 1];

@@ -18,9 +18,6 @@ use std::collections::HashMap;
 
 pub struct Engine {
     pub dynm: Dyn,
-    /// (m1 + m2) g r1: the potential of the constrained system's zero
-    /// ([`super::Route::columns_at`]'s energy), rounded once.
-    pub v0: Float,
     /// The rule of [`Engine::time`] (its nodes are part of `separation()`'s
     /// recorded output, so they stay bit for bit as they were).
     pub ts: TanhSinh,
@@ -78,13 +75,8 @@ impl Engine {
         let dynm = Dyn::new(model, red, prec)?;
         let half = HalfAngleTime::new(&dynm);
         let half_limit = Float::with_val(prec, rug::float::Constant::Pi) * 2u32 / 3u32 - &dynm.th0;
-        let pr = model.params();
-        let v0 = Float::with_val(prec, &rug::Rational::from(&pr.m1 + &pr.m2))
-            * Float::with_val(prec, &pr.g)
-            * Float::with_val(prec, &pr.r1);
         Ok(Engine {
             dynm,
-            v0,
             ts: TanhSinh::with_fast_nodes(prec),
             ts_half: TanhSinh::with_fast_nodes(prec),
             scratch: Scratch::new(prec),
