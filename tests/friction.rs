@@ -1785,3 +1785,27 @@ fn beyond_f64_time_units_rows_print_the_unit_models_digits() {
         }
     }
 }
+
+/// A heavy upper cylinder on a light one (m2 = 10^30 m1): where the floor
+/// starts to slip, the light cylinder's motion is 10^15 times faster than
+/// the rest, and the explicit integrators' steps fall to 10^-14 of the time
+/// unit. The motion is refused, saying so, after a thousand such steps
+/// (about a second); it crept on towards the limit of a million steps
+/// (hours), whose message did not say why.
+#[test]
+fn a_stiff_extreme_of_the_masses_is_refused_not_followed_for_hours() {
+    let mut p = Params::identical_solid();
+    p.m2 = Rational::from(rug::Integer::u_pow_u(10, 30));
+    let m = Model::new(
+        p,
+        law("0.3"),
+        law("0.3"),
+        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+    )
+    .unwrap();
+    let err =
+        oracle::separation(&m, &Options::digits(20)).expect_err("a stiff motion was answered");
+    let msg = err.to_string();
+    assert!(msg.contains("stiff"), "{msg}");
+    assert!(msg.contains("theta = 0.5829"), "{msg}");
+}

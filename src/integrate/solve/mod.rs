@@ -293,6 +293,31 @@ pub fn run_from(
     run_with(sys, start, times, t_end, events, opts, &mut gbs)
 }
 
+/// Steps below 2^−30 of the start's that [`run_with`] takes before it
+/// refuses the motion as stiff.
+const TINY_STEPS: u32 = 1000;
+
+/// The refusal of a stiff motion at time `t`, angle `theta`, after steps
+/// of `h` against the start's `h0`.
+fn stiff(t: &Float, theta: &Float, h: &Float, h0: &Float) -> Error {
+    let ratio = Float::with_val(53, h / h0);
+    Error::NotConverged {
+        quantity: "integration".into(),
+        requested: 0,
+        reached: format!(
+            "{TINY_STEPS} steps of {} of the time unit at t = {}, theta = {}",
+            crate::numeric::decimal::to_sig(&(ratio / 8u32), 2),
+            crate::numeric::decimal::to_sig(t, 12),
+            crate::numeric::decimal::to_sig(theta, 12)
+        ),
+        detail: "the motion is stiff there: a sliding contact whose accelerations are many \
+                 orders of magnitude above the rest of the motion's (an extreme ratio of the \
+                 masses or moments of inertia); the integrators are explicit and cannot \
+                 follow it"
+            .into(),
+    }
+}
+
 /// [`run_from`] with a given integrator (GBS, or the Gauss–Legendre
 /// collocation of [`super::collocation`] as an independent second one).
 pub fn run_with<I: Stepper>(
@@ -335,6 +360,7 @@ pub fn run_with<I: Stepper>(
     let mut hits = Vec::new();
     let mut max_drift = Float::new(p);
     let mut projections = 0u32;
+    let mut tiny_steps = 0u32;
     let mut next_out = 0usize;
     // dλ/dt at the current sample, computed when a dip test needs it
     let mut rates_cur: Option<Vec<Float>> = None;
@@ -378,6 +404,22 @@ pub fn run_with<I: Stepper>(
             let mut dae = Dae { sys, nq };
             gbs.step(&mut dae, &y, &f0, &hmax)?
         };
+        // a step below 2^-30 of the start's (an eighth of the time unit)
+        // away from any stop: the motion is stiff here — a contact whose
+        // accelerations are many orders above the rest's (an extreme ratio
+        // of masses or inertias); an explicit integrator would creep on for
+        // its million steps (hours), so it is refused after a thousand
+        if step.h < hmax && Float::with_val(p, &step.h << 30u32) < opts.h0 {
+            tiny_steps += 1;
+            if tiny_steps > TINY_STEPS {
+                return Err(stiff(
+                    &t,
+                    &y[crate::mechanics::system::th(0)],
+                    &step.h,
+                    &opts.h0,
+                ));
+            }
+        }
         let reached_stop = step.h == hmax && !capped;
         let t1 = if reached_stop {
             stop.clone()
