@@ -899,3 +899,78 @@ fn messages_print_only_digits_the_computation_holds() {
         );
     }
 }
+
+/// A heavy upper cylinder on a light one on a frictionless floor
+/// (m2 = 10^30 m1, rolling contact, from rest at θ0 = 1/10): N12 at the
+/// start is of the order of m1 g while its terms are of m2 g, so the check
+/// that the start holds rounded it to −1.5e2 at 96 bits and refused the
+/// start as "part at once (thetadot0 too large)" — from rest. Now it is
+/// decided at a precision that resolves it, and θs is the limit of the
+/// lighter ratios: θs(m2/m1) = θ* + c·m1/m2 to first order, so the
+/// differences to the 10^30 value at 10^16 and 10^20 are in the ratio 10^4.
+#[test]
+fn a_light_lower_cylinder_on_a_frictionless_floor_holds_at_the_start() {
+    let theta_s = |m2: &str| -> rug::Float {
+        let out = cyl()
+            .args([
+                "separation",
+                "--theta0",
+                "1/10",
+                "--floor",
+                "slip",
+                "--m2",
+                m2,
+            ])
+            .args(["--digits", "30", "--format", "json"])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "m2 = {m2}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let text = v["theta_s"].as_str().unwrap_or_else(|| panic!("{v}"));
+        rug::Float::with_val(200, rug::Float::parse(text).unwrap())
+    };
+    let limit = theta_s("1e30");
+    let d16 = theta_s("1e16") - limit.clone();
+    let d20 = theta_s("1e20") - limit;
+    let ratio = (d16 / d20).to_f64();
+    assert!((ratio / 1e4 - 1.0).abs() < 1e-6, "ratio {ratio}");
+}
+
+/// The README's range of mass ratios: m2 = 10^12 m1 is answered (verified
+/// to 30 digits) under every kind of law, ideal and Coulomb.
+#[test]
+fn a_heavy_upper_cylinder_is_answered_under_every_law() {
+    for law in [
+        &["--mu", "inf"][..],
+        &["--contact", "slip"],
+        &["--floor", "slip", "--contact", "slip"],
+        &["--floor", "slip"],
+        &["--mu", "0.3"],
+        &["--mu", "0.3,0.2"],
+        &["--mu-floor", "0", "--mu-contact", "0.3"],
+    ] {
+        let out = cyl()
+            .args([
+                "separation",
+                "--theta0",
+                "1/10",
+                "--m2",
+                "1e12",
+                "--digits",
+                "30",
+            ])
+            .args(law)
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success() && text.contains("[30 digits"),
+            "{law:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+}

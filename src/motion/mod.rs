@@ -162,7 +162,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
     let mut mode = choice.mode.ok_or_else(|| {
         Error::not_physical(
             "the cylinders part at once: N12 <= 0 at the start in every mode \
-             (thetadot0 too large for theta0)",
+             (the start lies past the parting: theta0, thetadot0 or omega0 too large)",
         )
     })?;
     let mut w = Walk {

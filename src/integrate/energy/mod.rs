@@ -23,7 +23,7 @@ use crate::model::{Contact, Floor, Ideal};
 use crate::numeric::taylor::{self, Conservative};
 use crate::numeric::verify::{Estimate, Run};
 pub use engine::Engine;
-use rug::{Assign, Float};
+use rug::{Assign, Float, Rational};
 use std::collections::HashMap;
 
 /// From this working precision on (about 170 digits) the trajectory's θ(t)
@@ -109,20 +109,52 @@ impl Route {
             red,
             caches: Caches::default(),
         };
-        let e = r.engine(SCAN_PREC)?;
-        let z = Float::new(SCAN_PREC);
-        let st = e.dynm.state(&z);
-        let f = e.dynm.forces(&st);
-        if !f.n12.is_sign_positive() || f.n12.is_zero() {
+        // N12 and N1 at the start, at a precision that resolves their
+        // signs: a force within its terms' rounding, (m1 + m2) g·2^−(p−8),
+        // is computed again at twice the bits (a heavy upper cylinder on a
+        // light one on a frictionless floor: N12 is of the order of m1 g,
+        // its terms of m2 g — at m2 = 10^30 m1 the rounding at 96 bits gave
+        // N12 < 0 and the start was refused as parting at once)
+        let pr = r.work.params();
+        let weight = Rational::from(&pr.m1 + &pr.m2) * &pr.g;
+        let mut p = SCAN_PREC;
+        let (n12, n1, floor) = loop {
+            let e = r.engine(p)?;
+            let st = e.dynm.state(&Float::new(p));
+            let f = e.dynm.forces(&st);
+            let floor = Float::with_val(p, &weight) >> (p as i32 - 8);
+            let decided = |x: &Float| Float::with_val(p, x.abs_ref()) > floor;
+            if (decided(&f.n12) && decided(&f.n1)) || p >= 16 * SCAN_PREC {
+                break (f.n12, f.n1, floor);
+            }
+            p *= 2;
+        };
+        for (name, x) in [("N12", &n12), ("N1", &n1)] {
+            if Float::with_val(p, x.abs_ref()) <= floor {
+                return Err(Error::NotConverged {
+                    quantity: format!("{name} at the start"),
+                    requested: 0,
+                    reached: format!(
+                        "0 to within its rounding at {p} bits (|{name}| <= {})",
+                        crate::numeric::decimal::short(&floor)
+                    ),
+                    detail: "whether the start holds cannot be decided (masses of very \
+                             different orders?)"
+                        .into(),
+                });
+            }
+        }
+        if n12.is_sign_negative() {
             return Err(Error::not_physical(format!(
-                "the cylinders part at once: N12 = {:.3e} <= 0 at the start (thetadot0 too large for theta0)",
-                f.n12.to_f64()
+                "the cylinders part at once: N12 = {} <= 0 at the start (the start lies past \
+                 the parting: theta0, thetadot0 or omega0 too large)",
+                crate::numeric::decimal::to_sig(&n12, 4)
             )));
         }
-        if !f.n1.is_sign_positive() || f.n1.is_zero() {
+        if n1.is_sign_negative() {
             return Err(Error::not_physical(format!(
-                "cylinder 1 lifts off the floor at once: N1 = {:.3e} <= 0 at the start",
-                f.n1.to_f64()
+                "cylinder 1 lifts off the floor at once: N1 = {} <= 0 at the start",
+                crate::numeric::decimal::to_sig(&n1, 4)
             )));
         }
         Ok(r)
