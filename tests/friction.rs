@@ -1809,3 +1809,28 @@ fn a_stiff_extreme_of_the_masses_is_refused_not_followed_for_hours() {
     assert!(msg.contains("stiff"), "{msg}");
     assert!(msg.contains("theta = 0.5829"), "{msg}");
 }
+
+/// m2 = 10^14 m1: at the floor's slip onset no candidate mode passes the
+/// decision's test, whose Euler steps are far longer than the light
+/// cylinder's motion takes to change. The refusal says so, first, instead
+/// of calling it a Painlevé-type inconsistency of the rigid-body model.
+#[test]
+fn a_mode_undecided_at_an_extreme_mass_ratio_is_not_called_painleve() {
+    let mut p = Params::identical_solid();
+    p.m2 = Rational::from(rug::Integer::u_pow_u(10, 14));
+    let m = Model::new(
+        p,
+        law("0.3"),
+        law("0.3"),
+        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+    )
+    .unwrap();
+    let msg = oracle::separation(&m, &Options::digits(20))
+        .expect_err("answered")
+        .to_string();
+    assert!(
+        msg.contains("the masses differ by a factor 1.0e14"),
+        "{msg}"
+    );
+    assert!(!msg.contains("Painlev"), "{msg}");
+}
