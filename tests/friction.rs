@@ -1812,8 +1812,9 @@ fn a_stiff_extreme_of_the_masses_is_refused_not_followed_for_hours() {
 
 /// m2 = 10^14 m1: at the floor's slip onset no candidate mode passes the
 /// decision's test, whose Euler steps are far longer than the light
-/// cylinder's motion takes to change. The refusal says so, first, instead
-/// of calling it a Painlevé-type inconsistency of the rigid-body model.
+/// cylinder's motion takes to change; k2 = 10^-20 at the parting likewise.
+/// The refusal says so, first, instead of calling it a Painlevé-type
+/// inconsistency of the rigid-body model.
 #[test]
 fn a_mode_undecided_at_an_extreme_mass_ratio_is_not_called_painleve() {
     let mut p = Params::identical_solid();
@@ -1833,4 +1834,26 @@ fn a_mode_undecided_at_an_extreme_mass_ratio_is_not_called_painleve() {
         "{msg}"
     );
     assert!(!msg.contains("Painlev"), "{msg}");
+    // a spin almost without inertia (k2 = 10^-20) likewise, at the parting;
+    // k2 = 10^-12 is answered (the README's range)
+    let with_k2 = |k2: &str| {
+        let mut p = Params::identical_solid();
+        p.k2 = Exact::parse("k2", k2, false).unwrap().coef;
+        Model::new(
+            p,
+            law("0.3"),
+            law("0.3"),
+            Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+        )
+        .unwrap()
+    };
+    let msg = oracle::separation(&with_k2("1e-20"), &Options::digits(20))
+        .expect_err("answered")
+        .to_string();
+    assert!(
+        msg.contains("k2 = 1.0e-20 leaves a spin almost without inertia"),
+        "{msg}"
+    );
+    assert!(!msg.contains("Painlev"), "{msg}");
+    separation(&with_k2("1e-12"), 30);
 }

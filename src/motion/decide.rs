@@ -106,15 +106,30 @@ pub fn inconsistency(ctx: &Ctx, mode: Mode, q: &[Float], v: &[Float]) -> Result<
     Ok(None)
 }
 
-/// max(m1/m2, m2/m1) where it exceeds 10^12 (the README's tested range):
-/// beyond it the mode test's Euler steps do not resolve the light
-/// cylinder's motion.
-fn mass_ratio(ctx: &Ctx) -> Option<Float> {
+/// A disparity of the parameters beyond the README's tested range that
+/// makes part of the motion fast: masses differing by more than 10^12, or
+/// a moment of inertia below 10^-12 of m r² (k1, k2). There the mode
+/// test's Euler steps do not resolve the fast motion.
+fn disparity(ctx: &Ctx) -> Option<String> {
     let pr = ctx.model.params();
+    let limit = rug::Rational::from(rug::Integer::from(rug::Integer::u_pow_u(10, 12)));
     let r = rug::Rational::from(&pr.m2 / &pr.m1);
     let r = if r < 1 { r.recip() } else { r };
-    let limit = rug::Integer::from(rug::Integer::u_pow_u(10, 12));
-    (r > limit).then(|| Float::with_val(64, &r))
+    if r > limit {
+        return Some(format!(
+            "the masses differ by a factor {}",
+            crate::numeric::decimal::short(&Float::with_val(64, &r))
+        ));
+    }
+    for (name, k) in [("k1", &pr.k1), ("k2", &pr.k2)] {
+        if *k > 0 && rug::Rational::from(k.recip_ref()) > limit {
+            return Some(format!(
+                "{name} = {} leaves a spin almost without inertia",
+                crate::numeric::decimal::short(&Float::with_val(64, k))
+            ));
+        }
+    }
+    None
 }
 
 /// The relative normal acceleration r̈ of the centres if the contact
@@ -216,15 +231,14 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
             detail: format!(
                 "{}; every candidate fails ({}; the contact cannot open: free relative normal \
                  acceleration {})",
-                match mass_ratio(ctx) {
+                match disparity(ctx) {
                     // the candidates are tested by Euler steps of 2^-(p/3) of
-                    // the time unit, far longer than a light cylinder's
-                    // motion under a heavy one takes to change
-                    Some(r) => format!(
-                        "the masses differ by a factor {} and the light cylinder's motion is \
-                         too fast for the test of the candidates; whether the rigid-body model \
-                         has a continuation here is not decided",
-                        crate::numeric::decimal::short(&r)
+                    // the time unit, far longer than the fast part of such a
+                    // motion takes to change
+                    Some(cause) => format!(
+                        "{cause}, and the motion it makes fast is too fast for the test of \
+                         the candidates; whether the rigid-body model has a continuation here \
+                         is not decided"
                     ),
                     None => "a Painlevé-type inconsistency of the rigid-body model".into(),
                 },
