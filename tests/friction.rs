@@ -1106,12 +1106,20 @@ fn mantissa(text: &str) -> String {
 /// 1/10) with g = 10^k: the same motion in the time unit 10^(−k/2).
 fn main_mu_0_3_with_g(k: i32) -> Model {
     let n = rug::Integer::from(rug::Integer::u_pow_u(10, k.unsigned_abs()));
+    main_mu_0_3_edited(|p| {
+        p.g = if k >= 0 {
+            Rational::from(n)
+        } else {
+            Rational::from((1, n))
+        }
+    })
+}
+
+/// The main case with μ = 0.3 at both contacts from rest at θ0 = 1/10, its
+/// parameters changed by `edit`.
+fn main_mu_0_3_edited(edit: impl FnOnce(&mut Params)) -> Model {
     let mut p = Params::identical_solid();
-    p.g = if k >= 0 {
-        Rational::from(n)
-    } else {
-        Rational::from((1, n))
-    };
+    edit(&mut p);
     Model::new(
         p,
         law("0.3"),
@@ -1794,15 +1802,7 @@ fn beyond_f64_time_units_rows_print_the_unit_models_digits() {
 /// (hours), whose message did not say why.
 #[test]
 fn a_stiff_extreme_of_the_masses_is_refused_not_followed_for_hours() {
-    let mut p = Params::identical_solid();
-    p.m2 = Rational::from(rug::Integer::u_pow_u(10, 30));
-    let m = Model::new(
-        p,
-        law("0.3"),
-        law("0.3"),
-        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
-    )
-    .unwrap();
+    let m = main_mu_0_3_edited(|p| p.m2 = Rational::from(rug::Integer::u_pow_u(10, 30)));
     let err =
         oracle::separation(&m, &Options::digits(20)).expect_err("a stiff motion was answered");
     let msg = err.to_string();
@@ -1817,15 +1817,7 @@ fn a_stiff_extreme_of_the_masses_is_refused_not_followed_for_hours() {
 /// inconsistency of the rigid-body model.
 #[test]
 fn a_mode_undecided_at_an_extreme_mass_ratio_is_not_called_painleve() {
-    let mut p = Params::identical_solid();
-    p.m2 = Rational::from(rug::Integer::u_pow_u(10, 14));
-    let m = Model::new(
-        p,
-        law("0.3"),
-        law("0.3"),
-        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
-    )
-    .unwrap();
+    let m = main_mu_0_3_edited(|p| p.m2 = Rational::from(rug::Integer::u_pow_u(10, 14)));
     let msg = oracle::separation(&m, &Options::digits(20))
         .expect_err("answered")
         .to_string();
@@ -1836,17 +1828,8 @@ fn a_mode_undecided_at_an_extreme_mass_ratio_is_not_called_painleve() {
     assert!(!msg.contains("Painlev"), "{msg}");
     // a spin almost without inertia (k2 = 10^-20) likewise, at the parting;
     // k2 = 10^-12 is answered (the README's range)
-    let with_k2 = |k2: &str| {
-        let mut p = Params::identical_solid();
-        p.k2 = Exact::parse("k2", k2, false).unwrap().coef;
-        Model::new(
-            p,
-            law("0.3"),
-            law("0.3"),
-            Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
-        )
-        .unwrap()
-    };
+    let with_k2 =
+        |k2: &str| main_mu_0_3_edited(|p| p.k2 = Exact::parse("k2", k2, false).unwrap().coef);
     let msg = oracle::separation(&with_k2("1e-20"), &Options::digits(20))
         .expect_err("answered")
         .to_string();
