@@ -1753,6 +1753,7 @@ fn beyond_f64_time_units_rows_print_the_unit_models_digits() {
         let scaled = oracle::trajectory(&main_mu_0_3_with_g(g), &far, &opts)
             .unwrap_or_else(|err| panic!("g = 1e{g}: {err}"));
         let mut modes = Vec::new();
+        assert_eq!(unit.rows.len(), scaled.rows.len(), "g = 1e{g}");
         for (ru, rs) in unit.rows.iter().zip(&scaled.rows) {
             assert_eq!(ru.phase, rs.phase, "g = 1e{g}");
             modes.push(rs.phase.tag());
@@ -1785,6 +1786,11 @@ fn beyond_f64_time_units_rows_print_the_unit_models_digits() {
             let far: Vec<Exact> = times.iter().map(|t| exact(&format!("{t}{e}"))).collect();
             let scaled = oracle::trajectory(&with_g(g), &far, &opts)
                 .unwrap_or_else(|err| panic!("floor {floor}, g = 1e{g}: {err}"));
+            assert_eq!(
+                unit.rows.len(),
+                scaled.rows.len(),
+                "floor {floor}, g = 1e{g}"
+            );
             for (ru, rs) in unit.rows.iter().zip(&scaled.rows) {
                 for (x, y) in ru.values.iter().zip(&rs.values).skip(1) {
                     same_digits(x, y, &format!("floor {floor}, g = 1e{g}"));
@@ -1839,4 +1845,31 @@ fn a_mode_undecided_at_an_extreme_mass_ratio_is_not_called_painleve() {
     );
     assert!(!msg.contains("Painlev"), "{msg}");
     separation(&with_k2("1e-12"), 30);
+    separation(
+        &main_mu_0_3_edited(|p| p.k1 = Exact::parse("k1", "1e-12", false).unwrap().coef),
+        30,
+    );
+}
+
+/// A light upper cylinder (m2 = 10^-40 m1) with friction at both contacts
+/// moves as on a held lower cylinder with the same friction between them
+/// (the lower one moves by O(m2/m1)): the two motions, computed apart (the
+/// floor's law and the lower cylinder's equations against a held one), part
+/// at the same θs and t_s to all 30 digits. The energy balance of the
+/// first failed from m2 = 10^-6 m1 on.
+#[test]
+fn a_light_upper_cylinder_moves_as_on_a_held_lower_one() {
+    let light = main_mu_0_3_edited(|p| p.m2 = Rational::from((1, rug::Integer::u_pow_u(10, 40))));
+    let held = Model::new(
+        Params::identical_solid(),
+        Law::Held,
+        law("0.3"),
+        Start::rest(Exact::parse("theta0", "1/10", false).unwrap()),
+    )
+    .unwrap();
+    let (a, b) = (separation(&light, 30), separation(&held, 30));
+    for name in ["theta_s", "t_s"] {
+        let (x, y) = (a.value(name).unwrap(), b.value(name).unwrap());
+        assert_eq!((x.digits, &x.text), (30, &y.text), "{name}");
+    }
 }

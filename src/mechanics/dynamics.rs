@@ -393,7 +393,9 @@ impl Dyn {
         Forces { f1, n1, f21, n12 }
     }
 
-    /// Total energy T + V (V = m2 g y2 + const) from the full velocities.
+    /// Total energy T + V from the full velocities, V = m2 g (y2 − r1) =
+    /// m2 g r cos θ (heights above cylinder 1's centre, as
+    /// [`crate::mechanics::system::System::energy`]).
     pub fn energy(&self, st: &State) -> Float {
         let p = self.prec;
         let [xd, pd, sd] = &st.v;

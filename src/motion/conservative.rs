@@ -241,7 +241,7 @@ pub fn first_phase(
             // detection is to cost little on top of the phase
             let (t, terr, _) = route.engine(p)?.time_fast(d, wants.run == Run::High, false);
             let (cols, en) = route.columns_at(d, &t, p)?;
-            let thd = Float::with_val(p, cols[2].abs_ref());
+            let thd = Float::with_val(p, cols[col!("theta_dot")].abs_ref());
             let t_err = if thd.is_zero() {
                 terr
             } else {

@@ -436,13 +436,13 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         let p = m.prec();
         let sc = ladder::column_scales(model, p);
         let work_scale = || Float::with_val(p, &*sc[col!("work")]);
-        let ts = &sc[0];
-        event_estimates(m, &sc[0], &mut out);
+        let ts = &sc[col!("t")];
+        event_estimates(m, &sc[col!("t")], &mut out);
         if let Some(i) = sep_ev {
             out.push(out[2 * i + 1].clone());
             out.push(out[2 * i].clone());
             let w = &m.events[i].at.work;
-            out.push(if m.events[i].at.is_exact_zero(20) {
+            out.push(if m.events[i].at.is_exact_zero(col!("work")) {
                 Estimate::zero(p, work_scale())
             } else {
                 integrated(w, work_scale())
@@ -728,9 +728,9 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
                 }
             };
             Ok(vec![
-                z(18, mode.floor != motion::State::Slip(0)),
-                z(19, mode.contact != motion::State::Slip(0)),
-                Estimate::zero_shared(p, sc[20].clone()),
+                z(col!("s1"), mode.floor != motion::State::Slip(0)),
+                z(col!("s12"), mode.contact != motion::State::Slip(0)),
+                Estimate::zero_shared(p, sc[col!("work")].clone()),
             ])
         })?;
         values.extend(extra);

@@ -110,36 +110,43 @@ impl Route {
             caches: Caches::default(),
         };
         // N12 and N1 at the start, at a precision that resolves their
-        // signs: a force within its terms' rounding, (m1 + m2) g·2^−(p−8),
-        // is computed again at twice the bits (a heavy upper cylinder on a
-        // light one on a frictionless floor: N12 is of the order of m1 g,
-        // its terms of m2 g — at m2 = 10^30 m1 the rounding at 96 bits gave
-        // N12 < 0 and the start was refused as parting at once)
+        // signs: a force within its terms' rounding is computed again at
+        // twice the bits (a heavy upper cylinder on a light one on a
+        // frictionless floor: N12 is of the order of m1 g, its terms of
+        // m2 g — at m2 = 10^30 m1 the rounding at 96 bits gave N12 < 0 and
+        // the start was refused as parting at once). The terms: N12 =
+        // m2 (g c + ẍ1 s − r θ̇²), N1 = (m1 + m2) g + m2 r (θ̈ s + θ̇² c)
         let pr = r.work.params();
-        let weight = Rational::from(&pr.m1 + &pr.m2) * &pr.g;
+        let (m2, weight) = (pr.m2.clone(), Rational::from(&pr.m1 + &pr.m2) * &pr.g);
         let mut p = SCAN_PREC;
-        let (n12, n1, floor) = loop {
+        let (n12, n1, floors) = loop {
             let e = r.engine(p)?;
             let st = e.dynm.state(&Float::new(p));
             let f = e.dynm.forces(&st);
-            let floor = Float::with_val(p, &weight) >> (p as i32 - 8);
-            let decided = |x: &Float| Float::with_val(p, x.abs_ref()) > floor;
-            if (decided(&f.n12) && decided(&f.n1)) || p >= 16 * SCAN_PREC {
-                break (f.n12, f.n1, floor);
+            let g = Float::with_val(p, &e.dynm.r) * &e.dynm.gr;
+            let td2 = Float::with_val(p, st.thetadot.square_ref()) * &e.dynm.r;
+            let m2 = Float::with_val(p, &m2);
+            let floor12 = (Float::with_val(p, st.a[0].abs_ref()) + &g + &td2) * &m2;
+            let floor1 = Float::with_val(p, &weight)
+                + (Float::with_val(p, st.thetaddot.abs_ref()) * &e.dynm.r + &td2) * &m2;
+            let floors = [floor12 >> (p as i32 - 8), floor1 >> (p as i32 - 8)];
+            let decided = |x: &Float, fl: &Float| Float::with_val(p, x.abs_ref()) > *fl;
+            if (decided(&f.n12, &floors[0]) && decided(&f.n1, &floors[1])) || p >= 16 * SCAN_PREC {
+                break (f.n12, f.n1, floors);
             }
             p *= 2;
         };
-        for (name, x) in [("N12", &n12), ("N1", &n1)] {
-            if Float::with_val(p, x.abs_ref()) <= floor {
+        for ((name, x), floor) in [("N12", &n12), ("N1", &n1)].into_iter().zip(&floors) {
+            if Float::with_val(p, x.abs_ref()) <= *floor {
                 return Err(Error::NotConverged {
                     quantity: format!("{name} at the start"),
                     requested: 0,
                     reached: format!(
                         "0 to within its rounding at {p} bits (|{name}| <= {})",
-                        crate::numeric::decimal::short(&floor)
+                        crate::numeric::decimal::short(floor)
                     ),
-                    detail: "whether the start holds cannot be decided (masses of very \
-                             different orders?)"
+                    detail: "whether the start holds cannot be decided (a start at the \
+                             parting, or masses of very different orders)"
                         .into(),
                 });
             }
@@ -527,11 +534,11 @@ impl Route {
         extra: u32,
         digits: u32,
     ) -> Result<Vec<(Float, Float)>> {
-        // the integrator runs in a time unit 2^k near the model's √(r/g)
-        // (exact rescalings: θ̈ = F(θ) gains 4^k, θ̇ 2^k, times 2^−k; its f64
-        // step control then never sees a time or rate beyond f64's range,
-        // and in the unit model k = 0)
-        let k = log2_f64(&self.scale_time(64)).round() as i32;
+        // the integrator runs in a time unit 2^k near the model's
+        // √(r/(2g)) (exact rescalings: θ̈ = F(θ) gains 4^k, θ̇ 2^k, times
+        // 2^−k; its f64 step control then never sees a time or rate beyond
+        // f64's range, and in the paper's units, r = 2 g, k = 0)
+        let k = self.log2_time_unit().round() as i32;
         let mut rhs = self.taylor_rhs(p)?;
         for e in rhs.e.iter_mut() {
             *e <<= 2 * k;
@@ -571,7 +578,22 @@ impl Route {
         let mut runs = plan
             .into_iter()
             .map(|(te, extra)| taylor::integrate(&rhs, &th0, &td0, te, p, extra))
-            .collect::<Result<Vec<_>>>()?;
+            .collect::<Result<Vec<_>>>()
+            .map_err(|e| match e {
+                // its times are in the unit 2^k
+                Error::NotConverged {
+                    quantity,
+                    requested,
+                    reached,
+                    detail,
+                } if k != 0 => Error::NotConverged {
+                    quantity,
+                    requested,
+                    reached,
+                    detail: format!("{detail} (in the integrator's time unit 2^{k})"),
+                },
+                e => e,
+            })?;
         let (traj, short) = runs.split_at_mut(1);
         let (traj, mut short) = (&mut traj[0], short.first_mut());
         let no_output = |t: &Float| Error::NotConverged {

@@ -293,8 +293,8 @@ pub fn run_from(
     run_with(sys, start, times, t_end, events, opts, &mut gbs)
 }
 
-/// Steps below 2^−30 of the start's that [`run_with`] takes before it
-/// refuses the motion as stiff.
+/// Steps in a row far below the tolerance's natural step that
+/// [`run_with`] takes before it refuses the motion as stiff.
 const TINY_STEPS: u32 = 1000;
 
 /// The refusal of a stiff motion at time `t`, angle `theta`, after steps
@@ -361,6 +361,11 @@ pub fn run_with<I: Stepper>(
     let mut max_drift = Float::new(p);
     let mut projections = 0u32;
     let mut tiny_steps = 0u32;
+    let tiny = {
+        let (_, tol_exp) = opts.tol.to_f64_exp();
+        let natural = f64::from(tol_exp) / (2 * opts.kmax + 1) as f64;
+        Float::with_val(p, &opts.h0) >> (30 - natural.floor() as i32)
+    };
     let mut next_out = 0usize;
     // dλ/dt at the current sample, computed when a dip test needs it
     let mut rates_cur: Option<Vec<Float>> = None;
@@ -404,20 +409,22 @@ pub fn run_with<I: Stepper>(
             let mut dae = Dae { sys, nq };
             gbs.step(&mut dae, &y, &f0, &hmax)?
         };
-        // a step below 2^-30 of the start's (an eighth of the time unit)
-        // away from any stop: the motion is stiff here — a contact whose
+        // a thousand steps in a row, none ending at a stop, each below
+        // 2^-30 of the step the tolerance implies (the start's, an eighth of
+        // the time unit, times tol^(1/(2 kmax + 1)): at 30 digits 2^-3, at
+        // 2000 digits 2^-55): the motion is stiff here — a contact whose
         // accelerations are many orders above the rest's (an extreme ratio
         // of masses or inertias); an explicit integrator would creep on for
-        // its million steps (hours), so it is refused after a thousand
-        if step.h < hmax && Float::with_val(p, &step.h << 30u32) < opts.h0 {
-            tiny_steps += 1;
-            if tiny_steps > TINY_STEPS {
-                return Err(stiff(
-                    &t,
-                    &y[crate::mechanics::system::th(0)],
-                    &step.h,
-                    &opts.h0,
-                ));
+        // its million steps (hours), so it is refused
+        if step.h < hmax {
+            if step.h < tiny {
+                tiny_steps += 1;
+                if tiny_steps > TINY_STEPS {
+                    let theta = &y[crate::mechanics::system::th(0)];
+                    return Err(stiff(&t, theta, &step.h, &opts.h0));
+                }
+            } else {
+                tiny_steps = 0;
             }
         }
         let reached_stop = step.h == hmax && !capped;

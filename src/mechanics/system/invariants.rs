@@ -8,7 +8,8 @@ use crate::model::{Contact, Floor};
 use rug::{Assign, Float};
 
 impl System {
-    /// Total energy T + V (V = g Σ m_i y_i).
+    /// Total energy T + V, V = g Σ m_i (y_i − ρ1): heights above cylinder
+    /// 1's centre at rest on the floor.
     pub fn energy(&mut self, q: &[Float], v: &[Float]) -> Float {
         let p = self.prec;
         let nq = self.nq();
