@@ -171,7 +171,9 @@ pub struct Choice {
 /// opening are consistent (a branch point), `branch` decides.
 ///
 /// Errors: none consistent (a Painlevé-type inconsistency), or more than
-/// one closed mode (Painlevé-type non-uniqueness), with the reasons.
+/// one closed mode (Painlevé-type non-uniqueness), with the reasons; beyond
+/// the tested range of the parameters (`disparity`) either is said to be
+/// undecided rather than a property of the rigid-body model.
 pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -> Result<Choice> {
     let mut ok = Vec::new();
     let mut why = Vec::new();
@@ -252,9 +254,18 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
             requested: 0,
             reached: format!("{} consistent continuations at {at}", n + usize::from(o)),
             detail: format!(
-                "{}{}: the rigid-body model does not decide (Painlevé-type non-uniqueness)",
+                "{}{}: {}",
                 ok.iter().map(|m| m.tag()).collect::<Vec<_>>().join(", "),
-                if o { ", contact opening" } else { "" }
+                if o { ", contact opening" } else { "" },
+                match disparity(ctx) {
+                    Some(cause) => format!(
+                        "{cause}, and the motion it makes fast is too fast for the test of \
+                         the candidates; whether the rigid-body model decides here is not known"
+                    ),
+                    None => {
+                        "the rigid-body model does not decide (Painlevé-type non-uniqueness)".into()
+                    }
+                }
             ),
         }),
     }

@@ -34,13 +34,13 @@ pub const COLUMNS: [&str; 21] = [
 ];
 
 /// Index of a column in [`COLUMNS`] (`None` for a name that is not one):
-/// for names read at run time; in the code, [`col!`].
+/// for names read at run time; in the code, the crate's `col!` macro.
 pub fn column_index(name: &str) -> Option<usize> {
     COLUMNS.iter().position(|c| *c == name)
 }
 
 /// Index of a column in [`COLUMNS`]; a name that is not a column panics,
-/// which in a `const` context — the [`col!`] macro, the form every use in
+/// which in a `const` context — the crate's `col!` macro, the form every use in
 /// the code takes — fails the build (`cargo build`; `cargo check` does not
 /// evaluate it), not a silent column 0.
 pub const fn column(name: &str) -> usize {
