@@ -554,7 +554,13 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                             What::SlipZero(c) => (Kind::Stick, Some(*c)),
                             _ => return None,
                         };
-                        (Float::with_val(wp, g.abs_ref()) <= *snap).then_some(kind)
+                        // to the integration's accuracy: the tolerance (2^16
+                        // of it), not the snap's square root of it, which
+                        // for a force is of the heavier cylinder's weight —
+                        // N12 is of m1 g under a cylinder 10^14 times
+                        // heavier, and the angle was taken for a parting
+                        let acc = Float::with_val(wp, snap * &ctx.rel_tiny) << 16u32;
+                        (Float::with_val(wp, g.abs_ref()) <= acc).then_some(kind)
                     });
                 w.out.target = Some(at.clone());
                 if let Some((kind, which)) = at_zero {
