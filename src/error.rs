@@ -90,6 +90,25 @@ impl Error {
         }
     }
 
+    /// An [`Error::NotConverged`] with its detail given by `f` (from the
+    /// old one; e.g. the unit its numbers are in); any other error as it is.
+    pub fn map_detail(self, f: impl FnOnce(String) -> String) -> Self {
+        match self {
+            Error::NotConverged {
+                quantity,
+                requested,
+                reached,
+                detail,
+            } => Error::NotConverged {
+                quantity,
+                requested,
+                reached,
+                detail: f(detail),
+            },
+            other => other,
+        }
+    }
+
     /// Shorthand for [`Error::NotPhysical`].
     pub fn not_physical(what: impl ToString) -> Self {
         Error::NotPhysical {

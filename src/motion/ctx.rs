@@ -78,14 +78,29 @@ pub fn lam(sys: &System, s: &Sample, r: Row) -> Float {
 }
 
 impl Ctx {
-    /// The thresholds below which each watched function counts as 0 (at a
-    /// start, or at a target angle): √tol of its natural scale
+    /// The thresholds below which each watched function counts as 0 at a
+    /// start: √tol of its natural scale
     /// ([`crate::integrate::solve::Watch::scale`]), in the order of `events`.
     pub fn snaps(&self, events: &[crate::integrate::solve::Event]) -> Vec<Float> {
+        self.scaled(events, &self.rel_tiny)
+    }
+
+    /// The thresholds below which each watched function is 0 to the
+    /// integration's accuracy (at a target angle): 2^16 tolerances of its
+    /// natural scale. Not the snap's √tol: for a force that is of the upper
+    /// cylinder's weight, and N12 is of m1 g under a cylinder 10^14 times
+    /// heavier — an angle short of the parting was taken for it.
+    pub fn accuracies(&self, events: &[crate::integrate::solve::Event]) -> Vec<Float> {
+        let tol = Float::with_val(self.wp, &self.opts.tol << 16u32);
+        self.scaled(events, &tol)
+    }
+
+    /// Each watched function's natural scale times `factor`.
+    fn scaled(&self, events: &[crate::integrate::solve::Event], factor: &Float) -> Vec<Float> {
         let units = self.base.units(self.wp);
         events
             .iter()
-            .map(|e| e.watch.scale(&units) * &self.rel_tiny)
+            .map(|e| e.watch.scale(&units) * factor)
             .collect()
     }
 

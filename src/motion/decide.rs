@@ -124,8 +124,9 @@ fn inconsistency_at(
     Ok(None)
 }
 
-/// A disparity of the parameters beyond the README's tested range that
-/// makes part of the motion fast: an upper cylinder more than 10^12 times
+/// A disparity of the parameters beyond the range the README says is
+/// answered under every law that makes part of the motion fast: an upper
+/// cylinder more than 10^12 times
 /// heavier than the lower one (a light upper cylinder is the fixed lower
 /// one's limit, and slow), or a moment of inertia below 10^-12 of m r²
 /// (k1, k2). There the mode test's Euler steps do not resolve the fast
@@ -149,6 +150,21 @@ fn disparity(ctx: &Ctx) -> Option<String> {
         }
     }
     None
+}
+
+/// What a failed mode decision says of the rigid-body model: `model_says`
+/// (a Painlevé-type property of the model), or, beyond the tested range of
+/// the parameters ([`disparity`]), that whether the model `question` is not
+/// decided — the candidates are tested by Euler steps far longer than the
+/// fast part of such a motion takes to change.
+fn verdict(ctx: &Ctx, question: &str, model_says: &str) -> String {
+    match disparity(ctx) {
+        Some(cause) => format!(
+            "{cause}, and the motion it makes fast is too fast for the test of the candidates; \
+             whether the rigid-body model {question} is not decided"
+        ),
+        None => model_says.to_string(),
+    }
 }
 
 /// The relative normal acceleration r̈ of the centres if the contact
@@ -264,17 +280,11 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
             detail: format!(
                 "{}; every candidate fails ({}; the contact cannot open: free relative normal \
                  acceleration {})",
-                match disparity(ctx) {
-                    // the candidates are tested by Euler steps of 2^-(p/3) of
-                    // the time unit, far longer than the fast part of such a
-                    // motion takes to change
-                    Some(cause) => format!(
-                        "{cause}, and the motion it makes fast is too fast for the test of \
-                         the candidates; whether the rigid-body model has a continuation here \
-                         is not decided"
-                    ),
-                    None => "a Painlevé-type inconsistency of the rigid-body model".into(),
-                },
+                verdict(
+                    ctx,
+                    "has a continuation here",
+                    "a Painlevé-type inconsistency of the rigid-body model"
+                ),
                 why.join("; "),
                 sig(&rdd, 4)
             ),
@@ -287,15 +297,11 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
                 "{}{}: {}",
                 ok.iter().map(|m| m.tag()).collect::<Vec<_>>().join(", "),
                 if o { ", contact opening" } else { "" },
-                match disparity(ctx) {
-                    Some(cause) => format!(
-                        "{cause}, and the motion it makes fast is too fast for the test of \
-                         the candidates; whether the rigid-body model decides here is not known"
-                    ),
-                    None => {
-                        "the rigid-body model does not decide (Painlevé-type non-uniqueness)".into()
-                    }
-                }
+                verdict(
+                    ctx,
+                    "decides here",
+                    "the rigid-body model does not decide (Painlevé-type non-uniqueness)"
+                )
             ),
         }),
     }

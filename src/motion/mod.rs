@@ -454,7 +454,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 let mut co = crate::integrate::collocation::Collocation::new(
                     wp,
                     ctx.opts.tol.clone(),
-                    ctx.opts.h0.clone(),
+                    ctx.opts.h0(),
                     stages,
                 );
                 solve::run_with(
@@ -539,13 +539,13 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 // an event whose watch is already 0 at the angle (to the
                 // integration's accuracy) lies at the angle itself
                 let vals = solve::watch_values(ws.events.iter().map(|e| &e.watch), &hit.at);
-                let snaps = ctx.snaps(&ws.events);
+                let accs = ctx.accuracies(&ws.events);
                 let at_zero = ws
                     .what
                     .iter()
                     .zip(&vals)
-                    .zip(&snaps)
-                    .find_map(|((wt, g), snap)| {
+                    .zip(&accs)
+                    .find_map(|((wt, g), acc)| {
                         let kind = match wt {
                             What::Separation => (Kind::Separation, Some(Which::Contact)),
                             What::LiftOff => (Kind::LiftOff, Some(Which::Floor)),
@@ -554,13 +554,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                             What::SlipZero(c) => (Kind::Stick, Some(*c)),
                             _ => return None,
                         };
-                        // to the integration's accuracy: the tolerance (2^16
-                        // of it), not the snap's square root of it, which
-                        // for a force is of the heavier cylinder's weight —
-                        // N12 is of m1 g under a cylinder 10^14 times
-                        // heavier, and the angle was taken for a parting
-                        let acc = Float::with_val(wp, snap * &ctx.rel_tiny) << 16u32;
-                        (Float::with_val(wp, g.abs_ref()) <= acc).then_some(kind)
+                        (Float::with_val(wp, g.abs_ref()) <= *acc).then_some(kind)
                     });
                 w.out.target = Some(at.clone());
                 if let Some((kind, which)) = at_zero {

@@ -43,7 +43,7 @@ pub fn column_index(name: &str) -> Option<usize> {
 /// which in a `const` context — the crate's `col!` macro, the form every use in
 /// the code takes — fails the build (`cargo build`; `cargo check` does not
 /// evaluate it), not a silent column 0.
-pub const fn column(name: &str) -> usize {
+pub(crate) const fn column(name: &str) -> usize {
     let n = name.as_bytes();
     let mut i = 0;
     while i < COLUMNS.len() {

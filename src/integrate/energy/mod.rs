@@ -579,20 +579,10 @@ impl Route {
             .into_iter()
             .map(|(te, extra)| taylor::integrate(&rhs, &th0, &td0, te, p, extra))
             .collect::<Result<Vec<_>>>()
-            .map_err(|e| match e {
+            .map_err(|e| match k {
+                0 => e,
                 // its times are in the unit 2^k
-                Error::NotConverged {
-                    quantity,
-                    requested,
-                    reached,
-                    detail,
-                } if k != 0 => Error::NotConverged {
-                    quantity,
-                    requested,
-                    reached,
-                    detail: format!("{detail} (in the integrator's time unit 2^{k})"),
-                },
-                e => e,
+                _ => e.map_detail(|d| format!("{d} (in the integrator's time unit 2^{k})")),
             })?;
         let (traj, short) = runs.split_at_mut(1);
         let (traj, mut short) = (&mut traj[0], short.first_mut());

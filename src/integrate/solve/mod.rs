@@ -121,8 +121,9 @@ pub struct Opts {
     pub prec: u32,
     /// Local error tolerance (mixed absolute/relative).
     pub tol: Float,
-    /// First step size.
-    pub h0: Float,
+    /// The motion's time unit; the first step is an eighth of it
+    /// ([`Opts::h0`]).
+    pub time_unit: Float,
     /// Largest extrapolation column.
     pub kmax: usize,
     /// Drift ([`System::drift`], in the system's units) above which the
@@ -150,12 +151,17 @@ impl Opts {
         Opts {
             prec: work,
             tol,
-            h0: Float::with_val(work, time_scale / 8u32),
+            time_unit: Float::with_val(work, time_scale),
             kmax,
             project_above: Float::with_val(work, 1u32) >> (prec as i32 + 8),
             hcap: None,
             max_steps: 1_000_000,
         }
+    }
+
+    /// The first step: an eighth of the time unit.
+    pub fn h0(&self) -> Float {
+        Float::with_val(self.prec, &self.time_unit / 8u32)
     }
 }
 
@@ -286,7 +292,7 @@ pub fn run_from(
     let mut gbs = Gbs::new(
         opts.prec,
         opts.tol.clone(),
-        opts.h0.clone(),
+        opts.h0(),
         opts.kmax,
         (opts.kmax / 2).max(4),
     );
@@ -298,15 +304,15 @@ pub fn run_from(
 const TINY_STEPS: u32 = 1000;
 
 /// The refusal of a stiff motion at time `t`, angle `theta`, after steps
-/// of `h` against the start's `h0`.
-fn stiff(t: &Float, theta: &Float, h: &Float, h0: &Float) -> Error {
-    let ratio = Float::with_val(53, h / h0);
+/// of `h` in a motion whose time unit is `unit`.
+fn stiff(t: &Float, theta: &Float, h: &Float, unit: &Float) -> Error {
+    let ratio = Float::with_val(53, h / unit);
     Error::NotConverged {
         quantity: "integration".into(),
         requested: 0,
         reached: format!(
             "{TINY_STEPS} steps of {} of the time unit at t = {}, theta = {}",
-            crate::numeric::decimal::to_sig(&(ratio / 8u32), 2),
+            crate::numeric::decimal::to_sig(&ratio, 2),
             crate::numeric::decimal::to_sig(t, 12),
             crate::numeric::decimal::to_sig(theta, 12)
         ),
@@ -364,7 +370,7 @@ pub fn run_with<I: Stepper>(
     let tiny = {
         let (_, tol_exp) = opts.tol.to_f64_exp();
         let natural = f64::from(tol_exp) / (2 * opts.kmax + 1) as f64;
-        Float::with_val(p, &opts.h0) >> (30 - natural.floor() as i32)
+        opts.h0() >> (30 - natural.floor() as i32)
     };
     let mut next_out = 0usize;
     // dλ/dt at the current sample, computed when a dip test needs it
@@ -421,7 +427,7 @@ pub fn run_with<I: Stepper>(
                 tiny_steps += 1;
                 if tiny_steps > TINY_STEPS {
                     let theta = &y[crate::mechanics::system::th(0)];
-                    return Err(stiff(&t, theta, &step.h, &opts.h0));
+                    return Err(stiff(&t, theta, &step.h, &opts.time_unit));
                 }
             } else {
                 tiny_steps = 0;
