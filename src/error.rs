@@ -90,21 +90,25 @@ impl Error {
         }
     }
 
-    /// An [`Error::NotConverged`] with its detail given by `f` (from the
-    /// old one; e.g. the unit its numbers are in); any other error as it is.
-    pub fn map_detail(self, f: impl FnOnce(String) -> String) -> Self {
+    /// An [`Error::NotConverged`] with its quantity and detail given by
+    /// `f` (from the old ones; e.g. the file a quantity was read from, the
+    /// unit the numbers are in); any other error as it is.
+    pub fn map_not_converged(self, f: impl FnOnce(String, String) -> (String, String)) -> Self {
         match self {
             Error::NotConverged {
                 quantity,
                 requested,
                 reached,
                 detail,
-            } => Error::NotConverged {
-                quantity,
-                requested,
-                reached,
-                detail: f(detail),
-            },
+            } => {
+                let (quantity, detail) = f(quantity, detail);
+                Error::NotConverged {
+                    quantity,
+                    requested,
+                    reached,
+                    detail,
+                }
+            }
             other => other,
         }
     }

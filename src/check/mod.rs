@@ -450,20 +450,10 @@ fn at_rows(e: Error, source: &str, chunk: &Chunk) -> Error {
             value,
         )
     });
+    let e = e.map_not_converged(|q, d| (format!("candidate {source}, {span}: {q}"), d));
     match e {
         Error::NotPhysical { what } => Error::NotPhysical {
             what: format!("candidate {source}, {span}: {what}"),
-        },
-        Error::NotConverged {
-            quantity,
-            requested,
-            reached,
-            detail,
-        } => Error::NotConverged {
-            quantity: format!("candidate {source}, {span}: {quantity}"),
-            requested,
-            reached,
-            detail,
         },
         other => other,
     }

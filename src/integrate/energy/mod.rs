@@ -582,7 +582,9 @@ impl Route {
             .map_err(|e| match k {
                 0 => e,
                 // its times are in the unit 2^k
-                _ => e.map_detail(|d| format!("{d} (in the integrator's time unit 2^{k})")),
+                _ => e.map_not_converged(|q, d| {
+                    (q, format!("{d} (in the integrator's time unit 2^{k})"))
+                }),
             })?;
         let (traj, short) = runs.split_at_mut(1);
         let (traj, mut short) = (&mut traj[0], short.first_mut());
