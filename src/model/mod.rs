@@ -211,6 +211,29 @@ fn validate(params: &Params, start: &Start, held: bool) -> Result<()> {
     {
         return Err(Error::invalid("theta0", &start.theta0, THETA0_RANGE));
     }
+    // cylinder 2 starts above the floor: its lowest point, at height
+    // r1 + (r1 + r2) cos θ0 − r2, must be above 0 (a start inside the floor,
+    // or touching it, is outside the model: three bodies in contact)
+    let rsum = Rational::from(&params.r1 + &params.r2);
+    let lowest = rug::Float::with_val(256, th.cos_ref()) * rug::Float::with_val(256, &rsum)
+        + rug::Float::with_val(256, &params.r1)
+        - rug::Float::with_val(256, &params.r2);
+    let floor_tol = rug::Float::with_val(256, &rsum) >> 200;
+    if lowest <= floor_tol {
+        let bound = rug::Float::with_val(
+            64,
+            rug::Float::with_val(256, Rational::from(&params.r2 - &params.r1) / &rsum).acos_ref(),
+        );
+        return Err(Error::invalid(
+            "theta0",
+            &start.theta0,
+            format!(
+                "must leave cylinder 2 above the floor at the start: r1 + (r1 + r2) cos theta0 > r2, \
+                 i.e. |theta0| < acos((r2 - r1)/(r1 + r2)) = {} for these radii",
+                crate::numeric::decimal::to_sig(&bound, 6)
+            ),
+        ));
+    }
     if start.theta0.signum() * (start.thetadot0.cmp0() as i32) < 0 {
         return Err(Error::invalid(
             "thetadot0",

@@ -139,7 +139,12 @@ pub fn first_phase(
     // the branch point: parting becomes lawful while the contact holds
     let mut starts_open = false;
     let mut branch_found: Option<(Float, Float)> = None;
-    if !ctx.held {
+    // none under a frictionless contact: there ρ̈_free > 0 only where
+    // N12 < 0, so the root of the free normal acceleration is θs itself —
+    // searched for anyway, its rounding under a much heavier upper cylinder
+    // (coefficients 10^6 times the values near θs) put it on either side
+    // of θs by the digits asked, and a ghost branch point appeared
+    if !ctx.held && !matches!(ctx.law(Which::Contact), Law::Frictionless) {
         let hp = route.free_normal_poly();
         if route.sign_at_start(&hp)? > 0 {
             starts_open = true;

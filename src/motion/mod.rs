@@ -151,9 +151,12 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
     }
     let ctx = Ctx::new(model, prec)?;
     let wp = ctx.wp;
+    // the start's velocities under each contact's first law: a
+    // frictionless contact's spin is the one its conserved momentum gives
+    // (omega0's reference), not the rolling one
     let mut sys0 = ctx.system(Mode {
         floor: ctx.candidates(Which::Floor)[0],
-        contact: State::Stick,
+        contact: ctx.candidates(Which::Contact)[0],
     })?;
     let (q0, v0) = sys0.initial_state(&ctx.base)?;
     let e0 = sys0.energy(&q0, &v0);

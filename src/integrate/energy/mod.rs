@@ -282,11 +282,53 @@ impl Route {
             .clone()
     }
 
+    /// An angle (`w`, in the work frame) past the one where cylinder 2,
+    /// still on cylinder 1, lands on the floor (cos θ = (r2 − r1)/(r1 + r2),
+    /// only for r2 > r1) — where that comes before the separation — is
+    /// refused as the motion's walk refuses it: the model ends there. An
+    /// angle within 2^−200 of it is that end (answered, as an event's).
+    fn before_floor_impact(
+        &mut self,
+        param: &str,
+        theta: &Exact,
+        w: &Exact,
+        th0: &Exact,
+    ) -> Result<()> {
+        const P: u32 = 256;
+        let pr = self.work.params();
+        if pr.r2 <= pr.r1 {
+            return Ok(());
+        }
+        let cf = Float::with_val(P, Rational::from(&pr.r2 - &pr.r1) / pr.r());
+        let th_f = Float::with_val(P, cf.acos_ref());
+        let margin = Float::with_val(P, &th_f >> 200);
+        if Float::with_val(P, w.to_float(P) - &th_f) <= margin {
+            return Ok(());
+        }
+        // past the landing angle: refused unless the separation comes first
+        // (then the separation's own check below names it)
+        let (ds, _) = self.delta_s(P)?;
+        let df = Float::with_val(P, &th_f - th0.to_float(P));
+        if ds < df {
+            return Ok(());
+        }
+        Err(Error::invalid(
+            param,
+            theta,
+            format!(
+                "must be reached while the cylinders touch: cylinder 2 lands on the floor at \
+                 theta = {} (the end of the model)",
+                crate::numeric::decimal::to_sig(&self.odd(th_f), 12)
+            ),
+        ))
+    }
+
     /// δ = θ − θ0 (working frame) for a user angle, checked to lie in the motion.
     pub fn delta_of(&mut self, param: &str, theta: &Exact, p: u32) -> Result<Float> {
         let w = self.to_work(theta);
         let th0 = self.work.start().theta0.clone();
         let d = Float::with_val(p, w.to_float(p) - th0.to_float(p));
+        self.before_floor_impact(param, theta, &w, &th0)?;
         // Inside the motion by a clear margin below the scan's bracket of δs:
         // no need to refine δs at this precision.
         let (lo, _) = self.scan_bracket()?;

@@ -125,7 +125,7 @@ impl Route {
         let iso = isolation_bits(
             &coef,
             &unit.map_or_else(|| coef.clone(), |u| u.at(&a_h, ISO)),
-        );
+        ) + disparity_bits(self.work.params());
         // the end of the range at the precision it is known to (a root ~1/μ
         // before θs must not fall outside a 64-bit rounding of cos θs)
         let ep = iso.max(delta_end.prec());
@@ -157,6 +157,34 @@ impl Route {
         err += th_err;
         let th0p = self.work.start().theta0.to_float(p);
         Ok(Some((Float::with_val(p, th - th0p), err)))
+    }
+}
+
+/// Bits the isolation adds for unequal masses: 2 log2(m2/m1). The
+/// polynomials' coefficients are of the heavier cylinder's scale (squared,
+/// in a cone polynomial), while near the separation the forces whose roots
+/// are sought are of the lighter one's: under an upper cylinder 10^12 times
+/// heavier, F21 ~ m1 g where N12 → 0, and the two roots of the cone
+/// polynomial around θs (μ N12 = ±|F21|) lie ~m1/(μ m2) apart, with a dip of
+/// F21² ~ (m1 g)² between them in sums of terms ~(m2 g)² — merged at 64 bits
+/// (the slip onset missed: the rolling model's θs was printed) or split in
+/// the wrong place ("no sign change found"). The ratio of the coefficients
+/// to the values' scale ([`isolation_bits`]) does not see it: the unit
+/// polynomial is of the heavy scale too.
+/// Only for a heavier upper cylinder: under a lighter one the polynomials
+/// are of the upper cylinder's scale throughout (and isolating a branch
+/// point ~m2/m1 from θs beyond the digits asked would tell it apart at one
+/// working precision and not at the other).
+fn disparity_bits(p: &crate::model::Params) -> u32 {
+    let ratio = Float::with_val(64, Rational::from(&p.m2 / &p.m1));
+    let e = ratio.get_exp().unwrap_or(0).max(0).unsigned_abs();
+    // below 2^16 the 64 bits hold the dip with room to spare (tested to
+    // 10^6, where the gap is 7·10^-6); the bits begin there, so that the
+    // ordinary cases keep their bits
+    if e <= 16 {
+        0
+    } else {
+        (2 * e).min(8192)
     }
 }
 

@@ -25,6 +25,16 @@ impl System {
                 continue;
             }
             ws.trig_at[j].assign(&ws.t);
+            // an angle no motion reaches (|θ| ≥ 2^16 rad: an explicit
+            // integrator's trial substeps diverging over a stiff interval)
+            // gets NaN, not MPFR's reduction by π at as many bits as the
+            // angle's exponent (10^8 bits, hours): the step's error estimate
+            // is then NaN and the step is rejected for a shorter one
+            if ws.t.get_exp().is_some_and(|e| e > 16) {
+                ws.s[j].assign(f64::NAN);
+                ws.c[j].assign(f64::NAN);
+                continue;
+            }
             ws.s[j].assign(&ws.t);
             // sin_cos_mut computes both into s (sin) and c (cos)
             ws.s[j].sin_cos_mut(&mut ws.c[j]);
