@@ -1278,3 +1278,46 @@ fn a_light_stiff_upper_cylinder_is_answered_not_hung() {
     );
     assert!((mid - (lo + hi) / 2.0).abs() < 1e-14, "{lo} {mid} {hi}");
 }
+
+/// The energy balance of a motion with friction was verified to 10^-(D+2)
+/// of m2 g r, while a fast common rolling (omega0 = 10^4) or a heavy lower
+/// cylinder rolling (m1 = 10^9 m2) carries an energy 10^7–10^9 times that,
+/// whose roundings alone exceed it: such motions were refused ("energy
+/// balance: could not verify 30 digits"). The balance is now verified
+/// relative to the energy's own scale, and the note says which. Held
+/// against an exact fact: a uniform rolling drift has no slip at either
+/// contact and no acceleration, so it superposes on the motion and θs does
+/// not depend on omega0 — at ω0 = 10^4 it is ω0 = 0's to every digit. The
+/// note's |E(0)|: both cylinders move at r1 ω0 = 10^4 (½·2·10^8) and spin
+/// at ω0 with I = m r²/2 (2·¼·10^8), 1.5·10^8 in all, in units of m2 g r =
+/// 2 (r = r1 + r2): 7.5·10^7.
+#[test]
+fn a_fast_rolling_start_keeps_its_energy_balance() {
+    let ths = |extra: &[&str]| {
+        let mut args = vec!["--theta0", "1/10", "--mu", "0.3", "--digits", "30"];
+        args.extend_from_slice(extra);
+        sep_value(&args, "theta_s").unwrap_or_else(|e| panic!("{extra:?}: {e}"))
+    };
+    assert_eq!(ths(&["--omega0", "1e4"]), ths(&[]));
+    assert_eq!(
+        ths(&["--m1", "1e9", "--omega0", "1"]),
+        ths(&["--m1", "1e9"])
+    );
+    let out = cyl()
+        .args([
+            "separation",
+            "--theta0",
+            "1/10",
+            "--mu",
+            "0.3",
+            "--omega0",
+            "1e4",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("the energy itself |E(0)| = 7.5e7 m2 g r"),
+        "{text}"
+    );
+}

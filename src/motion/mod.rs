@@ -182,6 +182,8 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             end: None,
             target: None,
             energy_drift: Float::new(wp),
+            energy_unit: Float::with_val(wp, Float::with_val(wp, e0.abs_ref()) / &ctx.escale)
+                .max(&Float::with_val(wp, 1u32)),
             work_done: (0, 0),
             routes: Vec::new(),
             windows: Vec::new(),

@@ -180,6 +180,12 @@ pub struct Motion {
     /// Largest |E(t) + W(t) − E(0)| over every computed state, relative to
     /// the energy scale m2 g r.
     pub energy_drift: Float,
+    /// The energy's own scale in units of m2 g r, at least 1: max(1,
+    /// |E(0)|/(m2 g r)) (E's zero at cylinder 1's centre). The balance is
+    /// verified relative to it: the roundings and the integration's
+    /// tolerance act on E, which a fast common rolling (omega0) or a heavy
+    /// lower cylinder's kinetic energy makes far larger than m2 g r.
+    pub energy_unit: Float,
     /// Integrator work over all phases: (accepted steps or pieces,
     /// evaluations of the equations of motion).
     pub work_done: (u64, u64),

@@ -180,7 +180,9 @@ pub fn event_estimates(m: &Motion, ts: &Float, out: &mut Vec<Estimate>) {
 /// The energy balance E(0) − E(t) = W(t) to well below the printed digits.
 fn check_balance(m: &Motion, digits: u32) -> Result<()> {
     let p = m.energy_drift.prec();
-    let lim = Float::with_val(p, Float::u_pow_u(10, digits + 2)).recip();
+    // 10^-(digits+2) of the energy's own scale (m2 g r, or |E(0)| where
+    // that is larger)
+    let lim = Float::with_val(p, Float::u_pow_u(10, digits + 2)).recip() * &m.energy_unit;
     if m.energy_drift > lim {
         return Err(Error::NotConverged {
             quantity: "energy balance".into(),

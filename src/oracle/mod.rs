@@ -177,11 +177,19 @@ fn empty_answer(question: Question, model: &Model, opts: &Options) -> Answer {
 }
 
 /// The note on the energy balance of a dissipative motion.
-fn energy_note(drift: &Float) -> String {
-    format!(
+fn energy_note((drift, unit): &(Float, Float)) -> String {
+    let mut note = format!(
         "energy balance E(0) - E(t) = W(t) (W: work of sliding friction) held to {} of m2 g r along the motion",
         crate::numeric::decimal::short(drift)
-    )
+    );
+    if *unit > 1u32 {
+        // the balance was verified relative to the energy's own scale
+        note.push_str(&format!(
+            ", the energy itself |E(0)| = {} m2 g r (E's zero at cylinder 1's centre)",
+            crate::numeric::decimal::short(unit)
+        ));
+    }
+    note
 }
 
 /// A `--part-at` angle must lie where parting is lawful: inside a window of
@@ -261,8 +269,9 @@ fn motion_notes(first: &Motion, opts: &Options) -> Vec<String> {
 }
 
 /// The largest energy drift |E(0) − E(t) − W(t)| along a dissipative motion
-/// (None for a conservative one, whose energy integral is exact).
-fn energy_drift(first: &Motion) -> Option<Float> {
+/// and the energy's scale ([`Motion::energy_unit`]), both in units of m2 g r
+/// (None for a conservative motion, whose energy integral is exact).
+fn energy_drift(first: &Motion) -> Option<(Float, Float)> {
     let dissipative = first
         .routes
         .iter()
@@ -271,7 +280,7 @@ fn energy_drift(first: &Motion) -> Option<Float> {
             .events
             .iter()
             .any(|e| e.at.work.is_sign_positive() && !e.at.work.is_zero());
-    dissipative.then(|| first.energy_drift.clone())
+    dissipative.then(|| (first.energy_drift.clone(), first.energy_unit.clone()))
 }
 
 /// The notes on where the motion is not unique and the branch followed.

@@ -111,8 +111,9 @@ struct Block {
     ans: Answer,
     /// Notes on single rows (a time that cannot be told apart from an event's).
     row_notes: Vec<String>,
-    /// The energy balance's largest drift, for a dissipative motion.
-    drift: Option<Float>,
+    /// The energy balance's largest drift and the energy's scale, for a
+    /// dissipative motion.
+    drift: Option<(Float, Float)>,
 }
 
 impl Block {
@@ -171,7 +172,7 @@ pub fn trajectory_in_blocks(
         row_notes.extend(b.row_notes);
         // the energy balance as held over every block's rows
         drift = match (drift, b.drift) {
-            (Some(a), Some(d)) => Some(if d > a { d } else { a }),
+            (Some(a), Some(d)) => Some(if d.0 > a.0 { d } else { a }),
             (a, d) => a.or(d),
         };
         sink(chunk, b.ans)?;
