@@ -1248,6 +1248,30 @@ fn a_frictionless_contact_under_a_heavy_upper_cylinder_has_no_ghost_branch_point
             );
         }
     }
+    // beyond: 10^16–10^30 were refused (the two precisions disagreed on
+    // the sequence); θs now follows θ∞ + c m1/m2, the same c from 10^16 to
+    // 10^20 as from 10^20 to 10^30
+    let ths = |m2: &str| {
+        let v = sep_value(
+            &[
+                "--theta0",
+                "1/10",
+                "--contact",
+                "slip",
+                "--m2",
+                m2,
+                "--digits",
+                "30",
+            ],
+            "theta_s",
+        )
+        .unwrap_or_else(|e| panic!("{m2}: {e}"));
+        rug::Float::with_val(200, rug::Float::parse(&v).unwrap())
+    };
+    let (a, b, c) = (ths("1e16"), ths("1e20"), ths("1e30"));
+    let c1 = rug::Float::with_val(200, &a - &b).to_f64() * 1e16 / (1.0 - 1e-4);
+    let c2 = rug::Float::with_val(200, &b - &c).to_f64() * 1e20 / (1.0 - 1e-10);
+    assert!(c1 > 1.0 && (c1 / c2 - 1.0).abs() < 1e-6, "{c1} {c2}");
 }
 
 /// A light upper cylinder (m2 = 10^-6 m1) with μ = 10^6 is stiff where its
