@@ -19,19 +19,20 @@
 //! (ε/2 each), every truncated product toward zero (< ε each, the products
 //! left out below 2^−(F+64)), the series cut where its next term is below
 //! ε/64. Through the two angle-sum formulas the sine and the cosine are
-//! each within 7ε of the exact values (the bound is added up in the
-//! comments of `fast`); 16ε is used. The result is then rounded twice —
-//! v − 16ε and v + 16ε, each exactly, to the output's precision — and
-//! accepted only if both roundings agree: rounding to nearest is monotonic,
-//! so the exact sine, lying between them, rounds to the same number, which
-//! is what MPFR returns (its `sin_cos` is correctly rounded). Where they
-//! disagree (a value within 16ε of a rounding boundary: about one call in
-//! 2^10 or fewer), and for |x| > 2, |x| < 2^−40, zero, non-finite x, or a
+//! each within 8ε of the exact values (the bound is added up in the
+//! comments of `fast_in`; 16ε is allowed). The result is rounded in
+//! integer arithmetic and accepted only where the bits it drops are more
+//! than 16ε from half a unit of the output's last place (`rounded`): the
+//! exact value then rounds the same way, to what MPFR returns (its
+//! `sin_cos` is correctly rounded). Where it is that close (about one call
+//! in 2^(GUARD−6) or fewer), and for |x| > 2, |x| < 2^−40, zero, non-finite x, or a
 //! precision beyond the instantiated limb counts, MPFR computes it. So the
 //! answers are bit for bit MPFR's; only the cost differs.
 
 use super::fixed::{add_signed, horner, mul_u, Conv, Fx};
-use rug::{Assign, Float};
+use rug::integer::Order;
+use rug::ops::NegAssign;
+use rug::{Assign, Float, Integer};
 use std::any::Any;
 use std::cell::RefCell;
 
@@ -43,8 +44,6 @@ const MAX_J: usize = 64;
 const MIN_EXP: i32 = -40;
 /// Bits beyond the output precision the fixed point carries.
 const GUARD: u32 = 24;
-/// The error bound in units of 2^−F (7 shown in the module's notes).
-const ERR_UNITS: u32 = 16;
 
 /// sin x into `s` and cos x into `c`, each rounded to nearest at its own
 /// precision (x exact, whatever its precision): the same bits as MPFR's
@@ -98,10 +97,8 @@ struct Tab<const L: usize> {
     m: usize,
     /// (sin j/32, cos j/32), computed when first asked.
     entries: Vec<Option<(Fx<L>, Fx<L>)>>,
-    /// 16ε, a value's exact working Float, the upper rounding.
-    err: Float,
-    v: Float,
-    hi: Float,
+    /// Scratch for the conversions.
+    int: Integer,
     conv: Conv,
     prod: Vec<u64>,
 }
@@ -112,14 +109,14 @@ impl<const L: usize> Tab<L> {
         let wp = f + 64;
         let mut conv = Conv::new(wp);
         // the smallest m whose next terms u^(m+1)/(2m+2)! and
-        // u^(m+1)/(2m+3)! are below ε/64 for u ≤ 2^−10 (|b| ≤ 1/32 allows
-        // the f64 choice of j to be off by one step's rounding)
+        // u^(m+1)/(2m+3)! are below ε/64: |b| ≤ 1/64 + 2^−51 (j from |x|
+        // rounded to f64, |x| ≤ 2 + 1/64), so u < 2^−11.99
         let mut m = 1usize;
         loop {
             let lf = (1..=(2 * m as u32 + 2))
                 .map(|k| f64::from(k).log2())
                 .sum::<f64>();
-            if 10.0 * (m as f64 + 1.0) + lf >= f64::from(f) + 6.0 {
+            if 11.99 * (m as f64 + 1.0) + lf >= f64::from(f) + 6.0 {
                 break;
             }
             m += 1;
@@ -144,9 +141,7 @@ impl<const L: usize> Tab<L> {
             cos_c,
             m,
             entries: vec![None; MAX_J + 1],
-            err: Float::with_val(wp, ERR_UNITS) >> f,
-            v: Float::new(wp),
-            hi: Float::new(64),
+            int: Integer::with_capacity(64 * L + 64),
             conv,
             prod: vec![0; 2 * L + 2],
         }
@@ -189,9 +184,10 @@ fn fast<const L: usize>(x: &Float, s: &mut Float, c: &mut Float) -> bool {
 
 fn fast_in<const L: usize>(tab: &mut Tab<L>, x: &Float, s: &mut Float, c: &mut Float) -> bool {
     let neg = x.is_sign_negative();
-    // |x| to F bits (exact unless x has more: then within ε/2)
-    let mut ax: Fx<L> = tab.conv.to_fx(x);
-    ax.neg = false;
+    // |x| to F bits (exact unless x has more: then truncated, within ε)
+    let Some(ax) = to_fixed::<L>(x, &mut tab.int) else {
+        return false;
+    };
     let j = (x.to_f64().abs() * f64::from(STEPS)).round() as usize;
     if j > MAX_J {
         return false; // |x| > 2 + 1/64: beyond the table
@@ -232,7 +228,8 @@ fn fast_in<const L: usize>(tab: &mut Tab<L>, x: &Float, s: &mut Float, c: &mut F
     let cb = add_signed(&one, &horner(&tab.cos_c, tab.m, &u, prod));
     // sin = sa·cb + ca·sb: ε/2 (sa) + 1.6ε (cb) + ε/2^6 (ca's ε/2 times
     // |sb|) + 1.1ε (sb) + 2ε (two products) = 5.3ε, and ε/2 from x's
-    // rounding: under 7ε; cos = ca·cb − sa·sb likewise
+    // rounding: under 7ε (ε from x's truncation: 5.8ε); cos = ca·cb −
+    // sa·sb likewise
     let sin = add_signed(&mul_signed(&sa, &cb, prod), &mul_signed(&ca, &sb, prod));
     let mut sasb = mul_signed(&sa, &sb, prod);
     sasb.neg = !sasb.neg && sasb.len > 0;
@@ -241,7 +238,8 @@ fn fast_in<const L: usize>(tab: &mut Tab<L>, x: &Float, s: &mut Float, c: &mut F
     if neg {
         sin.neg = !sin.neg && sin.len > 0;
     }
-    rounded(tab, &sin, s) && rounded(tab, &cos, c)
+    let ok = rounded(&sin, sin.neg, s, &mut tab.int);
+    ok && rounded(&cos, cos.neg, c, &mut tab.int)
 }
 
 /// a·b with the sign of the product (truncated toward zero).
@@ -253,26 +251,126 @@ fn mul_signed<const L: usize>(a: &Fx<L>, b: &Fx<L>, prod: &mut [u64]) -> Fx<L> {
     r
 }
 
-/// `out` = v rounded to `out`'s precision, if v − 16ε and v + 16ε round to
-/// the same number (else `false`, `out` unspecified).
-fn rounded<const L: usize>(tab: &mut Tab<L>, v: &Fx<L>, out: &mut Float) -> bool {
-    let Tab {
-        conv,
-        v: vf,
-        err,
-        hi,
-        ..
-    } = tab;
-    conv.to_float(v, vf);
-    // v ± 16ε, each exact and rounded once to the output's precision
-    out.assign(&*vf - &*err);
-    *vf += &*err;
-    let p = out.prec();
-    if hi.prec() != p {
-        hi.set_prec(p);
+/// |x|·2^F truncated to an integer, as a fixed-point number (x finite,
+/// |x| < 4); `None` where x does not fit.
+fn to_fixed<const L: usize>(x: &Float, int: &mut Integer) -> Option<Fx<L>> {
+    let f = 64 * (L as i64 - 1);
+    // |x| = i·2^e exactly
+    let e = i64::from(x.to_integer_exp_in_place(int)?);
+    let limbs = int.as_limbs();
+    let sh = e + f;
+    let mut m = [0u64; L];
+    if sh >= 0 {
+        let (w, b) = ((sh / 64) as usize, (sh % 64) as u32);
+        for (k, &l) in limbs.iter().enumerate() {
+            let lo = l << b;
+            let hi = if b == 0 { 0 } else { l >> (64 - b) };
+            if lo != 0 {
+                *m.get_mut(k + w)? |= lo;
+            }
+            if hi != 0 {
+                *m.get_mut(k + w + 1)? |= hi;
+            }
+        }
+    } else {
+        let d = -sh;
+        let (w, b) = ((d / 64) as usize, (d % 64) as u32);
+        for (k, o) in m.iter_mut().enumerate() {
+            let lo = limbs.get(k + w).copied().unwrap_or(0) >> b;
+            let hi = if b == 0 {
+                0
+            } else {
+                limbs.get(k + w + 1).copied().unwrap_or(0) << (64 - b)
+            };
+            *o = lo | hi;
+        }
+        if limbs.len() > w + L + 1 {
+            return None;
+        }
     }
-    hi.assign(&*vf);
-    *hi == *out && hi.is_sign_negative() == out.is_sign_negative() && !out.is_zero()
+    let len = m.iter().rposition(|&l| l != 0).map_or(0, |i| i + 1) as u16;
+    Some(Fx { m, len, neg: false })
+}
+
+/// Bit `i` of the magnitude.
+#[inline]
+fn bit(m: &[u64], i: usize) -> bool {
+    m.get(i / 64).is_some_and(|l| (l >> (i % 64)) & 1 == 1)
+}
+
+/// Bits [lo, hi) of the magnitude all equal `b`.
+fn all_bits(m: &[u64], lo: usize, hi: usize, b: bool) -> bool {
+    let want = if b { u64::MAX } else { 0 };
+    let mut i = lo;
+    while i < hi {
+        let (w, o) = (i / 64, i % 64);
+        let n = (64 - o).min(hi - i);
+        let mask = if n == 64 { u64::MAX } else { ((1u64 << n) - 1) << o };
+        if (m.get(w).copied().unwrap_or(0) ^ want) & mask != 0 {
+            return false;
+        }
+        i += n;
+    }
+    true
+}
+
+/// `out` = v (negated if `neg`) correctly rounded to `out`'s precision p,
+/// where v, within 16 units of its last place of the exact value, decides
+/// it; else `false` (`out` unspecified).
+///
+/// V = v·2^F has `bits` bits; rounding keeps the top p, dropping k = bits −
+/// p with remainder r. Rounding to nearest is decided by r against half =
+/// 2^(k−1); V within 16 of the exact value, r within 31 of half is declined
+/// (bits [5, k−1) all the complement of bit k−1, a superset of that case).
+/// Otherwise the exact value's remainder lies on the same side of half —
+/// or, within 16 of a power of two, rounds to that power from either
+/// binade — and V's rounding is the correct one: MPFR's.
+fn rounded<const L: usize>(v: &Fx<L>, neg: bool, out: &mut Float, int: &mut Integer) -> bool {
+    let m = &v.m[..v.len as usize];
+    let Some(&top) = m.last() else {
+        return false;
+    };
+    let bits = 64 * (m.len() - 1) + (64 - top.leading_zeros() as usize);
+    let p = out.prec() as usize;
+    if bits < p + 8 {
+        return false;
+    }
+    let k = bits - p;
+    let up = bit(m, k - 1);
+    if all_bits(m, 5, k - 1, !up) {
+        return false;
+    }
+    // R = V >> k, plus one if the dropped part is above half
+    let mut r = [0u64; L];
+    let (w, b) = (k / 64, (k % 64) as u32);
+    for (i, o) in r.iter_mut().enumerate() {
+        let lo = m.get(i + w).copied().unwrap_or(0) >> b;
+        let hi = if b == 0 {
+            0
+        } else {
+            m.get(i + w + 1).copied().unwrap_or(0) << (64 - b)
+        };
+        *o = lo | hi;
+    }
+    if up {
+        for l in r.iter_mut() {
+            let (x, c) = l.overflowing_add(1);
+            *l = x;
+            if !c {
+                break;
+            }
+        }
+    }
+    let n = r.iter().rposition(|&l| l != 0).map_or(0, |i| i + 1);
+    int.assign_digits(&r[..n], Order::Lsf);
+    // exact: R has at most p + 1 bits (2^p after a carry)
+    out.assign(&*int);
+    let f = 64 * (L as i32 - 1);
+    *out <<= k as i32 - f;
+    if neg {
+        out.neg_assign();
+    }
+    true
 }
 
 #[cfg(test)]
