@@ -200,7 +200,7 @@ impl Dyn {
     fn trig(&self, delta: &Float) -> [Float; 5] {
         let p = self.prec;
         let half = Float::with_val(p, delta / 2u32);
-        let (sh, ch) = half.sin_cos(Float::new(p));
+        let (sh, ch) = crate::numeric::trig::sin_cos(&half, p);
         // each sum of two products rounded as written, one temporary reused
         let mut t = Float::with_val(p, &self.c0 * &sh);
         let mut sm = Float::with_val(p, &self.s0 * &ch);
@@ -237,8 +237,8 @@ impl Dyn {
     /// `out` must have this precision.
     pub fn inv_thetadot_with(&self, delta: &Float, out: &mut Float, w: &mut Scratch) {
         let [sh, ch, sm, cm, c, t1, t2, h] = &mut w.f;
-        sh.assign(delta / 2u32);
-        sh.sin_cos_mut(ch);
+        t1.assign(delta / 2u32);
+        crate::numeric::trig::sin_cos_into(t1, sh, ch);
         t1.assign(&self.s0 * &*ch);
         t2.assign(&self.c0 * &*sh);
         sm.assign(&*t1 + &*t2);

@@ -386,7 +386,7 @@ impl<const L: usize> Acc<L> {
 
 /// r·u truncated (u ≥ 0), as a number of the same scale.
 #[inline(always)]
-fn mul_u<const L: usize>(r: &Fx<L>, u: &Fx<L>, prod: &mut [u64]) -> Fx<L> {
+pub(crate) fn mul_u<const L: usize>(r: &Fx<L>, u: &Fx<L>, prod: &mut [u64]) -> Fx<L> {
     let lf = Fx::<L>::LF;
     let prod = &mut prod[..2 * L + 2];
     prod.fill(0);
@@ -398,7 +398,7 @@ fn mul_u<const L: usize>(r: &Fx<L>, u: &Fx<L>, prod: &mut [u64]) -> Fx<L> {
 
 /// r + c (signed).
 #[inline]
-fn add_signed<const L: usize>(r: &Fx<L>, c: &Fx<L>) -> Fx<L> {
+pub(crate) fn add_signed<const L: usize>(r: &Fx<L>, c: &Fx<L>) -> Fx<L> {
     if c.len == 0 {
         return *r;
     }

@@ -21,6 +21,7 @@ pub mod poly;
 pub mod quad;
 pub mod root;
 pub mod taylor;
+pub mod trig;
 pub mod verify;
 
 use rug::Float;

@@ -35,9 +35,9 @@ impl System {
                 ws.c[j].assign(f64::NAN);
                 continue;
             }
-            ws.s[j].assign(&ws.t);
-            // sin_cos_mut computes both into s (sin) and c (cos)
-            ws.s[j].sin_cos_mut(&mut ws.c[j]);
+            // MPFR's bits, in fixed point where it can (t, s, c share the
+            // precision)
+            crate::numeric::trig::sin_cos_into(&ws.t, &mut ws.s[j], &mut ws.c[j]);
         }
     }
 
