@@ -1345,3 +1345,100 @@ fn a_fast_rolling_start_keeps_its_energy_balance() {
         "{text}"
     );
 }
+
+/// The value of column `col` in the first row of `trajectory` with `args`
+/// (CSV).
+fn row_value(args: &[&str], col: &str) -> String {
+    let mut all = vec!["trajectory", "--format", "csv"];
+    all.extend_from_slice(args);
+    let out = cyl().args(&all).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    csv_value(&String::from_utf8_lossy(&out.stdout), 0, col)
+}
+
+/// Rows a hair from an event whose two sides the rows could not tell
+/// apart at the ladder's precision took the state at the event in every
+/// run, so no run saw the substitution's error (θ̇ times the distance, up
+/// to a unit of the last digit): at the branch point t* of the rolling
+/// case (the `stay` branch: the same mode on both sides) t* + 10^-19
+/// printed θ 5 units off in its 20th digit as verified; on the `part`
+/// branch, where the branch point and the separation coincide, a row just
+/// past t* took the closed mode's θ̈ and forces (the branch point has no
+/// state after of its own), and a row just before t* asked alone was
+/// refused (the separation kept at one precision, dropped at the other).
+/// Now every such row, at 20 and 30 digits, is the 45-digit row rounded —
+/// agreement of three requested precisions, each verified at two working
+/// ones — and sits in the right phase.
+#[test]
+fn rows_a_hair_from_an_event_are_the_state_at_their_own_time() {
+    use cylroll::numeric::decimal::to_sig;
+    // t* to 60 digits (README: t* = 5.05157345730…)
+    let t_star = sep_value(&["--theta0", "1/10", "--digits", "60"], "t_indeterminate").unwrap();
+    let star = rug::Float::with_val(400, rug::Float::parse(&t_star).unwrap());
+    for (branch, off, mode) in [
+        ("stay", "1e-19", "stick/stick"),
+        ("stay", "1e-29", "stick/stick"),
+        ("part", "1e-30", "flight"),
+        ("part", "1e-40", "flight"),
+        ("part", "-1e-40", "stick/stick"),
+        ("part", "-1e-29", "stick/stick"),
+    ] {
+        let t = rug::Float::with_val(
+            400,
+            &star + rug::Float::with_val(400, rug::Float::parse(off).unwrap()),
+        );
+        let t = to_sig(&t, 70);
+        for col in ["theta", "theta_ddot", "N12"] {
+            let at = |d: &str| {
+                row_value(
+                    &[
+                        "--theta0",
+                        "1/10",
+                        "--branch",
+                        branch,
+                        "--times",
+                        &t,
+                        "--digits",
+                        d,
+                        "--columns",
+                        &format!("t,{col},mode"),
+                    ],
+                    col,
+                )
+            };
+            let hi = rug::Float::with_val(400, rug::Float::parse(at("45")).unwrap());
+            for d in [20u32, 30] {
+                let want = if hi.is_zero() {
+                    "0".to_string()
+                } else {
+                    to_sig(&hi, d)
+                };
+                assert_eq!(
+                    at(&d.to_string()),
+                    want,
+                    "{branch} t* {off}: {col} at {d} digits"
+                );
+            }
+        }
+        let m = row_value(
+            &[
+                "--theta0",
+                "1/10",
+                "--branch",
+                branch,
+                "--times",
+                &t,
+                "--digits",
+                "30",
+                "--columns",
+                "t,mode",
+            ],
+            "mode",
+        );
+        assert_eq!(m, mode, "{branch} t* {off}");
+    }
+}

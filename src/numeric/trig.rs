@@ -305,7 +305,11 @@ fn all_bits(m: &[u64], lo: usize, hi: usize, b: bool) -> bool {
     while i < hi {
         let (w, o) = (i / 64, i % 64);
         let n = (64 - o).min(hi - i);
-        let mask = if n == 64 { u64::MAX } else { ((1u64 << n) - 1) << o };
+        let mask = if n == 64 {
+            u64::MAX
+        } else {
+            ((1u64 << n) - 1) << o
+        };
         if (m.get(w).copied().unwrap_or(0) ^ want) & mask != 0 {
             return false;
         }
