@@ -851,8 +851,11 @@ fn a_closed_stdout_is_exit_4_and_csv_fields_are_quoted() {
         .unwrap();
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
-    let line = text.lines().find(|l| l.starts_with("mu_contact,")).unwrap();
-    assert_eq!(line, "mu_contact,\"0.5,0.4\",,");
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("model_mu_contact,"))
+        .unwrap();
+    assert_eq!(line, "model_mu_contact,\"0.5,0.4\",,");
 }
 
 /// A message quotes a computed value only to the digits its working
@@ -1441,4 +1444,76 @@ fn rows_a_hair_from_an_event_are_the_state_at_their_own_time() {
         );
         assert_eq!(m, mode, "{branch} t* {off}");
     }
+}
+
+/// `time` and `forces` gave `start_mode: null` in JSON (the README
+/// promised it for every answer about the motion), and the CSV of `forces`
+/// used the key `mu_floor` twice — the model's coefficient and the
+/// friction the floor needs — so that a reader keyed by name lost one.
+#[test]
+fn time_and_forces_give_the_start_mode_and_unique_csv_keys() {
+    for law in [
+        &[][..],
+        &["--mu", "0.3"][..],
+        &["--floor", "slip", "--contact", "slip"][..],
+    ] {
+        for cmd in [
+            &["time", "--to", "0.5"][..],
+            &["forces", "--theta", "0.5"][..],
+        ] {
+            let mut args = cmd.to_vec();
+            args.extend_from_slice(&["--theta0", "1/10", "--digits", "12", "--format", "json"]);
+            args.extend_from_slice(law);
+            let out = cyl().args(&args).output().unwrap();
+            assert!(out.status.success(), "{args:?}");
+            let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+            let want = if law.len() == 4 {
+                "slip/slip"
+            } else {
+                "stick/stick"
+            };
+            assert_eq!(j["start_mode"], want, "{args:?}");
+            let n = args.len();
+            args[n - law.len() - 1] = "csv";
+            let out = cyl().args(&args).output().unwrap();
+            let text = String::from_utf8_lossy(&out.stdout).to_string();
+            let keys: Vec<&str> = text
+                .lines()
+                .skip(1)
+                .filter(|l| !l.starts_with("note,"))
+                .filter_map(|l| l.split(',').next())
+                .collect();
+            let mut uniq = keys.clone();
+            uniq.sort();
+            uniq.dedup();
+            assert_eq!(uniq.len(), keys.len(), "{args:?}: {keys:?}");
+            assert!(keys.contains(&"model_mu_floor"), "{keys:?}");
+        }
+    }
+}
+
+/// The refusal where the two working precisions disagree on the events
+/// printed Rust's debug text (`Some(Impact(Floor))`, `None`) and every
+/// row's phase; it now names the start, the end and the rows' phases run
+/// by run. (`--part-at` exactly at the branch point θ* is such a case.)
+#[test]
+fn an_event_sequence_refusal_speaks_plainly() {
+    let out = cyl()
+        .args([
+            "separation",
+            "--theta0",
+            "1/10",
+            "--part-at",
+            "0.965713174981360935578780994479426019840249034068174280043568",
+            "--digits",
+            "20",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    if out.status.success() {
+        return; // answered: nothing to read
+    }
+    assert!(!err.contains("Some(") && !err.contains("None"), "{err}");
+    assert!(err.contains("ends at the impact on the floor"), "{err}");
 }

@@ -507,9 +507,11 @@ fn csv(a: &Answer) -> String {
     });
     let tail = if rigorous { ",,," } else { "" };
     let m = &a.model;
+    // the model's coefficients as `model_mu_*`: `forces` answers the
+    // friction each contact needs under the keys `mu_floor`, `mu_contact`
     for (k, v) in [
-        ("mu_floor", m.floor().mu_text()),
-        ("mu_contact", m.contact().mu_text()),
+        ("model_mu_floor", m.floor().mu_text()),
+        ("model_mu_contact", m.contact().mu_text()),
         ("branch", a.branch.name()),
     ] {
         // "S,K" (static, kinetic) holds a comma: quoted (RFC 4180)

@@ -29,10 +29,29 @@ pub fn signature(m: &Motion) -> Vec<String> {
             )
         })
         .collect();
-    s.push(m.start_mode.tag());
-    s.push(format!("{:?}", m.end));
-    s.extend(m.rows.iter().map(|p| p.phase.tag()));
-    s.extend(m.thetas.iter().map(|(_, p, _)| p.tag()));
+    s.push(format!("start {}", m.start_mode.tag()));
+    s.push(match m.end {
+        Some(e) => format!("ends at the {}", e.name()),
+        None => "no end before the last time".to_string(),
+    });
+    let rows: Vec<String> = m
+        .rows
+        .iter()
+        .map(|p| p.phase.tag())
+        .chain(m.thetas.iter().map(|(_, p, _)| p.tag()))
+        .collect();
+    // the rows' phases, run by run ("rows: 3 stick/stick, 2 flight")
+    let mut runs: Vec<(usize, String)> = Vec::new();
+    for r in rows {
+        match runs.last_mut() {
+            Some((n, last)) if *last == r => *n += 1,
+            _ => runs.push((1, r)),
+        }
+    }
+    if !runs.is_empty() {
+        let text: Vec<String> = runs.iter().map(|(n, r)| format!("{n} {r}")).collect();
+        s.push(format!("rows: {}", text.join(" ")));
+    }
     s
 }
 

@@ -606,7 +606,7 @@ fn at_angle(
     name: &str,
     keys: &[&str],
     est: impl Fn(&motion::Point) -> Vec<Estimate>,
-) -> Result<(Vec<Verified>, Phase, Option<String>)> {
+) -> Result<(Vec<Verified>, Phase, Option<String>, motion::Mode)> {
     check_digits(opts.digits)?;
     check_part_at(model, opts)?;
     if model.starts_at_equilibrium() {
@@ -639,6 +639,7 @@ fn at_angle(
         .as_ref()
         .map(|t| t.phase)
         .ok_or_else(|| Error::not_physical("internal: the angle was not reached"))?;
+    let start_mode = first.start_mode;
     let names: Vec<String> = keys.iter().map(|k| k.to_string()).collect();
     let at_event = runs.target_at.map(|k| {
         format!(
@@ -659,7 +660,12 @@ fn at_angle(
             .map(&est)
             .ok_or_else(|| Error::not_physical("internal: the angle was not reached"))
     })?;
-    Ok((rows.into_iter().next().unwrap_or_default(), phase, at_event))
+    Ok((
+        rows.into_iter().next().unwrap_or_default(),
+        phase,
+        at_event,
+        start_mode,
+    ))
 }
 
 /// The time at which θ first reaches `theta`.
@@ -673,10 +679,11 @@ pub fn time(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         let mut o = Oracle::new(&ideal, opts.digits)?;
         ans.values.push(o.time_at(theta)?);
         ans.phase = Some(Phase::Contact(conservative_mode(model)));
+        ans.start_mode = Some(conservative_mode(model));
         ans.routes.push(motion::Route::Energy);
         return Ok(ans);
     }
-    let (v, phase, note) = at_angle(model, opts, theta, "to", &["t"], |pt| {
+    let (v, phase, note, start) = at_angle(model, opts, theta, "to", &["t"], |pt| {
         let p = pt.t.prec();
         vec![integrated(
             &pt.t,
@@ -685,6 +692,7 @@ pub fn time(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
     })?;
     ans.values = v;
     ans.phase = Some(phase);
+    ans.start_mode = Some(start);
     ans.notes.extend(note);
     Ok(ans)
 }
@@ -787,6 +795,7 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         }
         ans.values = values;
         ans.phase = Some(Phase::Contact(mode));
+        ans.start_mode = Some(mode);
         ans.routes.push(motion::Route::Energy);
         return Ok(ans);
     }
@@ -802,7 +811,7 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         col!("work"),
     ];
     let keys = cols.map(|k| motion::COLUMNS[k]);
-    let (v, phase, note) = at_angle(model, opts, theta, "theta", &keys, |pt| {
+    let (v, phase, note, start) = at_angle(model, opts, theta, "theta", &keys, |pt| {
         let p = pt.t.prec();
         let all = ladder::point_estimates(pt, &ladder::column_scales(model, p), None);
         cols.iter().map(|&k| all[k].clone()).collect()
@@ -820,6 +829,7 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
     values.extend(v[6..].iter().cloned());
     ans.values = values;
     ans.phase = Some(phase);
+    ans.start_mode = Some(start);
     ans.notes.extend(note);
     Ok(ans)
 }
