@@ -1517,3 +1517,61 @@ fn an_event_sequence_refusal_speaks_plainly() {
     assert!(!err.contains("Some(") && !err.contains("None"), "{err}");
     assert!(err.contains("ends at the impact on the floor"), "{err}");
 }
+
+/// An angle just past a slip onset (within √tol of it: 10^-18 rad at 30
+/// digits) was taken for the start of the sliding phase itself: the watch
+/// of the angle never armed, the phase ran on, and `time` answered the
+/// next event's time (5.328 for 4.169, as verified), or refused the angle
+/// as "past the parting". The angle is no longer snapped at a phase's
+/// start (whether it lies there was decided before, to the event's
+/// margin): the 20- and 30-digit times are the 40-digit one rounded.
+#[test]
+fn an_angle_just_past_a_slip_onset_is_reached_in_the_sliding_phase() {
+    use cylroll::numeric::decimal::to_sig;
+    let u = [
+        "--theta0",
+        "1/10",
+        "--mu-floor",
+        "0.15",
+        "--mu-contact",
+        "0.4",
+        "--m1",
+        "1/2",
+        "--m2",
+        "2",
+        "--r1",
+        "2",
+        "--r2",
+        "1",
+    ];
+    // (at 20 digits the first angle, 1.2e-29 past the onset, is refused:
+    // the precisions disagree on a stick event at the onset's instant)
+    for (law, to, digits) in [
+        (&u[..], "0.3935625376889895082894532656", &[30u32][..]),
+        (
+            &["--theta0", "1/10", "--mu", "0.3"][..],
+            "0.58421602292945",
+            &[20, 30][..],
+        ),
+    ] {
+        let t = |d: &str| {
+            let mut args = vec!["time", "--to", to, "--digits", d, "--format", "json"];
+            args.extend_from_slice(law);
+            let out = cyl().args(&args).output().unwrap();
+            assert!(
+                out.status.success(),
+                "{args:?}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+            j["t"].as_str().unwrap().to_string()
+        };
+        let hi = rug::Float::with_val(300, rug::Float::parse(t("40")).unwrap());
+        for &d in digits {
+            assert_eq!(t(&d.to_string()), to_sig(&hi, d), "{to} at {d} digits");
+        }
+        // the floor slip onset of the first model is at t = 4.1692…, the
+        // contact's at 5.328…
+        assert!(hi < 5.0, "{to}: {hi}");
+    }
+}

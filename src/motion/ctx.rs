@@ -81,8 +81,21 @@ impl Ctx {
     /// The thresholds below which each watched function counts as 0 at a
     /// start: √tol of its natural scale
     /// ([`crate::integrate::solve::Watch::scale`]), in the order of `events`.
+    ///
+    /// An angle to reach (the target, a `--part-at` angle) is not snapped:
+    /// whether it lies at the phase's start was decided before the phase
+    /// (to the last event's margin); one √tol ahead of the start (10^-18
+    /// rad at 30 digits, a slip onset just passed) was taken for 0 there,
+    /// the watch never armed, and the phase ran on to the next event,
+    /// whose time was answered as the target's.
     pub fn snaps(&self, events: &[crate::integrate::solve::Event]) -> Vec<Float> {
-        self.scaled(events, &self.rel_tiny)
+        let mut out = self.scaled(events, &self.rel_tiny);
+        for (s, e) in out.iter_mut().zip(events) {
+            if matches!(e.watch, crate::integrate::solve::Watch::Reach { .. }) {
+                *s = Float::new(self.wp);
+            }
+        }
+        out
     }
 
     /// The thresholds below which each watched function is 0 to the
