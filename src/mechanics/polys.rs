@@ -223,6 +223,11 @@ pub struct HPoly {
 }
 
 impl HPoly {
+    /// Identically zero (every coefficient of every part).
+    pub fn is_zero(&self) -> bool {
+        self.parts.iter().all(|p| p.iter().all(|c| *c == 0))
+    }
+
     /// P0 + A_H P1.
     pub fn linear(part: &(Vec<Rational>, Vec<Rational>)) -> Self {
         HPoly {

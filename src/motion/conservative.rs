@@ -120,6 +120,13 @@ pub fn first_phase(
     for w in [Which::Floor, Which::Contact] {
         if let Law::Coulomb { mu_s, .. } = ctx.law(w) {
             let (hp, unit) = route.cone_poly(w, mu_s);
+            // a tangential force identically 0 (a massless upper cylinder's
+            // spin rolling on the lower: k2 = 0) never leaves the cone; its
+            // polynomial μ²N² has only N's double roots, where the search
+            // found no sign change and refused
+            if unit.is_zero() {
+                continue;
+            }
             if let Some((d, e)) = route.first_root("slip onset", &hp, Some(&unit), &ds, p)? {
                 refined.push((Ending::Cone(w), d, e));
             }
