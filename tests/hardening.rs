@@ -1644,3 +1644,64 @@ fn a_time_a_hair_past_the_impact_is_the_state_there() {
         one_line_error(&args, 2, &["times", "after the first impact"]);
     }
 }
+
+/// In the flight the floor's slip under cylinder 1 can end (a `stick`
+/// event); that event's state after was computed as its state before
+/// (τ − τ* rounded below τ*), so a row just past the stick that a run
+/// placed before it was given the sliding floor's force F1 = μk m1 g =
+/// 0.15·(1/2)·1 = 0.075 as verified at 30 digits, where it is 0 (and θ̈
+/// the stuck floor's). Both one-sided states are now those of their side:
+/// rows 10^-40 and 10^-29 after the stick have F1 = 0 and θ̈ the 45-digit
+/// value rounded; rows before it F1 = 0.075.
+#[test]
+fn a_row_just_past_the_floor_sticking_in_flight_has_the_stuck_floor() {
+    use cylroll::numeric::decimal::to_sig;
+    let u = [
+        "--theta0",
+        "1/10",
+        "--mu-floor",
+        "0.15",
+        "--mu-contact",
+        "0.4",
+        "--m1",
+        "1/2",
+        "--m2",
+        "2",
+        "--r1",
+        "2",
+        "--r2",
+        "1",
+    ];
+    let mut args = vec!["separation", "--digits", "60", "--format", "json"];
+    args.extend_from_slice(&u);
+    let out = cyl().args(&args).output().unwrap();
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let stick = j["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|e| e["kind"] == "stick")
+        .expect("a stick event in the flight");
+    let ts = rug::Float::with_val(
+        400,
+        rug::Float::parse(stick["t"].as_str().unwrap()).unwrap(),
+    );
+    for (off, f1) in [
+        ("1e-40", "0"),
+        ("1e-29", "0"),
+        ("-1e-29", "0.0750000000000000000000000000000"),
+    ] {
+        let t = to_sig(
+            &(ts.clone() + rug::Float::with_val(400, rug::Float::parse(off).unwrap())),
+            70,
+        );
+        let row = |d: &str, col: &str| {
+            let mut args = vec!["--times", &t, "--digits", d, "--columns", "t,F1,theta_ddot"];
+            args.extend_from_slice(&u);
+            row_value(&args, col)
+        };
+        assert_eq!(row("30", "F1"), f1, "t* {off}");
+        let hi = rug::Float::with_val(300, rug::Float::parse(row("45", "theta_ddot")).unwrap());
+        assert_eq!(row("30", "theta_ddot"), to_sig(&hi, 30), "t* {off}");
+    }
+}

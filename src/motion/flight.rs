@@ -376,10 +376,10 @@ impl Flight {
                     phase: Some(Phase::Flight {
                         floor: State::Stick,
                     }),
-                    at: self.point(&t),
+                    at: self.point_with(&t, ts, Some(true)),
                     t_err: Float::new(p),
                     theta_err: Float::new(p),
-                    after: Some(self.point(&t)),
+                    after: Some(self.point_with(&t, ts, Some(false))),
                     also: Vec::new(),
                 });
             }
@@ -389,15 +389,27 @@ impl Flight {
 
     /// Every column at time t (separation ≤ t ≤ impact).
     pub fn point(&self, t: &Float) -> Point {
+        let tau = Float::with_val(self.p, t - &self.ts);
+        self.point_with(t, &tau, None)
+    }
+
+    /// [`Flight::point`] at flight time `tau` (t − the separation's), with
+    /// cylinder 1's floor sliding or stuck as `slipping` says (None: as τ
+    /// against the stick time τ* says). At the stick event itself the two
+    /// one-sided limits: sliding (F1 = m1 a1) just before, stuck (F1 = 0)
+    /// just after — the event's state after was the state before (τ* − τ
+    /// rounded below τ*), and a row just past the stick that a run placed
+    /// before it took F1 = μk m1 g as verified.
+    fn point_with(&self, t: &Float, tau: &Float, slipping: Option<bool>) -> Point {
         let p = self.p;
-        let tau = Float::with_val(p, t - &self.ts);
+        let tau = tau.clone();
         let (x1, vx1, phi1, w1) = self.body1(&tau);
         let (x2, y2) = self.body2(&tau);
         let vy2 = Float::with_val(p, &self.vy2 - Float::with_val(p, &self.g * &tau));
-        let slipping = match &self.tau_stick {
+        let slipping = slipping.unwrap_or(match &self.tau_stick {
             Some(ts) => tau < *ts,
             None => false,
-        };
+        });
         let ax1 = if slipping {
             self.a1.clone()
         } else {
@@ -424,10 +436,14 @@ impl Flight {
         let (f1, s1, work) = if self.fixed {
             (Float::new(p), Float::new(p), self.work.clone())
         } else if let Some(ts) = &self.tau_stick {
-            let tt = if tau < *ts { tau.clone() } else { ts.clone() };
+            let tt = if slipping && tau < *ts {
+                tau.clone()
+            } else {
+                ts.clone()
+            };
             let sdot = Float::with_val(p, &self.a1 - Float::with_val(p, &self.r1 * &self.al1));
             let s1 = Float::with_val(p, &sdot * &tt) + &self.s1;
-            let s1 = if tau < *ts { s1 } else { Float::new(p) };
+            let s1 = if slipping { s1 } else { Float::new(p) };
             // W = μk m1 g ∫|s1| dτ, |s1| falling linearly to 0 at τ*
             let abs0 = Float::with_val(p, self.s1.abs_ref());
             let absd = Float::with_val(p, sdot.abs_ref());
