@@ -1705,3 +1705,43 @@ fn a_row_just_past_the_floor_sticking_in_flight_has_the_stuck_floor() {
         assert_eq!(row("30", "theta_ddot"), to_sig(&hi, 30), "t* {off}");
     }
 }
+
+/// At the branch point the other lawful continuations are listed: on the
+/// `stay` branch parting (`part`); on the `part` branch it listed `part`
+/// too — the branch it had taken — instead of the closed mode it left.
+#[test]
+fn the_part_branch_lists_the_closed_mode_it_left() {
+    let alts = |extra: &[&str]| -> Vec<String> {
+        let mut args = vec![
+            "separation",
+            "--theta0",
+            "1/10",
+            "--digits",
+            "12",
+            "--format",
+            "json",
+        ];
+        args.extend_from_slice(extra);
+        let out = cyl().args(&args).output().unwrap();
+        let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let ev = j["events"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|e| e["kind"] == "indeterminate")
+            .unwrap()
+            .clone();
+        ev["alternatives"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|a| a.as_str().unwrap().to_string())
+            .collect()
+    };
+    assert_eq!(alts(&[]), ["part"]);
+    assert_eq!(alts(&["--branch", "part"]), ["stick/stick"]);
+    assert_eq!(
+        alts(&["--branch", "part", "--mu", "10"]),
+        ["stick/stick", "stick/slip+"]
+    );
+}

@@ -119,6 +119,13 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
             if let Some(mode) = e.at.phase.mode() {
                 let s = conservative::sample_at(&ctx, mode, &e.at)?;
                 e.also = decide::alternatives(&ctx, mode, &s.q, &s.v)?;
+                // where the motion parted here (the part branch), the other
+                // continuation is the closed mode it left, not "part"
+                if matches!(e.phase, Some(Phase::Flight { .. })) {
+                    for a in e.also.iter_mut().filter(|a| *a == "part") {
+                        *a = mode.tag();
+                    }
+                }
             }
         }
     }
