@@ -1492,30 +1492,65 @@ fn time_and_forces_give_the_start_mode_and_unique_csv_keys() {
     }
 }
 
-/// The refusal where the two working precisions disagree on the events
-/// printed Rust's debug text (`Some(Impact(Floor))`, `None`) and every
-/// row's phase; it now names the start, the end and the rows' phases run
-/// by run. (`--part-at` exactly at the branch point θ* is such a case.)
+/// `--part-at` at the branch point θ* itself (θ* to 60 digits, the
+/// closed end of the window where parting is lawful) was refused: compared
+/// bit for bit the angle fell just before the point at one working
+/// precision and just after at the other, and the refusal printed Rust's
+/// debug text (`Some(Impact(Floor))`, `None`, one phase per row). An angle
+/// at the branch point to more than the digits asked (or to its accuracy)
+/// is parting there — the part branch, the same answer at 20, 40 and 59
+/// digits; a refusal on the event sequence now names the start, the end
+/// and the rows' phases run by run.
 #[test]
-fn an_event_sequence_refusal_speaks_plainly() {
+fn part_at_the_branch_point_is_the_part_branch() {
+    let star = "0.965713174981360935578780994479426019840249034068174280043568";
+    for d in ["20", "40", "59"] {
+        let at = sep_value(
+            &["--theta0", "1/10", "--part-at", star, "--digits", d],
+            "theta_s",
+        )
+        .unwrap_or_else(|e| panic!("{d}: {e}"));
+        let part = sep_value(
+            &["--theta0", "1/10", "--branch", "part", "--digits", d],
+            "theta_s",
+        )
+        .unwrap();
+        assert_eq!(at, part, "{d} digits");
+    }
+    // a refusal on the event sequence, in plain words (the unequal case at
+    // an angle 1.2e-29 past its floor's slip onset, at 20 digits: see
+    // an_angle_just_past_a_slip_onset_is_reached_in_the_sliding_phase)
     let out = cyl()
         .args([
-            "separation",
+            "time",
             "--theta0",
             "1/10",
-            "--part-at",
-            "0.965713174981360935578780994479426019840249034068174280043568",
+            "--mu-floor",
+            "0.15",
+            "--mu-contact",
+            "0.4",
+            "--m1",
+            "1/2",
+            "--m2",
+            "2",
+            "--r1",
+            "2",
+            "--r2",
+            "1",
+            "--to",
+            "0.3935625376889895082894532656",
             "--digits",
             "20",
         ])
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
-    if out.status.success() {
-        return; // answered: nothing to read
-    }
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(
+        err.contains("event sequence") && err.contains("start stick/stick"),
+        "{err}"
+    );
     assert!(!err.contains("Some(") && !err.contains("None"), "{err}");
-    assert!(err.contains("ends at the impact on the floor"), "{err}");
 }
 
 /// An angle just past a slip onset (within √tol of it: 10^-18 rad at 30

@@ -174,6 +174,23 @@ pub fn first_phase(
     }
     for (kind, d) in exact_ends {
         let ulp = Float::with_val(p, d.abs_ref()) >> (p as i32 - 2);
+        // a --part-at angle at the branch point itself — to more than the
+        // digits asked, the same decision at every precision, or to the
+        // point's accuracy — is parting there: the part branch. Compared
+        // bit for bit it fell just before the point at one precision
+        // (parting where it is not yet lawful) and just after at the
+        // other, and the two disagreed on the events
+        if kind == Ending::PartAt {
+            if let Some((dbp, ebp)) = &branch_found {
+                let th = Float::with_val(p, &th0w + dbp).abs() + 1u32;
+                let by_digits = th / Float::with_val(p, Float::u_pow_u(10, wants.digits + 3));
+                let tol = (Float::with_val(p, ebp + &ulp) * 4u32).max(&by_digits);
+                if Float::with_val(p, &d - dbp).abs() <= tol {
+                    refined.push((Ending::BranchPart, dbp.clone(), ebp.clone()));
+                    continue;
+                }
+            }
+        }
         refined.push((kind, d, ulp));
     }
     // the branch point, where parting becomes lawful while the contact
