@@ -978,6 +978,26 @@ fn a_heavy_upper_cylinder_is_answered_under_every_law() {
     }
 }
 
+/// The unequal pair with friction of the golden case `unequal_friction`
+/// (m1 = 1/2, m2 = 2, r1 = 2, r2 = 1, μ 0.15 at the floor and 0.4 between
+/// the cylinders), from θ0 = 1/10.
+const UNEQUAL: [&str; 14] = [
+    "--theta0",
+    "1/10",
+    "--mu-floor",
+    "0.15",
+    "--mu-contact",
+    "0.4",
+    "--m1",
+    "1/2",
+    "--m2",
+    "2",
+    "--r1",
+    "2",
+    "--r2",
+    "1",
+];
+
 /// The `name` value of a CSV table's row `row` (header first).
 fn csv_value(csv: &str, row: usize, name: &str) -> String {
     let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
@@ -1523,25 +1543,12 @@ fn part_at_the_branch_point_is_the_part_branch() {
     let out = cyl()
         .args([
             "time",
-            "--theta0",
-            "1/10",
-            "--mu-floor",
-            "0.15",
-            "--mu-contact",
-            "0.4",
-            "--m1",
-            "1/2",
-            "--m2",
-            "2",
-            "--r1",
-            "2",
-            "--r2",
-            "1",
             "--to",
             "0.3935625376889895082894532656",
             "--digits",
             "20",
         ])
+        .args(UNEQUAL)
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
@@ -1563,22 +1570,7 @@ fn part_at_the_branch_point_is_the_part_branch() {
 #[test]
 fn an_angle_just_past_a_slip_onset_is_reached_in_the_sliding_phase() {
     use cylroll::numeric::decimal::to_sig;
-    let u = [
-        "--theta0",
-        "1/10",
-        "--mu-floor",
-        "0.15",
-        "--mu-contact",
-        "0.4",
-        "--m1",
-        "1/2",
-        "--m2",
-        "2",
-        "--r1",
-        "2",
-        "--r2",
-        "1",
-    ];
+    let u = UNEQUAL;
     // (at 20 digits the first angle, 1.2e-29 past the onset, is refused:
     // the precisions disagree on a stick event at the onset's instant)
     for (law, to, digits) in [
@@ -1691,22 +1683,7 @@ fn a_time_a_hair_past_the_impact_is_the_state_there() {
 #[test]
 fn a_row_just_past_the_floor_sticking_in_flight_has_the_stuck_floor() {
     use cylroll::numeric::decimal::to_sig;
-    let u = [
-        "--theta0",
-        "1/10",
-        "--mu-floor",
-        "0.15",
-        "--mu-contact",
-        "0.4",
-        "--m1",
-        "1/2",
-        "--m2",
-        "2",
-        "--r1",
-        "2",
-        "--r2",
-        "1",
-    ];
+    let u = UNEQUAL;
     let mut args = vec!["separation", "--digits", "60", "--format", "json"];
     args.extend_from_slice(&u);
     let out = cyl().args(&args).output().unwrap();
