@@ -552,6 +552,19 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 // integration's accuracy) lies at the angle itself
                 let vals = solve::watch_values(ws.events.iter().map(|e| &e.watch), &hit.at);
                 let accs = ctx.accuracies(&ws.events);
+                // a slip speed still ~0 just after its own slip onset (within
+                // √tol of the phase's start in time) is the sliding's start,
+                // not a stick at the angle: recorded as one, it made the two
+                // precisions disagree on the events (or a note say the angle
+                // was the event's state)
+                let just_slipping = |c: Which| {
+                    w.out.events.last().is_some_and(|e| {
+                        e.kind == Kind::SlipOnset
+                            && e.which == Some(c)
+                            && Float::with_val(wp, &hit.at.t - &e.at.t).abs()
+                                <= Float::with_val(wp, &ctx.ts * &ctx.rel_tiny)
+                    })
+                };
                 let at_zero = ws
                     .what
                     .iter()
@@ -563,7 +576,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                             What::LiftOff => (Kind::LiftOff, Some(Which::Floor)),
                             What::FloorImpact => (Kind::Impact, None),
                             What::Cone(c) => (Kind::SlipOnset, Some(*c)),
-                            What::SlipZero(c) => (Kind::Stick, Some(*c)),
+                            What::SlipZero(c) if !just_slipping(*c) => (Kind::Stick, Some(*c)),
                             _ => return None,
                         };
                         (Float::with_val(wp, g.abs_ref()) <= *acc).then_some(kind)
