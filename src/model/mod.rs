@@ -127,6 +127,15 @@ impl Params {
     pub fn r(&self) -> Rational {
         Rational::from(&self.r1 + &self.r2)
     }
+
+    /// The angle of the line of centres at which cylinder 2, still on
+    /// cylinder 1, touches the floor: y2 = r1 + r cos θ = r2, θ = acos((r2
+    /// − r1)/r), at `prec` bits. In [0, π]; below π/2 only for r2 > r1 (the
+    /// start must lie below it, the motion may end there).
+    pub fn landing_angle(&self, prec: u32) -> rug::Float {
+        let c = rug::Float::with_val(prec, Rational::from(&self.r2 - &self.r1) / self.r());
+        rug::Float::with_val(prec, c.acos_ref())
+    }
 }
 
 /// Initial conditions. Positions start at x1 = φ1 = 0.
@@ -214,16 +223,13 @@ fn validate(params: &Params, start: &Start, held: bool) -> Result<()> {
     // cylinder 2 starts above the floor: its lowest point, at height
     // r1 + (r1 + r2) cos θ0 − r2, must be above 0 (a start inside the floor,
     // or touching it, is outside the model: three bodies in contact)
-    let rsum = Rational::from(&params.r1 + &params.r2);
+    let rsum = params.r();
     let lowest = rug::Float::with_val(256, th.cos_ref()) * rug::Float::with_val(256, &rsum)
         + rug::Float::with_val(256, &params.r1)
         - rug::Float::with_val(256, &params.r2);
     let floor_tol = rug::Float::with_val(256, &rsum) >> 200;
     if lowest <= floor_tol {
-        let bound = rug::Float::with_val(
-            64,
-            rug::Float::with_val(256, Rational::from(&params.r2 - &params.r1) / &rsum).acos_ref(),
-        );
+        let bound = rug::Float::with_val(64, params.landing_angle(256));
         return Err(Error::invalid(
             "theta0",
             &start.theta0,

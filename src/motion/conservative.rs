@@ -18,7 +18,7 @@ use crate::integrate::solve::Sample;
 use crate::mechanics::system::{self as sy, System};
 use crate::model::{Law, Which};
 use crate::numeric::verify::Run;
-use rug::{Float, Rational};
+use rug::Float;
 
 /// What ended the conservative phase.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -134,9 +134,7 @@ pub fn first_phase(
     }
     {
         // cylinder 2 reaching the floor: y2 = r2, cos θ = (r2 − r1)/r
-        let pr = route.work.params();
-        let cf = Float::with_val(p, Rational::from(&pr.r2 - &pr.r1) / pr.r());
-        let thf = Float::with_val(p, cf.acos_ref());
+        let thf = route.work.params().landing_angle(p);
         let df = Float::with_val(p, &thf - &th0w);
         if df.is_sign_positive() && df < ds {
             let ulp = Float::with_val(p, thf.abs_ref()) >> (p as i32 - 4);
@@ -392,9 +390,7 @@ pub fn first_phase(
             )
         }
         Ending::FloorImpact => {
-            let pr = route.work.params();
-            let cf = Float::with_val(wp, Rational::from(&pr.r2 - &pr.r1) / pr.r());
-            Float::with_val(wp, cf.acos_ref()) - route.work.start().theta0.to_float(wp)
+            route.work.params().landing_angle(wp) - route.work.start().theta0.to_float(wp)
         }
         Ending::PartAt | Ending::Target => Float::with_val(wp, &d_end),
     };

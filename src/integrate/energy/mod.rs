@@ -299,8 +299,7 @@ impl Route {
         if pr.r2 <= pr.r1 {
             return Ok(());
         }
-        let cf = Float::with_val(P, Rational::from(&pr.r2 - &pr.r1) / pr.r());
-        let th_f = Float::with_val(P, cf.acos_ref());
+        let th_f = pr.landing_angle(P);
         let margin = Float::with_val(P, &th_f >> 200);
         if Float::with_val(P, w.to_float(P) - &th_f) <= margin {
             return Ok(());
