@@ -1151,6 +1151,23 @@ fn angles_past_the_landing_of_cylinder_2_are_refused_by_the_ideal_models() {
     }
 }
 
+/// The standard output of a command that must succeed (else the test fails
+/// with its error).
+fn stdout_ok(args: &[&str]) -> String {
+    let out = cyl().args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).to_string()
+}
+
+/// [`stdout_ok`] read as JSON.
+fn json_ok(args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&stdout_ok(args)).unwrap()
+}
+
 /// `key`'s value in the CSV of `separation` with `args`, or the error.
 fn sep_value(args: &[&str], key: &str) -> Result<String, String> {
     let mut all = vec!["separation", "--format", "csv"];
@@ -1172,13 +1189,7 @@ fn sep_value(args: &[&str], key: &str) -> Result<String, String> {
 fn event_kinds(args: &[&str]) -> Vec<String> {
     let mut all = vec!["separation"];
     all.extend_from_slice(args);
-    let out = cyl().args(&all).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout)
+    stdout_ok(&all)
         .lines()
         .filter(|l| l.starts_with("event "))
         .map(|l| l.split_whitespace().nth(2).unwrap_or("").to_string())
@@ -1340,13 +1351,7 @@ fn a_fast_rolling_start_keeps_its_energy_balance() {
 fn row_value(args: &[&str], col: &str) -> String {
     let mut all = vec!["trajectory", "--format", "csv"];
     all.extend_from_slice(args);
-    let out = cyl().args(&all).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    csv_value(&String::from_utf8_lossy(&out.stdout), 0, col)
+    csv_value(&stdout_ok(&all), 0, col)
 }
 
 /// Rows a hair from an event whose two sides the rows could not tell
@@ -1450,9 +1455,7 @@ fn time_and_forces_give_the_start_mode_and_unique_csv_keys() {
             let mut args = cmd.to_vec();
             args.extend_from_slice(&["--theta0", "1/10", "--digits", "12", "--format", "json"]);
             args.extend_from_slice(law);
-            let out = cyl().args(&args).output().unwrap();
-            assert!(out.status.success(), "{args:?}");
-            let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+            let j = json_ok(&args);
             let want = if law.len() == 4 {
                 "slip/slip"
             } else {
@@ -1461,8 +1464,7 @@ fn time_and_forces_give_the_start_mode_and_unique_csv_keys() {
             assert_eq!(j["start_mode"], want, "{args:?}");
             let n = args.len();
             args[n - law.len() - 1] = "csv";
-            let out = cyl().args(&args).output().unwrap();
-            let text = String::from_utf8_lossy(&out.stdout).to_string();
+            let text = stdout_ok(&args);
             let keys: Vec<&str> = text
                 .lines()
                 .skip(1)
@@ -1556,14 +1558,7 @@ fn an_angle_just_past_a_slip_onset_is_reached_in_the_sliding_phase() {
         let t = |d: &str| {
             let mut args = vec!["time", "--to", to, "--digits", d, "--format", "json"];
             args.extend_from_slice(law);
-            let out = cyl().args(&args).output().unwrap();
-            assert!(
-                out.status.success(),
-                "{args:?}: {}",
-                String::from_utf8_lossy(&out.stderr)
-            );
-            let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-            j["t"].as_str().unwrap().to_string()
+            json_ok(&args)["t"].as_str().unwrap().to_string()
         };
         let hi = rug::Float::with_val(300, rug::Float::parse(t("45")).unwrap());
         for &d in digits {
@@ -1658,8 +1653,7 @@ fn a_row_just_past_the_floor_sticking_in_flight_has_the_stuck_floor() {
     let u = UNEQUAL;
     let mut args = vec!["separation", "--digits", "60", "--format", "json"];
     args.extend_from_slice(&u);
-    let out = cyl().args(&args).output().unwrap();
-    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let j = json_ok(&args);
     let stick = j["events"]
         .as_array()
         .unwrap()
@@ -1706,8 +1700,7 @@ fn the_part_branch_lists_the_closed_mode_it_left() {
             "json",
         ];
         args.extend_from_slice(extra);
-        let out = cyl().args(&args).output().unwrap();
-        let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let j = json_ok(&args);
         let ev = j["events"]
             .as_array()
             .unwrap()
