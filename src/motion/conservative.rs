@@ -180,10 +180,15 @@ pub fn first_phase(
         // other, and the two disagreed on the events
         if kind == Ending::PartAt {
             if let Some((dbp, ebp)) = &branch_found {
-                let th = Float::with_val(p, &th0w + dbp).abs() + 1u32;
-                let by_digits = th / Float::with_val(p, Float::u_pow_u(10, wants.digits + 3));
-                let tol = (Float::with_val(p, ebp + &ulp) * 4u32).max(&by_digits);
-                if Float::with_val(p, &d - dbp).abs() <= tol {
+                let tol = Float::with_val(p, ebp + &ulp) * 4u32;
+                let (th_pa, th_bp) = (
+                    Float::with_val(p, &th0w + &d),
+                    Float::with_val(p, &th0w + dbp),
+                );
+                let one = Float::with_val(p, 1u32);
+                if Float::with_val(p, &d - dbp).abs() <= tol
+                    || super::sides::within_digits(&th_pa, &th_bp, wants.digits, &one)
+                {
                     refined.push((Ending::BranchPart, dbp.clone(), ebp.clone()));
                     continue;
                 }

@@ -46,6 +46,17 @@ fn margin(v: &Float, err: &Float, p: u32, scale: Option<&Float>) -> Float {
     (Float::with_val(wp, err) + floor) * 4u32
 }
 
+/// Whether `t` and `end` agree to more than `digits` significant digits
+/// (|t − end| ≤ (|end| + scale)·10^−(digits+3), `scale` the natural scale:
+/// the time unit for a time, 1 for an angle): a value at an event to the
+/// digits asked, the same decision at every working precision.
+pub fn within_digits(t: &Float, end: &Float, digits: u32, scale: &Float) -> bool {
+    let p = t.prec();
+    let tol = (Float::with_val(p, end.abs_ref()) + scale)
+        / Float::with_val(p, Float::u_pow_u(10, digits + 3));
+    Float::with_val(p, t - end).abs() <= tol
+}
+
 /// The event nearest `t` in time, if `t` is within its margin (`ts` the
 /// time unit).
 pub fn near_in_time(events: &[EventRec], t: &Float, p: u32, ts: &Float) -> Option<usize> {

@@ -83,10 +83,7 @@ impl Walk<'_> {
         // time printed to more digits and read back): the state there, at
         // every precision — the side resolution's runs at many more bits
         // refused it, and the README's promise with it
-        let wp = tt.prec();
-        let tol = (Float::with_val(wp, end.abs_ref()) + &self.ctx.ts)
-            / Float::with_val(wp, Float::u_pow_u(10, self.req.digits + 3));
-        if Float::with_val(wp, tt - end).abs() <= tol {
+        if sides::within_digits(tt, end, self.req.digits, &self.ctx.ts) {
             return Ok(());
         }
         Err(after_end(&self.req.times[self.next], end, what))

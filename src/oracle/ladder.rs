@@ -299,7 +299,8 @@ impl Runs<'_> {
                     // asked resolve (the end's time printed to more digits
                     // and read back): the state at the end
                     Some(Side::After)
-                        if ev.kind.ends() && within_digits(&t, &ev.at.t, digits, &m.ts) =>
+                        if ev.kind.ends()
+                            && motion::sides::within_digits(&t, &ev.at.t, digits, &m.ts) =>
                     {
                         decided.push((i, k, Side::At));
                         false
@@ -322,7 +323,7 @@ impl Runs<'_> {
                         // digits asked resolve: the state at it
                         let at_end = (ev.kind == motion::Kind::Separation || ev.kind.ends())
                             && side == Side::After
-                            && within_digits(&th, &ev.at.theta, digits, &one(q));
+                            && motion::sides::within_digits(&th, &ev.at.theta, digits, &one(q));
                         target_side = Some((k, if at_end { Side::At } else { side }));
                         if at_end {
                             self.target_at = Some(k);
@@ -351,16 +352,6 @@ impl Runs<'_> {
         motion::sides::trim_events(first, &self.req, p1);
         Ok(())
     }
-}
-
-/// Whether `t` and `end` agree to more than `digits` significant digits
-/// (|t − end| ≤ (|end| + scale)·10^−(digits+3), `scale` the natural scale:
-/// the time unit for a time, 1 for an angle).
-fn within_digits(t: &Float, end: &Float, digits: u32, scale: &Float) -> bool {
-    let p = t.prec();
-    let tol = (Float::with_val(p, end.abs_ref()) + scale)
-        / Float::with_val(p, Float::u_pow_u(10, digits + 3));
-    Float::with_val(p, t - end).abs() <= tol
 }
 
 /// Runs the motion at both precisions of each rung, the first run (at
