@@ -1915,3 +1915,23 @@ fn two_slip_onsets_closer_than_the_mode_tests_step_are_told_apart() {
         assert!((ck / c - 1.0).abs() < 1e-6, "10^{k}: {ck} against {c}");
     }
 }
+
+/// The skeleton the two working precisions must agree on, as a refusal
+/// prints it: plain words — the events, the start, the end, the rows'
+/// phases run by run — not Rust's debug text (`Some(Impact(Floor))`,
+/// `None`, one phase per row). The main case with μ = 0.3: the contact's
+/// slip onset, the separation, the impact on the floor; rows at t = 1, 2
+/// sticking, 5 in the flight.
+#[test]
+fn the_event_skeleton_reads_in_plain_words() {
+    let m = main_mu_0_3_edited(|_| {});
+    let times: Vec<Exact> = ["1", "2", "5"].iter().map(|t| exact(t)).collect();
+    let sig = cylroll::oracle::ladder::signature(&run(&m, 128, &times)).join(", ");
+    assert!(
+        sig.contains("start stick/stick")
+            && sig.contains("ends at the impact on the floor")
+            && sig.contains("rows: 2 stick/stick 1 flight"),
+        "{sig}"
+    );
+    assert!(!sig.contains("Some(") && !sig.contains("None"), "{sig}");
+}

@@ -552,35 +552,29 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 // integration's accuracy) lies at the angle itself
                 let vals = solve::watch_values(ws.events.iter().map(|e| &e.watch), &hit.at);
                 let accs = ctx.accuracies(&ws.events);
-                // a slip speed still ~0 just after its own slip onset (within
-                // √tol of the phase's start in time) is the sliding's start,
-                // not a stick at the angle: recorded as one, it made the two
-                // precisions disagree on the events (or a note say the angle
-                // was the event's state)
-                let just_slipping = |c: Which| {
-                    w.out.events.last().is_some_and(|e| {
-                        e.kind == Kind::SlipOnset
-                            && e.which == Some(c)
-                            && Float::with_val(wp, &hit.at.t - &e.at.t).abs()
-                                <= Float::with_val(wp, &ctx.ts * &ctx.rel_tiny)
-                    })
-                };
-                let at_zero = ws
-                    .what
-                    .iter()
-                    .zip(&vals)
-                    .zip(&accs)
-                    .find_map(|((wt, g), acc)| {
-                        let kind = match wt {
-                            What::Separation => (Kind::Separation, Some(Which::Contact)),
-                            What::LiftOff => (Kind::LiftOff, Some(Which::Floor)),
-                            What::FloorImpact => (Kind::Impact, None),
-                            What::Cone(c) => (Kind::SlipOnset, Some(*c)),
-                            What::SlipZero(c) if !just_slipping(*c) => (Kind::Stick, Some(*c)),
-                            _ => return None,
-                        };
-                        (Float::with_val(wp, g.abs_ref()) <= *acc).then_some(kind)
-                    });
+                // only a watch the phase armed: one already 0 at the phase's
+                // start (to its snap, the integrator's own rule) has not
+                // come back to 0 at the angle, it has not left it yet — a
+                // slip speed just after its own slip onset was recorded as
+                // a stick at the angle, and the two precisions disagreed on
+                // the events (or a note said the angle was the event's state)
+                let acc0 = sys.accel(&q, &v)?;
+                let s0 = sample(&t, &q, &v, acc0, &work);
+                let vals0 = solve::watch_values(ws.events.iter().map(|e| &e.watch), &s0);
+                let snaps = ctx.snaps(&ws.events);
+                let at_zero = ws.what.iter().enumerate().find_map(|(k, wt)| {
+                    let armed = Float::with_val(wp, vals0[k].abs_ref()) > snaps[k];
+                    let kind = match wt {
+                        _ if !armed => return None,
+                        What::Separation => (Kind::Separation, Some(Which::Contact)),
+                        What::LiftOff => (Kind::LiftOff, Some(Which::Floor)),
+                        What::FloorImpact => (Kind::Impact, None),
+                        What::Cone(c) => (Kind::SlipOnset, Some(*c)),
+                        What::SlipZero(c) => (Kind::Stick, Some(*c)),
+                        _ => return None,
+                    };
+                    (Float::with_val(wp, vals[k].abs_ref()) <= accs[k]).then_some(kind)
+                });
                 w.out.target = Some(at.clone());
                 if let Some((kind, which)) = at_zero {
                     w.out.events.push(ev(kind, which, None));
