@@ -36,6 +36,7 @@ fn main() {
             sides: Vec::new(),
             target_side: None,
             low_deltas: Vec::new(),
+            derived_at_high: false,
         };
         let mo = motion::run(&m, &req, p, &mut Caches::default()).expect("motion");
         println!(

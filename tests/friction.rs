@@ -69,6 +69,7 @@ fn run(m: &Model, prec: u32, times: &[Exact]) -> motion::Motion {
         sides: Vec::new(),
         target_side: None,
         low_deltas: Vec::new(),
+        derived_at_high: false,
     };
     motion::run(m, &req, prec, &mut Caches::default()).unwrap()
 }

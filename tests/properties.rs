@@ -217,6 +217,7 @@ proptest! {
             sides: Vec::new(),
             target_side: None,
             low_deltas: Vec::new(),
+            derived_at_high: false,
         };
         let m = match motion::run(&model, &req, 120, &mut motion::Caches::default()) {
             Ok(m) => m,

@@ -43,6 +43,7 @@ pub fn motion_by(model: &Model, method: Method, prec: u32, horizon: &Float) -> R
         sides: Vec::new(),
         target_side: None,
         low_deltas: Vec::new(),
+        derived_at_high: false,
     };
     motion::run(model, &req, prec, &mut Caches::default())
 }

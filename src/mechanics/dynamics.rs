@@ -11,6 +11,8 @@ use crate::error::Result;
 use crate::model::{Contact, Floor, Ideal};
 use rug::{Assign, Float};
 
+pub mod shadow;
+
 pub use super::half_angle::{HalfAngleTime, TinyStart};
 pub use super::polys::{ForcePolys, HPoly, N12Poly};
 
@@ -64,6 +66,9 @@ pub struct Dyn {
     /// Products of the constants the forces, the energy and the momenta
     /// use, each rounded as those formulas round it.
     k: Products,
+    /// The constants in binary64 for the rows' error ([`shadow`]), built on
+    /// first use.
+    shadow: std::sync::OnceLock<shadow::Consts>,
 }
 
 /// Products of [`Dyn`]'s constants, each rounded as the formulas that use
@@ -184,6 +189,7 @@ impl Dyn {
                 rrm2,
                 m2gr,
             },
+            shadow: std::sync::OnceLock::new(),
         })
     }
 

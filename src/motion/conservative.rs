@@ -89,6 +89,9 @@ pub struct Wants<'a> {
     /// δ at each requested time in the ladder's lower run
     /// ([`super::Request::low_deltas`]; empty: none).
     pub low_deltas: &'a [Float],
+    /// The rows' columns but t and θ computed by the higher run alone
+    /// ([`super::Request::derived_at_high`]).
+    pub derived_at_high: bool,
 }
 
 /// The first phase from the start, in the conservative mode `mode`, by
@@ -321,37 +324,57 @@ pub fn first_phase(
                 continue;
             }
             let tf = t.to_float(p);
+            if wants.derived_at_high && wants.run == Run::Low {
+                // the lower run of a table: t and θ only; the higher run
+                // computes the other columns with their error (below)
+                let mut a = vec![Float::new(p); COLUMNS.len()];
+                a[0] = tf;
+                a[1] = route.odd(Float::with_val(p, &th0w + &d));
+                let mut pt = point_of(a, Float::new(p), mode, None, zero_bits(ctx, mode));
+                pt.diff_weight = 0;
+                rows.push(pt);
+                row_deltas.push(d);
+                continue;
+            }
             let (a, energy) = route.columns_at(&d, &tf, p)?;
-            // the columns' errors from δ's: only the higher run's error
-            // estimate counts on the ladder (the lower run's value is the
-            // one compared against), so the lower run skips it. Where the
-            // lower run's δ differs from this one by more than δ's bound,
-            // |v(p1) − v(p2)| counted twice covers what δ's error carries
-            // into the columns (to first order: each column is a smooth
-            // closed form of δ); else a second evaluation at δ + bound
-            // measures it.
-            let mut weight = 1;
-            let err = if wants.run == Run::Low {
-                None
-            } else {
-                let ulps = |x: &Float| Float::with_val(p, x.abs_ref()) >> (p as i32 - 4);
-                let apart = wants.low_deltas.get(i).is_some_and(|d1| {
-                    let gap = Float::with_val(p, d1 - &d).abs();
-                    !gap.is_zero() && gap >= derr
-                });
-                let mut err: Vec<Float> = if apart {
-                    weight = 2;
-                    a.iter().map(ulps).collect()
-                } else {
-                    let d2 = Float::with_val(p, &d + &derr);
-                    let (b, _) = route.columns_at(&d2, &tf, p)?;
-                    a.iter()
-                        .zip(&b)
-                        .map(|(x, y)| Float::with_val(p, x - y).abs() + ulps(x))
-                        .collect()
-                };
-                err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
-                Some(err)
+            let low = wants.low_deltas.get(i);
+            let ulps = |x: &Float| Float::with_val(p, x.abs_ref()) >> (p as i32 - 4);
+            let (err, weight) = match (wants.run, low) {
+                (Run::Low, _) => (None, 1),
+                (Run::High, Some(d1)) if wants.derived_at_high => {
+                    // the lower run left these columns: their error is what
+                    // δ's bound (the two runs' difference and the route's
+                    // own bound) carries into them and the roundings
+                    let mut err = route.column_errors(&a, &d, d1, &derr, &tf, p)?;
+                    // θ is compared with the lower run's, as in a θ-only table
+                    err[1] = Float::with_val(p, &derr) + ulps(&a[1]);
+                    err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
+                    (Some(err), 0)
+                }
+                (Run::High, _) => {
+                    // the columns' errors from δ's. Where the lower run's δ
+                    // differs from this one by more than δ's bound,
+                    // |v(p1) − v(p2)| counted twice covers what δ's error
+                    // carries into the columns (to first order: each column
+                    // is a smooth closed form of δ); else a second
+                    // evaluation at δ + bound measures it.
+                    let apart = low.is_some_and(|d1| {
+                        let gap = Float::with_val(p, d1 - &d).abs();
+                        !gap.is_zero() && gap >= derr
+                    });
+                    let mut err: Vec<Float> = if apart {
+                        a.iter().map(ulps).collect()
+                    } else {
+                        let d2 = Float::with_val(p, &d + &derr);
+                        let (b, _) = route.columns_at(&d2, &tf, p)?;
+                        a.iter()
+                            .zip(&b)
+                            .map(|(x, y)| Float::with_val(p, x - y).abs() + ulps(x))
+                            .collect()
+                    };
+                    err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
+                    (Some(err), if apart { 2 } else { 1 })
+                }
             };
             let mut pt = point_of(a, energy, mode, err, zero_bits(ctx, mode));
             pt.diff_weight = weight;

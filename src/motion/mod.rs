@@ -254,6 +254,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             target: target_theta.as_ref(),
             beyond: beyond.clone(),
             low_deltas: &req.low_deltas,
+            derived_at_high: req.derived_at_high,
         };
         let fast = conservative::first_phase(&ctx, route, mode, &wants, prec)?;
         crate::cancel::check()?;
@@ -268,7 +269,12 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         }
         w.out.deltas = fast.deltas;
         for pt in fast.rows {
-            w.push_row(pt);
+            if req.derived_at_high && req.run == crate::numeric::verify::Run::Low {
+                // t and θ only: no energy to balance
+                w.out.rows.push(pt);
+            } else {
+                w.push_row(pt);
+            }
         }
         for th in fast.thetas {
             w.out.thetas.push(th);

@@ -131,6 +131,12 @@ pub struct Request {
     /// row's columns, and the second evaluation of the columns that would
     /// measure it is spared.
     pub low_deltas: Vec<Float>,
+    /// A table of every column: the rows of the conservative first phase
+    /// carry t and θ only in the ladder's lower run, and the higher run
+    /// computes the other columns with the error δ's bound and the formulas'
+    /// roundings carry into them (given the lower run's δ), instead of
+    /// comparing them with a lower run's ([`crate::integrate::energy::Route::column_errors`]).
+    pub derived_at_high: bool,
 }
 
 impl Request {
@@ -149,6 +155,7 @@ impl Request {
             sides: Vec::new(),
             target_side: None,
             low_deltas: Vec::new(),
+            derived_at_high: false,
         }
     }
 }

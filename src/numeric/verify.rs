@@ -48,7 +48,8 @@ pub struct Estimate {
     /// first order: a closed form of δ = θ − θ0 whose two runs differ by
     /// more than δ's own error bound (the conservative rows of a
     /// trajectory), so that |v(p1) − v(p2)| also bounds the error δ's
-    /// error carries into it.
+    /// error carries into it. 0 for a value the higher run computed alone
+    /// (the lower run left it): `err` is its whole bound.
     pub diff_weight: u32,
 }
 
@@ -311,6 +312,9 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
 /// The bound the ladder holds the higher run's value to:
 /// |v(p1) − v(p2)|·diff_weight + err(p2), at p2.
 fn error_bound(a: &Estimate, b: &Estimate) -> Float {
+    if b.diff_weight == 0 {
+        return b.err.clone();
+    }
     let mut bound = Float::with_val(b.value.prec(), &a.value - &b.value);
     bound.abs_mut();
     if b.diff_weight != 1 {

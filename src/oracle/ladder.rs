@@ -175,6 +175,10 @@ pub fn push_point_estimates(
         };
         if i == 0 {
             e.exact_text = t_text.cloned();
+        } else if i == 1 && weight == 0 {
+            // θ of a row whose other columns the higher run computed alone
+            // is compared with the lower run's
+            e.diff_weight = 1;
         } else {
             e.diff_weight = weight;
         }

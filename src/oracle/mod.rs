@@ -147,6 +147,7 @@ fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -
             sides: Vec::new(),
             target_side: None,
             low_deltas: Vec::new(),
+            derived_at_high: false,
         },
         caches: Caches::default(),
         at_events: Vec::new(),

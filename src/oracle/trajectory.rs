@@ -221,6 +221,7 @@ fn trajectory_block(
     let exact_t = ladder::exact_times(times);
     let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
     runs.req.theta_only = theta_only;
+    runs.req.derived_at_high = !theta_only;
     let (p1, _) = precisions(opts.digits, 0);
     let mut first = runs.at(p1, Run::Low)?;
     runs.resolve_sides(&mut first)?;

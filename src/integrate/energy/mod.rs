@@ -18,6 +18,7 @@ mod roots;
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
+use crate::mechanics::dynamics::Dyn;
 use crate::mechanics::Reduced;
 use crate::model::{Contact, Floor, Ideal};
 use crate::numeric::taylor::{self, Conservative};
@@ -839,17 +840,27 @@ impl Route {
     ///
     /// Errors: none beyond building the engine at `p`.
     pub fn columns_at(&mut self, delta: &Float, t: &Float, p: u32) -> Result<(Vec<Float>, Float)> {
-        let (floor, contact) = (self.work.floor(), self.work.contact());
+        let sign = self.sign;
         let e = self.engine(p)?;
+        Ok(columns_of(&e.dynm, sign, delta, t))
+    }
+}
+
+/// [`Route::columns_at`] by the dynamics `dy` (at its precision), `sign`
+/// the route's mirror.
+fn columns_of(dy: &Dyn, sign: i32, delta: &Float, t: &Float) -> (Vec<Float>, Float) {
+    let p = dy.prec;
+    let (floor, contact) = (dy.floor, dy.contact);
+    {
         // r, r1, r2 at p bits as the dynamics holds them (each the
         // correctly rounded exact parameter)
-        let (r, r1, r2) = (&e.dynm.r, &e.dynm.r1, &e.dynm.r2);
-        let st = e.dynm.state(delta);
-        let pos = e.dynm.positions_phi2(&st, t);
-        let f = e.dynm.forces(&st);
+        let (r, r1, r2) = (&dy.r, &dy.r1, &dy.r2);
+        let st = dy.state(delta);
+        let pos = dy.positions_phi2(&st, t);
+        let f = dy.forces(&st);
         // T + V with V = m2 g (y2 − r1) = m2 g r cos θ: heights above
         // cylinder 1's centre, System::energy's zero of the potential
-        let energy = e.dynm.energy(&st);
+        let energy = dy.energy(&st);
         let [xd, pd, sd] = &st.v;
         let td = &st.thetadot;
         let x2 = Float::with_val(p, r * &st.s) + &pos[0];
@@ -896,10 +907,107 @@ impl Route {
         let out = vals
             .into_iter()
             .zip(ODD)
-            .map(|(v, odd)| if odd { self.odd(v) } else { v })
+            .map(|(v, odd)| if odd && sign < 0 { -v } else { v })
             .collect();
-        Ok((out, energy))
+        (out, energy)
     }
+}
+
+impl Route {
+    /// The error of each column `a` of [`Route::columns_at`] at δ = `delta`
+    /// and time `t` (p bits), where the ladder's lower run found `delta_low`
+    /// and the route bounds δ's own error by `derr`: δ is then known to
+    /// within b = |δ − δ_low| + derr. Each column's error is twice what b
+    /// carries into it to first order, |G′(δ)|·b, and four times the running
+    /// bound on the formulas' roundings at p bits (at least 16 units of the
+    /// value's last place), from the same formulas evaluated in binary64
+    /// with their derivative ([`crate::mechanics::dynamics::shadow`]), whose
+    /// values must be `a`'s to binary64's accuracy. Where they are not (a
+    /// value or a constant outside binary64's range), the error is measured
+    /// instead: the columns at δ_low and 32 bits more (the roundings and δ's
+    /// difference at once, counted twice) and at δ + derr. The t and θ
+    /// entries are left 0 (the caller's), as is the work (0 by the laws).
+    ///
+    /// Errors: none beyond building the engine at `p`.
+    pub fn column_errors(
+        &mut self,
+        a: &[Float],
+        delta: &Float,
+        delta_low: &Float,
+        derr: &Float,
+        t: &Float,
+        p: u32,
+    ) -> Result<Vec<Float>> {
+        let b = Float::with_val(p, delta - delta_low).abs() + derr;
+        let e = self.engine(p)?;
+        if let Some(err) = shadow_errors(&e.dynm, a, delta, &b, t) {
+            return Ok(err);
+        }
+        let sign = self.sign;
+        let ulps = |x: &Float| Float::with_val(p, x.abs_ref()) >> (p as i32 - 4);
+        let hi = Dyn::new(&self.work, &self.red, p + 32)?;
+        let (lo, _) = columns_of(&hi, sign, &Float::with_val(p + 32, delta_low), t);
+        let (up, _) = self.columns_at(&Float::with_val(p, delta + derr), t, p)?;
+        let mut err: Vec<Float> = a
+            .iter()
+            .zip(lo.iter().zip(&up))
+            .map(|(x, (l, u))| {
+                Float::with_val(p, x - l).abs() * 2u32 + Float::with_val(p, x - u).abs() + ulps(x)
+            })
+            .collect();
+        err[0] = Float::new(p);
+        err[1] = Float::new(p);
+        Ok(err)
+    }
+}
+
+/// The errors of [`Route::column_errors`] from the binary64 shadow of the
+/// formulas, `None` where it does not hold them.
+fn shadow_errors(dy: &Dyn, a: &[Float], delta: &Float, b: &Float, t: &Float) -> Option<Vec<Float>> {
+    use crate::mechanics::dynamics::shadow;
+    let p = dy.prec;
+    let t_exact = t.is_zero() || t.to_f64() == *t;
+    // δ exact (b = 0, the start): no derivative is needed, nor infinite
+    let seed = if b.is_zero() { 0.0 } else { 1.0 };
+    let sh = shadow::columns(dy, delta.to_f64(), seed, t.to_f64(), !t_exact);
+    // b = bm·2^be; the rounding unit 2^−p
+    let (bm, be) = if b.is_zero() {
+        (0.0, -(p as i32))
+    } else {
+        b.to_f64_exp()
+    };
+    let top = be.max(-(p as i32));
+    let mut out = Vec::with_capacity(crate::motion::COLUMNS.len());
+    out.extend([Float::new(p), Float::new(p)]);
+    // a number binary64 holds well: 0, or within 2^±930 (10^±280)
+    let held = |x: &Float| x.is_zero() || x.get_exp().is_some_and(|e| e.abs() <= 930);
+    if !held(delta) || !held(t) || !held(b) {
+        return None;
+    }
+    for (s, x) in sh.iter().zip(&a[2..20]) {
+        // the shadow holds the formulas: finite, within binary64's normal
+        // range, and the value p bits computed, to binary64's accuracy
+        let xv = x.to_f64().abs();
+        if !s.is_finite()
+            || !held(x)
+            || !(s.v == 0.0 || (1e-280..=1e280).contains(&s.v.abs()))
+            || (s.v.abs() - xv).abs() > 8.0 * s.e * f64::EPSILON
+        {
+            return None;
+        }
+        let prop = 2.0 * s.d.abs() * bm;
+        let round = 4.0 * s.e + 16.0 * s.v.abs();
+        let y = prop * 2f64.powi(be - top) + round * 2f64.powi(-(p as i32) - top);
+        if !y.is_finite() {
+            return None;
+        }
+        // the f64 sum rounded up by far more than its own roundings
+        let mut o = Float::with_val(p, y * (1.0 + 1e-12));
+        o <<= top;
+        out.push(o);
+    }
+    out.push(Float::new(p));
+    Some(out)
 }
 
 /// log2 |x| in f64 for any exponent (−∞ for 0), from the mantissa and the
