@@ -80,8 +80,6 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
     if x.is_zero() || !x.is_finite() {
         return None;
     }
-    let (m, ex) = x.to_f64_exp();
-    let mut e = (m.abs().log10() + ex as f64 * std::f64::consts::LOG10_2).floor() as i64 + 1;
     let n = digits as i64;
     SCRATCH.with(|sc| {
         let mut sc = sc.borrow_mut();
@@ -89,8 +87,26 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
         // |x| = mx·2^bx exactly (mx the significand as an integer)
         let bx = x.to_integer_exp_in_place(mx)?;
         mx.abs_mut();
+        // the decimal exponent from the top limb (a first guess: the loop
+        // below corrects it by one where it is off)
+        let limbs = mx.as_limbs();
+        let top = *limbs.last()?;
+        let lg = (top as f64).log10()
+            + (i64::from(bx) + 64 * (limbs.len() as i64 - 1)) as f64 * std::f64::consts::LOG10_2;
+        let mut e = lg.floor() as i64 + 1;
         for _ in 0..3 {
             let k = n - e;
+            if let Some(u) = scaled_u128(mx.as_limbs(), k, bx) {
+                // the common case in machine integers: the same rounding
+                buf.clear();
+                push_u128(buf, u);
+                match (buf.len() as i64).cmp(&n) {
+                    std::cmp::Ordering::Greater => e += 1,
+                    std::cmp::Ordering::Less => e -= 1,
+                    std::cmp::Ordering::Equal => return Some((x.is_sign_negative(), e)),
+                }
+                continue;
+            }
             if (0..=POW10_INT_MAX).contains(&k) {
                 // exact: |x|·10^k = mx·10^k·2^bx, rounded once
                 POW10_INT.with(|c| {
@@ -148,6 +164,76 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
         }
         None
     })
+}
+
+/// m·10^k·2^bx rounded to the nearest integer, ties to even (as
+/// [`round_shift`] rounds m·10^k), for a significand `m` of at most 4
+/// limbs (least significant first) and 0 ≤ k ≤ 38, where the result fits
+/// in 127 bits; `None` otherwise (the general path decides).
+fn scaled_u128(m: &[u64], k: i64, bx: i32) -> Option<u128> {
+    const L: usize = 6;
+    if m.len() > 4 || !(0..=38).contains(&k) {
+        return None;
+    }
+    let pw = 10u128.pow(k as u32);
+    let pl = [pw as u64, (pw >> 64) as u64];
+    // P = m·10^k in up to 6 limbs
+    let mut prod = [0u64; L];
+    for (i, &mi) in m.iter().enumerate() {
+        let mut carry: u128 = 0;
+        for (j, &pj) in pl.iter().enumerate() {
+            let t = u128::from(mi) * u128::from(pj) + u128::from(prod[i + j]) + carry;
+            prod[i + j] = t as u64;
+            carry = t >> 64;
+        }
+        let mut idx = i + 2;
+        while carry != 0 {
+            let t = u128::from(prod[idx]) + carry;
+            prod[idx] = t as u64;
+            carry = t >> 64;
+            idx += 1;
+        }
+    }
+    let top = prod.iter().rposition(|&l| l != 0);
+    let Some(top) = top else {
+        return Some(0);
+    };
+    let bits = 64 * top as i64 + 64 - i64::from(prod[top].leading_zeros());
+    if bx >= 0 {
+        if bits + i64::from(bx) > 127 {
+            return None;
+        }
+        let v = u128::from(prod[0]) | u128::from(prod[1]) << 64;
+        return Some(v << bx);
+    }
+    let sh = i64::from(bx).unsigned_abs();
+    if bits - sh as i64 > 127 {
+        return None;
+    }
+    if sh > 64 * L as u64 {
+        return Some(0);
+    }
+    let limb = |i: u64| -> u64 { prod.get(i as usize).copied().unwrap_or(0) };
+    let bit = |b: u64| (limb(b / 64) >> (b % 64)) & 1 == 1;
+    let half = bit(sh - 1);
+    let below = {
+        let b = sh - 1;
+        let w = b / 64;
+        (0..w).any(|i| limb(i) != 0) || limb(w) & ((1u64 << (b % 64)) - 1) != 0
+    };
+    let (w, o) = (sh / 64, (sh % 64) as u32);
+    let part = |i: u64| {
+        if o == 0 {
+            limb(i)
+        } else {
+            (limb(i) >> o) | (limb(i + 1) << (64 - o))
+        }
+    };
+    let mut r = u128::from(part(w)) | u128::from(part(w + 1)) << 64;
+    if half && (below || r & 1 == 1) {
+        r = r.checked_add(1)?;
+    }
+    Some(r)
 }
 
 /// mi·2^ex (mi ≥ 0) to the nearest integer, ties to even (as mpfr_get_z at
@@ -273,6 +359,69 @@ pub fn approx_text(x: &Float) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The machine-integer path rounds m·10^k·2^bx as the general one does,
+    /// bit for bit, wherever it answers: random significands of 1–4 limbs
+    /// (dense, and sparse so that the dropped bits are often exactly half
+    /// or zero: the ties), every k it takes, shifts either way.
+    #[test]
+    fn the_machine_integer_scaling_is_the_general_one() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut answered = 0;
+        let mut ties = 0;
+        for case in 0..40_000 {
+            let n = 1 + (next() % 4) as usize;
+            let mut m: Vec<u64> = (0..n)
+                .map(|_| {
+                    let x = next();
+                    if case % 2 == 0 {
+                        x
+                    } else {
+                        // sparse: one or two bits
+                        (1u64 << (x % 64)) | if x & 1 == 0 { 1 << ((x >> 8) % 64) } else { 0 }
+                    }
+                })
+                .collect();
+            if m[n - 1] == 0 {
+                m[n - 1] = 1;
+            }
+            let k = (next() % 39) as i64;
+            let mut mi = rug::Integer::from_digits(&m, rug::integer::Order::Lsf);
+            mi *= rug::Integer::from(rug::Integer::u_pow_u(10, k as u32));
+            let bx = if case % 4 == 1 {
+                // the lowest set bit is the half: a tie
+                -(mi.find_one(0).unwrap_or(0) as i32 + 1)
+            } else {
+                (next() % 460) as i32 - 400
+            };
+            let exact_half = bx < 0 && {
+                let sh = bx.unsigned_abs();
+                mi.get_bit(sh - 1) && mi.find_one(0) == Some(sh - 1)
+            };
+            round_shift(&mut mi, bx);
+            match scaled_u128(&m, k, bx) {
+                Some(u) => {
+                    answered += 1;
+                    ties += usize::from(exact_half);
+                    assert_eq!(rug::Integer::from(u), mi, "m {m:?} k {k} bx {bx}");
+                }
+                None => assert!(
+                    mi.significant_bits() >= 126,
+                    "declined m {m:?} k {k} bx {bx}"
+                ),
+            }
+        }
+        assert!(
+            answered > 10_000 && ties > 100,
+            "{answered} answered, {ties} ties"
+        );
+    }
 
     /// approx_sig's digits are within one unit of the last digit of the
     /// correctly rounded ones (`round_sig`), over magnitudes and digit counts
