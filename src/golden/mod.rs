@@ -319,7 +319,8 @@ fn provenance(sep: &Answer) -> String {
         parts.push(
             "the conservative first phase by the energy route (theta_dot^2 in closed form, t(theta) by \
              quadrature, theta(t) by Taylor series or Chebyshev inversion, events as roots of \
-             polynomials in cos theta)",
+             polynomials in cos theta; a row's other columns from its verified delta at the higher \
+             precision, with the error delta's bound and the roundings carry into them)",
         );
     }
     if sep.routes.contains(&Route::Spectral) || sep.routes.contains(&Route::Gbs) {
