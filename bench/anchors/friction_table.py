@@ -74,6 +74,16 @@ def main():
             warm_n = f" ({row['heyoka_runs']} runs)" if row.get("heyoka_runs", 3) < 3 else ""
             print(f"| {names[task]} | {d} | {fmt(cy)} | {fmt(hc)} | {fmt(hw)}{warm_n} | {cy / hw:.2g} | {hc / cy:.2g} "
                   f"| {row['agreement_min']:.1f} | {fmt(lb)} |")
+    paired = [(d, res["per_digits"][str(d)]["rows_over_theta"]) for d in digits
+              if "rows_over_theta" in res["per_digits"][str(d)]]
+    if paired:
+        print()
+        print("| every column / θ only, the two commands in alternation | digits | pairs | θ only | every column "
+              "| ratio of the medians | per pair, min–max |")
+        print("|---|---|---|---|---|---|---|")
+        for d, x in paired:
+            print(f"| cylroll process CPU | {d} | {x['pairs']} | {fmt(x['theta_cpu_s'])} | {fmt(x['rows_cpu_s'])} "
+                  f"| {x['ratio']:.2f} | {x['ratio_min']:.2f}–{x['ratio_max']:.2f} |")
     print()
     print("cylroll process CPU: user + system of the command run as a process (median of "
           "its runs); it verifies every digit at two precisions, and `separation` also integrates "

@@ -56,7 +56,7 @@ after --time-limit seconds (then the row says so).
 
 Usage (from the project root; builds target/bench-venv on first use):
   python3 bench/anchors/heyoka_friction.py --digits 30,100,300,1000 [--rows-digits 30,100]
-      [--tasks events,theta,rows] [--out FILE.json] [--cylroll-reps 5] [--time-limit 900]
+      [--tasks events,theta,rows] [--out FILE.json] [--cylroll-reps 5] [--pairs 15] [--time-limit 900]
 Needs target/release/cylroll (cargo build --release) or CYLROLL_BIN.
 """
 import os
@@ -479,6 +479,7 @@ def main():
     ap.add_argument("--tasks", default="events,theta,rows")
     ap.add_argument("--cold-reps", type=int, default=3, help="fresh builds per cold figure (1 above 100 digits)")
     ap.add_argument("--cylroll-reps", type=int, default=5, help="processes per cylroll figure (3 above 100 digits)")
+    ap.add_argument("--pairs", type=int, default=15, help="alternating pairs for every column / θ only (a third above 100 digits)")
     ap.add_argument("--time-limit", type=float, default=900, help="seconds per heyoka measurement (a task at D digits)")
     ap.add_argument("--out", default=os.path.join(common.ROOT, "target", "bench-friction", "heyoka_friction.json"))
     a = ap.parse_args()
@@ -548,6 +549,21 @@ def main():
                            agreement_min=min(v for k, v in ag.items() if k != "modes_equal"))
             r[task] = row
             print(f"{d} {task}: {json.dumps(row)}", file=sys.stderr, flush=True)
+            save()
+        if "theta" in tasks and "rows" in tasks and d in rows_digits:
+            # every column against θ only, the two commands run in alternation (A B A B …):
+            # the ratio without the machine's drift between the two figures above
+            pair = ["trajectory"] + CASE + ["--times", ",".join(times), "--digits", str(d), "--format", "csv"]
+            th, al = [], []
+            for _ in range(a.pairs if d <= 100 else max(3, a.pairs // 3)):
+                th.append(cylroll(pair + ["--columns", "t,theta,mode"])[1])
+                al.append(cylroll(pair)[1])
+            r["rows_over_theta"] = dict(pairs=len(th), theta_cpu_s=statistics.median(th),
+                                        rows_cpu_s=statistics.median(al),
+                                        ratio=statistics.median(al) / statistics.median(th),
+                                        ratio_min=min(x / y for x, y in zip(al, th)),
+                                        ratio_max=max(x / y for x, y in zip(al, th)))
+            print(f"{d} rows/theta paired: {json.dumps(r['rows_over_theta'])}", file=sys.stderr, flush=True)
             save()
     save()
     print(a.out)
