@@ -1034,3 +1034,89 @@ pub fn extra_bits_at(log2_t: f64, p: u32) -> u32 {
         0
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::Exact;
+    use crate::mechanics::dynamics::shadow::columns;
+    use crate::model::{Contact, Floor, Ideal, Params, Start, VARIANTS};
+    use rug::Rational;
+
+    fn dyn_at(contact: Contact, floor: Floor, thetadot0: Rational, p: u32) -> Dyn {
+        let params = Params::identical_solid();
+        let start = Start {
+            theta0: Exact::rational(Rational::from((1, 10))),
+            thetadot0,
+            // a common rolling where the floor lets cylinder 1 move
+            omega0: if floor == Floor::Fixed {
+                Rational::new()
+            } else {
+                Rational::from((1, 7))
+            },
+        };
+        let m = Ideal::new(params, floor, contact, start).unwrap();
+        let red = Reduced::new(&m).unwrap();
+        Dyn::new(&m, &red, p).unwrap()
+    }
+
+    /// The columns θ̇ … s12 as the energy route computes them at `dy`'s
+    /// precision (the order of [`columns`]).
+    fn exact_columns(dy: &Dyn, delta: &Float, t: &Float) -> Vec<Float> {
+        columns_of(dy, 1, delta, t).0[2..20].to_vec()
+    }
+
+    /// The binary64 shadow of the formulas ([`columns`]) holds the route's:
+    /// its derivative is the closed forms' (a central difference at 400
+    /// bits), and its rounding bound covers the error of the p-bit values
+    /// against the same formulas at 400 bits, for every contact law of a
+    /// conservative phase, from rest and from a moving start, at small and
+    /// large δ — near the separation, where N12 is a cancellation.
+    #[test]
+    fn derivative_and_rounding_bound_hold() {
+        let hi = 400;
+        for (floor, contact) in VARIANTS {
+            for td0 in [
+                Rational::new(),
+                Rational::from((1, 3)),
+                Rational::from((2, 5)),
+            ] {
+                for p in [60u32, 124, 200] {
+                    let lo = dyn_at(contact, floor, td0.clone(), p);
+                    let dh = dyn_at(contact, floor, td0.clone(), hi);
+                    for (dv, tv) in [(1e-9, 1e-4), (0.013, 0.3), (0.4, 2.0), (0.72, 3.1)] {
+                        let d = Float::with_val(p, dv);
+                        let t = Float::with_val(p, tv);
+                        let sh = columns(&lo, d.to_f64(), 1.0, t.to_f64(), false);
+                        let a = exact_columns(&lo, &d, &t);
+                        let b =
+                            exact_columns(&dh, &Float::with_val(hi, &d), &Float::with_val(hi, &t));
+                        let eps = Float::with_val(hi, 1e-40);
+                        let dp = Float::with_val(hi, &d + &eps);
+                        let dm = Float::with_val(hi, &d - &eps);
+                        let bp = exact_columns(&dh, &dp, &Float::with_val(hi, &t));
+                        let bm = exact_columns(&dh, &dm, &Float::with_val(hi, &t));
+                        for k in 0..18 {
+                            if !b[k].is_finite() {
+                                continue; // a negative θ̇² beyond the turn
+                            }
+                            let err = Float::with_val(hi, &a[k] - &b[k]).abs().to_f64();
+                            let bound = sh[k].e * 2f64.powi(-(p as i32));
+                            assert!(
+                                err <= bound,
+                                "{contact:?}/{floor:?} td0 {td0} p {p} δ {dv} col {k}: error {err:e} > bound {bound:e}"
+                            );
+                            let fd = Float::with_val(hi, &bp[k] - &bm[k]).to_f64() / 2e-40;
+                            let tol = 1e-9 * (fd.abs() + 1.0);
+                            assert!(
+                                (sh[k].d - fd).abs() <= tol,
+                                "{contact:?}/{floor:?} td0 {td0} δ {dv} col {k}: derivative {} against {fd}",
+                                sh[k].d
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -223,24 +223,7 @@ impl Consts {
 /// or 0 where none is wanted), `t` the row's time (its conversion to p
 /// bits counted as a rounding where `t_rounded`).
 pub fn columns(dy: &Dyn, delta: f64, seed: f64, t: f64, t_rounded: bool) -> [Sh; 18] {
-    let Consts {
-        s0,
-        c0,
-        q,
-        h0,
-        g,
-        r,
-        gr,
-        m2,
-        r1,
-        r2,
-        i2,
-        m12,
-        m12g,
-        alpha,
-        beta,
-        gamma,
-    } = dy.shadow.get_or_init(|| Consts::new(dy)).clone();
+    let kc = dy.shadow.get_or_init(|| Consts::new(dy));
     // δ is exact here: its own error enters through the derivative
     let dl = Sh {
         v: delta,
@@ -260,31 +243,31 @@ pub fn columns(dy: &Dyn, delta: f64, seed: f64, t: f64, t_rounded: bool) -> [Sh;
         d: -hs * half.d,
         e: hc.abs(),
     };
-    let sm = s0.mul(ch).add(c0.mul(sh));
-    let cm = c0.mul(ch).sub(s0.mul(sh));
+    let sm = kc.s0.mul(ch).add(kc.c0.mul(sh));
+    let cm = kc.c0.mul(ch).sub(kc.s0.mul(sh));
     let s = sm.mul(ch).add(cm.mul(sh));
     let cs = cm.mul(ch).sub(sm.mul(sh));
     // --- Dyn::state
-    let h = sm.mul(sh).mul(gr).scale(4.0).add(h0);
-    let k = k_of(&q, cs);
+    let h = sm.mul(sh).mul(kc.gr).scale(4.0).add(kc.h0);
+    let k = k_of(&kc.q, cs);
     let td2 = h.div(k);
     let td = td2.sqrt();
-    let tdd = q[2]
+    let tdd = kc.q[2]
         .mul(cs)
         .scale(2.0)
-        .add(q[1])
+        .add(kc.q[1])
         .mul(td2)
         .scale(0.5)
-        .add(gr)
+        .add(kc.gr)
         .mul(s)
         .div(k);
     let s_td2 = s.mul(td2);
     let mut v = [Sh::ZERO; 3];
     let mut a = [Sh::ZERO; 3];
     for i in 0..3 {
-        let lin = beta[i].mul(cs).add(alpha[i]);
-        v[i] = lin.mul(td).add(gamma[i]);
-        a[i] = lin.mul(tdd).sub(beta[i].mul(s_td2));
+        let lin = kc.beta[i].mul(cs).add(kc.alpha[i]);
+        v[i] = lin.mul(td).add(kc.gamma[i]);
+        a[i] = lin.mul(tdd).sub(kc.beta[i].mul(s_td2));
     }
     let ds = cm.mul(sh).scale(2.0);
     // --- Dyn::positions_phi2: x1, φ1, (ψ2 − ψ0) + δ
@@ -295,37 +278,42 @@ pub fn columns(dy: &Dyn, delta: f64, seed: f64, t: f64, t_rounded: bool) -> [Sh;
     };
     let mut pos = [Sh::ZERO; 3];
     for (i, o) in pos.iter_mut().enumerate() {
-        *o = gamma[i].mul(tt).add(alpha[i].mul(dl)).add(beta[i].mul(ds));
+        *o = kc.gamma[i]
+            .mul(tt)
+            .add(kc.alpha[i].mul(dl))
+            .add(kc.beta[i].mul(ds));
     }
     pos[2] = pos[2].add(dl);
     // --- Dyn::forces
     let ax = a[0];
     let tsq = td.mul(td);
-    let n12 = g.mul(cs).add(ax.mul(s)).sub(r.mul(tsq)).mul(m2);
+    let n12 = kc.g.mul(cs).add(ax.mul(s)).sub(kc.r.mul(tsq)).mul(kc.m2);
     let f21 = match dy.contact {
-        Contact::Roll => i2.mul(a[2]).div(r2),
+        Contact::Roll => kc.i2.mul(a[2]).div(kc.r2),
         Contact::Slip => Sh::ZERO,
     };
     let f1 = match dy.floor {
         Floor::Slip => Sh::ZERO,
         _ => {
-            let t1 = cs.mul(tdd).sub(s.mul(tsq)).mul(r).mul(m2);
-            m12.mul(ax).add(t1)
+            let t1 = cs.mul(tdd).sub(s.mul(tsq)).mul(kc.r).mul(kc.m2);
+            kc.m12.mul(ax).add(t1)
         }
     };
-    let n1 = m12g.sub(s.mul(tdd).add(cs.mul(tsq)).mul(r).mul(m2));
+    let n1 = kc
+        .m12g
+        .sub(s.mul(tdd).add(cs.mul(tsq)).mul(kc.r).mul(kc.m2));
     // --- the energy route's columns_at
     let [xd, pd, sd] = v;
-    let x2 = r.mul(s).add(pos[0]);
-    let y2 = r.mul(cs).add(r1);
-    let x2d = r.mul(cs).mul(td).add(xd);
-    let y2d = r.mul(s).mul(td).neg();
+    let x2 = kc.r.mul(s).add(pos[0]);
+    let y2 = kc.r.mul(cs).add(kc.r1);
+    let x2d = kc.r.mul(cs).mul(td).add(xd);
+    let y2d = kc.r.mul(s).mul(td).neg();
     let s1 = match dy.floor {
-        Floor::Slip => xd.sub(r1.mul(pd)),
+        Floor::Slip => xd.sub(kc.r1.mul(pd)),
         _ => Sh::ZERO,
     };
     let s12 = match dy.contact {
-        Contact::Slip => r.mul(td).add(r2.mul(sd)).sub(r1.mul(pd)),
+        Contact::Slip => kc.r.mul(td).add(kc.r2.mul(sd)).sub(kc.r1.mul(pd)),
         Contact::Roll => Sh::ZERO,
     };
     let phi2_dot = sd.add(td);
@@ -333,130 +321,4 @@ pub fn columns(dy: &Dyn, delta: f64, seed: f64, t: f64, t_rounded: bool) -> [Sh;
         td, tdd, pos[1], pos[2], pos[0], x2, y2, xd, pd, x2d, y2d, phi2_dot, f1, n1, f21, n12, s1,
         s12,
     ]
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::exact::Exact;
-    use crate::mechanics::Reduced;
-    use crate::model::{Ideal, Params, Start, VARIANTS};
-    use rug::Rational;
-
-    fn dyn_at(contact: Contact, floor: Floor, thetadot0: Rational, p: u32) -> Dyn {
-        let params = Params::identical_solid();
-        let start = Start {
-            theta0: Exact::rational(Rational::from((1, 10))),
-            thetadot0,
-            // a common rolling where the floor lets cylinder 1 move
-            omega0: if floor == Floor::Fixed {
-                Rational::new()
-            } else {
-                Rational::from((1, 7))
-            },
-        };
-        let m = Ideal::new(params, floor, contact, start).unwrap();
-        let red = Reduced::new(&m).unwrap();
-        Dyn::new(&m, &red, p).unwrap()
-    }
-
-    /// The columns as [`Dyn`] computes them at p bits (the order of
-    /// [`columns`]).
-    fn exact_columns(dy: &Dyn, delta: &Float, t: &Float) -> Vec<Float> {
-        let p = dy.prec;
-        let st = dy.state(delta);
-        let pos = dy.positions_phi2(&st, t);
-        let f = dy.forces(&st);
-        let [xd, pd, sd] = st.v.clone();
-        let td = st.thetadot.clone();
-        let x2 = Float::with_val(p, &dy.r * &st.s) + &pos[0];
-        let y2 = Float::with_val(p, &dy.r * &st.c) + &dy.r1;
-        let x2d = Float::with_val(p, &dy.r * &st.c) * &td + &xd;
-        let y2d = -(Float::with_val(p, &dy.r * &st.s) * &td);
-        let s1 = match dy.floor {
-            Floor::Slip => Float::with_val(p, &xd - Float::with_val(p, &dy.r1 * &pd)),
-            _ => Float::new(p),
-        };
-        let s12 = match dy.contact {
-            Contact::Slip => {
-                Float::with_val(p, &dy.r * &td) + Float::with_val(p, &dy.r2 * &sd)
-                    - Float::with_val(p, &dy.r1 * &pd)
-            }
-            Contact::Roll => Float::new(p),
-        };
-        let phi2_dot = Float::with_val(p, &sd + &td);
-        vec![
-            td,
-            st.thetaddot,
-            pos[1].clone(),
-            pos[2].clone(),
-            pos[0].clone(),
-            x2,
-            y2,
-            xd,
-            pd,
-            x2d,
-            y2d,
-            phi2_dot,
-            f.f1,
-            f.n1,
-            f.f21,
-            f.n12,
-            s1,
-            s12,
-        ]
-    }
-
-    /// The derivative is the closed forms' (a central difference at 400
-    /// bits), and the rounding bound covers the error of the p-bit values
-    /// against the same formulas at 400 bits, for every contact law of a
-    /// conservative phase, from rest and from a moving start, at small and
-    /// large δ — near the separation, where N12 is a cancellation.
-    #[test]
-    fn derivative_and_rounding_bound_hold() {
-        let hi = 400;
-        for (floor, contact) in VARIANTS {
-            for td0 in [
-                Rational::new(),
-                Rational::from((1, 3)),
-                Rational::from((2, 5)),
-            ] {
-                for p in [60u32, 124, 200] {
-                    let lo = dyn_at(contact, floor, td0.clone(), p);
-                    let dh = dyn_at(contact, floor, td0.clone(), hi);
-                    for (dv, tv) in [(1e-9, 1e-4), (0.013, 0.3), (0.4, 2.0), (0.72, 3.1)] {
-                        let d = Float::with_val(p, dv);
-                        let t = Float::with_val(p, tv);
-                        let sh = columns(&lo, d.to_f64(), 1.0, t.to_f64(), false);
-                        let a = exact_columns(&lo, &d, &t);
-                        let b =
-                            exact_columns(&dh, &Float::with_val(hi, &d), &Float::with_val(hi, &t));
-                        let eps = Float::with_val(hi, 1e-40);
-                        let dp = Float::with_val(hi, &d + &eps);
-                        let dm = Float::with_val(hi, &d - &eps);
-                        let bp = exact_columns(&dh, &dp, &Float::with_val(hi, &t));
-                        let bm = exact_columns(&dh, &dm, &Float::with_val(hi, &t));
-                        for k in 0..18 {
-                            if !b[k].is_finite() {
-                                continue; // a negative θ̇² beyond the turn
-                            }
-                            let err = Float::with_val(hi, &a[k] - &b[k]).abs().to_f64();
-                            let bound = sh[k].e * 2f64.powi(-(p as i32));
-                            assert!(
-                                err <= bound,
-                                "{contact:?}/{floor:?} td0 {td0} p {p} δ {dv} col {k}: error {err:e} > bound {bound:e}"
-                            );
-                            let fd = Float::with_val(hi, &bp[k] - &bm[k]).to_f64() / 2e-40;
-                            let tol = 1e-9 * (fd.abs() + 1.0);
-                            assert!(
-                                (sh[k].d - fd).abs() <= tol,
-                                "{contact:?}/{floor:?} td0 {td0} δ {dv} col {k}: derivative {} against {fd}",
-                                sh[k].d
-                            );
-                        }
-                    }
-                }
-            }
-        }
-    }
 }
