@@ -172,3 +172,42 @@ fn si_units_and_units_beyond_binary64_are_the_45_digit_ones_rounded() {
     let m = model(Law::Rolling, Law::Rolling, tiny, rest());
     check(&m, &times_for(&m, "1e165"), "g = 1e-330");
 }
+
+/// Rows a hair from the end of the conservative phase (the slip onset of a
+/// Coulomb contact, the separation of the ideal model), closer than the
+/// lower precision tells apart: the side is decided at a higher precision,
+/// and a run that places the row on the other side gives it the event's
+/// state, which is compared with the other run's row — so both runs compute
+/// such rows whole.
+#[test]
+fn rows_a_hair_from_the_end_of_the_phase_are_the_45_digit_ones_rounded() {
+    let mu = Law::parse_mu("mu", "0.3").unwrap();
+    let coulomb = model(mu.clone(), mu, Params::identical_solid(), rest());
+    let ideal = model(
+        Law::Rolling,
+        Law::Rolling,
+        Params::identical_solid(),
+        rest(),
+    );
+    for (m, kind, label) in [
+        (&coulomb, "slip_onset", "mu = 0.3"),
+        (&ideal, "separation", "rolling"),
+    ] {
+        let sep = oracle::separation(m, &Options::digits(60)).unwrap();
+        let ev = sep
+            .events
+            .iter()
+            .find(|e| e.kind.name() == kind)
+            .unwrap_or_else(|| panic!("{label}: no {kind}"));
+        let te = q(&ev.t.text);
+        let mut times: Vec<Exact> = ["-1e-20", "-1e-28", "-1e-31", "-1e-34"]
+            .iter()
+            .map(|d| Exact::rational(te.clone() + q(d)))
+            .collect();
+        // densely across the event (the two precisions' times of it differ
+        // by some 10^-37: some of these lie between them)
+        times.extend((-30..=30).map(|k| Exact::rational(te.clone() + q("3e-39") * k)));
+        times.insert(0, ex("1"));
+        check(m, &times, label);
+    }
+}

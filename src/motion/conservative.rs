@@ -324,7 +324,20 @@ pub fn first_phase(
                 continue;
             }
             let tf = t.to_float(p);
-            if wants.derived_at_high && wants.run == Run::Low {
+            // a row within 2^−(p/2) of the phase's end or of an event in it
+            // (in the time unit) is computed whole in both runs: the higher
+            // run may place it on the other side of the event and give it
+            // the event's state, which is compared with this run's value
+            // (one this run had left would fail it, and the ladder climb)
+            let near_event = || {
+                std::iter::once(&t_end)
+                    .chain(events.iter().map(|e| &e.at.t))
+                    .any(|te| {
+                        let guard = (Float::with_val(p, te.abs_ref()) + &ctx.ts) >> (p as i32 / 2);
+                        Float::with_val(p, &tf - te).abs() <= guard
+                    })
+            };
+            if wants.derived_at_high && wants.run == Run::Low && !near_event() {
                 // the lower run of a table: t and θ only; the higher run
                 // computes the other columns with their error (below)
                 let mut a = vec![Float::new(p); COLUMNS.len()];
