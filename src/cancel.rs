@@ -23,6 +23,12 @@ pub fn install(flag: Arc<AtomicBool>) {
     FLAG.with(|f| *f.borrow_mut() = Some(flag));
 }
 
+/// This thread's flag, if one is installed: for work this thread hands to
+/// others ([`install`] it there), so that they stop with it.
+pub fn current() -> Option<Arc<AtomicBool>> {
+    FLAG.with(|f| f.borrow().clone())
+}
+
 /// Whether this thread's flag is set (for loops that cannot return an
 /// error: they end early, and their caller's next [`check`] reports it).
 pub fn cancelled() -> bool {
@@ -40,6 +46,28 @@ pub fn check() -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The flag handed to other threads is the one installed here (a long
+    /// table's blocks computed at once stop with their caller).
+    #[test]
+    fn the_current_flag_is_the_installed_one() {
+        std::thread::spawn(|| {
+            assert!(current().is_none());
+            let flag = Arc::new(AtomicBool::new(false));
+            install(flag.clone());
+            let got = current().expect("installed");
+            assert!(Arc::ptr_eq(&got, &flag));
+            flag.store(true, Ordering::Relaxed);
+            std::thread::spawn(move || {
+                install(got);
+                assert_eq!(check(), Err(Error::Cancelled));
+            })
+            .join()
+            .unwrap();
+        })
+        .join()
+        .unwrap();
+    }
 
     #[test]
     fn a_set_flag_cancels_only_its_thread() {

@@ -11,10 +11,18 @@ fn cyl() -> Command {
 
 /// stdout, stderr and exit code of the command with `block` rows per block.
 fn run(args: &[&str], block: Option<usize>) -> (String, String, i32) {
+    run_on(args, block, None)
+}
+
+/// [`run`] with `threads` blocks computed at once (`CYLROLL_THREADS`).
+fn run_on(args: &[&str], block: Option<usize>, threads: Option<usize>) -> (String, String, i32) {
     let mut c = cyl();
     c.args(args);
     if let Some(b) = block {
         c.env("CYLROLL_BLOCK_ROWS", b.to_string());
+    }
+    if let Some(n) = threads {
+        c.env("CYLROLL_THREADS", n.to_string());
     }
     let out = c.output().unwrap();
     (
@@ -40,9 +48,17 @@ fn blocks_print_the_same_bytes_as_one_block() {
             args.extend(["--format", format]);
             let one = run(&args, None);
             assert_eq!(one.2, 0, "{args:?}: {}", one.1);
-            // blocks of 4 rows: 6 blocks, the last one short
+            // blocks of 4 rows: 6 blocks, the last one short, computed one
+            // at a time, and 2 and 3 at once on threads of their own
             let blocks = run(&args, Some(4));
             assert_eq!(one, blocks, "{args:?}");
+            for n in [1, 2, 3] {
+                assert_eq!(
+                    one,
+                    run_on(&args, Some(4), Some(n)),
+                    "{args:?} on {n} threads"
+                );
+            }
             if format == "json" {
                 let v: serde_json::Value = serde_json::from_str(&blocks.0).unwrap();
                 assert_eq!(v["rows"].as_array().unwrap().len(), 24);
@@ -164,11 +180,12 @@ fn unknown_or_repeated_columns_are_refused_by_name() {
 /// The peak resident memory (kB) of the command, its stdout counted (the
 /// child is reaped by `wait4`, which also gives its resource usage).
 #[allow(clippy::zombie_processes)]
-fn peak_kb(args: &[&str], block: usize) -> (i64, usize) {
+fn peak_kb(args: &[&str], block: usize, threads: usize) -> (i64, usize) {
     let bin = assert_cmd::cargo::cargo_bin("cylroll");
     let mut child = std::process::Command::new(bin)
         .args(args)
         .env("CYLROLL_BLOCK_ROWS", block.to_string())
+        .env("CYLROLL_THREADS", threads.to_string())
         .stdout(Stdio::piped())
         .stderr(Stdio::null())
         .spawn()
@@ -197,21 +214,35 @@ fn peak_kb(args: &[&str], block: usize) -> (i64, usize) {
 #[test]
 fn memory_stays_bounded_however_many_rows() {
     // 24000 rows of every column: held at once they took ~9 kB each
-    // (over 200 MB); in blocks of 500 the process stays far below
-    let args = [
-        "trajectory",
-        "--theta0",
-        "1/10",
-        "--t-end",
-        "5",
-        "--steps",
-        "23999",
-        "--digits",
-        "20",
-        "--format",
-        "csv",
-    ];
-    let (kb, bytes) = peak_kb(&args, 500);
-    assert!(bytes > 24000 * 21 * 20, "{bytes} bytes printed");
-    assert!(kb < 80_000, "peak {kb} kB for 24000 rows");
+    // (over 200 MB); in blocks of 500 the process stays far below, one
+    // block at a time or two at once (each on its thread, with its own
+    // heap: about 25 MB more), and 20000 more rows add little
+    let args = |steps: &'static str| {
+        [
+            "trajectory",
+            "--theta0",
+            "1/10",
+            "--t-end",
+            "5",
+            "--steps",
+            steps,
+            "--digits",
+            "20",
+            "--format",
+            "csv",
+        ]
+    };
+    for (threads, limit) in [(1, 80_000), (2, 110_000)] {
+        let (kb, bytes) = peak_kb(&args("23999"), 500, threads);
+        assert!(bytes > 24000 * 21 * 20, "{bytes} bytes printed");
+        assert!(
+            kb < limit,
+            "peak {kb} kB for 24000 rows on {threads} threads"
+        );
+        let (kb_small, _) = peak_kb(&args("3999"), 500, threads);
+        assert!(
+            kb < kb_small + 25_000,
+            "peak {kb} kB for 24000 rows against {kb_small} kB for 4000 on {threads} threads"
+        );
+    }
 }

@@ -153,30 +153,69 @@ pub fn trajectory_in_blocks(
     let chunks: Vec<&[Exact]> = times.chunks(block).collect();
     // the last block first: it follows the motion to the last time, so a
     // time past the end (or any other refusal of the motion) is found
-    // before the other blocks are computed
+    // before the other blocks are sunk (with the first of them, on a
+    // machine with more than one core)
     let Some((last, rest)) = chunks.split_last() else {
         return trajectory_of(model, times, opts, columns);
     };
-    let last_block = match trajectory_block(model, last, opts, columns) {
-        Ok(b) => b,
-        Err(e @ Error::InvalidParameter { .. }) if !rest.is_empty() => {
-            return Err(first_refused_time(model, times, opts, columns).unwrap_or(e))
-        }
-        Err(e) => return Err(e),
-    };
+    // the blocks share nothing: as many at once as the machine has cores,
+    // each on a thread of its own (with the caller's cancellation flag),
+    // handed to the sink in order; memory grows by that many blocks
+    let order: Vec<&[Exact]> = std::iter::once(*last).chain(rest.iter().copied()).collect();
+    let width = block_threads();
+    let flag = crate::cancel::current();
+    let mut last_block = None;
     let mut row_notes = Vec::new();
-    let mut drift = last_block.drift.clone();
-    for chunk in rest {
+    let mut drift = None;
+    for (w, window) in order.chunks(width).enumerate() {
         crate::cancel::check()?;
-        let b = trajectory_block(model, chunk, opts, columns)?;
-        row_notes.extend(b.row_notes);
-        // the energy balance as held over every block's rows
-        drift = match (drift, b.drift) {
-            (Some(a), Some(d)) => Some(if d.0 > a.0 { d } else { a }),
-            (a, d) => a.or(d),
+        let blocks: Vec<Result<Block>> = if window.len() == 1 {
+            vec![trajectory_block(model, window[0], opts, columns)]
+        } else {
+            std::thread::scope(|s| {
+                let handles: Vec<_> = window
+                    .iter()
+                    .map(|chunk| {
+                        let flag = flag.clone();
+                        s.spawn(move || {
+                            if let Some(f) = flag {
+                                crate::cancel::install(f);
+                            }
+                            trajectory_block(model, chunk, opts, columns)
+                        })
+                    })
+                    .collect();
+                handles
+                    .into_iter()
+                    .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+                    .collect()
+            })
         };
-        sink(chunk, b.ans)?;
+        let mut blocks = blocks.into_iter();
+        if w == 0 {
+            let b = match blocks.next().expect("the last block") {
+                Ok(b) => b,
+                Err(e @ Error::InvalidParameter { .. }) if !rest.is_empty() => {
+                    return Err(first_refused_time(model, times, opts, columns).unwrap_or(e))
+                }
+                Err(e) => return Err(e),
+            };
+            drift = b.drift.clone();
+            last_block = Some(b);
+        }
+        let chunks = if w == 0 { &window[1..] } else { window };
+        for (chunk, b) in chunks.iter().zip(blocks) {
+            let b = b?;
+            row_notes.extend(b.row_notes);
+            // the energy balance as held over every block's rows
+            drift = match (drift, b.drift) {
+                (Some(a), Some(d)) => Some(if d.0 > a.0 { d } else { a }),
+                (a, d) => a.or(d),
+            };
+            sink(chunk, b.ans)?;
+        }
     }
+    let last_block = last_block.expect("the first window holds the last block");
     // the head: the last block's answer without its rows (not cloned)
     let mut last_ans = last_block.ans;
     let rows = std::mem::take(&mut last_ans.rows);
@@ -192,6 +231,16 @@ pub fn trajectory_in_blocks(
         drift,
     }
     .finish())
+}
+
+/// How many blocks of a long table are computed at once: the machine's
+/// cores (at most 8; `CYLROLL_THREADS` sets it, 1 for one at a time).
+fn block_threads() -> usize {
+    std::env::var("CYLROLL_THREADS")
+        .ok()
+        .and_then(|v| v.trim().parse::<usize>().ok())
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .clamp(1, 8)
 }
 
 /// [`trajectory`]'s answer, its notes on single rows (a time that cannot be
