@@ -412,7 +412,7 @@ mod tests {
                     assert_eq!(rug::Integer::from(u), mi, "m {m:?} k {k} bx {bx}");
                 }
                 None => assert!(
-                    mi.significant_bits() >= 126,
+                    mi.significant_bits() >= 128,
                     "declined m {m:?} k {k} bx {bx}"
                 ),
             }

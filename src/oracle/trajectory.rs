@@ -177,17 +177,26 @@ pub fn trajectory_in_blocks(
                     .iter()
                     .map(|chunk| {
                         let flag = flag.clone();
-                        s.spawn(move || {
-                            if let Some(f) = flag {
-                                crate::cancel::install(f);
-                            }
-                            trajectory_block(model, chunk, opts, columns)
-                        })
+                        // the stack the Python package gives its worker
+                        // (MPFR's temporaries at thousands of digits)
+                        std::thread::Builder::new()
+                            .stack_size(64 << 20)
+                            .spawn_scoped(s, move || {
+                                if let Some(f) = flag {
+                                    crate::cancel::install(f);
+                                }
+                                trajectory_block(model, chunk, opts, columns)
+                            })
                     })
                     .collect();
                 handles
                     .into_iter()
-                    .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+                    .map(|h| match h {
+                        Ok(h) => h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)),
+                        Err(e) => Err(Error::not_physical(format!(
+                            "internal: cannot start a thread for a block of rows: {e}"
+                        ))),
+                    })
                     .collect()
             })
         };

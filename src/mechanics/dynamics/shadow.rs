@@ -16,14 +16,18 @@ use super::Dyn;
 use crate::model::{Contact, Floor};
 use rug::Float;
 
-/// A value in binary64 with its derivative in δ and a bound on the
-/// roundings it carries, in units of 2^−p.
+/// A value in binary64 with its derivative in δ, the size of the terms
+/// that derivative sums (binary64's own error in it is a few units of 2^−53
+/// of that size: a derivative that cancels is known only to it), and a
+/// bound on the roundings it carries at p bits, in units of 2^−p.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sh {
     /// The value.
     pub v: f64,
     /// d(value)/dδ.
     pub d: f64,
+    /// The sum of the magnitudes of the terms of `d`.
+    pub m: f64,
     /// The roundings' bound, in units of 2^−p.
     pub e: f64,
 }
@@ -35,7 +39,18 @@ impl Sh {
         Sh {
             v,
             d: 0.0,
+            m: 0.0,
             e: v.abs(),
+        }
+    }
+
+    /// A constant with a rounding bound `e` of its own.
+    fn constant(v: f64, e: f64) -> Self {
+        Sh {
+            v,
+            d: 0.0,
+            m: 0.0,
+            e,
         }
     }
 
@@ -43,6 +58,7 @@ impl Sh {
     const ZERO: Sh = Sh {
         v: 0.0,
         d: 0.0,
+        m: 0.0,
         e: 0.0,
     };
 
@@ -51,6 +67,7 @@ impl Sh {
         Sh {
             v,
             d: self.d + o.d,
+            m: self.m + o.m,
             e: self.e + o.e + v.abs(),
         }
     }
@@ -60,6 +77,7 @@ impl Sh {
         Sh {
             v,
             d: self.d - o.d,
+            m: self.m + o.m,
             e: self.e + o.e + v.abs(),
         }
     }
@@ -69,6 +87,7 @@ impl Sh {
         Sh {
             v,
             d: prod(self.d, o.v) + prod(self.v, o.d),
+            m: prod(self.m, o.v.abs()) + prod(self.v.abs(), o.m),
             e: self.e * o.v.abs() + o.e * self.v.abs() + v.abs(),
         }
     }
@@ -78,6 +97,7 @@ impl Sh {
         Sh {
             v,
             d: (self.d - prod(v, o.d)) / o.v,
+            m: (self.m + prod(v.abs(), o.m)) / o.v.abs(),
             e: (self.e + v.abs() * o.e) / o.v.abs() + v.abs(),
         }
     }
@@ -90,6 +110,7 @@ impl Sh {
         Sh {
             v,
             d: half(self.d),
+            m: half(self.m),
             e: half(self.e) + v,
         }
     }
@@ -99,6 +120,7 @@ impl Sh {
         Sh {
             v: self.v * k,
             d: self.d * k,
+            m: self.m * k.abs(),
             e: self.e * k.abs(),
         }
     }
@@ -107,13 +129,20 @@ impl Sh {
         Sh {
             v: -self.v,
             d: -self.d,
+            m: self.m,
             e: self.e,
         }
     }
 
     /// Whether every part is finite.
     pub fn is_finite(&self) -> bool {
-        self.v.is_finite() && self.d.is_finite() && self.e.is_finite()
+        self.v.is_finite() && self.d.is_finite() && self.m.is_finite() && self.e.is_finite()
+    }
+
+    /// A bound on |d(value)/dδ|: the derivative and binary64's error in it
+    /// (2^−45 of its terms' size: its few dozen operations' roundings).
+    pub fn d_bound(&self) -> f64 {
+        self.d.abs() + self.m * 2f64.powi(-45)
     }
 }
 
@@ -161,16 +190,8 @@ impl Consts {
         let th0 = c(&dy.th0);
         let (s0v, c0v) = (dy.s0.to_f64(), dy.c0.to_f64());
         // sin θ0 and cos θ0 of the rounded θ0, each rounded
-        let s0 = Sh {
-            v: s0v,
-            d: 0.0,
-            e: c0v.abs() * th0.e + s0v.abs(),
-        };
-        let c0 = Sh {
-            v: c0v,
-            d: 0.0,
-            e: s0v.abs() * th0.e + c0v.abs(),
-        };
+        let s0 = Sh::constant(s0v, c0v.abs() * th0.e + s0v.abs());
+        let c0 = Sh::constant(c0v, s0v.abs() * th0.e + c0v.abs());
         let q = [c(&dy.q[0]), c(&dy.q[1]), c(&dy.q[2])];
         let k0 = k_of(&q, c0);
         let h0 = if dy.h0.is_zero() {
@@ -178,11 +199,7 @@ impl Consts {
         } else {
             // K(θ0) θ̇0 θ̇0, θ̇0 recovered from h0 (its own rounding counted)
             let td0 = (dy.h0.to_f64() / k0.v).sqrt();
-            let td0 = Sh {
-                v: td0,
-                d: 0.0,
-                e: td0,
-            };
+            let td0 = Sh::constant(td0, td0);
             k0.mul(td0).mul(td0)
         };
         let (g, r) = (c(&dy.g), c(&dy.r));
@@ -228,6 +245,7 @@ pub fn columns(dy: &Dyn, delta: f64, seed: f64, t: f64, t_rounded: bool) -> [Sh;
     let dl = Sh {
         v: delta,
         d: seed,
+        m: seed.abs(),
         e: 0.0,
     };
     // --- Dyn::trig
@@ -236,11 +254,13 @@ pub fn columns(dy: &Dyn, delta: f64, seed: f64, t: f64, t_rounded: bool) -> [Sh;
     let sh = Sh {
         v: hs,
         d: hc * half.d,
+        m: hc.abs() * half.m,
         e: hs.abs(),
     };
     let ch = Sh {
         v: hc,
         d: -hs * half.d,
+        m: hs.abs() * half.m,
         e: hc.abs(),
     };
     let sm = kc.s0.mul(ch).add(kc.c0.mul(sh));
@@ -271,11 +291,7 @@ pub fn columns(dy: &Dyn, delta: f64, seed: f64, t: f64, t_rounded: bool) -> [Sh;
     }
     let ds = cm.mul(sh).scale(2.0);
     // --- Dyn::positions_phi2: x1, φ1, (ψ2 − ψ0) + δ
-    let tt = Sh {
-        v: t,
-        d: 0.0,
-        e: if t_rounded { t.abs() } else { 0.0 },
-    };
+    let tt = Sh::constant(t, if t_rounded { t.abs() } else { 0.0 });
     let mut pos = [Sh::ZERO; 3];
     for (i, o) in pos.iter_mut().enumerate() {
         *o = kc.gamma[i]
