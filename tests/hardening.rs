@@ -1386,24 +1386,26 @@ fn rows_a_hair_from_an_event_are_the_state_at_their_own_time() {
             &star + rug::Float::with_val(400, rug::Float::parse(off).unwrap()),
         );
         let t = to_sig(&t, 70);
+        // the column `col` of the row at t, printed with `cols` at `d` digits
+        let row = |d: &str, cols: &str, col: &str| {
+            row_value(
+                &[
+                    "--theta0",
+                    "1/10",
+                    "--branch",
+                    branch,
+                    "--times",
+                    &t,
+                    "--digits",
+                    d,
+                    "--columns",
+                    cols,
+                ],
+                col,
+            )
+        };
         for col in ["theta", "theta_ddot", "N12"] {
-            let at = |d: &str| {
-                row_value(
-                    &[
-                        "--theta0",
-                        "1/10",
-                        "--branch",
-                        branch,
-                        "--times",
-                        &t,
-                        "--digits",
-                        d,
-                        "--columns",
-                        &format!("t,{col},mode"),
-                    ],
-                    col,
-                )
-            };
+            let at = |d: &str| row(d, &format!("t,{col},mode"), col);
             let hi = rug::Float::with_val(400, rug::Float::parse(at("45")).unwrap());
             for d in [20u32, 30] {
                 let want = if hi.is_zero() {
@@ -1418,21 +1420,7 @@ fn rows_a_hair_from_an_event_are_the_state_at_their_own_time() {
                 );
             }
         }
-        let m = row_value(
-            &[
-                "--theta0",
-                "1/10",
-                "--branch",
-                branch,
-                "--times",
-                &t,
-                "--digits",
-                "30",
-                "--columns",
-                "t,mode",
-            ],
-            "mode",
-        );
+        let m = row("30", "t,mode", "mode");
         assert_eq!(m, mode, "{branch} t* {off}");
     }
 }
