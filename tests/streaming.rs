@@ -246,3 +246,39 @@ fn memory_stays_bounded_however_many_rows() {
         );
     }
 }
+
+/// The two knobs of a long table, `CYLROLL_THREADS` and
+/// `CYLROLL_BLOCK_ROWS`, set to a value they cannot take: a one-line error
+/// naming the variable, what was given and what is allowed, exit 2, nothing
+/// printed (they were ignored, the defaults taken silently).
+#[test]
+fn bad_block_knobs_are_refused_by_name() {
+    let args = [
+        "trajectory",
+        "--theta0",
+        "1/10",
+        "--t-end",
+        "1",
+        "--steps",
+        "3",
+    ];
+    for (var, value) in [
+        ("CYLROLL_THREADS", "two"),
+        ("CYLROLL_THREADS", "0"),
+        ("CYLROLL_THREADS", "65"),
+        ("CYLROLL_BLOCK_ROWS", "-3"),
+        ("CYLROLL_BLOCK_ROWS", "0"),
+    ] {
+        let out = cyl().args(args).env(var, value).output().unwrap();
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{var}={value}: {err}");
+        assert!(out.stdout.is_empty(), "{var}={value}");
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(
+            err.contains(var)
+                && err.contains(&format!("\"{value}\""))
+                && err.contains("whole number"),
+            "{err}"
+        );
+    }
+}

@@ -18,12 +18,25 @@ use std::io::{Read, Seek, SeekFrom, Write};
 /// Rows per block: the rows of one block are held in memory at both
 /// working precisions (a few kilobytes each); `CYLROLL_BLOCK_ROWS`
 /// overrides it (tests use small blocks).
-fn block_rows() -> usize {
-    std::env::var("CYLROLL_BLOCK_ROWS")
-        .ok()
-        .and_then(|s| s.parse::<usize>().ok())
-        .filter(|&n| n > 0)
-        .unwrap_or(2000)
+///
+/// Errors: `CYLROLL_BLOCK_ROWS` set to anything but a whole number from 1
+/// to 10^6.
+fn block_rows() -> Result<usize> {
+    match std::env::var("CYLROLL_BLOCK_ROWS") {
+        Err(_) => Ok(2000),
+        Ok(v) => v
+            .trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=1_000_000).contains(n))
+            .ok_or_else(|| {
+                Error::invalid(
+                    "CYLROLL_BLOCK_ROWS",
+                    &v,
+                    "a whole number from 1 to 1000000 (the rows of a block of a long table)",
+                )
+            }),
+    }
 }
 
 /// Rendered text held in memory up to this many bytes, then in a file.
@@ -147,7 +160,7 @@ pub fn trajectory(
     let mut spill = Spill::new();
     let mut rigor = prove::RowsProof::default();
     let mut head =
-        oracle::trajectory_in_blocks(model, times, opts, columns, block_rows(), |t, mut a| {
+        oracle::trajectory_in_blocks(model, times, opts, columns, block_rows()?, |t, mut a| {
             if rigorous {
                 rigor.block(model, t, &mut a);
             }

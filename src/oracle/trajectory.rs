@@ -162,7 +162,7 @@ pub fn trajectory_in_blocks(
     // each on a thread of its own (with the caller's cancellation flag),
     // handed to the sink in order; memory grows by that many blocks
     let order: Vec<&[Exact]> = std::iter::once(*last).chain(rest.iter().copied()).collect();
-    let width = block_threads();
+    let width = block_threads()?;
     let flag = crate::cancel::current();
     let mut last_block = None;
     let mut row_notes = Vec::new();
@@ -243,13 +243,25 @@ pub fn trajectory_in_blocks(
 }
 
 /// How many blocks of a long table are computed at once: the machine's
-/// cores (at most 8; `CYLROLL_THREADS` sets it, 1 for one at a time).
-fn block_threads() -> usize {
-    std::env::var("CYLROLL_THREADS")
-        .ok()
-        .and_then(|v| v.trim().parse::<usize>().ok())
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-        .clamp(1, 8)
+/// cores (at most 8), or `CYLROLL_THREADS` (1 for one at a time).
+///
+/// Errors: `CYLROLL_THREADS` set to anything but a whole number from 1 to 64.
+fn block_threads() -> Result<usize> {
+    match std::env::var("CYLROLL_THREADS") {
+        Err(_) => Ok(std::thread::available_parallelism().map_or(1, |n| n.get().min(8))),
+        Ok(v) => v
+            .trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=64).contains(n))
+            .ok_or_else(|| {
+                Error::invalid(
+                    "CYLROLL_THREADS",
+                    &v,
+                    "a whole number from 1 to 64 (the blocks of a long table computed at once)",
+                )
+            }),
+    }
 }
 
 /// [`trajectory`]'s answer, its notes on single rows (a time that cannot be
