@@ -477,7 +477,13 @@ where
                 {
                     Ok(j) => out.push(j.verified(name, precs, || eb.value)),
                     Err(reached) => {
-                        let diff = Float::with_val(precs.1, &ea.value - &eb.value).abs();
+                        // a value the higher run computed alone was not
+                        // compared: its error estimate is its whole bound
+                        let diff = if eb.diff_weight == 0 {
+                            "not compared (the higher precision's alone)".to_string()
+                        } else {
+                            short(&Float::with_val(precs.1, &ea.value - &eb.value).abs())
+                        };
                         row_failed = Some((
                             if label_rows {
                                 format!("{name} (row {r})")
@@ -487,7 +493,7 @@ where
                             reached,
                             precs,
                             to_sig(&eb.value, 12),
-                            short(&diff),
+                            diff,
                             short(&eb.err),
                         ));
                         break;
