@@ -213,10 +213,14 @@ fn peak_kb(args: &[&str], block: usize, threads: usize) -> (i64, usize) {
 
 #[test]
 fn memory_stays_bounded_however_many_rows() {
-    // 24000 rows of every column: held at once they took ~9 kB each
-    // (over 200 MB); in blocks of 500 the process stays far below, one
-    // block at a time or two at once (each on its thread, with its own
-    // heap: about 25 MB more), and 20000 more rows add little
+    // Held at once, the rows of every column took ~9 kB each: 48000 rows
+    // over 400 MB. In blocks of 500 the process holds one block at a time
+    // (or two at once, each on its thread with its own heap), the times
+    // asked (~130 B each) and at most 8 MB of rendered text, so 44000 more
+    // rows add a few tens of MB of resident memory. The bounds leave room
+    // for the allocator's retention, which varies from run to run on two
+    // threads (80–115 MB seen for the same table), and still fail by far
+    // if the rows were held.
     let args = |steps: &'static str| {
         [
             "trajectory",
@@ -232,17 +236,17 @@ fn memory_stays_bounded_however_many_rows() {
             "csv",
         ]
     };
-    for (threads, limit) in [(1, 80_000), (2, 110_000)] {
-        let (kb, bytes) = peak_kb(&args("23999"), 500, threads);
-        assert!(bytes > 24000 * 21 * 20, "{bytes} bytes printed");
+    for threads in [1, 2] {
+        let (kb, bytes) = peak_kb(&args("47999"), 500, threads);
+        assert!(bytes > 48000 * 21 * 20, "{bytes} bytes printed");
         assert!(
-            kb < limit,
-            "peak {kb} kB for 24000 rows on {threads} threads"
+            kb < 250_000,
+            "peak {kb} kB for 48000 rows on {threads} threads"
         );
         let (kb_small, _) = peak_kb(&args("3999"), 500, threads);
         assert!(
-            kb < kb_small + 25_000,
-            "peak {kb} kB for 24000 rows against {kb_small} kB for 4000 on {threads} threads"
+            kb < kb_small + 100_000,
+            "peak {kb} kB for 48000 rows against {kb_small} kB for 4000 on {threads} threads"
         );
     }
 }

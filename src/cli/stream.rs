@@ -83,9 +83,11 @@ impl Spill {
         }
     }
 
+    /// Appends `s`; what is held goes to the file first when `s` would take
+    /// it past [`SPILL_BYTES`], so the text in memory never outgrows that
+    /// (pushed and then flushed, it doubled its buffer to twice as much).
     fn push(&mut self, s: &str) -> Result<()> {
-        self.mem.push_str(s);
-        if self.mem.len() >= SPILL_BYTES {
+        if !self.mem.is_empty() && self.mem.len() + s.len() > SPILL_BYTES {
             if self.file.is_none() {
                 self.file = Some(temp_file()?);
             }
@@ -94,6 +96,7 @@ impl Spill {
             }
             self.mem.clear();
         }
+        self.mem.push_str(s);
         Ok(())
     }
 
