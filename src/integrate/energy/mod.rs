@@ -693,7 +693,7 @@ impl Route {
     ) -> Result<Option<Vec<(Float, Float)>>> {
         let pe = p + extra;
         let (ds, _) = self.delta_s(pe)?;
-        let Some(inv) = self.engine(pe)?.inverse(&ds) else {
+        let Some(inv) = self.engine(pe)?.inverse(&ds, times.len()) else {
             return Ok(None);
         };
         let mut out = Vec::with_capacity(times.len());
