@@ -360,6 +360,63 @@ fn chebyshev_and_taylor_trajectories_agree() {
     assert!(compared >= 120, "compared {compared}");
 }
 
+/// A long table at 200 digits finds its rows by the Taylor run (both
+/// working precisions below 800 bits, more than 250 rows: the run's fixed
+/// part is cheaper than an inversion per row there), a few of its times
+/// alone by the Chebyshev inversion: every value the same text, on the main
+/// case from rest and on a slipping floor from a moving start.
+#[test]
+fn a_long_table_by_the_taylor_run_is_the_few_times_by_inversion() {
+    use cylroll::integrate::energy::inversion_pays;
+    use cylroll::numeric::verify::precisions;
+    let (p1, p2) = precisions(200, 0);
+    assert!(!inversion_pays(p1, 300) && !inversion_pays(p2, 300));
+    assert!(inversion_pays(p1, 4) && inversion_pays(p2, 4));
+    let moving = Start {
+        theta0: q("1/5"),
+        thetadot0: Rational::from((1, 4)),
+        omega0: Rational::new(),
+    };
+    let models = [
+        Ideal::paper_default(q("1/10")),
+        Ideal::new(
+            Params::identical_solid(),
+            Floor::Slip,
+            Contact::Roll,
+            moving,
+        )
+        .unwrap(),
+    ];
+    for (mi, m) in models.iter().enumerate() {
+        let ts = {
+            let mut o = Oracle::new(m, 20).unwrap();
+            o.separation().unwrap().t_s.expect("finite").value.to_f64()
+        };
+        // 300 times on [0, 0.95 t_s], each a multiple of 1/1000
+        let step = (ts * 0.95 / 300.0 * 1000.0).floor() as i64;
+        let times: Vec<Exact> = (0..300)
+            .map(|i| Exact::rational(Rational::from((i * step, 1000))))
+            .collect();
+        let long = Oracle::new(m, 200).unwrap().trajectory(&times).unwrap();
+        let few_at = [1usize, 77, 150, 299];
+        let few_times: Vec<Exact> = few_at.iter().map(|&i| times[i].clone()).collect();
+        let few = Oracle::new(m, 200).unwrap().trajectory(&few_times).unwrap();
+        let mut compared = 0;
+        for (&i, row) in few_at.iter().zip(&few) {
+            for (a, b) in long[i].iter().zip(row) {
+                assert_eq!(a.text, b.text, "model {mi}, row {i}, {}", a.name);
+                if a.digits == 200 {
+                    compared += 1;
+                }
+            }
+        }
+        assert!(
+            compared >= 4 * 10,
+            "model {mi}: {compared} values of 200 digits"
+        );
+    }
+}
+
 /// From rest at θ0 = 1e-100 the motion stays linear for a long time:
 /// θ(t) = θ0 cosh(λt), λ² = θ̈/θ at the top = 6/17 for identical solid
 /// cylinders, with a relative correction O(θ²) far below the digits asked.

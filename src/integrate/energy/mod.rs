@@ -37,6 +37,31 @@ use std::collections::HashMap;
 /// like its square times the interpolant's size.
 pub const TRAJECTORY_CHEB_MIN_BITS: u32 = 600;
 
+/// Whether `rows` times of a rolling phase at working precision `p` are
+/// found by the Chebyshev inversion rather than by the Taylor run (from a
+/// start away from the top). The Taylor run costs a fixed part (the run to
+/// the last time, like p³) and little per row (a Horner sum); the inversion
+/// little to build and about two Clenshaw sums of ~p/5 terms per row. So
+/// from [`TRAJECTORY_CHEB_MIN_BITS`] on the inversion wins for a few rows
+/// and the Taylor run for many, up to a precision where the run's fixed
+/// part outgrows any table. Measured, CPU of whole tables (2026-11-27):
+/// 10 rows of the ideal main case at 200 and 300 digits 0.07 and 0.11 s
+/// by inversion, 0.19 and 0.68 s by the Taylor run; 1000 rows 0.58 and
+/// 0.98 s against 0.28 and 0.84 s; with friction (μ = 0.3, its rolling
+/// phase), 1000 rows at 200, 250, 300, 400 and 600 digits 0.61, 0.86, 1.18,
+/// 2.06 and 4.38 s by inversion against 0.36, 0.72, 1.11, 2.82 and 8.63 s
+/// (the working precisions: 689 and 807 bits at 200 digits, 1021 and 1181
+/// at 300, 1353 and 1555 at 400).
+pub fn inversion_pays(p: u32, rows: usize) -> bool {
+    let most_rows = match p {
+        0..TRAJECTORY_CHEB_MIN_BITS => return false,
+        TRAJECTORY_CHEB_MIN_BITS..900 => 250,
+        900..1250 => 800,
+        _ => return true,
+    };
+    rows <= most_rows
+}
+
 /// Below this |θ0| the trajectory takes the Chebyshev route at every
 /// precision: its pieces grade towards the start's singularity, where a
 /// Taylor run needs ever shorter steps (θ0 = 1e-100 failed after 26 s).
@@ -493,7 +518,7 @@ impl Route {
         // top at any (its pieces are graded towards the start; the Taylor
         // run crawls there)
         let near_top = self.work.start().theta0.to_f64().abs() < NEAR_TOP;
-        let by_cheb = p >= TRAJECTORY_CHEB_MIN_BITS || near_top;
+        let by_cheb = near_top || inversion_pays(p, times.len());
         let cheb = if by_cheb {
             self.deltas_cheb(times, tt_all, p, extra)?
         } else {
@@ -501,7 +526,18 @@ impl Route {
         };
         let mut out = match cheb {
             Some(out) => out,
-            None => self.deltas_taylor(times, tt_all, i_max, p, extra, digits)?,
+            None => match self.deltas_taylor(times, tt_all, i_max, p, extra, digits) {
+                Ok(out) => out,
+                // the Taylor run taken for its speed failed: the inversion
+                // it stood in for
+                Err(e) if !by_cheb && p >= TRAJECTORY_CHEB_MIN_BITS => {
+                    match self.deltas_cheb(times, tt_all, p, extra)? {
+                        Some(out) => out,
+                        None => return Err(e),
+                    }
+                }
+                Err(e) => return Err(e),
+            },
         };
         let t_last = Float::with_val(tq, &tt_all[i_max]);
         let (d, eps) = out[i_max].clone();
