@@ -530,10 +530,16 @@ impl Route {
                 Ok(out) => out,
                 // the Taylor run taken for its speed failed: the inversion
                 // it stood in for
-                Err(e) if !by_cheb && p >= TRAJECTORY_CHEB_MIN_BITS => {
-                    match self.deltas_cheb(times, tt_all, p, extra)? {
-                        Some(out) => out,
-                        None => return Err(e),
+                Err(e)
+                    if !by_cheb
+                        && p >= TRAJECTORY_CHEB_MIN_BITS
+                        && !matches!(e, Error::Cancelled) =>
+                {
+                    match self.deltas_cheb(times, tt_all, p, extra) {
+                        Ok(Some(out)) => out,
+                        Err(c @ Error::Cancelled) => return Err(c),
+                        // the Taylor run's refusal says more
+                        _ => return Err(e),
                     }
                 }
                 Err(e) => return Err(e),

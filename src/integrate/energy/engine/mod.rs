@@ -190,8 +190,9 @@ impl Engine {
     /// trajectory's rows come from (its certificate at the last time):
     /// tanh-sinh (or a built Gauss–Legendre rule) — or, from a start near the
     /// top at 256 bits and more, where the split tanh-sinh can misjudge its
-    /// error, Chebyshev interpolation on pieces graded differently (ρ 4 each
-    /// instead of 3: other points, other sizes). The engine's settings are
+    /// error, Chebyshev interpolation on pieces graded differently (ρ 4 each;
+    /// the inversion's are cut for ρ 3, 8, 16 or 32: other points, other
+    /// sizes). The engine's settings are
     /// left as they were.
     pub fn time_check(&mut self, delta: &Float, high: bool, near_top: bool) -> (Float, Float) {
         let saved = (self.use_cheb, self.cheb_target);
@@ -327,6 +328,20 @@ mod tests {
     use super::*;
     use crate::exact::Exact;
 
+    /// From rest at θ0 = 3/10, and moving at θ0 = 1/5 with θ̇0 = 1/4 (where
+    /// the integrand in v carries a factor v).
+    pub(super) fn rest_and_moving_starts() -> [crate::model::Start; 2] {
+        let q = |s: &str| Exact::parse("x", s, false).unwrap();
+        [
+            crate::model::Start::rest(q("3/10")),
+            crate::model::Start {
+                theta0: q("1/5"),
+                thetadot0: rug::Rational::from((1, 4)),
+                omega0: rug::Rational::new(),
+            },
+        ]
+    }
+
     /// Bench T1 (Arb), 200 digits.
     const T1: &str = "4.92431546824328750958943890767440975619729716583700828514899461093135589746020777297976446424524230206377179649802708141731744155015356680000186295700477357023137793369600976317464740174177433799554600220397931327911392476381406432533800713103931733926945527301995113637198679903750992152105290692480683594699937880616";
 
@@ -382,17 +397,9 @@ mod tests {
                 "{p}: {err:e}"
             );
         }
-        use crate::model::{Params, Start, VARIANTS};
-        let q = |s: &str| Exact::parse("x", s, false).unwrap();
+        use crate::model::{Params, VARIANTS};
         for (floor, contact) in VARIANTS {
-            for start in [
-                Start::rest(q("3/10")),
-                Start {
-                    theta0: q("1/5"),
-                    thetadot0: rug::Rational::from((1, 4)),
-                    omega0: rug::Rational::new(),
-                },
-            ] {
+            for start in rest_and_moving_starts() {
                 let model = Ideal::new(Params::identical_solid(), floor, contact, start).unwrap();
                 let red = Reduced::new(&model).unwrap();
                 let p = 300;
