@@ -103,21 +103,25 @@ impl Engine {
         }
         let p = self.prec();
         let dsig = self.half.sigma_of(delta_end);
-        let rho = inverse_rho(inversions);
+        // pieces of the table's ρ; where they would be more than
+        // TABLE_PIECES (a start near the top grades them towards it), of
+        // half that ρ, down to 8, then the default pieces (the fewest
+        // terms; never ρ 4, the certificate's own pieces near the top). A
+        // refusal of `breakpoints` costs only f64 arithmetic.
         let saved = self.cheb_target;
-        self.cheb_target = self.cheb_target.max(rho);
-        let fits = if rho > saved {
-            self.cheb_fit_graded(&dsig, rho.max(WHOLE), TABLE_PIECES)
-        } else {
-            self.cheb_fit_graded(&dsig, WHOLE, MAX_PIECES)
-        };
-        self.cheb_target = saved;
-        // more pieces of that ρ than TABLE_PIECES (a start near the top
-        // grades them towards it): the fewest terms instead
+        let want = inverse_rho(inversions);
+        let mut fits = None;
+        for rho in [32.0, 16.0, 8.0] {
+            if rho > want || rho <= saved || fits.is_some() {
+                continue;
+            }
+            self.cheb_target = rho;
+            fits = self.cheb_fit_graded(&dsig, rho.max(WHOLE), TABLE_PIECES);
+            self.cheb_target = saved;
+        }
         let fits = match fits {
             Some(f) => f,
-            None if rho > self.cheb_target => self.cheb_fit(&dsig)?,
-            None => return None,
+            None => self.cheb_fit(&dsig)?,
         };
         // T's error at v in piece i: the interpolants' errors over the
         // pieces up to i (∫|f − p| over [0, v]) and the roundings of
@@ -546,11 +550,40 @@ mod tests {
         }
     }
 
-    /// From very near the top the pieces of a large ρ would pass
-    /// [`MAX_PIECES`] (graded towards the start); the inverse then takes the
-    /// default pieces instead of declining.
+    /// Near the top the pieces are graded towards the start, and the more
+    /// of them the larger ρ: from θ0 = 1e-10 those of ρ 32 would pass
+    /// [`TABLE_PIECES`] and the table's inverse takes ρ 16 (more pieces than
+    /// the default's, at most TABLE_PIECES), agreeing with the default
+    /// pieces within the bounds.
     #[test]
-    fn a_start_near_the_top_falls_back_to_the_default_pieces() {
+    fn a_start_near_the_top_takes_a_smaller_rho() {
+        let m = Ideal::paper_default(Exact::parse("t", "1e-10", false).unwrap());
+        let red = Reduced::new(&m).unwrap();
+        let p = 700;
+        let mut e = Engine::new(&m, &red, p).unwrap();
+        let d_end = Float::with_val(p, 4u32) / 5u32;
+        let one = e.inverse(&d_end, 1).expect("default pieces");
+        let many = e.inverse(&d_end, 1000).expect("pieces of a smaller ρ");
+        assert!(
+            many.pieces.len() > one.pieces.len() && many.pieces.len() <= TABLE_PIECES,
+            "{} and {} pieces",
+            many.pieces.len(),
+            one.pieces.len()
+        );
+        e.use_cheb = false;
+        let (t_end, _) = e.time(&d_end);
+        for k in 1..10u32 {
+            let t = Float::with_val(p, &t_end * k) / 10u32;
+            let ((d1, e1), (d2, e2)) = (one.delta_at(&t), many.delta_at(&t));
+            let diff = Float::with_val(p, &d1 - &d2).abs();
+            assert!(diff <= Float::with_val(p, &e1 + &e2), "t = {t:.6}");
+        }
+    }
+
+    /// From θ0 = 1e-100 even pieces of ρ 8 would pass [`TABLE_PIECES`]: the
+    /// default pieces, not a refusal.
+    #[test]
+    fn from_very_near_the_top_the_default_pieces() {
         let m = Ideal::paper_default(Exact::parse("t", "1e-100", false).unwrap());
         let red = Reduced::new(&m).unwrap();
         let p = 700;
