@@ -96,7 +96,7 @@ impl Engine {
     /// and their antiderivatives: `None` where [`Engine::cheb_fit`] declines
     /// or δ_end is beyond the half-angle form's range. `inversions`: about
     /// how many times will be inverted; the pieces are cut for them
-    /// ([`inverse_rho`]).
+    /// (`inverse_rho`).
     pub fn inverse(&mut self, delta_end: &Float, inversions: usize) -> Option<Inverse> {
         if *delta_end > self.half_limit || delta_end.is_zero() {
             return None;
