@@ -46,6 +46,7 @@ pub mod error;
 pub mod exact;
 pub mod golden;
 pub mod integrate;
+pub mod knobs;
 pub mod mechanics;
 pub mod model;
 pub mod motion;

@@ -22,21 +22,12 @@ use std::io::{Read, Seek, SeekFrom, Write};
 /// Errors: `CYLROLL_BLOCK_ROWS` set to anything but a whole number from 1
 /// to 10^6.
 fn block_rows() -> Result<usize> {
-    match std::env::var("CYLROLL_BLOCK_ROWS") {
-        Err(_) => Ok(2000),
-        Ok(v) => v
-            .trim()
-            .parse::<usize>()
-            .ok()
-            .filter(|n| (1..=1_000_000).contains(n))
-            .ok_or_else(|| {
-                Error::invalid(
-                    "CYLROLL_BLOCK_ROWS",
-                    &v,
-                    "a whole number from 1 to 1000000 (the rows of a block of a long table)",
-                )
-            }),
-    }
+    let n = cylroll::knobs::count(
+        "CYLROLL_BLOCK_ROWS",
+        1_000_000,
+        "the rows of a block of a long table",
+    )?;
+    Ok(n.unwrap_or(2000))
 }
 
 /// Rendered text held in memory up to this many bytes, then in a file.

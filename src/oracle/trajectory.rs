@@ -163,44 +163,12 @@ pub fn trajectory_in_blocks(
     // handed to the sink in order; memory grows by that many blocks
     let order: Vec<&[Exact]> = std::iter::once(*last).chain(rest.iter().copied()).collect();
     let width = block_threads()?;
-    let flag = crate::cancel::current();
     let mut last_block = None;
     let mut row_notes = Vec::new();
     let mut drift = None;
     for (w, window) in order.chunks(width).enumerate() {
         crate::cancel::check()?;
-        let blocks: Vec<Result<Block>> = if window.len() == 1 {
-            vec![trajectory_block(model, window[0], opts, columns)]
-        } else {
-            std::thread::scope(|s| {
-                let handles: Vec<_> = window
-                    .iter()
-                    .map(|chunk| {
-                        let flag = flag.clone();
-                        // the stack the Python package gives its worker
-                        // (MPFR's temporaries at thousands of digits)
-                        std::thread::Builder::new()
-                            .stack_size(64 << 20)
-                            .spawn_scoped(s, move || {
-                                if let Some(f) = flag {
-                                    crate::cancel::install(f);
-                                }
-                                trajectory_block(model, chunk, opts, columns)
-                            })
-                    })
-                    .collect();
-                handles
-                    .into_iter()
-                    .map(|h| match h {
-                        Ok(h) => h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)),
-                        Err(e) => Err(Error::not_physical(format!(
-                            "internal: cannot start a thread for a block of rows: {e}"
-                        ))),
-                    })
-                    .collect()
-            })
-        };
-        let mut blocks = blocks.into_iter();
+        let mut blocks = blocks_at_once(model, window, opts, columns).into_iter();
         if w == 0 {
             let b = match blocks.next().expect("the last block") {
                 Ok(b) => b,
@@ -242,26 +210,58 @@ pub fn trajectory_in_blocks(
     .finish())
 }
 
+/// The blocks of `window` in order, each computed on a thread of its own
+/// with the caller's cancellation flag (a window of one: on this thread).
+fn blocks_at_once(
+    model: &Model,
+    window: &[&[Exact]],
+    opts: &Options,
+    columns: &[String],
+) -> Vec<Result<Block>> {
+    if let [only] = window {
+        return vec![trajectory_block(model, only, opts, columns)];
+    }
+    let flag = crate::cancel::current();
+    std::thread::scope(|s| {
+        let handles: Vec<_> = window
+            .iter()
+            .map(|chunk| {
+                let flag = flag.clone();
+                // the stack the Python package gives its worker (MPFR's
+                // temporaries at thousands of digits)
+                std::thread::Builder::new()
+                    .stack_size(64 << 20)
+                    .spawn_scoped(s, move || {
+                        if let Some(f) = flag {
+                            crate::cancel::install(f);
+                        }
+                        trajectory_block(model, chunk, opts, columns)
+                    })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| match h {
+                Ok(h) => h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)),
+                Err(e) => Err(Error::not_physical(format!(
+                    "internal: cannot start a thread for a block of rows: {e}"
+                ))),
+            })
+            .collect()
+    })
+}
+
 /// How many blocks of a long table are computed at once: the machine's
 /// cores (at most 8), or `CYLROLL_THREADS` (1 for one at a time).
 ///
 /// Errors: `CYLROLL_THREADS` set to anything but a whole number from 1 to 64.
 fn block_threads() -> Result<usize> {
-    match std::env::var("CYLROLL_THREADS") {
-        Err(_) => Ok(std::thread::available_parallelism().map_or(1, |n| n.get().min(8))),
-        Ok(v) => v
-            .trim()
-            .parse::<usize>()
-            .ok()
-            .filter(|n| (1..=64).contains(n))
-            .ok_or_else(|| {
-                Error::invalid(
-                    "CYLROLL_THREADS",
-                    &v,
-                    "a whole number from 1 to 64 (the blocks of a long table computed at once)",
-                )
-            }),
-    }
+    let n = crate::knobs::count(
+        "CYLROLL_THREADS",
+        64,
+        "the blocks of a long table computed at once",
+    )?;
+    Ok(n.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get().min(8))))
 }
 
 /// [`trajectory`]'s answer, its notes on single rows (a time that cannot be
