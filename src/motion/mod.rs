@@ -269,12 +269,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         }
         w.out.deltas = fast.deltas;
         for pt in fast.rows {
-            if req.derived_at_high && req.run == crate::numeric::verify::Run::Low {
-                // t and θ only: no energy to balance
-                w.out.rows.push(pt);
-            } else {
-                w.push_row(pt);
-            }
+            w.push_row(pt);
         }
         for th in fast.thetas {
             w.out.thetas.push(th);

@@ -526,24 +526,22 @@ impl Route {
         };
         let mut out = match cheb {
             Some(out) => out,
-            None => match self.deltas_taylor(times, tt_all, i_max, p, extra, digits) {
-                Ok(out) => out,
-                // the Taylor run taken for its speed failed: the inversion
-                // it stood in for
-                Err(e)
-                    if !by_cheb
-                        && p >= TRAJECTORY_CHEB_MIN_BITS
-                        && !matches!(e, Error::Cancelled) =>
-                {
-                    match self.deltas_cheb(times, tt_all, p, extra) {
-                        Ok(Some(out)) => out,
-                        Err(c @ Error::Cancelled) => return Err(c),
-                        // the Taylor run's refusal says more
-                        _ => return Err(e),
+            None => self
+                .deltas_taylor(times, tt_all, i_max, p, extra, digits)
+                .or_else(|e| {
+                    // the Taylor run taken for its speed failed: the
+                    // inversion it stood in for (its own refusal says
+                    // more where that fails too; a cancellation stops)
+                    let stood_in = !by_cheb && p >= TRAJECTORY_CHEB_MIN_BITS;
+                    if !stood_in || matches!(e, Error::Cancelled) {
+                        return Err(e);
                     }
-                }
-                Err(e) => return Err(e),
-            },
+                    match self.deltas_cheb(times, tt_all, p, extra) {
+                        Ok(Some(out)) => Ok(out),
+                        Err(c @ Error::Cancelled) => Err(c),
+                        _ => Err(e),
+                    }
+                })?,
         };
         let t_last = Float::with_val(tq, &tt_all[i_max]);
         let (d, eps) = out[i_max].clone();
