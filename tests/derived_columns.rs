@@ -11,7 +11,7 @@
 //! cancellation of terms far larger than itself.
 
 use cylroll::exact::Exact;
-use cylroll::model::{Law, Model, Params, Start};
+use cylroll::model::{Ideal, Law, Model, Params, Start, VARIANTS};
 use cylroll::numeric::decimal::to_sig;
 use cylroll::numeric::verify::Verified;
 use cylroll::oracle::{self, Options};
@@ -119,21 +119,9 @@ fn times_for(m: &Model, t_unit: &str) -> Vec<Exact> {
 
 #[test]
 fn the_ideal_laws_columns_are_the_45_digit_ones_rounded() {
-    let laws = [
-        (Law::Rolling, Law::Rolling),
-        (Law::Frictionless, Law::Frictionless),
-        (Law::Frictionless, Law::Rolling),
-        (Law::Rolling, Law::Frictionless),
-        (Law::Held, Law::Rolling),
-        (Law::Held, Law::Frictionless),
-    ];
-    for (floor, contact) in laws {
-        let m = model(
-            floor.clone(),
-            contact.clone(),
-            Params::identical_solid(),
-            rest(),
-        );
+    for (floor, contact) in VARIANTS {
+        let ideal = Ideal::new(Params::identical_solid(), floor, contact, rest()).unwrap();
+        let m = Model::from_ideal(&ideal);
         let label = format!("{floor:?}/{contact:?}");
         check(&m, &times_for(&m, "1"), &label);
     }

@@ -366,13 +366,7 @@ mod tests {
     /// or zero: the ties), every k it takes, shifts either way.
     #[test]
     fn the_machine_integer_scaling_is_the_general_one() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = crate::numeric::xorshift(0x9e37_79b9_7f4a_7c15);
         let mut answered = 0;
         let mut ties = 0;
         for case in 0..40_000 {

@@ -568,11 +568,9 @@ mod tests {
     /// values near 0 and near the branch points of the functions.
     fn samples() -> Vec<Float> {
         let mut out = Vec::new();
-        let mut s: u64 = 0x9e3779b97f4a7c15;
+        let mut next = crate::numeric::xorshift(0x9e3779b97f4a7c15);
         for i in 0..300 {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
+            let s = next();
             let m = (s >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0;
             let e = (i % 41) - 20;
             out.push(Float::with_val(P, m) * Float::with_val(P, Float::i_exp(1, e)));

@@ -49,3 +49,15 @@ pub fn scaled_f64(v: &Float, e: i32) -> f64 {
 pub fn zero(prec: u32) -> Float {
     Float::new(prec)
 }
+
+/// A xorshift64 generator for the tests' random cases (deterministic from
+/// `seed`, which must not be 0).
+#[cfg(test)]
+pub(crate) fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    }
+}

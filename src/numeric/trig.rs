@@ -399,13 +399,7 @@ mod tests {
     /// fast path taken for most (it is the point).
     #[test]
     fn the_same_bits_as_mpfr() {
-        let mut rng = 0x9e3779b97f4a7c15u64;
-        let mut next = || {
-            rng ^= rng << 13;
-            rng ^= rng >> 7;
-            rng ^= rng << 17;
-            rng
-        };
+        let mut next = crate::numeric::xorshift(0x9e3779b97f4a7c15);
         let mut fast_taken = 0;
         let mut eligible = 0;
         let mut n = 0;

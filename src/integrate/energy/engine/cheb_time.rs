@@ -550,6 +550,17 @@ mod tests {
         }
     }
 
+    /// The main case from rest at `theta0`: its engine at `p` bits and the
+    /// inverses to `d_end` for one time and for a table's 1000.
+    fn one_and_many(theta0: &str, p: u32, d_end: &Float) -> (Engine, Inverse, Inverse) {
+        let m = Ideal::paper_default(Exact::parse("t", theta0, false).unwrap());
+        let red = Reduced::new(&m).unwrap();
+        let mut e = Engine::new(&m, &red, p).unwrap();
+        let one = e.inverse(d_end, 1).expect("default pieces");
+        let many = e.inverse(d_end, 1000).expect("pieces for a table");
+        (e, one, many)
+    }
+
     /// Near the top the pieces are graded towards the start, and the more
     /// of them the larger ρ: from θ0 = 1e-10 those of ρ 32 would pass
     /// [`TABLE_PIECES`] and the table's inverse takes ρ 16 (more pieces than
@@ -557,13 +568,9 @@ mod tests {
     /// pieces within the bounds.
     #[test]
     fn a_start_near_the_top_takes_a_smaller_rho() {
-        let m = Ideal::paper_default(Exact::parse("t", "1e-10", false).unwrap());
-        let red = Reduced::new(&m).unwrap();
         let p = 700;
-        let mut e = Engine::new(&m, &red, p).unwrap();
         let d_end = Float::with_val(p, 4u32) / 5u32;
-        let one = e.inverse(&d_end, 1).expect("default pieces");
-        let many = e.inverse(&d_end, 1000).expect("pieces of a smaller ρ");
+        let (mut e, one, many) = one_and_many("1e-10", p, &d_end);
         assert!(
             many.pieces.len() > one.pieces.len() && many.pieces.len() <= TABLE_PIECES,
             "{} and {} pieces",
@@ -584,13 +591,9 @@ mod tests {
     /// default pieces, not a refusal.
     #[test]
     fn from_very_near_the_top_the_default_pieces() {
-        let m = Ideal::paper_default(Exact::parse("t", "1e-100", false).unwrap());
-        let red = Reduced::new(&m).unwrap();
         let p = 700;
-        let mut e = Engine::new(&m, &red, p).unwrap();
         let d_end = Float::with_val(p, 1u32) / 2u32;
-        let one = e.inverse(&d_end, 1).expect("default pieces");
-        let many = e.inverse(&d_end, 1000).expect("default pieces again");
+        let (_, one, many) = one_and_many("1e-100", p, &d_end);
         assert_eq!(many.pieces.len(), one.pieces.len());
         assert!(
             one.pieces.len() > TABLE_PIECES,
