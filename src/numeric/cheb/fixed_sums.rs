@@ -30,7 +30,7 @@
 //! the state at the last time asked), never carried on into the motion.
 
 use super::ChebFit;
-use crate::numeric::fixed::{self, Acc, Conv, Fx};
+use crate::numeric::fixed::{self, Conv, Fx};
 use rug::{Assign, Float};
 
 /// The fits' coefficients in fixed point, for their sums at many points of
@@ -61,17 +61,17 @@ pub struct FixedSums {
 macro_rules! with_limbs {
     ($l:expr, $f:ident, $($args:expr),*) => {
         match $l {
-            3 => $f::<3>($($args),*),
-            4 => $f::<4>($($args),*),
-            5 => $f::<5>($($args),*),
-            6 => $f::<6>($($args),*),
-            7 => $f::<7>($($args),*),
-            8 => $f::<8>($($args),*),
-            9 => $f::<9>($($args),*),
-            10 => $f::<10>($($args),*),
-            12 => $f::<12>($($args),*),
-            14 => $f::<14>($($args),*),
-            16 => $f::<16>($($args),*),
+            3 => $f::<3, 8>($($args),*),
+            4 => $f::<4, 10>($($args),*),
+            5 => $f::<5, 12>($($args),*),
+            6 => $f::<6, 14>($($args),*),
+            7 => $f::<7, 16>($($args),*),
+            8 => $f::<8, 18>($($args),*),
+            9 => $f::<9, 20>($($args),*),
+            10 => $f::<10, 22>($($args),*),
+            12 => $f::<12, 26>($($args),*),
+            14 => $f::<14, 30>($($args),*),
+            16 => $f::<16, 34>($($args),*),
             _ => None,
         }
     };
@@ -174,7 +174,7 @@ impl LazySums {
     }
 }
 
-fn convert<const L: usize>(s: &mut FixedSums, fits: &[&ChebFit]) -> Option<()> {
+fn convert<const L: usize, const W: usize>(s: &mut FixedSums, fits: &[&ChebFit]) -> Option<()> {
     let mut scaled = Float::new(s.prec);
     for (f, &e) in fits.iter().zip(&s.exps) {
         for c in &f.c {
@@ -191,17 +191,227 @@ fn convert<const L: usize>(s: &mut FixedSums, fits: &[&ChebFit]) -> Option<()> {
     Some(())
 }
 
-fn coef<const L: usize>(s: &FixedSums, at: usize) -> Fx<L> {
-    let mut m = [0u64; L];
-    m.copy_from_slice(&s.mags[at * L..(at + 1) * L]);
-    Fx {
-        m,
-        len: s.sig[at],
-        neg: s.negs[at],
+/// Exact sums of signed limb products in 128-bit columns (positive and
+/// negative parts apart), the carries resolved once at the end: each
+/// product adds to two columns independently, where a running carry would
+/// chain every limb product of a sum on the one before. `W` = 2L + 2
+/// limbs, as [`Acc`]; the same products left out (a_i·b_j with i + j below
+/// the cut), so the same exact sum and the same truncated result. A column
+/// takes at most 2·256 additions below 2^64 each (n ≤ 256): no overflow.
+struct Cols<const L: usize, const W: usize> {
+    pos: [u128; W],
+    neg: [u128; W],
+}
+
+impl<const L: usize, const W: usize> Cols<L, W> {
+    /// [`Acc`]'s cut: a_i·b_j with i + j < L − 3 are left out.
+    const CUT: usize = L.saturating_sub(3);
+
+    fn new() -> Self {
+        Cols {
+            pos: [0; W],
+            neg: [0; W],
+        }
+    }
+
+    #[inline(always)]
+    fn clear(&mut self) {
+        self.pos = [0; W];
+        self.neg = [0; W];
+    }
+
+    /// += a·b, a given by its significant limbs `am` and sign.
+    #[inline(always)]
+    fn mac(&mut self, am: &[u64], a_neg: bool, b: &Fx<L>) {
+        let lb = (b.len as usize).min(L);
+        if am.is_empty() || lb == 0 {
+            return;
+        }
+        let acc = if a_neg == b.neg {
+            &mut self.pos
+        } else {
+            &mut self.neg
+        };
+        for (i, &ai) in am.iter().enumerate().take(L) {
+            let ai = ai as u128;
+            for j in Self::CUT.saturating_sub(i)..lb {
+                let p = ai * b.m[j] as u128;
+                acc[i + j] += p as u64 as u128;
+                acc[i + j + 1] += p >> 64;
+            }
+        }
+    }
+
+    /// The sum rounded toward zero to the fraction limbs ([`Acc::finish`]
+    /// with no divisor); `overflow` set where it does not fit.
+    fn finish(&self, overflow: &mut bool) -> Fx<L> {
+        let lf = L - 1;
+        let limbs = |cols: &[u128; W]| {
+            let mut out = [0u64; W];
+            let mut carry = 0u128;
+            for (o, &c) in out.iter_mut().zip(cols) {
+                let t = c + carry;
+                *o = t as u64;
+                carry = t >> 64;
+            }
+            out
+        };
+        let (p, n) = (limbs(&self.pos), limbs(&self.neg));
+        let mut neg = false;
+        for k in (0..W).rev() {
+            if p[k] != n[k] {
+                neg = p[k] < n[k];
+                break;
+            }
+        }
+        let (a, b) = if neg { (&n, &p) } else { (&p, &n) };
+        let mut m = [0u64; L];
+        let mut borrow = 0u64;
+        let mut high = 0u64;
+        for k in 0..W {
+            let (d1, b1) = a[k].overflowing_sub(b[k]);
+            let (d2, b2) = d1.overflowing_sub(borrow);
+            borrow = (b1 as u64) + (b2 as u64);
+            if k >= lf + L {
+                high |= d2;
+            } else if k >= lf {
+                m[k - lf] = d2;
+            }
+        }
+        if high != 0 {
+            *overflow = true;
+        }
+        let len = m.iter().rposition(|&x| x != 0).map_or(0, |k| k + 1);
+        Fx {
+            m,
+            len: len as u16,
+            neg: neg && len > 0,
+        }
     }
 }
 
-fn sums<const L: usize>(s: &mut FixedSums, x: &Float, out: &mut [Float]) -> Option<bool> {
+/// T_k = 2x·T_{k−1} − T_{k−2}, rounded toward zero to the fraction limbs:
+/// [`Acc`]'s `mac`, `add` and `finish` of the same products (those with
+/// i + j below the cut left out), so the same bits, with the exact product
+/// in a fixed-size array and only its upper limbs combined with T_{k−2}
+/// (whose lower limbs, at the product's scale, are zero).
+#[inline(always)]
+fn next_t<const L: usize, const W: usize>(
+    x2: &Fx<L>,
+    t1: &Fx<L>,
+    t2: &Fx<L>,
+    overflow: &mut bool,
+) -> Fx<L> {
+    let lf = L - 1;
+    let cut = L.saturating_sub(3);
+    // the product's magnitude, exactly (less the products left out)
+    let mut p = [0u64; W];
+    let (la, lb) = (x2.len as usize, t1.len as usize);
+    let has_p = la > 0 && lb > 0 && la + lb >= cut + 2;
+    if has_p {
+        for i in 0..la.min(L) {
+            let ai = x2.m[i];
+            let j0 = cut.saturating_sub(i);
+            if ai == 0 || j0 >= lb {
+                continue;
+            }
+            let mut carry = 0u64;
+            for j in j0..lb.min(L) {
+                let t = (ai as u128) * (t1.m[j] as u128) + (p[i + j] as u128) + (carry as u128);
+                p[i + j] = t as u64;
+                carry = (t >> 64) as u64;
+            }
+            let mut k = i + lb.min(L);
+            while carry != 0 && k < W {
+                let (v, c) = p[k].overflowing_add(carry);
+                p[k] = v;
+                carry = c as u64;
+                k += 1;
+            }
+        }
+    }
+    // signs: the product's, and −T_{k−2}'s
+    let p_neg = has_p && x2.neg != t1.neg;
+    let q_neg = !t2.neg && t2.len > 0;
+    let low_nonzero = p[..lf].iter().any(|&x| x != 0);
+    // the upper limbs of the product (index lf on) against T_{k−2}
+    let mut m = [0u64; L];
+    let mut high = 0u64;
+    let neg;
+    if t2.len == 0 || p_neg == q_neg {
+        // magnitudes add (the lower limbs carry nothing up: T_{k−2} has none)
+        let mut carry = 0u64;
+        for k in lf..W {
+            let q = if k - lf < L { t2.m[k - lf] } else { 0 };
+            let (s1, c1) = p[k].overflowing_add(q);
+            let (s2, c2) = s1.overflowing_add(carry);
+            carry = (c1 as u64) + (c2 as u64);
+            if k >= lf + L {
+                high |= s2;
+            } else {
+                m[k - lf] = s2;
+            }
+        }
+        high |= carry;
+        neg = if t2.len == 0 { p_neg } else { q_neg };
+    } else {
+        // |P − Q·2^(64 lf)|: compare the upper limbs with Q
+        let mut p_ge = true;
+        for k in (lf..W).rev() {
+            let q = if k - lf < L { t2.m[k - lf] } else { 0 };
+            if p[k] != q {
+                p_ge = p[k] > q;
+                break;
+            }
+        }
+        let mut borrow = 0u64;
+        if p_ge {
+            // P − Q·2^s: the lower limbs stay (truncated away)
+            for k in lf..W {
+                let q = if k - lf < L { t2.m[k - lf] } else { 0 };
+                let (d1, b1) = p[k].overflowing_sub(q);
+                let (d2, b2) = d1.overflowing_sub(borrow);
+                borrow = (b1 as u64) + (b2 as u64);
+                if k >= lf + L {
+                    high |= d2;
+                } else {
+                    m[k - lf] = d2;
+                }
+            }
+            neg = p_neg;
+        } else {
+            // Q·2^s − P, truncated: Q − P_hi, less one where P has lower bits
+            borrow = low_nonzero as u64;
+            for k in lf..W {
+                let q = if k - lf < L { t2.m[k - lf] } else { 0 };
+                let (d1, b1) = q.overflowing_sub(p[k]);
+                let (d2, b2) = d1.overflowing_sub(borrow);
+                borrow = (b1 as u64) + (b2 as u64);
+                if k >= lf + L {
+                    high |= d2;
+                } else {
+                    m[k - lf] = d2;
+                }
+            }
+            neg = q_neg;
+        }
+    }
+    if high != 0 {
+        *overflow = true;
+    }
+    let len = m.iter().rposition(|&x| x != 0).map_or(0, |k| k + 1);
+    Fx {
+        m,
+        len: len as u16,
+        neg: neg && len > 0,
+    }
+}
+
+fn sums<const L: usize, const W: usize>(
+    s: &mut FixedSums,
+    x: &Float,
+    out: &mut [Float],
+) -> Option<bool> {
     let xf: Fx<L> = s.conv.to_fx(x);
     let x2 = xf.mul_small(2);
     let mut one = [0u64; L];
@@ -213,35 +423,154 @@ fn sums<const L: usize>(s: &mut FixedSums, x: &Float, out: &mut [Float]) -> Opti
         neg: false,
     });
     basis.push(xf);
-    let mut acc = Acc::<L>::new();
+    // the basis by the recurrence, each T_k truncated once
+    let mut overflow = false;
     for k in 2..s.n {
-        // T_k = 2x T_{k−1} − T_{k−2}
-        acc.clear();
-        acc.mac(&x2, &basis[k - 1]);
-        let mut back = basis[k - 2];
-        back.neg = !back.neg && back.len > 0;
-        acc.add(&back);
-        basis.push(acc.finish(1));
+        let t = next_t::<L, W>(&x2, &basis[k - 1], &basis[k - 2], &mut overflow);
+        basis.push(t);
     }
+    // the sums, in columns
+    let mut acc = Cols::<L, W>::new();
     let mut at = 0;
     for (i, o) in out.iter_mut().enumerate() {
         acc.clear();
         let len = s.lens.get(i).copied().unwrap_or(0);
         for (k, t) in basis.iter().enumerate().take(len) {
-            acc.mac(&coef::<L>(s, at + k), t);
+            let c = at + k;
+            let sig = s.sig[c] as usize;
+            acc.mac(&s.mags[c * L..c * L + sig], s.negs[c], t);
         }
         at += len;
-        let r = acc.finish(1);
+        let r = acc.finish(&mut overflow);
         s.conv.to_float(&r, o);
         *o <<= s.exps.get(i).copied().unwrap_or(0);
     }
-    Some(!acc.overflow)
+    Some(!overflow)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::numeric::fixed::Acc;
     use rug::ops::Pow;
+
+    /// The sums as [`Acc`] takes them (the basis, then each fit's products
+    /// with a running carry, one `finish` per sum): the reference the
+    /// column sums and `next_t` must equal bit for bit.
+    fn sums_by_acc<const L: usize>(s: &mut FixedSums, x: &Float, out: &mut [Float]) -> bool {
+        let xf: Fx<L> = s.conv.to_fx(x);
+        let x2 = xf.mul_small(2);
+        let mut one = [0u64; L];
+        one[L - 1] = 1;
+        let mut basis = vec![
+            Fx {
+                m: one,
+                len: L as u16,
+                neg: false,
+            },
+            xf,
+        ];
+        let mut acc = Acc::<L>::new();
+        for k in 2..s.n {
+            acc.clear();
+            acc.mac(&x2, &basis[k - 1]);
+            let mut back = basis[k - 2];
+            back.neg = !back.neg && back.len > 0;
+            acc.add(&back);
+            basis.push(acc.finish(1));
+        }
+        let mut at = 0;
+        for (i, o) in out.iter_mut().enumerate() {
+            acc.clear();
+            for (k, t) in basis.iter().enumerate().take(s.lens[i]) {
+                let c = at + k;
+                let mut m = [0u64; L];
+                m.copy_from_slice(&s.mags[c * L..(c + 1) * L]);
+                let cf = Fx {
+                    m,
+                    len: s.sig[c],
+                    neg: s.negs[c],
+                };
+                acc.mac(&cf, t);
+            }
+            at += s.lens[i];
+            let r = acc.finish(1);
+            s.conv.to_float(&r, o);
+            *o <<= s.exps[i];
+        }
+        !acc.overflow
+    }
+
+    fn same_bits_as_acc<const L: usize, const W: usize>(p: u32, rng: &mut impl FnMut() -> u64) {
+        let a = Float::with_val(p, -1i32);
+        let b = Float::with_val(p, 1u32);
+        for case in 0..6 {
+            // fits of several lengths, random limbs, signs, scales and
+            // exact zeros (whole coefficients and leading limbs)
+            let fits: Vec<ChebFit> = (0..3)
+                .map(|f| {
+                    let n = 2 + (rng() % 120) as usize;
+                    let c = (0..n)
+                        .map(|k| {
+                            if rng() % 9 == 0 {
+                                return Float::new(p);
+                            }
+                            let mant = Float::with_val(p, rng()) / Float::with_val(p, u64::MAX);
+                            let e = -((k as i32 * (p as i32 + 40)) / n as i32) - (rng() % 5) as i32;
+                            let v = Float::with_val(p, (mant << e) << (f * 3 - case));
+                            if rng() % 2 == 0 {
+                                -v
+                            } else {
+                                v
+                            }
+                        })
+                        .collect();
+                    ChebFit {
+                        a: a.clone(),
+                        b: b.clone(),
+                        c,
+                        fmax: Float::with_val(p, 1u32),
+                    }
+                })
+                .collect();
+            let refs: Vec<&ChebFit> = fits.iter().collect();
+            let mut fx = FixedSums::new(&refs, p).expect("fixed point applies");
+            assert_eq!(fx.limbs, L, "p = {p}");
+            let mut xs: Vec<Float> = vec![Float::with_val(p, -1i32), Float::new(p), b.clone()];
+            for _ in 0..12 {
+                let m = Float::with_val(p, rng()) / Float::with_val(p, u64::MAX);
+                xs.push(Float::with_val(p, m * 2u32) - 1u32);
+            }
+            // every fixed-point bit of the sums in the output
+            let wide = 64 * L as u32 + 64;
+            for x in &xs {
+                let mut got = vec![Float::new(wide); fits.len()];
+                let mut want = vec![Float::new(wide); fits.len()];
+                let ok = sums::<L, W>(&mut fx, x, &mut got) == Some(true);
+                assert_eq!(ok, sums_by_acc::<L>(&mut fx, x, &mut want), "p {p} x {x}");
+                for (g, w) in got.iter().zip(&want) {
+                    assert!(
+                        g == w && g.is_sign_negative() == w.is_sign_negative(),
+                        "p {p}, x {x}: {g} against {w}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// The column sums and the basis recurrence of `sums` give the same
+    /// bits as the running-carry accumulator, at every limb count the
+    /// spectral route and the inversions use.
+    #[test]
+    fn column_sums_are_the_accumulators_bits() {
+        let mut rng = crate::numeric::xorshift(0x9e37_79b9_7f4a_7c15);
+        same_bits_as_acc::<3, 8>(100, &mut rng);
+        same_bits_as_acc::<4, 10>(179, &mut rng);
+        same_bits_as_acc::<5, 12>(240, &mut rng);
+        same_bits_as_acc::<7, 16>(365, &mut rng);
+        same_bits_as_acc::<9, 20>(441, &mut rng);
+        same_bits_as_acc::<16, 34>(900, &mut rng);
+    }
 
     /// The fixed-point sums against MPFR's, for fits of several lengths and
     /// magnitudes at several precisions, far inside the working precision.
