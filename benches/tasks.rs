@@ -501,6 +501,38 @@ fn cpu_task(name: &'static str, digits: u32) {
     );
 }
 
+/// The frictional table's every-column call against its θ-only call, in
+/// alternation (`pairs` pairs, θ first, after one call of each): CPU medians
+/// of each and their ratio, with the pairs' own ratios' range — the
+/// library's side of the every-column target (within 2× of θ only).
+fn cpu_friction_pair(digits: u32, pairs: usize) {
+    let (m, times) = friction_case();
+    let opts = Options::digits(digits);
+    let (th, phases) = oracle::theta_at_times(&m, &times, &opts).expect("theta");
+    check_friction_theta(&th.iter().collect::<Vec<_>>(), &phases, digits);
+    let rows = oracle::trajectory(&m, &times, &opts).expect("trajectory");
+    assert_eq!(rows.rows.len(), T3_POINTS);
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    for _ in 0..pairs {
+        let c = cpu_now();
+        std::hint::black_box(oracle::theta_at_times(&m, &times, &opts).expect("theta"));
+        a.push(cpu_now() - c);
+        let c = cpu_now();
+        std::hint::black_box(oracle::trajectory(&m, &times, &opts).expect("trajectory"));
+        b.push(cpu_now() - c);
+    }
+    let ratios: Vec<f64> = a.iter().zip(&b).map(|(x, y)| y / x).collect();
+    let lo = ratios.iter().cloned().fold(f64::INFINITY, f64::min);
+    let hi = ratios.iter().cloned().fold(0.0, f64::max);
+    let (ma, mb) = (median(a), median(b));
+    println!(
+        "{{\"tool\":\"cylroll\",\"task\":\"T3friction_pair\",\"digits\":{digits},\"pairs\":{pairs},\
+         \"theta_cpu_median_s\":{ma:.6e},\"rows_cpu_median_s\":{mb:.6e},\"ratio\":{:.4},\
+         \"pair_ratio_min\":{lo:.4},\"pair_ratio_max\":{hi:.4},\"checked\":true}}",
+        mb / ma
+    );
+}
+
 fn cpu_main() {
     let args: Vec<String> = std::env::args()
         .skip(1)
@@ -520,6 +552,17 @@ fn cpu_main() {
             }
         }
     }
+    if args.iter().any(|a| a == "T3friction_pair") {
+        let pairs = std::env::var("CYLROLL_BENCH_PAIRS")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(15);
+        for &d in &digits {
+            if T3_DIGITS.contains(&d) {
+                cpu_friction_pair(d, pairs);
+            }
+        }
+    }
     for name in ["T1", "T2", "T2b", "T1r", "T2r", "T3", "T3rows"] {
         if !wanted(name) {
             continue;
@@ -533,7 +576,14 @@ fn cpu_main() {
     }
 }
 
+/// The command's allocator (src/main.rs), so that the library is timed as
+/// the command runs it: mimalloc for Rust's allocations and GMP's.
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() {
+    // SAFETY: first thing in main, before any big number or other thread
+    unsafe { cylroll::allocator::use_mimalloc_for_gmp() };
     if std::env::var("CYLROLL_BENCH").as_deref() == Ok("cpu") {
         cpu_main();
     } else {

@@ -38,6 +38,7 @@
 //! assert_eq!(sep.value("theta_indeterminate").unwrap().text, "0.965713174981");
 //! ```
 
+pub mod allocator;
 pub mod audit;
 pub mod cancel;
 pub mod check;

@@ -2,58 +2,13 @@
 
 mod cli;
 
-use std::ffi::c_void;
-
 /// The command's allocator: mimalloc, for Rust's allocations and (through
-/// [`use_mimalloc_for_gmp`]) for GMP's and MPFR's. A table of many digits
-/// allocates and frees a few hundred thousand small numbers; glibc's
-/// allocator spent 15–18% of a 30-digit friction table's instructions on
-/// them, mimalloc a third of that.
+/// [`cylroll::allocator::use_mimalloc_for_gmp`]) for GMP's and MPFR's.
 #[global_allocator]
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-extern "C" fn gmp_alloc(size: usize) -> *mut c_void {
-    // SAFETY: mi_malloc may be called with any size
-    let p = unsafe { libmimalloc_sys::mi_malloc(size) };
-    if p.is_null() {
-        out_of_memory(size)
-    }
-    p
-}
-
-unsafe extern "C" fn gmp_realloc(p: *mut c_void, _old: usize, size: usize) -> *mut c_void {
-    // SAFETY: p came from gmp_alloc or gmp_realloc (GMP hands back only
-    // its own blocks)
-    let q = unsafe { libmimalloc_sys::mi_realloc(p, size) };
-    if q.is_null() {
-        out_of_memory(size)
-    }
-    q
-}
-
-unsafe extern "C" fn gmp_free(p: *mut c_void, _size: usize) {
-    // SAFETY: as gmp_realloc
-    unsafe { libmimalloc_sys::mi_free(p) }
-}
-
-/// GMP's contract: an allocation function does not return on failure.
-fn out_of_memory(size: usize) -> ! {
-    eprintln!("error: out of memory (allocating {size} bytes for a big number)");
-    std::process::abort()
-}
-
-/// Points GMP (and MPFR, which allocates through GMP's functions) at
-/// mimalloc. Must run before the first big number is made: every block is
-/// then allocated and freed by the same allocator.
-fn use_mimalloc_for_gmp() {
-    // SAFETY: called first thing in main, before any GMP or MPFR allocation
-    // and before any other thread exists
-    unsafe {
-        gmp_mpfr_sys::gmp::set_memory_functions(Some(gmp_alloc), Some(gmp_realloc), Some(gmp_free));
-    }
-}
-
 fn main() {
-    use_mimalloc_for_gmp();
+    // SAFETY: first thing in main, before any big number or other thread
+    unsafe { cylroll::allocator::use_mimalloc_for_gmp() };
     std::process::exit(cli::main_with(std::env::args().collect()));
 }
