@@ -440,6 +440,30 @@ fn large_mu_follows_the_ideal_rolling_motion_until_it_slips() {
     assert!((th - 1.050772062).abs() < 1e-6, "theta_s {th}");
 }
 
+/// Times all before the slip onset (t = 4.156 at μ = 0.3): the rows are
+/// the ideal rolling model's to every digit (the motion is the same until
+/// the contacts slip), and nothing after the last time is integrated — the
+/// answer names the energy route alone, where the phase after the onset
+/// used to be integrated by the spectral route and thrown away.
+#[test]
+fn a_table_before_the_slip_onset_is_the_rolling_table_and_stops_there() {
+    let times: Vec<Exact> = ["1", "2", "3.5"]
+        .iter()
+        .map(|s| Exact::parse("t", s, false).unwrap())
+        .collect();
+    let opts = Options::digits(30);
+    let fric = oracle::trajectory(&model(law("0.3"), law("0.3"), "1/2"), &times, &opts).unwrap();
+    let ideal = oracle::trajectory(&model(law("inf"), law("inf"), "1/2"), &times, &opts).unwrap();
+    assert_eq!(fric.routes, [motion::Route::Energy], "{:?}", fric.routes);
+    assert_eq!(fric.rows.len(), 3);
+    for (a, b) in fric.rows.iter().zip(&ideal.rows) {
+        assert_eq!(a.phase.tag(), "stick/stick");
+        let ta: Vec<&str> = a.values.iter().map(|v| v.text.as_str()).collect();
+        let tb: Vec<&str> = b.values.iter().map(|v| v.text.as_str()).collect();
+        assert_eq!(ta, tb);
+    }
+}
+
 #[test]
 fn two_precisions_agree_and_energy_balances() {
     let m = model(law("0.05"), law("0.5,0.3"), "1/2");

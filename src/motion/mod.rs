@@ -364,6 +364,11 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 }
                 let after = just_after(&ctx, new, &s, w.conservative)?;
                 push_changes(&mut w.out, mode, new, &at, &t_err, &theta_err, after);
+                // every time asked lies before this change (a table's last
+                // time, by more than its margin): nothing after it is asked
+                if req.until == Until::LastTime && w.next >= w.out.times.len() && s.t > t_end {
+                    return Ok(w.out);
+                }
                 t = s.t.clone();
                 q = s.q.clone();
                 v = s.v.clone();
