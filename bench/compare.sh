@@ -159,10 +159,12 @@ if want ours && want c-mpfr && [ -z "${NO_COLD:-}" ]; then
     fi
 fi
 # friction: cylroll's commands as processes and its library calls (divan, wall
-# time: the CPU mode of benches/tasks.rs has no friction task) beside heyoka
+# time; and the every-column / θ-only pair in alternation, CPU) beside heyoka
 if want friction; then
-    echo "== friction: cylroll library (divan)" >&2
+    echo "== friction: cylroll library (divan, and the pair in alternation)" >&2
     (cd "$ROOT" && cargo build --release -q && cargo bench --bench tasks -q -- t3_friction) > "$R/cylroll_friction_divan.txt" 2>&1
+    (cd "$ROOT" && CYLROLL_BENCH=cpu CYLROLL_BENCH_DIGITS=30,100 CYLROLL_BENCH_PAIRS="${PAIRS:-15}" \
+        cargo bench --bench tasks -q -- T3friction_pair) > "$R/cylroll_friction_pair.jsonl" 2>/dev/null
     echo "== friction: heyoka and the cylroll commands" >&2
     "$PY" "$ANCH/heyoka_friction.py" --digits "$FRICTION_DIGITS" --rows-digits "${ROWS_RUN:-0}" \
         --time-limit "${FRICTION_TIME_LIMIT:-900}" --out "$R/heyoka_friction.json" >/dev/null

@@ -9,7 +9,14 @@
 //!   cold first call), the numbers `bench/compare.sh` sets side by side with the
 //!   anchors. The machine may be shared: CPU time is the steadier figure.
 //!   The task `T3n` (run only when named) times T3 with 10, 100, 1000 and
-//!   10000 output times, for the growth of the cost with the table's size.
+//!   10000 output times, for the growth of the cost with the table's size;
+//!   `T3friction_pair` (only when named) the frictional table's every-column
+//!   call against its θ-only call in alternation (`CYLROLL_BENCH_PAIRS`
+//!   pairs, 15 by default).
+//!
+//! The benchmark runs on the command's allocator (mimalloc for Rust's
+//! allocations and, through [`cylroll::allocator`], GMP's), so that it times
+//! the library as the command runs it.
 //!
 //! T1, T2, T2b (and the proved T1r, T2r) ask the energy route of the ideal
 //! model directly: "warm" reuses one `Oracle` (its node caches filled by the

@@ -2,10 +2,12 @@
 """The friction table of bench/compare.sh: cylroll's commands run as processes
 (CPU of the process) beside heyoka cold and warm (bench/anchors/heyoka_friction.py),
 with cylroll's library calls from `cargo bench --bench tasks -- t3_friction`
-(divan, wall-time medians) where they exist.
+(divan, wall-time medians) where they exist, and the library's every-column /
+θ-only pair timed in alternation (CPU, `CYLROLL_BENCH=cpu … -- T3friction_pair`).
 
 Usage: python3 bench/anchors/friction_table.py RESULTS_DIR
-reads RESULTS_DIR/heyoka_friction.json and RESULTS_DIR/cylroll_friction_divan.txt.
+reads RESULTS_DIR/heyoka_friction.json, RESULTS_DIR/cylroll_friction_divan.txt and
+RESULTS_DIR/cylroll_friction_pair.jsonl (the last two where present).
 """
 import json
 import os
@@ -45,6 +47,20 @@ def divan(path):
     return out
 
 
+def library_pairs(path):
+    """{digits: the T3friction_pair record} from the benchmark's JSON lines."""
+    out = {}
+    if not os.path.exists(path):
+        return out
+    for line in open(path, encoding="utf-8"):
+        line = line.strip()
+        if line.startswith("{"):
+            x = json.loads(line)
+            if x.get("task") == "T3friction_pair":
+                out[int(x["digits"])] = x
+    return out
+
+
 def main():
     r = sys.argv[1]
     res = json.load(open(os.path.join(r, "heyoka_friction.json")))
@@ -76,7 +92,8 @@ def main():
                   f"| {row['agreement_min']:.1f} | {fmt(lb)} |")
     paired = [(d, res["per_digits"][str(d)]["rows_over_theta"]) for d in digits
               if "rows_over_theta" in res["per_digits"][str(d)]]
-    if paired:
+    lib_pairs = library_pairs(os.path.join(r, "cylroll_friction_pair.jsonl"))
+    if paired or lib_pairs:
         print()
         print("| every column / θ only, the two commands in alternation | digits | pairs | θ only | every column "
               "| ratio of the medians | per pair, min–max |")
@@ -84,6 +101,10 @@ def main():
         for d, x in paired:
             print(f"| cylroll process CPU | {d} | {x['pairs']} | {fmt(x['theta_cpu_s'])} | {fmt(x['rows_cpu_s'])} "
                   f"| {x['ratio']:.2f} | {x['ratio_min']:.2f}–{x['ratio_max']:.2f} |")
+        for d, x in sorted(lib_pairs.items()):
+            print(f"| cylroll library CPU (its own grid) | {d} | {x['pairs']} | {fmt(x['theta_cpu_median_s'])} "
+                  f"| {fmt(x['rows_cpu_median_s'])} | {x['ratio']:.2f} "
+                  f"| {x['pair_ratio_min']:.2f}–{x['pair_ratio_max']:.2f} |")
     print()
     print("cylroll process CPU: user + system of the command run as a process (median of "
           "its runs); it verifies every digit at two precisions, and `separation` also integrates "
@@ -93,7 +114,7 @@ def main():
           "heyoka's first call. Digits agreeing: heyoka against cylroll's verified output (events: "
           "t and θ of both events; θ: all 1000 values; rows: every column, relative to the column's "
           "largest value). Library: divan's median wall time of the library call on its own grid "
-          "(1000 times on [0, 4.920]), θ only (t3_friction) or all 16 columns (t3_friction_rows).")
+          "(1000 times on [0, 4.920]), θ only (t3_friction) or every column (t3_friction_rows); the library pair: `oracle::theta_at_times` and `oracle::trajectory` on that grid, called in alternation in one process, on the command's allocator.")
     for d in digits:
         r_ = res["per_digits"][str(d)]
         for task in ("events", "theta", "rows"):
