@@ -52,7 +52,7 @@ use crate::numeric::cheb::fixed_sums::LazySums;
 use crate::numeric::cheb::{smooth_at_least, Roots};
 use dependents::{dependents, moving};
 use events::{coeffs64, first_bracket, reads_positions};
-use piece::{attempt, Attempt, RowSetup, Setup, REST_GUARD};
+use piece::{attempt, Attempt, Setup, REST_GUARD};
 use rug::Float;
 
 /// The settings of a run: the tolerance, what the outputs carry, and the
@@ -104,11 +104,8 @@ fn behind(s: &Sample, cap: f64) -> Float {
 
 /// A mode from `start` by spectral integration in the angle: outputs at
 /// `times` (ascending, ≥ start.t), stopping at the first terminal event or
-/// at `t_end`. Without `full` the outputs carry t and θ only; with it
-/// every column's value (of q̈ only θ̈ is sure: a piece whose
-/// interpolants of θ̈ and the multipliers converge gives those and leaves
-/// the other accelerations 0). `None`: the route declines (see the module
-/// notes).
+/// at `t_end`. Without `full` the outputs carry t and θ only. `None`: the
+/// route declines (see the module notes).
 ///
 /// Errors: a singular KKT system.
 pub fn run(
@@ -136,11 +133,6 @@ pub fn run(
     let rest_roots = start.v[sy::th(0)]
         .is_zero()
         .then(|| Roots::new(roots.n(), p + REST_GUARD));
-    let rows = RowSetup {
-        roots: &roots,
-        tol,
-        sc,
-    };
     let su = Setup {
         roots: &roots,
         rest_roots: rest_roots.as_ref(),
@@ -348,7 +340,7 @@ pub fn run(
                 None => pc.invert_at(&tau),
             };
             let mut smp = if full {
-                pc.row_sample(sys, &s, &tau, &rows)?
+                pc.row_sample(sys, &s, &tau)?
             } else {
                 pc.theta_sample(&s)
             };
@@ -630,72 +622,12 @@ mod tests {
         }
         close(&s.last.work, &g.last.work, "work");
         assert_eq!(s.outputs.len(), 2);
-        let ith = sy::th(0);
         for (x, y) in s.outputs.iter().zip(&g.outputs) {
             for (c, d) in x.q.iter().zip(&y.q).chain(x.v.iter().zip(&y.v)) {
                 close(c, d, "output state");
             }
             for (c, d) in x.lambda.iter().zip(&y.lambda) {
                 close(c, d, "output forces");
-            }
-            close(&x.qdd[ith], &y.qdd[ith], "output θ̈");
-            // the rows' θ̈ and multipliers come from the piece's
-            // interpolants of them: the KKT solve at the row's own state
-            // gives the same to the tolerance
-            let acc = a.accel(&x.q, &x.v).unwrap();
-            close(&x.qdd[ith], &acc.qdd[ith], "θ̈ against the KKT at the row");
-            assert_eq!(x.lambda.len(), acc.lambda.len());
-            for (c, d) in x.lambda.iter().zip(&acc.lambda) {
-                close(c, d, "forces against the KKT at the row");
-            }
-        }
-    }
-
-    /// Many rows on one piece: each row's θ̈ and multipliers (interpolants
-    /// of the piece's KKT solves, summed in fixed point) against the KKT
-    /// solve at the row's own state, within the tolerance, in every
-    /// sliding mode from a moving start.
-    #[test]
-    fn row_forces_from_the_interpolants_are_the_kkt_solutions() {
-        let tol_bits = 120;
-        let lim = Float::with_val(P, 1u32) >> (tol_bits - 12);
-        for mut sys in modes().into_iter().skip(1) {
-            let q = coords(0.4);
-            let mut v = vec![Float::new(P); 6];
-            v[sy::th(0)] = f(0.3);
-            v[sy::X1] = f(-0.05);
-            v[sy::PHI1] = f(-0.05);
-            v[sy::psi(0)] = f(-0.2);
-            let start = at_zero(&q, &v);
-            let times: Vec<Float> = (1..=40).map(|k| f(0.02 * k as f64)).collect();
-            let set = settings(tol_bits);
-            let r = run(&mut sys, &start, &times, &f(0.9), &[], &set)
-                .unwrap()
-                .expect("the route takes every sliding mode here");
-            assert_eq!(r.outputs.len(), times.len());
-            let ith = sy::th(0);
-            for x in &r.outputs {
-                let acc = sys.accel(&x.q, &x.v).unwrap();
-                let scale = acc
-                    .lambda
-                    .iter()
-                    .fold(Float::with_val(P, 1u32), |m, l| m.max(&l.clone().abs()));
-                let d = Float::with_val(P, &x.qdd[ith] - &acc.qdd[ith]).abs();
-                assert!(
-                    d < lim,
-                    "θ̈ at t = {}: {} vs {}",
-                    x.t,
-                    x.qdd[ith],
-                    acc.qdd[ith]
-                );
-                for (c, k) in x.lambda.iter().zip(&acc.lambda) {
-                    let d = Float::with_val(P, c - k).abs();
-                    assert!(
-                        d < Float::with_val(P, &lim * &scale),
-                        "λ at t = {}: {c} vs {k}",
-                        x.t
-                    );
-                }
             }
         }
     }

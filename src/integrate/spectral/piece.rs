@@ -57,37 +57,6 @@ pub(super) struct Piece {
     fixed: LazySums,
     /// t(s) − t0 and dt/ds in fixed point for the inversions.
     pub(super) fixed_time: LazySums,
-    /// θ̈ and the multipliers of the output rows ([`Forces`]), made at the
-    /// first row asked.
-    forces: std::cell::OnceCell<Option<Forces>>,
-}
-
-/// Which value an interpolant of [`Forces`] gives.
-#[derive(Debug, Clone, Copy)]
-enum Slot {
-    ThetaDdot,
-    Lambda(usize),
-}
-
-/// θ̈ and the multipliers on a piece as interpolants of their values at
-/// the points (the KKT solves the piece was built from), for output rows:
-/// summed with the state's interpolants on one basis instead of a KKT
-/// solve at each row's state (of q̈ a row's columns read θ̈ alone). A
-/// value zero at every point (a constraint force the mode does not load)
-/// is no interpolant and 0 at every row.
-struct Forces {
-    fits: Vec<ChebFit>,
-    slots: Vec<Slot>,
-    nq: usize,
-    nl: usize,
-}
-
-/// What a piece's rows need of the run to make their [`Forces`]: the
-/// points, the interpolants' tolerance and the scales.
-pub(super) struct RowSetup<'a> {
-    pub(super) roots: &'a Roots,
-    pub(super) tol: &'a Float,
-    pub(super) sc: &'a Settings,
 }
 
 pub(super) enum Attempt {
@@ -449,7 +418,6 @@ pub(super) fn attempt(
         scratch: Default::default(),
         fixed: LazySums::at(fx),
         fixed_time: LazySums::at(fx),
-        forces: Default::default(),
         dt64: dt
             .c
             .iter()
@@ -468,8 +436,8 @@ pub(super) fn attempt(
 impl Piece {
     /// The interpolants in the order [`Piece::state`] reads their sums:
     /// the rate, the velocities, the positions, t (not for a row, whose
-    /// time is the one asked), the work, and a row's [`Forces`].
-    fn fits<'a>(&'a self, with_time: bool, forces: Option<&'a Forces>) -> Vec<&'a ChebFit> {
+    /// time is the one asked), the work.
+    fn fits(&self, with_time: bool) -> Vec<&ChebFit> {
         let mut f = vec![&self.rate];
         f.extend(self.vel.iter().map(|(_, f)| f));
         f.extend(self.pos.iter().map(|(_, f)| f));
@@ -477,62 +445,7 @@ impl Piece {
             f.push(&self.dt);
         }
         f.extend(self.work.as_ref());
-        f.extend(forces.into_iter().flat_map(|x| &x.fits));
         f
-    }
-
-    /// [`Forces`] from the samples at the points, each interpolant within
-    /// the pieces' tolerance of its size plus its scale (a force m2 g, an
-    /// angular acceleration 1/ts²), as the piece's own interpolants; `None`
-    /// where one is not (the rows then solve the KKT system).
-    fn forces_of(&self, rs: &RowSetup) -> Option<Forces> {
-        let n = rs.roots.n();
-        let first = &self.nodes.first()?.1;
-        if self.nodes.len() != n {
-            return None;
-        }
-        let p = self.len.prec();
-        let zero = Float::new(p);
-        let force = Float::with_val(p, &rs.sc.escale / &rs.sc.r);
-        let angular = Float::with_val(p, rs.sc.ts.square_ref()).recip();
-        let (nq, nl) = (first.qdd.len(), first.lambda.len());
-        let ith = sy::th(0);
-        let mut fits = Vec::new();
-        let mut slots = Vec::new();
-        for slot in [Slot::ThetaDdot]
-            .into_iter()
-            .chain((0..nl).map(Slot::Lambda))
-        {
-            // the points ascending in s are the nodes in turn
-            let vals: Vec<Float> = (0..n)
-                .map(|k| {
-                    let smp = &self.nodes[n - 1 - k].1;
-                    match slot {
-                        Slot::ThetaDdot => smp.qdd[ith].clone(),
-                        Slot::Lambda(j) => smp.lambda[j].clone(),
-                    }
-                })
-                .collect();
-            if vals.iter().all(Float::is_zero) {
-                continue;
-            }
-            let fit = ChebFit::from_values(&zero, &self.len, rs.roots, p, &vals);
-            let floor = match slot {
-                Slot::ThetaDdot => &angular,
-                Slot::Lambda(_) => &force,
-            };
-            if !within(&fit, rs.tol, floor, &mut 0) {
-                return None;
-            }
-            fits.push(fit);
-            slots.push(slot);
-        }
-        Some(Forces {
-            fits,
-            slots,
-            nq,
-            nl,
-        })
     }
 
     /// The state (t, q, q̇, W) at s: every interpolant on one basis;
@@ -540,17 +453,11 @@ impl Piece {
     /// t(s) = τ asked), whose sums are taken in fixed point where it
     /// applies ([`LazySums`]: within the interpolants' tolerance, several
     /// times cheaper than MPFR's) and whose t is τ.
-    /// With `forces`, their sums too (last).
-    fn state(
-        &self,
-        s: &Float,
-        row: Option<&Float>,
-        forces: Option<&Forces>,
-    ) -> (Float, Vec<Float>, Vec<Float>, Float, Vec<Float>) {
+    fn state(&self, s: &Float, row: Option<&Float>) -> (Float, Vec<Float>, Vec<Float>, Float) {
         let p = s.prec();
         let ith = sy::th(0);
         let zero = Float::new(p);
-        let fits = self.fits(row.is_none(), forces);
+        let fits = self.fits(row.is_none());
         let mut sums = vec![Float::new(p); fits.len()];
         if !(row.is_some() && self.fixed.eval(&fits, &zero, &self.len, s, &mut sums)) {
             let mut sc = self.scratch.borrow_mut();
@@ -585,7 +492,7 @@ impl Piece {
             Some(_) => Float::with_val(p, &self.work0 + next()),
             None => self.work0.clone(),
         };
-        (t, q, v, work, sums.collect())
+        (t, q, v, work)
     }
 
     /// A sample at s with t and θ only (every other value that of s = 0,
@@ -615,49 +522,13 @@ impl Piece {
     /// [`Piece::sample`] for an output row at the time τ = t(s), which
     /// nothing is computed from: the interpolants summed in fixed point
     /// (within their tolerance, far below the row's precision, several
-    /// times cheaper), t(s) not summed (the row's time is τ), θ̈ and the
-    /// multipliers from their interpolants ([`Forces`]) where they converged
-    /// (the other accelerations, which no column reads, are then left 0),
-    /// else by the KKT system at the row's state; no trigonometry kept.
-    pub(super) fn row_sample(
-        &self,
-        sys: &mut System,
-        s: &Float,
-        tau: &Float,
-        rs: &RowSetup,
-    ) -> Result<Sample> {
-        let Some(f) = self.forces.get_or_init(|| self.forces_of(rs)) else {
-            return self.sample_as(sys, s, Some(tau));
-        };
-        let p = s.prec();
-        let (t, q, v, work, sums) = self.state(s, Some(tau), Some(f));
-        let mut qdd = vec![Float::new(p); f.nq];
-        let mut lambda = vec![Float::new(p); f.nl];
-        for (slot, x) in f.slots.iter().zip(sums) {
-            match *slot {
-                Slot::ThetaDdot => qdd[sy::th(0)] = x,
-                Slot::Lambda(j) => lambda[j] = x,
-            }
-        }
-        let power = if sys.has_slips() {
-            sys.slip_power(&q, &v, &lambda)
-        } else {
-            Float::new(p)
-        };
-        Ok(Sample {
-            t,
-            q,
-            v,
-            qdd,
-            lambda,
-            work,
-            power,
-            trig: Vec::new(),
-        })
+    /// times cheaper), t(s) not summed (the row's time is τ).
+    pub(super) fn row_sample(&self, sys: &mut System, s: &Float, tau: &Float) -> Result<Sample> {
+        self.sample_as(sys, s, Some(tau))
     }
 
     fn sample_as(&self, sys: &mut System, s: &Float, row: Option<&Float>) -> Result<Sample> {
-        let (t, q, v, work, _) = self.state(s, row, None);
+        let (t, q, v, work) = self.state(s, row);
         let acc = sys.accel(&q, &v)?;
         let power = if sys.has_slips() {
             sys.slip_power(&q, &v, &acc.lambda)
