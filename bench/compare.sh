@@ -19,6 +19,7 @@
 #   NO_COLD=1 bench/compare.sh       # without the whole-process rows (bench/cold.sh)
 #   FRICTION_TIME_LIMIT=600 bench/compare.sh   # seconds per heyoka friction measurement
 #                                    # (default 900; heyoka at 1000 digits may not finish)
+#   PAIRS=31 bench/compare.sh --friction   # pairs of the library's every-column / θ-only calls (15)
 #
 # Needs: cargo; gcc, g++, libmpfr-dev, libgmp-dev, libboost-dev (Boost 1.74
 # headers), hyperfine (whole-process rows); python3 with venv: the Python anchors
@@ -163,8 +164,11 @@ fi
 if want friction; then
     echo "== friction: cylroll library (divan, and the pair in alternation)" >&2
     (cd "$ROOT" && cargo build --release -q && cargo bench --bench tasks -q -- t3_friction) > "$R/cylroll_friction_divan.txt" 2>&1
+    # (the library pair at 30 and 100 digits, the benchmark's only friction grid)
     (cd "$ROOT" && CYLROLL_BENCH=cpu CYLROLL_BENCH_DIGITS=30,100 CYLROLL_BENCH_PAIRS="${PAIRS:-15}" \
-        cargo bench --bench tasks -q -- T3friction_pair) > "$R/cylroll_friction_pair.jsonl" 2>/dev/null
+        cargo bench --bench tasks -q -- T3friction_pair) > "$R/cylroll_friction_pair.jsonl" \
+        2> "$R/cylroll_friction_pair.err" \
+        || echo "the library pair failed: see $R/cylroll_friction_pair.err" >&2
     echo "== friction: heyoka and the cylroll commands" >&2
     "$PY" "$ANCH/heyoka_friction.py" --digits "$FRICTION_DIGITS" --rows-digits "${ROWS_RUN:-0}" \
         --time-limit "${FRICTION_TIME_LIMIT:-900}" --out "$R/heyoka_friction.json" >/dev/null

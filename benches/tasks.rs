@@ -509,10 +509,13 @@ fn cpu_task(name: &'static str, digits: u32) {
 }
 
 /// The frictional table's every-column call against its θ-only call, in
-/// alternation (`pairs` pairs, θ first, after one call of each): CPU medians
-/// of each and their ratio, with the pairs' own ratios' range — the
-/// library's side of the every-column target (within 2× of θ only).
+/// alternation (`pairs` pairs, at least 1, after one call of each; the
+/// order within a pair alternates, θ first in the even pairs, so that
+/// neither call always follows the other): CPU medians of each and their
+/// ratio, with the pairs' own ratios' range — the library's side of the
+/// every-column target (within 2× of θ only).
 fn cpu_friction_pair(digits: u32, pairs: usize) {
+    let pairs = pairs.max(1);
     let (m, times) = friction_case();
     let opts = Options::digits(digits);
     let (th, phases) = oracle::theta_at_times(&m, &times, &opts).expect("theta");
@@ -520,13 +523,24 @@ fn cpu_friction_pair(digits: u32, pairs: usize) {
     let rows = oracle::trajectory(&m, &times, &opts).expect("trajectory");
     assert_eq!(rows.rows.len(), T3_POINTS);
     let (mut a, mut b) = (Vec::new(), Vec::new());
-    for _ in 0..pairs {
+    let theta = |a: &mut Vec<f64>| {
         let c = cpu_now();
         std::hint::black_box(oracle::theta_at_times(&m, &times, &opts).expect("theta"));
         a.push(cpu_now() - c);
+    };
+    let rows = |b: &mut Vec<f64>| {
         let c = cpu_now();
         std::hint::black_box(oracle::trajectory(&m, &times, &opts).expect("trajectory"));
         b.push(cpu_now() - c);
+    };
+    for i in 0..pairs {
+        if i % 2 == 0 {
+            theta(&mut a);
+            rows(&mut b);
+        } else {
+            rows(&mut b);
+            theta(&mut a);
+        }
     }
     let ratios: Vec<f64> = a.iter().zip(&b).map(|(x, y)| y / x).collect();
     let lo = ratios.iter().cloned().fold(f64::INFINITY, f64::min);

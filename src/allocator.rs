@@ -38,7 +38,12 @@ unsafe extern "C" fn gmp_free(p: *mut c_void, _size: usize) {
 
 /// GMP's contract: an allocation function does not return on failure.
 fn out_of_memory(size: usize) -> ! {
-    eprintln!("error: out of memory (allocating {size} bytes for a big number)");
+    use std::io::Write;
+    // no panic from here (a failed write to stderr is ignored): abort
+    let _ = writeln!(
+        std::io::stderr(),
+        "error: out of memory (allocating {size} bytes for a big number)"
+    );
     std::process::abort()
 }
 
@@ -48,9 +53,11 @@ fn out_of_memory(size: usize) -> ! {
 /// # Safety
 ///
 /// Call it first thing in `main`, before any GMP or MPFR number exists and
-/// before any other thread is started: every block must be allocated and
-/// freed by the same allocator, and GMP's memory functions are not
-/// synchronised.
+/// before any other thread is started: no block GMP or MPFR allocated
+/// before the call may be reallocated or freed after it (MPFR's cached
+/// constants included, and numbers made by code that runs before `main`),
+/// since each block must go back to the allocator it came from; and GMP's
+/// memory functions are not synchronised.
 pub unsafe fn use_mimalloc_for_gmp() {
     // SAFETY: the caller's contract above
     unsafe {

@@ -95,7 +95,7 @@ def main():
     lib_pairs = library_pairs(os.path.join(r, "cylroll_friction_pair.jsonl"))
     if paired or lib_pairs:
         print()
-        print("| every column / θ only, the two commands in alternation | digits | pairs | θ only | every column "
+        print("| every column / θ only, timed in alternation | digits | pairs | θ only | every column "
               "| ratio of the medians | per pair, min–max |")
         print("|---|---|---|---|---|---|---|")
         for d, x in paired:

@@ -197,7 +197,11 @@ fn convert<const L: usize, const W: usize>(s: &mut FixedSums, fits: &[&ChebFit])
 /// chain every limb product of a sum on the one before. `W` = 2L + 2
 /// limbs, as [`Acc`]; the same products left out (a_i·b_j with i + j below
 /// the cut), so the same exact sum and the same truncated result. A column
-/// takes at most 2·256 additions below 2^64 each (n ≤ 256): no overflow.
+/// takes at most 2·L·n additions below 2^64 each (two per limb product
+/// that reaches it; n ≤ 256, L ≤ 16): far below 2^64 of them, no overflow.
+/// The same kept products and truncations in the basis ([`next_t`]), and
+/// the code of both written out per limb count (`W` a constant), not
+/// shared through slices: that cost 2% of a friction table's instructions.
 struct Cols<const L: usize, const W: usize> {
     pos: [u128; W],
     neg: [u128; W],
@@ -206,8 +210,13 @@ struct Cols<const L: usize, const W: usize> {
 impl<const L: usize, const W: usize> Cols<L, W> {
     /// [`Acc`]'s cut: a_i·b_j with i + j < L − 3 are left out.
     const CUT: usize = L.saturating_sub(3);
+    /// W is the accumulator's 2L + 2 limbs (a wrong pair in `with_limbs`
+    /// fails to compile).
+    const SIZE: () = assert!(W == 2 * L + 2);
 
     fn new() -> Self {
+        #[allow(clippy::let_unit_value)]
+        let _ = Self::SIZE;
         Cols {
             pos: [0; W],
             neg: [0; W],
@@ -564,11 +573,18 @@ mod tests {
     #[test]
     fn column_sums_are_the_accumulators_bits() {
         let mut rng = crate::numeric::xorshift(0x9e37_79b9_7f4a_7c15);
+        // every instantiated count (`with_limbs`), at a precision that
+        // takes it: 64(L − 1) − 8 bits
         same_bits_as_acc::<3, 8>(100, &mut rng);
         same_bits_as_acc::<4, 10>(179, &mut rng);
         same_bits_as_acc::<5, 12>(240, &mut rng);
+        same_bits_as_acc::<6, 14>(312, &mut rng);
         same_bits_as_acc::<7, 16>(365, &mut rng);
+        same_bits_as_acc::<8, 18>(440, &mut rng);
         same_bits_as_acc::<9, 20>(441, &mut rng);
+        same_bits_as_acc::<10, 22>(568, &mut rng);
+        same_bits_as_acc::<12, 26>(696, &mut rng);
+        same_bits_as_acc::<14, 30>(824, &mut rng);
         same_bits_as_acc::<16, 34>(900, &mut rng);
     }
 
