@@ -211,7 +211,7 @@ impl Conv {
 
 /// acc += a·b (magnitudes), without the limb products a_i b_j, i + j < cut.
 #[inline(always)]
-fn mac_mag<const L: usize>(acc: &mut [u64], a: &Fx<L>, b: &Fx<L>, cut: usize) {
+pub(crate) fn mac_mag<const L: usize>(acc: &mut [u64], a: &Fx<L>, b: &Fx<L>, cut: usize) {
     let la = a.len as usize;
     let lb = b.len as usize;
     if la + lb < cut + 2 {

@@ -199,9 +199,11 @@ fn convert<const L: usize, const W: usize>(s: &mut FixedSums, fits: &[&ChebFit])
 /// the cut), so the same exact sum and the same truncated result. A column
 /// takes at most 2·L·n additions below 2^64 each (two per limb product
 /// that reaches it; n ≤ 256, L ≤ 16): far below 2^64 of them, no overflow.
-/// The same kept products and truncations in the basis ([`next_t`]), and
-/// the code of both written out per limb count (`W` a constant), not
-/// shared through slices: that cost 2% of a friction table's instructions.
+/// The same kept products and truncations in the basis ([`next_t`], whose
+/// product is `fixed::mac_mag` itself). The subtraction and truncation
+/// ([`sub_truncated`]) run on arrays of W limbs, not on `Acc`'s vectors
+/// through slices: shared that way they cost 2% of a friction table's
+/// instructions.
 struct Cols<const L: usize, const W: usize> {
     pos: [u128; W],
     neg: [u128; W],
@@ -254,7 +256,6 @@ impl<const L: usize, const W: usize> Cols<L, W> {
     /// The sum rounded toward zero to the fraction limbs ([`Acc::finish`]
     /// with no divisor); `overflow` set where it does not fit.
     fn finish(&self, overflow: &mut bool) -> Fx<L> {
-        let lf = L - 1;
         let limbs = |cols: &[u128; W]| {
             let mut out = [0u64; W];
             let mut carry = 0u128;
@@ -266,30 +267,10 @@ impl<const L: usize, const W: usize> Cols<L, W> {
             out
         };
         let (p, n) = (limbs(&self.pos), limbs(&self.neg));
-        let mut neg = false;
-        for k in (0..W).rev() {
-            if p[k] != n[k] {
-                neg = p[k] < n[k];
-                break;
-            }
-        }
+        let neg = below(&p, &n, 0);
         let (a, b) = if neg { (&n, &p) } else { (&p, &n) };
-        let mut m = [0u64; L];
-        let mut borrow = 0u64;
-        let mut high = 0u64;
-        for k in 0..W {
-            let (d1, b1) = a[k].overflowing_sub(b[k]);
-            let (d2, b2) = d1.overflowing_sub(borrow);
-            borrow = (b1 as u64) + (b2 as u64);
-            if k >= lf + L {
-                high |= d2;
-            } else if k >= lf {
-                m[k - lf] = d2;
-            }
-        }
-        if high != 0 {
-            *overflow = true;
-        }
+        let (m, high) = sub_truncated::<L, W>(a, b, 0, 0);
+        *overflow |= high;
         let len = m.iter().rposition(|&x| x != 0).map_or(0, |k| k + 1);
         Fx {
             m,
@@ -297,6 +278,45 @@ impl<const L: usize, const W: usize> Cols<L, W> {
             neg: neg && len > 0,
         }
     }
+}
+
+/// a < b, two magnitudes of W limbs compared from the top down to limb
+/// `from`.
+#[inline(always)]
+fn below<const W: usize>(a: &[u64; W], b: &[u64; W], from: usize) -> bool {
+    for k in (from..W).rev() {
+        if a[k] != b[k] {
+            return a[k] < b[k];
+        }
+    }
+    false
+}
+
+/// a − b (a ≥ b from limb `from` up; `borrow` comes in from below it) at
+/// the products' scale, truncated toward zero to the fraction limbs: the
+/// magnitude of an `Fx<L>`, and whether a limb above them is not zero (the
+/// result does not fit). [`Acc::finish`]'s subtraction, on arrays.
+#[inline(always)]
+fn sub_truncated<const L: usize, const W: usize>(
+    a: &[u64; W],
+    b: &[u64; W],
+    from: usize,
+    mut borrow: u64,
+) -> ([u64; L], bool) {
+    let lf = L - 1;
+    let mut m = [0u64; L];
+    let mut high = 0u64;
+    for k in from..W {
+        let (d1, b1) = a[k].overflowing_sub(b[k]);
+        let (d2, b2) = d1.overflowing_sub(borrow);
+        borrow = (b1 as u64) + (b2 as u64);
+        if k >= lf + L {
+            high |= d2;
+        } else if k >= lf {
+            m[k - lf] = d2;
+        }
+    }
+    (m, high != 0)
 }
 
 /// T_k = 2x·T_{k−1} − T_{k−2}, rounded toward zero to the fraction limbs:
@@ -312,47 +332,25 @@ fn next_t<const L: usize, const W: usize>(
     overflow: &mut bool,
 ) -> Fx<L> {
     let lf = L - 1;
-    let cut = L.saturating_sub(3);
     // the product's magnitude, exactly (less the products left out)
     let mut p = [0u64; W];
-    let (la, lb) = (x2.len as usize, t1.len as usize);
-    let has_p = la > 0 && lb > 0 && la + lb >= cut + 2;
+    let has_p = x2.len > 0 && t1.len > 0;
     if has_p {
-        for i in 0..la.min(L) {
-            let ai = x2.m[i];
-            let j0 = cut.saturating_sub(i);
-            if ai == 0 || j0 >= lb {
-                continue;
-            }
-            let mut carry = 0u64;
-            for j in j0..lb.min(L) {
-                let t = (ai as u128) * (t1.m[j] as u128) + (p[i + j] as u128) + (carry as u128);
-                p[i + j] = t as u64;
-                carry = (t >> 64) as u64;
-            }
-            let mut k = i + lb.min(L);
-            while carry != 0 && k < W {
-                let (v, c) = p[k].overflowing_add(carry);
-                p[k] = v;
-                carry = c as u64;
-                k += 1;
-            }
-        }
+        fixed::mac_mag(&mut p, x2, t1, L.saturating_sub(3));
     }
-    // signs: the product's, and −T_{k−2}'s
+    // signs: the product's, and −T_{k−2}'s; T_{k−2} at the product's
+    // scale (its limbs from the fraction limbs on)
     let p_neg = has_p && x2.neg != t1.neg;
     let q_neg = !t2.neg && t2.len > 0;
-    let low_nonzero = p[..lf].iter().any(|&x| x != 0);
-    // the upper limbs of the product (index lf on) against T_{k−2}
-    let mut m = [0u64; L];
-    let mut high = 0u64;
-    let neg;
-    if t2.len == 0 || p_neg == q_neg {
-        // magnitudes add (the lower limbs carry nothing up: T_{k−2} has none)
+    let mut q = [0u64; W];
+    q[lf..lf + L].copy_from_slice(&t2.m);
+    let (m, high, neg) = if t2.len == 0 || p_neg == q_neg {
+        // magnitudes add (the lower limbs carry nothing up: Q has none)
+        let mut m = [0u64; L];
         let mut carry = 0u64;
+        let mut high = 0u64;
         for k in lf..W {
-            let q = if k - lf < L { t2.m[k - lf] } else { 0 };
-            let (s1, c1) = p[k].overflowing_add(q);
+            let (s1, c1) = p[k].overflowing_add(q[k]);
             let (s2, c2) = s1.overflowing_add(carry);
             carry = (c1 as u64) + (c2 as u64);
             if k >= lf + L {
@@ -361,53 +359,19 @@ fn next_t<const L: usize, const W: usize>(
                 m[k - lf] = s2;
             }
         }
-        high |= carry;
-        neg = if t2.len == 0 { p_neg } else { q_neg };
+        let neg = if t2.len == 0 { p_neg } else { q_neg };
+        (m, high | carry != 0, neg)
+    } else if !below(&p, &q, lf) {
+        // P − Q·2^(64 lf): the lower limbs of P are truncated away
+        let (m, high) = sub_truncated::<L, W>(&p, &q, lf, 0);
+        (m, high, p_neg)
     } else {
-        // |P − Q·2^(64 lf)|: compare the upper limbs with Q
-        let mut p_ge = true;
-        for k in (lf..W).rev() {
-            let q = if k - lf < L { t2.m[k - lf] } else { 0 };
-            if p[k] != q {
-                p_ge = p[k] > q;
-                break;
-            }
-        }
-        let mut borrow = 0u64;
-        if p_ge {
-            // P − Q·2^s: the lower limbs stay (truncated away)
-            for k in lf..W {
-                let q = if k - lf < L { t2.m[k - lf] } else { 0 };
-                let (d1, b1) = p[k].overflowing_sub(q);
-                let (d2, b2) = d1.overflowing_sub(borrow);
-                borrow = (b1 as u64) + (b2 as u64);
-                if k >= lf + L {
-                    high |= d2;
-                } else {
-                    m[k - lf] = d2;
-                }
-            }
-            neg = p_neg;
-        } else {
-            // Q·2^s − P, truncated: Q − P_hi, less one where P has lower bits
-            borrow = low_nonzero as u64;
-            for k in lf..W {
-                let q = if k - lf < L { t2.m[k - lf] } else { 0 };
-                let (d1, b1) = q.overflowing_sub(p[k]);
-                let (d2, b2) = d1.overflowing_sub(borrow);
-                borrow = (b1 as u64) + (b2 as u64);
-                if k >= lf + L {
-                    high |= d2;
-                } else {
-                    m[k - lf] = d2;
-                }
-            }
-            neg = q_neg;
-        }
-    }
-    if high != 0 {
-        *overflow = true;
-    }
+        // Q·2^(64 lf) − P, truncated: Q − P_hi, less one where P has lower bits
+        let low_nonzero = p[..lf].iter().any(|&x| x != 0);
+        let (m, high) = sub_truncated::<L, W>(&q, &p, lf, low_nonzero as u64);
+        (m, high, q_neg)
+    };
+    *overflow |= high;
     let len = m.iter().rposition(|&x| x != 0).map_or(0, |k| k + 1);
     Fx {
         m,
