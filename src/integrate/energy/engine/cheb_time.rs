@@ -19,13 +19,19 @@ impl Engine {
     /// precision. `None` when the pieces would pass [`MAX_PIECES`] or a tail
     /// does not fall (then tanh-sinh).
     pub fn cheb_fit(&mut self, dsig: &Float) -> Option<Vec<ChebFit>> {
-        self.cheb_fit_graded(dsig, WHOLE, MAX_PIECES)
+        self.cheb_fit_graded(dsig, self.cheb_target, WHOLE, MAX_PIECES)
     }
 
-    /// [`Engine::cheb_fit`] with one piece only where the whole interval's
-    /// ρ is at least `whole` (else pieces of ρ ≈ `cheb_target` each), and
-    /// `None` beyond `most` pieces.
-    fn cheb_fit_graded(&mut self, dsig: &Float, whole: f64, most: usize) -> Option<Vec<ChebFit>> {
+    /// [`Engine::cheb_fit`] with pieces of ρ ≈ `target` each, one piece
+    /// only where the whole interval's ρ is at least `whole`, and `None`
+    /// beyond `most` pieces.
+    fn cheb_fit_graded(
+        &mut self,
+        dsig: &Float,
+        target: f64,
+        whole: f64,
+        most: usize,
+    ) -> Option<Vec<ChebFit>> {
         let p = self.prec();
         let vmax = Float::with_val(p, dsig.sqrt_ref());
         // the singularities in v, absolute
@@ -46,7 +52,7 @@ impl Engine {
                 .fold(f64::INFINITY, f64::min)
                 .min(64.0)
         };
-        let cuts = breakpoints(v64, &rho_of, self.cheb_target, whole, most)?;
+        let cuts = breakpoints(v64, &rho_of, target, whole, most)?;
         let mut fits = Vec::with_capacity(cuts.len());
         let mut a = Float::new(p);
         for (i, &(b64, rho)) in cuts.iter().enumerate() {
@@ -108,18 +114,12 @@ impl Engine {
         // half that ρ, down to 8, then the default pieces (the fewest
         // terms; never ρ 4, the certificate's own pieces near the top). A
         // refusal of `breakpoints` costs only f64 arithmetic.
-        let saved = self.cheb_target;
-        let want = inverse_rho(inversions);
-        let mut fits = None;
-        for rho in [32.0, 16.0, 8.0] {
-            if rho > want || rho <= saved || fits.is_some() {
-                continue;
-            }
-            self.cheb_target = rho;
-            fits = self.cheb_fit_graded(&dsig, rho.max(WHOLE), TABLE_PIECES);
-            self.cheb_target = saved;
-        }
-        let fits = match fits {
+        let (want, default) = (inverse_rho(inversions), self.cheb_target);
+        let table = [32.0, 16.0, 8.0]
+            .into_iter()
+            .filter(|&rho| rho <= want && rho > default)
+            .find_map(|rho| self.cheb_fit_graded(&dsig, rho, rho.max(WHOLE), TABLE_PIECES));
+        let fits = match table {
             Some(f) => f,
             None => self.cheb_fit(&dsig)?,
         };
