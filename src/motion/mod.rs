@@ -364,11 +364,6 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 }
                 let after = just_after(&ctx, new, &s, w.conservative)?;
                 push_changes(&mut w.out, mode, new, &at, &t_err, &theta_err, after);
-                // every time asked lies before this change (a table's last
-                // time, by more than its margin): nothing after it is asked
-                if req.until == Until::LastTime && w.next >= w.out.times.len() && s.t > t_end {
-                    return Ok(w.out);
-                }
                 t = s.t.clone();
                 q = s.q.clone();
                 v = s.v.clone();
@@ -380,6 +375,12 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
     // --- the other phases: the spectral route in θ, GBS where it declines
     for _ in 0..MAX_MODES {
         crate::cancel::check()?;
+        // a table whose times all lie before this phase (its last time by
+        // more than the margin): nothing after them is asked (the energy
+        // route's first phase finds its end whatever the times)
+        if req.until == Until::LastTime && w.next >= w.out.times.len() && t > t_end {
+            return Ok(w.out);
+        }
         let mut sys = ctx.system(mode)?;
         // the branch watch (parting becoming lawful) while the contact holds
         let branch_watch = !ctx.held;
