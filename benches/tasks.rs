@@ -520,8 +520,13 @@ fn cpu_friction_pair(digits: u32, pairs: usize) {
     let opts = Options::digits(digits);
     let (th, phases) = oracle::theta_at_times(&m, &times, &opts).expect("theta");
     check_friction_theta(&th.iter().collect::<Vec<_>>(), &phases, digits);
-    let rows = oracle::trajectory(&m, &times, &opts).expect("trajectory");
-    assert_eq!(rows.rows.len(), T3_POINTS);
+    // the table's θ column and phases are the θ-only call's (its own route)
+    let table = oracle::trajectory(&m, &times, &opts).expect("trajectory");
+    assert_eq!(table.rows.len(), T3_POINTS);
+    for ((row, t), p) in table.rows.iter().zip(&th).zip(&phases) {
+        assert_eq!(row.values[1].text, t.text, "theta at a table row");
+        assert_eq!(row.phase, *p);
+    }
     let (mut a, mut b) = (Vec::new(), Vec::new());
     let theta = |a: &mut Vec<f64>| {
         let c = cpu_now();
@@ -574,10 +579,12 @@ fn cpu_main() {
         }
     }
     if args.iter().any(|a| a == "T3friction_pair") {
-        let pairs = std::env::var("CYLROLL_BENCH_PAIRS")
-            .ok()
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(15);
+        let pairs = match std::env::var("CYLROLL_BENCH_PAIRS") {
+            Ok(s) => s.trim().parse().unwrap_or_else(|_| {
+                panic!("CYLROLL_BENCH_PAIRS={s:?}: a whole number of pairs is allowed")
+            }),
+            Err(_) => 15,
+        };
         for &d in &digits {
             if T3_DIGITS.contains(&d) {
                 cpu_friction_pair(d, pairs);
