@@ -545,6 +545,7 @@ pub fn sample_at(ctx: &Ctx, mode: Mode, pt: &Point) -> Result<Sample> {
         work: Float::new(wp),
         power: Float::new(wp),
         trig: Vec::new(),
+        energy: None,
     })
 }
 

@@ -218,7 +218,10 @@ impl Ctx {
         // workspace, where the columns find them (put back from the sample
         // where it kept them)
         sys.prime_trig(&s.q, &s.trig);
-        let energy = sys.energy(&s.q, &s.v);
+        let energy = match &s.energy {
+            Some(e) if e.prec() == p => e.clone(),
+            _ => sys.energy(&s.q, &s.v),
+        };
         let mut state = two_state(sys, s);
         // a slipping contact's force is an applied force, not a multiplier
         state.f1 = self.tangential(sys, mode, Which::Floor, s);

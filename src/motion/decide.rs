@@ -69,6 +69,7 @@ fn inconsistency_at(
         work: Float::new(p),
         power: Float::new(p),
         trig: Vec::new(),
+        energy: None,
     };
     let n12 = lam(&sys, &s1, Row::Normal(0));
     if !n12.is_sign_positive() || n12.is_zero() {

@@ -749,6 +749,7 @@ fn sample(
         work: work.clone(),
         power: Float::new(t.prec()),
         trig: Vec::new(),
+        energy: None,
     }
 }
 

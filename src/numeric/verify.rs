@@ -180,15 +180,14 @@ fn fast_text_in(v: &Float, bound: &Float, digits: u32, a: &mut Vec<u8>) -> Optio
     if margin <= 0 {
         return None;
     }
-    // bound·10^(d+3−e) < margin ?  In log2, with a safety factor of 4 over
-    // the f64 logarithms (errors ~1e-12 for these magnitudes)
+    // bound·10^(d+3−e) < margin ?  In log2, from the binary exponents
+    // alone: bound < 2^eb, 2^⌊log2 margin⌋ ≤ margin, with a safety factor
+    // of 4 over the f64 product k·log2 10 (its error ~1e-10 for any k)
     let k = d as i64 + 3 - e;
-    if bound.is_zero() {
-        // nothing to compare
-    } else {
-        let (m, x) = bound.to_f64_exp();
-        let lb = m.abs().log2() + x as f64 + k as f64 * std::f64::consts::LOG2_10;
-        if lb + 2.0 >= (margin as f64).log2() {
+    if let Some(eb) = bound.get_exp() {
+        let lb = f64::from(eb) + k as f64 * std::f64::consts::LOG2_10;
+        let lm = f64::from(63 - (margin as u64).leading_zeros());
+        if lb + 2.0 >= lm {
             return None;
         }
     }

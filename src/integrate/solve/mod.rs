@@ -63,6 +63,11 @@ pub struct Sample {
     /// computing them again ([`System::prime_trig`] takes them only for
     /// the same angles).
     pub trig: Vec<Float>,
+    /// The total energy T + V at (q, q̇) where the sample computed it with
+    /// its KKT solve's mass matrix (an output row's: [`System::energy`]'s
+    /// bits, without building the matrix again after the run); `None`:
+    /// not computed.
+    pub energy: Option<Float>,
 }
 
 /// A located event.
@@ -214,6 +219,7 @@ fn sample(sys: &mut System, t: &Float, y: &[Float]) -> Result<Sample> {
         work,
         power,
         trig: Vec::new(),
+        energy: None,
     })
 }
 

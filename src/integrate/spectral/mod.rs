@@ -190,6 +190,7 @@ pub fn run(
             work: work0.clone(),
             power: Float::new(p),
             trig: Vec::new(),
+            energy: None,
         };
         behind(&smp, cap)
     };
@@ -206,6 +207,7 @@ pub fn run(
             work: work0.clone(),
             power: Float::new(p),
             trig: Vec::new(),
+            energy: None,
         };
         events
             .iter()

@@ -394,6 +394,7 @@ pub(super) fn attempt(
                 work: Float::with_val(p, work0 + &wv[k]),
                 power: std::mem::replace(&mut powers[k], Float::new(p)),
                 trig: Vec::new(),
+                energy: None,
             },
         ));
     }
@@ -511,6 +512,7 @@ impl Piece {
             work: Float::new(p),
             power: Float::new(p),
             trig: Vec::new(),
+            energy: None,
         }
     }
 
@@ -535,10 +537,12 @@ impl Piece {
         } else {
             Float::new(sys.prec)
         };
-        // a row's point is made after the run: it finds these again
-        let trig = match row {
-            Some(_) => sys.trig_kept(&q),
-            None => Vec::new(),
+        // a row's point is made after the run: it finds these again, and
+        // the energy from the mass matrix the KKT solve left (the same bits
+        // as building the matrix again then)
+        let (trig, energy) = match row {
+            Some(_) => (sys.trig_kept(&q), Some(sys.energy(&q, &v))),
+            None => (Vec::new(), None),
         };
         Ok(Sample {
             t,
@@ -549,6 +553,7 @@ impl Piece {
             work,
             power,
             trig,
+            energy,
         })
     }
 

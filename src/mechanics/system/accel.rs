@@ -389,8 +389,8 @@ pub(crate) fn gauss_many(
     let mut row_on = vec![true; n];
     let mut col_on = vec![true; n];
     // singleton columns, in the order found: (row, column, the columns
-    // still in the system then, the row's right-hand sides then)
-    let mut later: Vec<(usize, usize, Vec<bool>, Vec<Float>)> = Vec::new();
+    // still in the system then)
+    let mut later: Vec<(usize, usize, Vec<bool>)> = Vec::new();
     // the one index of `it`: None if there is none (the system is
     // singular), Some(None) if there are several
     let single = |it: &mut dyn Iterator<Item = usize>| -> Option<Option<usize>> {
@@ -426,8 +426,7 @@ pub(crate) fn gauss_many(
             }
             if let Some(r) = single(&mut (0..n).filter(|&r| row_on[r] && !a[r * n + c].is_zero()))?
             {
-                let b_r = bs.iter().map(|b| b[r].clone()).collect();
-                later.push((r, c, col_on.clone(), b_r));
+                later.push((r, c, col_on.clone()));
                 row_on[r] = false;
                 col_on[c] = false;
                 found = true;
@@ -437,38 +436,21 @@ pub(crate) fn gauss_many(
             break;
         }
     }
-    let rows: Vec<usize> = (0..n).filter(|&r| row_on[r]).collect();
+    let mut rows: Vec<usize> = (0..n).filter(|&r| row_on[r]).collect();
     let cols: Vec<usize> = (0..n).filter(|&c| col_on[c]).collect();
-    let m = rows.len();
-    if m != cols.len() {
+    if rows.len() != cols.len() {
         return None;
     }
-    if m > 0 {
-        let p = xs.first().and_then(|x| x.first()).map_or(64, |f| f.prec());
-        let mut sub: Vec<Float> = Vec::with_capacity(m * m);
-        for &r in &rows {
-            sub.extend(cols.iter().map(|&c| a[r * n + c].clone()));
-        }
-        let mut sbs: Vec<Vec<Float>> = bs
-            .iter()
-            .map(|b| rows.iter().map(|&r| b[r].clone()).collect())
-            .collect();
-        let mut sxs: Vec<Vec<Float>> = vec![vec![Float::new(p); m]; bs.len()];
-        {
-            let mut bref: Vec<&mut [Float]> = sbs.iter_mut().map(|b| &mut b[..]).collect();
-            let mut xref: Vec<&mut [Float]> = sxs.iter_mut().map(|x| &mut x[..]).collect();
-            gauss_dense(&mut sub, &mut bref, &mut xref, m)?;
-        }
-        for (x, sx) in xs.iter_mut().zip(sxs) {
-            for (&c, v) in cols.iter().zip(sx) {
-                x[c] = v;
-            }
-        }
+    if !rows.is_empty() {
+        gauss_dense(a, n, &mut rows, &cols, bs, xs)?;
     }
     // the singleton columns, last found first: every other unknown of their
-    // row is known by then (those fixed before are in the right-hand side)
-    for (r, c, on, b_r) in later.into_iter().rev() {
-        for (mut s, x) in b_r.into_iter().zip(xs.iter_mut()) {
+    // row is known by then (those fixed before are in the right-hand side;
+    // the row's right-hand sides are as they were when it was taken out:
+    // only rows still in the system change after that)
+    for (r, c, on) in later.into_iter().rev() {
+        for (b, x) in bs.iter().zip(xs.iter_mut()) {
+            let mut s = b[r].clone();
             for j in 0..n {
                 if j != c && on[j] && !a[r * n + j].is_zero() {
                     s -= &a[r * n + j] * &x[j];
@@ -480,15 +462,20 @@ pub(crate) fn gauss_many(
     Some(())
 }
 
-/// Gaussian elimination with partial pivoting on a row-major n×n matrix,
-/// in place, for several right-hand sides at once (one elimination); the
-/// solution of `bs[k]` goes to `xs[k]`. `None` if singular.
+/// Gaussian elimination with partial pivoting on the m×m system of rows
+/// `rows` and columns `cols` (m each) of the row-major n×n matrix `a`, in
+/// place (a pivot swaps two entries of `rows`, not the rows), for several
+/// right-hand sides at once (one elimination, read at `rows`); the solution
+/// of `bs[k]` goes to `xs[k]` at `cols`. `None` if singular.
 fn gauss_dense(
     a: &mut [Float],
+    n: usize,
+    rows: &mut [usize],
+    cols: &[usize],
     bs: &mut [&mut [Float]],
     xs: &mut [&mut [Float]],
-    n: usize,
 ) -> Option<()> {
+    let m = rows.len();
     let p = bs
         .first()
         .and_then(|b| b.first())
@@ -498,55 +485,65 @@ fn gauss_dense(
     // each pivot's reciprocal, for the eliminations below it and the back
     // substitution of every right-hand side: one division per column (a
     // division costs several multiplications at a few limbs)
-    let mut inv = vec![Float::new(p); n];
-    for col in 0..n {
+    let mut inv = vec![Float::new(p); m];
+    for col in 0..m {
+        let cc = cols[col];
         let mut piv = col;
-        for i in col + 1..n {
-            if a[i * n + col].cmp_abs(&a[piv * n + col]) == Some(std::cmp::Ordering::Greater) {
+        for i in col + 1..m {
+            if a[rows[i] * n + cc].cmp_abs(&a[rows[piv] * n + cc])
+                == Some(std::cmp::Ordering::Greater)
+            {
                 piv = i;
             }
         }
-        if a[piv * n + col].is_zero() {
+        if a[rows[piv] * n + cc].is_zero() {
             return None;
         }
-        if piv != col {
-            for j in 0..n {
-                a.swap(piv * n + j, col * n + j);
-            }
-            for b in bs.iter_mut() {
-                b.swap(piv, col);
-            }
-        }
-        let (top, bottom) = a.split_at_mut((col + 1) * n);
-        let prow = &top[col * n..];
-        inv[col].assign(prow[col].recip_ref());
-        for ii in 0..n - col - 1 {
-            let row = &mut bottom[ii * n..(ii + 1) * n];
-            if row[col].is_zero() {
+        rows.swap(piv, col);
+        let pr = rows[col];
+        inv[col].assign(a[pr * n + cc].recip_ref());
+        for &ri in &rows[col + 1..] {
+            if a[ri * n + cc].is_zero() {
                 continue;
             }
-            f.assign(&row[col] * &inv[col]);
-            for j in col + 1..n {
-                if !prow[j].is_zero() {
-                    row[j] -= &f * &prow[j];
+            f.assign(&a[ri * n + cc] * &inv[col]);
+            for &cj in &cols[col + 1..] {
+                // the pivot row and this one are distinct rows of `a`
+                let (pv, rv) = if pr < ri {
+                    let (lo, hi) = a.split_at_mut(ri * n);
+                    (&lo[pr * n + cj], &mut hi[cj])
+                } else {
+                    let (lo, hi) = a.split_at_mut(pr * n);
+                    (&hi[cj], &mut lo[ri * n + cj])
+                };
+                if !pv.is_zero() {
+                    *rv -= &f * pv;
                 }
             }
-            row[col].assign(0u32);
+            a[ri * n + cc].assign(0u32);
             for b in bs.iter_mut() {
-                let (btop, bbot) = b.split_at_mut(col + 1);
-                bbot[ii] -= &f * &btop[col];
+                let (bp, bi) = if pr < ri {
+                    let (lo, hi) = b.split_at_mut(ri);
+                    (&lo[pr], &mut hi[0])
+                } else {
+                    let (lo, hi) = b.split_at_mut(pr);
+                    (&hi[0], &mut lo[ri])
+                };
+                *bi -= &f * bp;
             }
         }
     }
     for (b, x) in bs.iter().zip(xs.iter_mut()) {
-        for i in (0..n).rev() {
-            let mut s = b[i].clone();
-            for j in i + 1..n {
-                if !a[i * n + j].is_zero() {
-                    s -= &a[i * n + j] * &x[j];
+        for i in (0..m).rev() {
+            let ri = rows[i];
+            let mut s = b[ri].clone();
+            for j in i + 1..m {
+                let v = &a[ri * n + cols[j]];
+                if !v.is_zero() {
+                    s -= v * &x[cols[j]];
                 }
             }
-            x[i].assign(&s * &inv[i]);
+            x[cols[i]].assign(&s * &inv[i]);
         }
     }
     Some(())
@@ -677,7 +674,11 @@ mod tests {
                 (x0, x1)
             };
             let (x0, x1) = solve(gauss_many);
-            let (y0, y1) = solve(gauss_dense);
+            // the dense elimination on the whole system, no singletons taken out
+            let (y0, y1) = solve(|a, bs, xs, n| {
+                let all: Vec<usize> = (0..n).collect();
+                gauss_dense(a, n, &mut all.clone(), &all, bs, xs)
+            });
             for (x, y, b) in [(&x0, &y0, &b0), (&x1, &y1, &b1)] {
                 for i in 0..n {
                     let d = Float::with_val(p, &x[i] - &y[i]).abs().to_f64();
