@@ -302,9 +302,9 @@ pub fn first_phase(
         .take_while(|t| t.le_float(&t_end))
         .count();
     let times = &wants.times[..covered];
-    let mut rows = Vec::new();
-    let mut row_deltas = Vec::new();
-    let mut thetas = Vec::new();
+    let mut rows = Vec::with_capacity(if wants.theta_only { 0 } else { times.len() });
+    let mut row_deltas = Vec::with_capacity(if wants.theta_only { 0 } else { times.len() });
+    let mut thetas = Vec::with_capacity(if wants.theta_only { times.len() } else { 0 });
     if !times.is_empty() {
         let mut cache = (0, Vec::new());
         let deltas = route.deltas_at(

@@ -181,9 +181,11 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         out: Motion {
             start_mode: mode,
             events: Vec::new(),
-            rows: Vec::new(),
+            // room for a row (or an angle) at every time asked: a row is
+            // large, and a growing vector would copy every row before it
+            rows: Vec::with_capacity(if req.theta_only { 0 } else { req.times.len() }),
             deltas: Vec::new(),
-            thetas: Vec::new(),
+            thetas: Vec::with_capacity(if req.theta_only { req.times.len() } else { 0 }),
             separation: None,
             impact: None,
             end: None,

@@ -401,11 +401,13 @@ pub enum Run {
 /// [`ladder`] with the run's role passed along, so that the two runs may use
 /// two different methods (e.g. tanh-sinh at p1, Gauss–Legendre at p2): the
 /// bound |v(p1) − v(p2)| + err(p2) then also compares the methods.
-pub fn ladder_runs<F>(digits: u32, names: &[&str], f: F) -> Result<Vec<Verified>>
+pub fn ladder_runs<F>(digits: u32, names: &[&str], mut f: F) -> Result<Vec<Verified>>
 where
     F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
 {
-    let mut rows = ladder_rows(digits, names, 1, false, f)?;
+    let mut rows = ladder_rows(digits, names, 1, false, |p, run| {
+        f(p, run).map(|v| (v, Vec::new()))
+    })?;
     Ok(rows.pop().unwrap_or_default())
 }
 
@@ -417,16 +419,34 @@ where
 ///
 /// Errors: whatever `f` returns; [`Error::NotConverged`] naming the first
 /// quantity (and its row) that could not be verified.
-pub fn ladder_table<F>(digits: u32, names: &[&str], rows: usize, f: F) -> Result<Vec<Vec<Verified>>>
+pub fn ladder_table<F>(
+    digits: u32,
+    names: &[&str],
+    rows: usize,
+    mut f: F,
+) -> Result<Vec<Vec<Verified>>>
 where
     F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
 {
-    ladder_rows(digits, names, rows, true, f)
+    ladder_rows(digits, names, rows, true, |p, run| {
+        f(p, run).map(|v| (v, Vec::new()))
+    })
 }
 
-/// The ladder of [`ladder_table`] and [`ladder_runs`]; `label_rows`: name
-/// the row of a quantity that fails (a table) or not (a single row).
-fn ladder_rows<F>(
+/// The ladder of [`ladder_table`] and [`ladder_runs`] (`rows` rows;
+/// `label_rows`: name the row of a quantity that fails, a table's, or not,
+/// a single row's), whose lower run may leave rows short: `f` returns with
+/// the estimates the number of them in each row (rows beyond that list, or
+/// every row where it is empty, have one per name). A row's estimates are
+/// the first names' in order; a value the lower run left must be one the
+/// higher run's estimate decides alone (its `diff_weight` 0, or exactly
+/// zero by construction in both runs): nothing is compared for it. A table
+/// of every column computes a conservative row's columns but t and θ at the
+/// higher precision only: its lower run needs no placeholders for them.
+///
+/// Errors: as [`ladder_table`]; a value missing from the higher run, or
+/// from the lower run where it is compared, is not computed.
+pub(crate) fn ladder_rows<F>(
     digits: u32,
     names: &[&str],
     rows: usize,
@@ -434,7 +454,7 @@ fn ladder_rows<F>(
     mut f: F,
 ) -> Result<Vec<Vec<Verified>>>
 where
-    F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
+    F: FnMut(u32, Run) -> Result<(Vec<Estimate>, Vec<usize>)>,
 {
     let w = names.len();
     let mut done: Vec<Option<Vec<Verified>>> = vec![None; rows];
@@ -442,8 +462,8 @@ where
     for attempt in 0..MAX_ATTEMPTS {
         crate::cancel::check()?;
         let precs = precisions(digits, attempt);
-        let a = f(precs.0, Run::Low)?;
-        let b = f(precs.1, Run::High)?;
+        let (a, wa) = f(precs.0, Run::Low)?;
+        let (b, wb) = f(precs.1, Run::High)?;
         let mut failed = None;
         // the estimates are dropped row by row as they are judged: the
         // memory of a long table's estimates serves its verified values
@@ -452,8 +472,8 @@ where
         for (r, slot) in done.iter_mut().enumerate() {
             row_a.clear();
             row_b.clear();
-            row_a.extend(ai.by_ref().take(w));
-            row_b.extend(bi.by_ref().take(w));
+            row_a.extend(ai.by_ref().take(wa.get(r).copied().unwrap_or(w)));
+            row_b.extend(bi.by_ref().take(wb.get(r).copied().unwrap_or(w)));
             if slot.is_some() {
                 continue;
             }
@@ -462,13 +482,40 @@ where
             // the higher run's values move into the verified ones
             let mut bs = row_b.drain(..);
             for (i, name) in names.iter().enumerate() {
-                let (Some(ea), Some(eb)) = (row_a.get(i), bs.next()) else {
+                let Some(eb) = bs.next() else {
                     return Err(Error::NotConverged {
                         quantity: name.to_string(),
                         requested: digits,
                         reached: "no value computed".into(),
                         detail: format!("row {r} of {rows}"),
                     });
+                };
+                let label = || {
+                    if label_rows {
+                        format!("{name} (row {r})")
+                    } else {
+                        name.to_string()
+                    }
+                };
+                // a value the lower run left: one the higher run's estimate
+                // decides alone (its bound is its own error; an exact zero
+                // is zero in both runs) is judged against itself; one that
+                // needs the comparison fails the rung (the runs disagree on
+                // what the row is)
+                let ea = match row_a.get(i) {
+                    Some(ea) => ea,
+                    None if eb.diff_weight == 0 || eb.exact_zero => &eb,
+                    None => {
+                        row_failed = Some((
+                            label(),
+                            0,
+                            precs,
+                            to_sig(&eb.value, 12),
+                            "not computed by the lower precision".to_string(),
+                            short(&eb.err),
+                        ));
+                        break;
+                    }
                 };
                 let last = attempt + 1 == MAX_ATTEMPTS;
                 match judged(digits, ea, &eb)
@@ -484,11 +531,7 @@ where
                             short(&Float::with_val(precs.1, &ea.value - &eb.value).abs())
                         };
                         row_failed = Some((
-                            if label_rows {
-                                format!("{name} (row {r})")
-                            } else {
-                                name.to_string()
-                            },
+                            label(),
                             reached,
                             precs,
                             to_sig(&eb.value, 12),
@@ -564,6 +607,75 @@ mod tests {
         assert_eq!(base[0][0].text, "0.333333333333333333333333333333");
         // the higher run's error is read: 1e-20 leaves no 30 digits
         assert!(table(0.0, 1e-20).is_err());
+    }
+
+    /// A lower run's short row: a value it leaves is judged by the higher
+    /// run's estimate alone where that decides alone (weight 0: 1/7 to the
+    /// digits its error allows, the same as with a placeholder; an exact
+    /// zero), and where it needs the comparison (weight 1) the rung fails
+    /// and the ladder climbs; a rung whose lower run gives the value
+    /// verifies it. A value missing from the higher run is an error.
+    #[test]
+    fn a_short_lower_row_leaves_what_the_higher_run_decides_alone() {
+        use std::cell::Cell;
+        let est = |p: u32, (n, d): (u32, u32), err: f64| {
+            Estimate::new(
+                Float::with_val(p, n) / d,
+                Float::with_val(p, err),
+                Float::with_val(p, 1u32),
+            )
+        };
+        // row 0: a, then b decided alone (weight 0) and c exactly zero; row 1
+        // whole; the lower run leaves row 0 short (a only) when `short`
+        let table = |short: bool, b_weight: u32, rungs: &Cell<u32>| {
+            ladder_rows(30, &["a", "b", "c"], 2, true, |p, run| {
+                if run == Run::Low {
+                    rungs.set(rungs.get() + 1);
+                }
+                let mut b = est(p, (1, 7), 1e-45);
+                b.diff_weight = b_weight;
+                let c = Estimate::zero(p, Float::with_val(p, 1u32));
+                let row1 = [(2, 3), (3, 5), (4, 9)].map(|nd| est(p, nd, 0.0));
+                let cut = short && run == Run::Low && rungs.get() == 1;
+                let mut out = vec![est(p, (1, 3), 0.0)];
+                let widths = if cut {
+                    vec![1]
+                } else {
+                    out.extend([b, c]);
+                    Vec::new()
+                };
+                out.extend(row1);
+                Ok((out, widths))
+            })
+        };
+        let rungs = Cell::new(0);
+        let whole = table(false, 0, &rungs).unwrap();
+        let cut = table(true, 0, &Cell::new(0)).unwrap();
+        assert_eq!(rungs.get(), 1);
+        for (rw, rc) in whole.iter().zip(&cut) {
+            for (w, c) in rw.iter().zip(rc) {
+                assert_eq!(
+                    (&w.text, w.digits, &w.err_bound),
+                    (&c.text, c.digits, &c.err_bound)
+                );
+            }
+        }
+        assert_eq!(cut[0][1].text, "0.142857142857142857142857142857");
+        assert_eq!(cut[0][2].text, "0");
+        assert_eq!(cut[1][2].text, "0.444444444444444444444444444444");
+        // a value that needs the comparison: the first rung fails, the
+        // second (whole rows) verifies it
+        let climbs = Cell::new(0);
+        let t = table(true, 1, &climbs).unwrap();
+        assert_eq!(climbs.get(), 2);
+        assert_eq!(t[0][1].precs, precisions(30, 1));
+        assert_eq!(t[0][0].precs, precisions(30, 1));
+        // the higher run leaving a value is an error
+        let e = ladder_rows(30, &["a", "b"], 1, false, |p, run| {
+            let n = if run == Run::High { 1 } else { 2 };
+            Ok((vec![est(p, (1, 3), 0.0); n], vec![n]))
+        });
+        assert!(matches!(e, Err(Error::NotConverged { .. })));
     }
 
     #[test]

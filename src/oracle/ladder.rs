@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::model::Model;
 use crate::motion::{self, Caches, Motion, Phase, Point, Request, Side, Until};
-use crate::numeric::verify::{ladder_runs, ladder_table, precisions, Estimate, Run, Verified};
+use crate::numeric::verify::{ladder_rows, precisions, Estimate, Run, Verified};
 use rug::Float;
 use std::cell::RefCell;
 use std::sync::Arc;
@@ -369,12 +369,27 @@ pub fn laddered(
     rows: usize,
     est: impl Fn(Motion, Run) -> Result<Vec<Estimate>>,
 ) -> Result<Vec<Vec<Verified>>> {
+    laddered_short(runs, first, names, rows, |m, run| {
+        est(m, run).map(|v| (v, Vec::new()))
+    })
+}
+
+/// [`laddered`] whose estimates may leave rows of the lower run short:
+/// `est` returns with them the number of estimates in each row (empty:
+/// every row whole), as `numeric::verify::ladder_rows` takes them.
+pub fn laddered_short(
+    runs: &mut Runs,
+    first: Motion,
+    names: &[String],
+    rows: usize,
+    est: impl Fn(Motion, Run) -> Result<(Vec<Estimate>, Vec<usize>)>,
+) -> Result<Vec<Vec<Verified>>> {
     let digits = runs.req.digits;
     let sig = signature(&first);
     let (p1, _) = precisions(digits, 0);
     let cache = RefCell::new(Some(first));
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-    let f = |p: u32, run: Run| -> Result<Vec<Estimate>> {
+    let f = |p: u32, run: Run| -> Result<(Vec<Estimate>, Vec<usize>)> {
         let m = match (p == p1, cache.borrow_mut().take()) {
             (true, Some(m)) => m,
             _ => runs.at(p, run)?,
@@ -403,11 +418,8 @@ pub fn laddered(
         check_balance(&m, digits)?;
         est(m, run)
     };
-    if rows == 1 {
-        ladder_runs(digits, &refs, f).map(|r| vec![r])
-    } else {
-        ladder_table(digits, &refs, rows, f)
-    }
+    // a single row's failure names the quantity alone, a table's its row
+    ladder_rows(digits, &refs, rows, rows != 1, f)
 }
 
 /// The names of the event values: `event1_t`, `event1_theta`, …

@@ -3,7 +3,7 @@
 //! rows so that memory stays bounded ([`trajectory_in_blocks`]); θ alone at
 //! times ([`theta_at_times`]).
 
-use super::ladder::{self, event_estimates, events_of, laddered};
+use super::ladder::{self, event_estimates, events_of, laddered, laddered_short};
 use super::{
     branch_notes, check_digits, check_part_at, check_times, empty_answer, energy_drift,
     energy_note, infinite, runs, Answer, Options, Question, Row,
@@ -307,10 +307,11 @@ fn trajectory_block(
     let first_rows = std::mem::take(&mut first.rows);
     let kept = first.clone();
     first.rows = first_rows;
-    let mut table = laddered(&mut runs, first, &names, n_rows + n_ev, |mut m, run| {
+    let mut table = laddered_short(&mut runs, first, &names, n_rows + n_ev, |mut m, run| {
         let p = m.prec();
         let shared = ladder::column_scales(model, p);
         let mut out = Vec::with_capacity((n_rows + n_ev) * idx.len());
+        let mut widths = Vec::new();
         // the events' times and angles, as rows of their own columns
         let mut ev = Vec::new();
         event_estimates(&m, &shared[0], &mut ev);
@@ -327,8 +328,18 @@ fn trajectory_block(
                 out.push(th);
             }
         } else {
+            widths.reserve(m.rows.len());
             for (pt, text) in m.rows.into_iter().zip(&exact_t) {
-                ladder::push_point_estimates(pt, &shared, text.as_ref(), &idx, run, &mut out);
+                // a lower run's row that carries t and θ alone (the higher
+                // run computes the rest, whose estimates decide alone):
+                // those two, no placeholders for the others
+                let cols = if run == Run::Low && pt.diff_weight == 0 {
+                    &idx[..2]
+                } else {
+                    &idx[..]
+                };
+                widths.push(cols.len());
+                ladder::push_point_estimates(pt, &shared, text.as_ref(), cols, run, &mut out);
             }
         }
         for pair in ev.chunks(2) {
@@ -338,7 +349,7 @@ fn trajectory_block(
             }
             out.extend(row);
         }
-        Ok(out)
+        Ok((out, widths))
     })?;
     let ev_rows = table.split_off(n_rows);
     let ev_vals: Vec<Verified> = ev_rows
