@@ -244,7 +244,8 @@ pub struct Point {
     /// two runs for every column but t ([`crate::numeric::verify::Estimate::diff_weight`]):
     /// 2 where the route's own error is covered by that difference (a
     /// conservative row whose δ the two runs tell apart by more than δ's
-    /// error bound), else 1.
+    /// error bound), else 1; 0 where the higher run computes every column
+    /// but t and θ alone (a table's conservative row: [`Point::is_bare`]).
     pub diff_weight: u32,
 }
 
@@ -256,6 +257,14 @@ impl std::ops::Deref for Point {
 }
 
 impl Point {
+    /// Whether this is a lower run's row that carries t and θ alone (the
+    /// other columns placeholders: the higher run computes them with their
+    /// error, `Request::derived_at_high`), with no energy to balance and no
+    /// estimates beyond those two.
+    pub fn is_bare(&self, run: crate::numeric::verify::Run) -> bool {
+        run == crate::numeric::verify::Run::Low && self.diff_weight == 0
+    }
+
     /// The values in [`COLUMNS`] order.
     pub fn columns(&self) -> Vec<Float> {
         let mut v: Vec<Float> = self.state.values().into_iter().cloned().collect();

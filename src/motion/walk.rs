@@ -53,8 +53,7 @@ impl Walk<'_> {
         // a lower run's row that carries t and θ alone (a conservative
         // phase's row of a table of every column, `Request::derived_at_high`:
         // the higher run computes the rest) has no energy to balance
-        let bare = self.req.run == crate::numeric::verify::Run::Low && pt.diff_weight == 0;
-        if !bare {
+        if !pt.is_bare(self.req.run) {
             self.note(&pt);
         }
         if self.req.theta_only {

@@ -464,6 +464,12 @@ where
         let precs = precisions(digits, attempt);
         let (a, wa) = f(precs.0, Run::Low)?;
         let (b, wb) = f(precs.1, Run::High)?;
+        // a row wider than the names would shift every row after it
+        if let Some(&x) = wa.iter().chain(&wb).find(|&&x| x > w) {
+            return Err(Error::not_physical(format!(
+                "internal: a row of {x} estimates for {w} names"
+            )));
+        }
         let mut failed = None;
         // the estimates are dropped row by row as they are judged: the
         // memory of a long table's estimates serves its verified values
@@ -676,6 +682,11 @@ mod tests {
             Ok((vec![est(p, (1, 3), 0.0); n], vec![n]))
         });
         assert!(matches!(e, Err(Error::NotConverged { .. })));
+        // a row wider than the names is refused, not read into the next
+        let e = ladder_rows(30, &["a"], 2, true, |p, _| {
+            Ok((vec![est(p, (1, 3), 0.0); 3], vec![2, 1]))
+        });
+        assert!(e.is_err());
     }
 
     #[test]

@@ -333,11 +333,7 @@ fn trajectory_block(
                 // a lower run's row that carries t and θ alone (the higher
                 // run computes the rest, whose estimates decide alone):
                 // those two, no placeholders for the others
-                let cols = if run == Run::Low && pt.diff_weight == 0 {
-                    &idx[..2]
-                } else {
-                    &idx[..]
-                };
+                let cols = if pt.is_bare(run) { &idx[..2] } else { &idx[..] };
                 widths.push(cols.len());
                 ladder::push_point_estimates(pt, &shared, text.as_ref(), cols, run, &mut out);
             }
