@@ -30,7 +30,7 @@ fn main() {
             theta_only: false,
             branch: opts.branch.clone(),
             method: opts.method,
-            horizon: motion::default_horizon(&m),
+            horizon: None,
             run,
             digits,
             sides: Vec::new(),

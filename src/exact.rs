@@ -57,9 +57,22 @@ impl Exact {
             };
             Error::invalid(name, text, format!("expected {forms}"))
         };
-        let s: String = text.trim().chars().filter(|c| !c.is_whitespace()).collect();
+        let trimmed = text.trim();
+        // whitespace inside is dropped (a copy only where there is some)
+        let s: std::borrow::Cow<str> = if trimmed.contains(char::is_whitespace) {
+            trimmed.chars().filter(|c| !c.is_whitespace()).collect()
+        } else {
+            trimmed.into()
+        };
         if s.is_empty() {
             return Err(bad());
+        }
+        // a rational (every time of a table) is parsed as it is: its
+        // exponent may be `e` or `E`, and no other letter is valid in it
+        if !s.bytes().any(|c| c.eq_ignore_ascii_case(&b'p')) {
+            let mut e = Exact::rational(parse_rational(&s).ok_or_else(bad)?);
+            e.given = Some(trimmed.into());
+            return Ok(e);
         }
         let lower = s.to_ascii_lowercase();
         if let Some(pos) = lower.find("pi") {
@@ -153,9 +166,15 @@ impl Exact {
 
     /// The exact decimal text of a rational time or angle that is a
     /// terminating decimal (echoed as given, not rounded).
+    ///
+    /// A number given as a plain decimal (`0.0125`, `-3e-4`: every table's
+    /// times) is written from the digits of its text, the same text as from
+    /// its rational but with no big-integer arithmetic.
     pub fn terminating_text(&self) -> Option<String> {
         if self.times_pi {
             None
+        } else if let Some(text) = self.given.as_deref().and_then(decimal_text_of_given) {
+            Some(text)
         } else {
             terminating_text(&self.coef)
         }
@@ -275,8 +294,6 @@ fn decimal_of(q: &Rational, k: u32) -> String {
 /// Exact text of `n`·10^-k: plain, or scientific when the plain text is
 /// longer than [`PLAIN_MAX`] characters and the scientific one shorter.
 fn decimal_text(n: &Integer, k: i64) -> String {
-    let neg = *n < 0;
-    let sign = if neg { "-" } else { "" };
     let all = Integer::from(n.abs_ref()).to_string();
     if all == "0" {
         return "0".into();
@@ -284,6 +301,56 @@ fn decimal_text(n: &Integer, k: i64) -> String {
     // n = m·10^z with m free of trailing zeros: the value is m·10^e
     let m = all.trim_end_matches('0');
     let e = (all.len() - m.len()) as i64 - k;
+    digits_text(*n < 0, m, e)
+}
+
+/// The exact text of the decimal `text` (an optional sign, digits with an
+/// optional point, an optional exponent: what [`parse_decimal`] accepts,
+/// whitespace aside), from its digits: the same text as [`decimal_text`]
+/// gives its value. `None` for any other form.
+fn decimal_text_of_given(text: &str) -> Option<String> {
+    let b = text.as_bytes();
+    let (neg, b) = match b.first()? {
+        b'-' => (true, &b[1..]),
+        b'+' => (false, &b[1..]),
+        _ => (false, b),
+    };
+    let (mant, exp) = match b.iter().position(|&c| c == b'e' || c == b'E') {
+        Some(i) => {
+            let e: i64 = std::str::from_utf8(&b[i + 1..]).ok()?.parse().ok()?;
+            (&b[..i], e)
+        }
+        None => (b, 0),
+    };
+    if exp.abs() > 100_000 {
+        return None;
+    }
+    let (int, frac) = match mant.iter().position(|&c| c == b'.') {
+        Some(i) => (&mant[..i], &mant[i + 1..]),
+        None => (mant, &mant[mant.len()..]),
+    };
+    if (int.is_empty() && frac.is_empty()) || !int.iter().chain(frac).all(u8::is_ascii_digit) {
+        return None;
+    }
+    // the digits int·frac without leading zeros; the value is
+    // digits·10^(exp − frac.len())
+    let mut digits: Vec<u8> = int.iter().chain(frac).copied().collect();
+    let lead = digits.iter().take_while(|&&c| c == b'0').count();
+    digits.drain(..lead);
+    let trail = digits.iter().rev().take_while(|&&c| c == b'0').count();
+    if trail == digits.len() {
+        return Some("0".into());
+    }
+    digits.truncate(digits.len() - trail);
+    let m = std::str::from_utf8(&digits).ok()?;
+    Some(digits_text(neg, m, exp - frac.len() as i64 + trail as i64))
+}
+
+/// The exact text of ±m·10^e (m: decimal digits, neither leading nor
+/// trailing zeros): plain, or scientific when the plain text is longer than
+/// [`PLAIN_MAX`] characters and the scientific one shorter.
+fn digits_text(neg: bool, m: &str, e: i64) -> String {
+    let sign = if neg { "-" } else { "" };
     let d = m.len() as i64;
     let plain_len = if e >= 0 {
         d + e
@@ -293,23 +360,32 @@ fn decimal_text(n: &Integer, k: i64) -> String {
         1 - e
     };
     let exp = e + d - 1;
-    let sci = if d == 1 {
-        format!("{m}e{exp}")
-    } else {
-        format!("{}.{}e{exp}", &m[..1], &m[1..])
-    };
-    if plain_len as usize > PLAIN_MAX && sci.len() < plain_len as usize {
-        return format!("{sign}{sci}");
+    if plain_len as usize > PLAIN_MAX {
+        let sci = if d == 1 {
+            format!("{m}e{exp}")
+        } else {
+            format!("{}.{}e{exp}", &m[..1], &m[1..])
+        };
+        if sci.len() < plain_len as usize {
+            return format!("{sign}{sci}");
+        }
     }
-    let plain = if e >= 0 {
-        format!("{m}{}", "0".repeat(e as usize))
+    let mut out = String::with_capacity(plain_len as usize + 2);
+    out.push_str(sign);
+    if e >= 0 {
+        out.push_str(m);
+        out.extend(std::iter::repeat_n('0', e as usize));
     } else if d > -e {
         let (int, frac) = m.split_at((d + e) as usize);
-        format!("{int}.{frac}")
+        out.push_str(int);
+        out.push('.');
+        out.push_str(frac);
     } else {
-        format!("0.{}{m}", "0".repeat((-e - d) as usize))
-    };
-    format!("{sign}{plain}")
+        out.push_str("0.");
+        out.extend(std::iter::repeat_n('0', (-e - d) as usize));
+        out.push_str(m);
+    }
+    out
 }
 
 /// Parses `a` or `a/b` with `a`, `b` decimals.
@@ -355,23 +431,172 @@ fn parse_decimal(s: &str) -> Option<Rational> {
     if !int.bytes().all(|b| b.is_ascii_digit()) || !frac.bytes().all(|b| b.is_ascii_digit()) {
         return None;
     }
-    let digits = format!("{int}{frac}");
-    let n = Integer::from_str_radix(if digits.is_empty() { "0" } else { &digits }, 10).ok()?;
-    let e = exp - frac.len() as i64;
-    let mut q = if e >= 0 {
-        Rational::from(n * Integer::from(Integer::u_pow_u(10, e as u32)))
+    // the digits without trailing zeros (their count moves to the exponent)
+    let mut digits = String::with_capacity(int.len() + frac.len());
+    digits.push_str(int);
+    digits.push_str(frac);
+    let kept = digits.trim_end_matches('0').len();
+    let e = exp - frac.len() as i64 + (digits.len() - kept) as i64;
+    digits.truncate(kept);
+    if digits.is_empty() {
+        return Some(Rational::new());
+    }
+    // up to 38 digits (every time of a table) in two machine words, longer
+    // by GMP's conversion
+    let mut n = if digits.len() <= 38 {
+        let word = |d: &[u8]| d.iter().fold(0u64, |a, &c| a * 10 + u64::from(c - b'0'));
+        let b = digits.as_bytes();
+        let split = b.len().saturating_sub(19);
+        let (hi, lo) = b.split_at(split);
+        Integer::from(word(hi)) * 10_000_000_000_000_000_000u64 + word(lo)
     } else {
-        Rational::from((n, Integer::from(Integer::u_pow_u(10, (-e) as u32))))
+        Integer::from_str_radix(&digits, 10).ok()?
     };
     if neg {
-        q = -q;
+        n = -n;
     }
-    Some(q)
+    if e >= 0 {
+        return Some(Rational::from(
+            n * Integer::from(Integer::u_pow_u(10, e as u32)),
+        ));
+    }
+    // n / 10^k: n has no factor 10, so it shares 2s or 5s with 10^k, not
+    // both; taken out here, the fraction is in lowest terms without GMP's
+    // general gcd
+    let k = (-e) as u32;
+    let (mut twos, mut fives) = (k, k);
+    let n_twos = n.find_one(0).unwrap_or(0);
+    if n_twos > 0 {
+        let c = n_twos.min(k);
+        n >>= c;
+        twos -= c;
+    } else {
+        while fives > 0 && n.is_divisible_u(5) {
+            n.div_exact_u_mut(5);
+            fives -= 1;
+        }
+    }
+    let den = Integer::from(Integer::u_pow_u(5, fives)) << twos;
+    // SAFETY: n and den = 2^twos·5^fives share no factor (every common 2
+    // or 5 was divided out above, and den has no other prime) and den > 0
+    Some(unsafe { Rational::from_canonical(n, den) })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A decimal's value the plain way (the digits as one integer over a
+    /// power of ten, GMP's gcd), against which the parser's shortcut is
+    /// checked.
+    fn decimal_value(text: &str) -> Rational {
+        let (neg, t) = match text.as_bytes()[0] {
+            b'-' => (true, &text[1..]),
+            b'+' => (false, &text[1..]),
+            _ => (false, text),
+        };
+        let (mant, exp) = match t.find(['e', 'E']) {
+            Some(i) => (&t[..i], t[i + 1..].parse::<i64>().unwrap()),
+            None => (t, 0),
+        };
+        let (int, frac) = mant.split_once('.').unwrap_or((mant, ""));
+        let digits = format!("0{int}{frac}");
+        let n = Integer::from_str_radix(&digits, 10).unwrap();
+        let e = exp - frac.len() as i64;
+        let ten = |k: i64| Integer::from(Integer::u_pow_u(10, k as u32));
+        let q = if e >= 0 {
+            Rational::from(n * ten(e))
+        } else {
+            Rational::from((n, ten(-e)))
+        };
+        if neg {
+            -q
+        } else {
+            q
+        }
+    }
+
+    /// Decimal texts, given and generated: the parser's value is the text's
+    /// value in lowest terms, and the text written from the given digits is
+    /// the text of the value (the big-integer route).
+    #[test]
+    fn a_given_decimal_is_parsed_and_written_as_its_value() {
+        let mut cases: Vec<String> = [
+            "0",
+            "-0",
+            "+0.000",
+            "0.0125",
+            "-3e-4",
+            "1E3",
+            "1e+3",
+            "000120.5000",
+            ".5",
+            "5.",
+            "-.25e-30",
+            "1e-24",
+            "1e-23",
+            "1e-30",
+            "2.5e100",
+            "-2.50e100",
+            "12345678901234567890123456789e-20",
+            "123456789012345678901234",
+            "1234567890123456789012345",
+            "0.004876257089126093852633724",
+            "4.871380832036967758781090276",
+            "7e-100000",
+            "640e-3",
+            "0.5e1",
+            "250",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+        // generated: random digits (runs of zeros and of 2s and 5s among
+        // them), a point anywhere or none, an exponent or none, a sign
+        let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+        let mut next = |m: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x % m
+        };
+        for _ in 0..3000 {
+            let len = 1 + next(40) as usize;
+            let pool = [b"0123456789".as_slice(), b"00000", b"2580", b"5"];
+            let pool = pool[next(4) as usize];
+            let mut d: String = (0..len)
+                .map(|_| pool[next(pool.len() as u64) as usize] as char)
+                .collect();
+            match next(3) {
+                0 => {}
+                _ => d.insert(next(len as u64 + 1) as usize, '.'),
+            }
+            if d == "." {
+                d = "0".into();
+            }
+            if next(2) == 0 {
+                d = format!("{d}e{}", next(81) as i64 - 40);
+            }
+            let sign = ["", "-", "+"][next(3) as usize];
+            cases.push(format!("{sign}{d}"));
+        }
+        for c in &cases {
+            let e = Exact::parse("t", c, false).unwrap();
+            let want = decimal_value(c);
+            assert_eq!(e.coef, want, "{c}");
+            // lowest terms: the parser builds the fraction without the gcd
+            let (n, d) = (e.coef.numer(), e.coef.denom());
+            assert!(*d > 0 && Integer::from(n.gcd_ref(d)) == 1, "{c}: {n}/{d}");
+            assert_eq!(decimal_text_of_given(c), terminating_text(&want), "{c}");
+            assert_eq!(e.terminating_text(), terminating_text(&want), "{c}");
+        }
+        // other forms are left to the rational route
+        for c in ["1/4", "0.5/2", "1 000", "1e", "e3", "", "-", "1..2", "0x10"] {
+            assert_eq!(decimal_text_of_given(c), None, "{c}");
+        }
+        let q = Exact::parse("t", "1/4", false).unwrap();
+        assert_eq!(q.terminating_text().as_deref(), Some("0.25"));
+    }
 
     #[test]
     fn compares_exactly_not_after_rounding() {

@@ -63,7 +63,7 @@ fn run(m: &Model, prec: u32, times: &[Exact]) -> motion::Motion {
         theta_only: false,
         branch: motion::Branch::Stay,
         method: motion::Method::Auto,
-        horizon: motion::default_horizon(m),
+        horizon: None,
         run: Run::High,
         digits: 0,
         sides: Vec::new(),

@@ -26,7 +26,6 @@ fn model(text: &str) -> Model {
 
 fn run(m: &Model, method: Method, times: &[&str], prec: u32) -> motion::Motion {
     let mut req = Request::to_end(
-        m,
         times
             .iter()
             .map(|t| Exact::parse("t", t, false).unwrap())

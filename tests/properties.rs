@@ -211,7 +211,7 @@ proptest! {
             theta_only: false,
             branch: motion::Branch::Stay,
             method: motion::Method::Auto,
-            horizon: motion::default_horizon(&model),
+            horizon: None,
             run: cylroll::numeric::verify::Run::High,
             digits: 0,
             sides: Vec::new(),

@@ -36,7 +36,10 @@ repeated runs with the same integrators (time and state reset). Python start-up,
 imports and the sympy derivation are not counted (reported once).
 
 The `cylroll` commands are run as processes in the same run, CPU = user +
-system of the child (as /usr/bin/time reports it), median of repeats:
+system of the child (as /usr/bin/time reports it), median of 15 repeats up to
+100 digits (a 30 ms process measured 5 times on a shared machine could land
+on a busy stretch: 26 ms and 33 ms were medians of the same command in one
+run), 3 above:
   cylroll separation --theta0 1/10 --mu-floor 0.3 --mu-contact 0.3 --digits D --format json
   cylroll trajectory ... --times t0,t1,...,t999 --digits D --format csv --columns t,theta,mode
   cylroll trajectory ... --times t0,t1,...,t999 --digits D --format csv
@@ -56,7 +59,7 @@ after --time-limit seconds (then the row says so).
 
 Usage (from the project root; builds target/bench-venv on first use):
   python3 bench/anchors/heyoka_friction.py --digits 30,100,300,1000 [--rows-digits 30,100]
-      [--tasks events,theta,rows] [--out FILE.json] [--cylroll-reps 5] [--pairs 15] [--time-limit 900]
+      [--tasks events,theta,rows] [--out FILE.json] [--cylroll-reps 15] [--pairs 15] [--time-limit 900]
 Needs target/release/cylroll (cargo build --release) or CYLROLL_BIN.
 """
 import os
@@ -478,7 +481,7 @@ def main():
     ap.add_argument("--rows-digits", default="30,100")
     ap.add_argument("--tasks", default="events,theta,rows")
     ap.add_argument("--cold-reps", type=int, default=3, help="fresh builds per cold figure (1 above 100 digits)")
-    ap.add_argument("--cylroll-reps", type=int, default=5, help="processes per cylroll figure (3 above 100 digits)")
+    ap.add_argument("--cylroll-reps", type=int, default=15, help="processes per cylroll figure (3 above 100 digits)")
     ap.add_argument("--pairs", type=int, default=15, help="alternating pairs for every column / θ only (a third above 100 digits)")
     ap.add_argument("--time-limit", type=float, default=900, help="seconds per heyoka measurement (a task at D digits)")
     ap.add_argument("--out", default=os.path.join(common.ROOT, "target", "bench-friction", "heyoka_friction.json"))

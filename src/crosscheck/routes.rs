@@ -37,7 +37,7 @@ pub fn motion_by(model: &Model, method: Method, prec: u32, horizon: &Float) -> R
         theta_only: false,
         branch: motion::Branch::Stay,
         method,
-        horizon: horizon.clone(),
+        horizon: Some(horizon.clone()),
         run: Run::High,
         digits: 0,
         sides: Vec::new(),

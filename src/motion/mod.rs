@@ -241,7 +241,10 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             let beyond = (Float::with_val(wp, last.abs_ref()) + &ctx.ts) >> (bits / 4 + 4);
             last + beyond
         }
-        _ => Float::with_val(wp, &req.horizon),
+        _ => match &req.horizon {
+            Some(h) => Float::with_val(wp, h),
+            None => Float::with_val(wp, caches.horizon(model)),
+        },
     };
     // --- a conservative first phase: the energy route
     crate::cancel::check()?;

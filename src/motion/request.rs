@@ -111,9 +111,11 @@ pub struct Request {
     pub branch: Branch,
     /// The integrators.
     pub method: Method,
-    /// The time beyond which a motion that has not ended is an error
-    /// ([`default_horizon`]).
-    pub horizon: Float,
+    /// The time beyond which a motion that has not ended is an error;
+    /// `None`: [`default_horizon`], computed when a motion needs it (one
+    /// that ends at its last requested time never does) and kept in the
+    /// [`Caches`] for the ladder's other runs.
+    pub horizon: Option<Float>,
     /// Which run of the ladder this is.
     pub run: Run,
     /// Digits requested (for messages).
@@ -140,16 +142,17 @@ pub struct Request {
 }
 
 impl Request {
-    /// The motion of `model` to its end, sampled at `times`, on the
-    /// default branch and routes (the horizon [`default_horizon`]).
-    pub fn to_end(model: &Model, times: Vec<Exact>) -> Self {
+    /// A motion to its end, sampled at `times`, on the default branch and
+    /// routes (the horizon [`default_horizon`] of the model it is run for,
+    /// computed when needed).
+    pub fn to_end(times: Vec<Exact>) -> Self {
         Request {
             times,
             until: Until::End,
             theta_only: false,
             branch: Branch::Stay,
             method: Method::Auto,
-            horizon: default_horizon(model),
+            horizon: None,
             run: Run::High,
             digits: 0,
             sides: Vec::new(),
@@ -230,6 +233,8 @@ impl Motion {
 pub struct Caches {
     /// The energy route of the model with every Coulomb contact sticking.
     pub sticking: Option<EnergyRoute>,
+    /// The model's [`default_horizon`], once computed.
+    pub horizon: Option<Float>,
 }
 
 impl Caches {
@@ -241,5 +246,10 @@ impl Caches {
             self.sticking = Some(EnergyRoute::new(&model.sticking())?);
         }
         Ok(self.sticking.as_mut().expect("set above"))
+    }
+
+    /// [`default_horizon`] of `model`, computed on first use.
+    pub fn horizon(&mut self, model: &Model) -> &Float {
+        self.horizon.get_or_insert_with(|| default_horizon(model))
     }
 }

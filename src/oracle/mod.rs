@@ -141,7 +141,7 @@ fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -
             theta_only: false,
             branch: opts.branch.clone(),
             method: opts.method,
-            horizon: motion::default_horizon(model),
+            horizon: None,
             run: Run::Low,
             digits: opts.digits,
             sides: Vec::new(),
