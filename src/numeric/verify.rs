@@ -405,8 +405,9 @@ pub fn ladder_runs<F>(digits: u32, names: &[&str], mut f: F) -> Result<Vec<Verif
 where
     F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
 {
+    let w = names.len();
     let mut rows = ladder_rows(digits, names, 1, false, |p, run| {
-        f(p, run).map(|v| (v, Vec::new()))
+        f(p, run).map(|v| estimate_rows(v, Vec::new(), w))
     })?;
     Ok(rows.pop().unwrap_or_default())
 }
@@ -428,16 +429,35 @@ pub fn ladder_table<F>(
 where
     F: FnMut(u32, Run) -> Result<Vec<Estimate>>,
 {
+    let w = names.len();
     ladder_rows(digits, names, rows, true, |p, run| {
-        f(p, run).map(|v| (v, Vec::new()))
+        f(p, run).map(|v| estimate_rows(v, Vec::new(), w))
     })
+}
+
+/// One run's estimates, row by row, as the ladder judges them: a row's
+/// estimates are made when the ladder comes to it, so that a long table's
+/// estimates of both runs are never held at once (each row's are judged,
+/// then dropped).
+pub(crate) type RowIter<'a> = Box<dyn Iterator<Item = Vec<Estimate>> + 'a>;
+
+/// The rows of a flat vector of estimates: `widths[r]` estimates in row r
+/// (one per name, `w`, beyond the list or where it is empty).
+pub(crate) fn estimate_rows(est: Vec<Estimate>, widths: Vec<usize>, w: usize) -> RowIter<'static> {
+    let mut it = est.into_iter();
+    let mut r = 0;
+    Box::new(std::iter::from_fn(move || {
+        let n = widths.get(r).copied().unwrap_or(w);
+        r += 1;
+        let row: Vec<Estimate> = it.by_ref().take(n).collect();
+        (!row.is_empty()).then_some(row)
+    }))
 }
 
 /// The ladder of [`ladder_table`] and [`ladder_runs`] (`rows` rows;
 /// `label_rows`: name the row of a quantity that fails, a table's, or not,
-/// a single row's), whose lower run may leave rows short: `f` returns with
-/// the estimates the number of them in each row (rows beyond that list, or
-/// every row where it is empty, have one per name). A row's estimates are
+/// a single row's), whose lower run may leave rows short: `f` returns the
+/// run's rows, each made as it is judged ([`RowIter`]). A row's estimates are
 /// the first names' in order; a value the lower run left must be one the
 /// higher run's estimate decides alone (its `diff_weight` 0, or exactly
 /// zero by construction in both runs): nothing is compared for it. A table
@@ -446,7 +466,7 @@ where
 ///
 /// Errors: as [`ladder_table`]; a value missing from the higher run, or
 /// from the lower run where it is compared, is not computed.
-pub(crate) fn ladder_rows<F>(
+pub(crate) fn ladder_rows<'a, F>(
     digits: u32,
     names: &[&str],
     rows: usize,
@@ -454,7 +474,7 @@ pub(crate) fn ladder_rows<F>(
     mut f: F,
 ) -> Result<Vec<Vec<Verified>>>
 where
-    F: FnMut(u32, Run) -> Result<(Vec<Estimate>, Vec<usize>)>,
+    F: FnMut(u32, Run) -> Result<RowIter<'a>>,
 {
     let w = names.len();
     let mut done: Vec<Option<Vec<Verified>>> = vec![None; rows];
@@ -462,31 +482,28 @@ where
     for attempt in 0..MAX_ATTEMPTS {
         crate::cancel::check()?;
         let precs = precisions(digits, attempt);
-        let (a, wa) = f(precs.0, Run::Low)?;
-        let (b, wb) = f(precs.1, Run::High)?;
-        // a row wider than the names would shift every row after it
-        if let Some(&x) = wa.iter().chain(&wb).find(|&&x| x > w) {
-            return Err(Error::not_physical(format!(
-                "internal: a row of {x} estimates for {w} names"
-            )));
-        }
+        let mut a = f(precs.0, Run::Low)?;
+        let mut b = f(precs.1, Run::High)?;
         let mut failed = None;
-        // the estimates are dropped row by row as they are judged: the
-        // memory of a long table's estimates serves its verified values
-        let (mut ai, mut bi) = (a.into_iter(), b.into_iter());
-        let (mut row_a, mut row_b) = (Vec::with_capacity(w), Vec::with_capacity(w));
+        // each row's estimates are made as the row is judged and dropped
+        // after it: the memory of a row's estimates serves the next row's
         for (r, slot) in done.iter_mut().enumerate() {
-            row_a.clear();
-            row_b.clear();
-            row_a.extend(ai.by_ref().take(wa.get(r).copied().unwrap_or(w)));
-            row_b.extend(bi.by_ref().take(wb.get(r).copied().unwrap_or(w)));
+            let row_a = a.next().unwrap_or_default();
+            let row_b = b.next().unwrap_or_default();
+            // a row wider than the names would shift its values into the
+            // wrong columns
+            if let Some(x) = [row_a.len(), row_b.len()].into_iter().find(|&x| x > w) {
+                return Err(Error::not_physical(format!(
+                    "internal: a row of {x} estimates for {w} names"
+                )));
+            }
             if slot.is_some() {
                 continue;
             }
             let mut out = Vec::with_capacity(names.len());
             let mut row_failed = None;
             // the higher run's values move into the verified ones
-            let mut bs = row_b.drain(..);
+            let mut bs = row_b.into_iter();
             for (i, name) in names.iter().enumerate() {
                 let Some(eb) = bs.next() else {
                     return Err(Error::NotConverged {
@@ -651,7 +668,7 @@ mod tests {
                     Vec::new()
                 };
                 out.extend(row1);
-                Ok((out, widths))
+                Ok(estimate_rows(out, widths, 3))
             })
         };
         let rungs = Cell::new(0);
@@ -679,12 +696,12 @@ mod tests {
         // the higher run leaving a value is an error
         let e = ladder_rows(30, &["a", "b"], 1, false, |p, run| {
             let n = if run == Run::High { 1 } else { 2 };
-            Ok((vec![est(p, (1, 3), 0.0); n], vec![n]))
+            Ok(estimate_rows(vec![est(p, (1, 3), 0.0); n], vec![n], 2))
         });
         assert!(matches!(e, Err(Error::NotConverged { .. })));
         // a row wider than the names is refused, not read into the next
         let e = ladder_rows(30, &["a"], 2, true, |p, _| {
-            Ok((vec![est(p, (1, 3), 0.0); 3], vec![2, 1]))
+            Ok(estimate_rows(vec![est(p, (1, 3), 0.0); 3], vec![2, 1], 1))
         });
         assert!(e.is_err());
     }

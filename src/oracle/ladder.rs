@@ -10,7 +10,9 @@ use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::model::Model;
 use crate::motion::{self, Caches, Motion, Phase, Point, Request, Side, Until};
-use crate::numeric::verify::{ladder_rows, precisions, Estimate, Run, Verified};
+use crate::numeric::verify::{
+    estimate_rows, ladder_rows, precisions, Estimate, RowIter, Run, Verified,
+};
 use rug::Float;
 use std::cell::RefCell;
 use std::sync::Arc;
@@ -369,27 +371,28 @@ pub fn laddered(
     rows: usize,
     est: impl Fn(Motion, Run) -> Result<Vec<Estimate>>,
 ) -> Result<Vec<Vec<Verified>>> {
+    let w = names.len();
     laddered_short(runs, first, names, rows, |m, run| {
-        est(m, run).map(|v| (v, Vec::new()))
+        est(m, run).map(|v| estimate_rows(v, Vec::new(), w))
     })
 }
 
-/// [`laddered`] whose estimates may leave rows of the lower run short:
-/// `est` returns with them the number of estimates in each row (empty:
-/// every row whole), as `numeric::verify::ladder_rows` takes them.
-pub fn laddered_short(
+/// [`laddered`] whose estimates are made row by row as they are judged
+/// (`est` returns the run's rows lazily, [`RowIter`]), and may leave rows of
+/// the lower run short, as `numeric::verify::ladder_rows` takes them.
+pub(crate) fn laddered_short<'a>(
     runs: &mut Runs,
     first: Motion,
     names: &[String],
     rows: usize,
-    est: impl Fn(Motion, Run) -> Result<(Vec<Estimate>, Vec<usize>)>,
+    est: impl Fn(Motion, Run) -> Result<RowIter<'a>>,
 ) -> Result<Vec<Vec<Verified>>> {
     let digits = runs.req.digits;
     let sig = signature(&first);
     let (p1, _) = precisions(digits, 0);
     let cache = RefCell::new(Some(first));
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-    let f = |p: u32, run: Run| -> Result<(Vec<Estimate>, Vec<usize>)> {
+    let f = |p: u32, run: Run| -> Result<RowIter<'a>> {
         let m = match (p == p1, cache.borrow_mut().take()) {
             (true, Some(m)) => m,
             _ => runs.at(p, run)?,

@@ -12,7 +12,7 @@ use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::model::Model;
 use crate::motion::{self, Phase, Until};
-use crate::numeric::verify::{precisions, Estimate, Run, Verified};
+use crate::numeric::verify::{estimate_rows, precisions, Estimate, RowIter, Run, Verified};
 use rug::Float;
 
 /// The first of `times` that [`trajectory`] refuses on its own (a time past
@@ -307,45 +307,46 @@ fn trajectory_block(
     let first_rows = std::mem::take(&mut first.rows);
     let kept = first.clone();
     first.rows = first_rows;
+    let (idx, exact_t) = (&idx, &exact_t);
     let mut table = laddered_short(&mut runs, first, &names, n_rows + n_ev, |mut m, run| {
         let p = m.prec();
         let shared = ladder::column_scales(model, p);
-        let mut out = Vec::with_capacity((n_rows + n_ev) * idx.len());
-        let mut widths = Vec::new();
         // the events' times and angles, as rows of their own columns
         let mut ev = Vec::new();
         event_estimates(&m, &shared[0], &mut ev);
+        let ev_rows: Vec<Vec<Estimate>> = ev
+            .chunks(2)
+            .map(|pair| {
+                let mut row = vec![pair[0].clone(), pair[1].clone()];
+                for &k in idx.iter().skip(2) {
+                    row.push(Estimate::zero_shared(p, shared[k].clone()));
+                }
+                row
+            })
+            .collect();
         if theta_only {
             let tf = std::mem::take(&mut m.times);
-            for ((t, th), text) in tf
-                .into_iter()
-                .zip(ladder::theta_estimates(&m))
-                .zip(&exact_t)
-            {
+            let mut out = Vec::with_capacity(2 * n_rows);
+            for ((t, th), text) in tf.into_iter().zip(ladder::theta_estimates(&m)).zip(exact_t) {
                 let mut te = ladder::integrated_shared(t, shared[0].clone());
                 te.exact_text = text.clone();
                 out.push(te);
                 out.push(th);
             }
-        } else {
-            widths.reserve(m.rows.len());
-            for (pt, text) in m.rows.into_iter().zip(&exact_t) {
-                // a lower run's row that carries t and θ alone (the higher
-                // run computes the rest, whose estimates decide alone):
-                // those two, no placeholders for the others
-                let cols = if pt.is_bare(run) { &idx[..2] } else { &idx[..] };
-                widths.push(cols.len());
-                ladder::push_point_estimates(pt, &shared, text.as_ref(), cols, run, &mut out);
-            }
+            return Ok(Box::new(estimate_rows(out, Vec::new(), 2).chain(ev_rows)) as RowIter);
         }
-        for pair in ev.chunks(2) {
-            let mut row = vec![pair[0].clone(), pair[1].clone()];
-            for &k in idx.iter().skip(2) {
-                row.push(Estimate::zero_shared(p, shared[k].clone()));
-            }
-            out.extend(row);
-        }
-        Ok((out, widths))
+        // each row's estimates made from its point when the ladder judges
+        // the row (the point's values moved into them)
+        let rows = m.rows.into_iter().zip(exact_t).map(move |(pt, text)| {
+            // a lower run's row that carries t and θ alone (the higher run
+            // computes the rest, whose estimates decide alone): those two,
+            // no placeholders for the others
+            let cols = if pt.is_bare(run) { &idx[..2] } else { &idx[..] };
+            let mut out = Vec::with_capacity(cols.len());
+            ladder::push_point_estimates(pt, &shared, text.as_ref(), cols, run, &mut out);
+            out
+        });
+        Ok(Box::new(rows.chain(ev_rows)) as RowIter)
     })?;
     let ev_rows = table.split_off(n_rows);
     let ev_vals: Vec<Verified> = ev_rows
