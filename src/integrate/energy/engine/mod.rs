@@ -18,11 +18,11 @@ use std::collections::HashMap;
 
 pub struct Engine {
     pub dynm: Dyn,
-    /// The rule of [`Engine::time`] (its nodes are part of `separation()`'s
-    /// recorded output, so they stay bit for bit as they were).
+    /// The tanh-sinh rule of [`Engine::time`] (the θ form) and of
+    /// [`Engine::time_fast`] (the half-angle forms): one rule, its nodes
+    /// built once for both (from the recurrence of
+    /// [`TanhSinh::with_fast_nodes`]).
     pub ts: TanhSinh,
-    /// The rule of [`Engine::time_fast`] (nodes built at half the cost).
-    ts_half: TanhSinh,
     scratch: Scratch,
     half: HalfAngleTime,
     /// θ = 2π/3 − θ0: the half-angle form is used up to this δ.
@@ -78,7 +78,6 @@ impl Engine {
         Ok(Engine {
             dynm,
             ts: TanhSinh::with_fast_nodes(prec),
-            ts_half: TanhSinh::with_fast_nodes(prec),
             scratch: Scratch::new(prec),
             half,
             half_limit,
@@ -170,7 +169,7 @@ impl Engine {
         };
         let half = &mut self.half;
         let r = self
-            .ts_half
+            .ts
             .integrate_with(&sigma, p.saturating_sub(10), stop, |x, out| {
                 half.eval(x, out)
             });
@@ -218,7 +217,7 @@ impl Engine {
         let tiny = self.tiny.get_or_insert_with(|| TinyStart::new(&self.half));
         let log_part = tiny.log_part(&sigma);
         let r =
-            self.ts_half
+            self.ts
                 .integrate_with(&sigma, p.saturating_sub(10), Stop::Geometric, |x, out| {
                     tiny.eval(x, out)
                 });
