@@ -360,15 +360,16 @@ fn digits_text(neg: bool, m: &str, e: i64) -> String {
         1 - e
     };
     let exp = e + d - 1;
-    if plain_len as usize > PLAIN_MAX {
-        let sci = if d == 1 {
-            format!("{m}e{exp}")
+    // the scientific text's length: the digits, a point after the first
+    // of several, `e`, the exponent
+    let exp_len = exp.unsigned_abs().checked_ilog10().unwrap_or(0) as i64 + 1 + i64::from(exp < 0);
+    let sci_len = d + i64::from(d > 1) + 1 + exp_len;
+    if plain_len as usize > PLAIN_MAX && sci_len < plain_len {
+        return if d == 1 {
+            format!("{sign}{m}e{exp}")
         } else {
-            format!("{}.{}e{exp}", &m[..1], &m[1..])
+            format!("{sign}{}.{}e{exp}", &m[..1], &m[1..])
         };
-        if sci.len() < plain_len as usize {
-            return format!("{sign}{sci}");
-        }
     }
     let mut out = String::with_capacity(plain_len as usize + 2);
     out.push_str(sign);
@@ -589,6 +590,29 @@ mod tests {
             assert!(*d > 0 && Integer::from(n.gcd_ref(d)) == 1, "{c}: {n}/{d}");
             assert_eq!(decimal_text_of_given(c), terminating_text(&want), "{c}");
             assert_eq!(e.terminating_text(), terminating_text(&want), "{c}");
+        }
+        // the plain text while its length as counted (1 − e for 0.0…0d,
+        // one short of the text) is at most 24, beyond that the scientific
+        // one where it is shorter (written out by hand)
+        for (c, want) in [
+            ("1e-24", "1e-24"),
+            ("1e-23", "0.00000000000000000000001"),
+            ("-1e-23", "-0.00000000000000000000001"),
+            ("-1e-24", "-1e-24"),
+            ("1e-21", "0.000000000000000000001"),
+            ("1234567890123456789012345", "1234567890123456789012345"),
+            ("1e24", "1e24"),
+            ("1e23", "100000000000000000000000"),
+            ("12e-30", "1.2e-29"),
+            ("123456789e-30", "1.23456789e-22"),
+            (
+                "4.871380832036967758781090276",
+                "4.871380832036967758781090276",
+            ),
+            ("25e99", "2.5e100"),
+            ("1e1000", "1e1000"),
+        ] {
+            assert_eq!(decimal_text_of_given(c).as_deref(), Some(want), "{c}");
         }
         // other forms are left to the rational route
         for c in ["1/4", "0.5/2", "1 000", "1e", "e3", "", "-", "1..2", "0x10"] {

@@ -403,13 +403,24 @@ use input::in_file;
 /// (`times`, `times-file PATH`) and each entry's place in it.
 struct Origins {
     param: String,
-    places: Vec<String>,
+    /// The line of each entry of a file (empty for a list: entry i alone).
+    lines: Vec<usize>,
 }
 
 impl Origins {
-    /// The name of entry `i` in a message: `times-file t.txt: entry 3 (line 2)`.
+    /// The name of entry `i` (from 0) in a message: `times: entry 3`,
+    /// `times-file t.txt: entry 3 (line 2)`; made only for a message.
     fn name(&self, i: usize) -> String {
-        format!("{}: {}", self.param, self.places[i])
+        match self.lines.get(i) {
+            Some(line) => format!("{}: entry {} (line {line})", self.param, i + 1),
+            None => format!("{}: entry {}", self.param, i + 1),
+        }
+    }
+
+    /// Entry `i` parsed, a refusal naming it.
+    fn parse(&self, i: usize, text: &str) -> Result<Exact> {
+        Exact::parse(&self.param, text, false)
+            .map_err(|e| e.map_invalid(|_, value| (self.name(i), value)))
     }
 
     /// The times in order and not negative, each refusal naming its entry.
@@ -454,17 +465,14 @@ impl Origins {
 
 /// The times of `--times t1,t2,...`, each entry named by its place.
 fn parse_list(s: &str) -> Result<(Vec<Exact>, Origins)> {
-    let places: Vec<String> = (1..=s.split(',').count())
-        .map(|i| format!("entry {i}"))
-        .collect();
     let origins = Origins {
         param: "times".into(),
-        places,
+        lines: Vec::new(),
     };
     let times = s
         .split(',')
         .enumerate()
-        .map(|(i, t)| Exact::parse(&origins.name(i), t, false))
+        .map(|(i, t)| origins.parse(i, t))
         .collect::<Result<Vec<_>>>()?;
     Ok((times, origins))
 }
@@ -478,7 +486,7 @@ fn times_file(path: &std::path::Path) -> Result<(Vec<Exact>, Origins)> {
     let text = input::read_input(path, "times-file", MAX_TIMES_FILE)?;
     let mut origins = Origins {
         param: format!("times-file {}", path.display()),
-        places: Vec::new(),
+        lines: Vec::new(),
     };
     let mut times = Vec::new();
     for (line, content) in text.split('\n').enumerate() {
@@ -486,10 +494,8 @@ fn times_file(path: &std::path::Path) -> Result<(Vec<Exact>, Origins)> {
             .split(|c: char| c == ',' || c.is_whitespace())
             .filter(|s| !s.is_empty())
         {
-            origins
-                .places
-                .push(format!("entry {} (line {})", times.len() + 1, line + 1));
-            times.push(Exact::parse(&origins.name(times.len()), t, false)?);
+            origins.lines.push(line + 1);
+            times.push(origins.parse(times.len(), t)?);
         }
     }
     if times.is_empty() {

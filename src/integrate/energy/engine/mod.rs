@@ -216,11 +216,11 @@ impl Engine {
         }
         let tiny = self.tiny.get_or_insert_with(|| TinyStart::new(&self.half));
         let log_part = tiny.log_part(&sigma);
-        let r =
-            self.ts
-                .integrate_with(&sigma, p.saturating_sub(10), Stop::Geometric, |x, out| {
-                    tiny.eval(x, out)
-                });
+        let r = self
+            .ts
+            .integrate_with(&sigma, p.saturating_sub(10), Stop::Geometric, |x, out| {
+                tiny.eval(x, out)
+            });
         let (reg, mut e) = Self::quad_answer(p, r);
         let mut v = Float::with_val(p, &log_part + &reg);
         v *= &self.half.factor;
