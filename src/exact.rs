@@ -138,7 +138,7 @@ impl Exact {
             let pi = Float::with_val(prec + 8, rug::float::Constant::Pi);
             Float::with_val(prec, pi * &self.coef)
         } else {
-            Float::with_val(prec, &self.coef)
+            word_quotient(&self.coef, prec).unwrap_or_else(|| Float::with_val(prec, &self.coef))
         }
     }
 
@@ -226,6 +226,27 @@ impl fmt::Display for Exact {
         };
         f.write_str(&text)
     }
+}
+
+/// n/d rounded to nearest at `prec` bits where n fits in `prec` bits and
+/// d = 2^a·o with o odd below 2^64 (a decimal time's 10^k up to k = 27, any
+/// dyadic): n exactly, one correctly rounded division by the machine word o,
+/// an exact scaling by 2^−a — the bits of MPFR's rounding of the rational
+/// (`mpfr_set_q`), without its long division. `None` otherwise.
+fn word_quotient(q: &Rational, prec: u32) -> Option<Float> {
+    let (n, d) = (q.numer(), q.denom());
+    if n.significant_bits() > prec {
+        return None;
+    }
+    let twos = d.find_one(0)?;
+    if d.significant_bits() - twos > 64 {
+        return None;
+    }
+    let odd = Integer::from(d >> twos).to_u64()?;
+    let mut f = Float::with_val(prec, n);
+    f /= odd;
+    f >>= twos;
+    Some(f)
 }
 
 /// Longest plain decimal text before [`rational_text`] switches to the
@@ -714,6 +735,46 @@ mod tests {
         let x = Exact::parse("x", "1/10", false).unwrap().to_float(200);
         let y = Float::with_val(200, 1) / 10u32;
         assert_eq!(x, y);
+    }
+
+    /// The quotient by a machine word gives MPFR's rounding of the rational
+    /// bit for bit: decimals of up to 40 digits (denominators 10^k, some
+    /// beyond a word), dyadics, odd denominators near 2^64, both signs, at
+    /// precisions from 2 to 400 bits (numerators wider than the precision
+    /// go to MPFR).
+    #[test]
+    fn a_word_quotient_is_mpfrs_rounding() {
+        let mut x: u64 = 0x5851_f42d_4c95_7f2d;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let pow = |b: u32, e: u32| Integer::from(Integer::u_pow_u(b, e));
+        for _ in 0..4000 {
+            let n = Integer::from(next())
+                * Integer::from(next() >> (next() % 64))
+                * if next() % 2 == 0 { 1 } else { -1 };
+            let d = match next() % 4 {
+                0 => pow(10, (next() % 41) as u32),
+                1 => pow(2, (next() % 300) as u32),
+                2 => Integer::from(u64::MAX - (next() % 1000) * 2) << (next() % 70) as u32,
+                _ => pow(5, (next() % 30) as u32) * pow(2, (next() % 10) as u32),
+            };
+            let q = Rational::from((n, d));
+            for prec in [2, 53, 64, 100, 128, 171, 333, 400] {
+                let want = Float::with_val(prec, &q);
+                let e = Exact::rational(q.clone());
+                let got = e.to_float(prec);
+                assert_eq!(
+                    (got.to_integer_exp(), got.is_sign_negative()),
+                    (want.to_integer_exp(), want.is_sign_negative()),
+                    "{q} at {prec} bits"
+                );
+                assert_eq!(got.prec(), prec);
+            }
+        }
     }
 
     /// The factors 2 and 5 of a denominator, counted by shifts and small
