@@ -116,7 +116,14 @@ const ROWS_MARK: &str = "\u{0}ROWS\u{0}";
 /// [`table_parts`]; `first`: these are the first rows of the table (JSON
 /// separates rows by commas).
 pub fn rows_text(a: &Answer, format: Format, first: bool) -> String {
-    let mut out = String::new();
+    // room for the cells and their separators of a text or CSV table (a
+    // long table's text would be copied at every doubling)
+    let cells: usize = a
+        .rows
+        .iter()
+        .map(|r| r.values.iter().map(|v| v.text.len() + 1).sum::<usize>() + 16)
+        .sum();
+    let mut out = String::with_capacity(cells);
     // the columns once for every row (a row's cells are written straight
     // into `out`: a table of 10^5 rows is the common case)
     let cols = columns(a);

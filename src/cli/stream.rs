@@ -77,8 +77,13 @@ impl Spill {
     /// Appends `s`; what is held goes to the file first when `s` would take
     /// it past [`SPILL_BYTES`], so the text in memory never outgrows that
     /// (pushed and then flushed, it doubled its buffer to twice as much).
-    fn push(&mut self, s: &str) -> Result<()> {
-        if !self.mem.is_empty() && self.mem.len() + s.len() > SPILL_BYTES {
+    fn push(&mut self, s: String) -> Result<()> {
+        if self.mem.is_empty() {
+            // the first text kept as it is, not copied
+            self.mem = s;
+            return Ok(());
+        }
+        if self.mem.len() + s.len() > SPILL_BYTES {
             if self.file.is_none() {
                 self.file = Some(temp_file()?);
             }
@@ -87,7 +92,7 @@ impl Spill {
             }
             self.mem.clear();
         }
-        self.mem.push_str(s);
+        self.mem.push_str(&s);
         Ok(())
     }
 
@@ -160,7 +165,7 @@ pub fn trajectory(
             }
             let first = stats.rows == 0;
             stats.add(&a);
-            spill.push(&rows_text(&a, format, first))
+            spill.push(rows_text(&a, format, first))
         })?;
     if rigorous {
         rigor.notes(&mut head);

@@ -360,10 +360,14 @@ fn trajectory_block(
         .map(|&k| idx.iter().position(|&i| i == k).unwrap_or(0))
         .collect();
     let distinct = at.iter().enumerate().all(|(i, a)| !at[..i].contains(a));
+    // every column in the order verified (a table of every column): as it is
+    let identity = at.len() == idx.len() && at.iter().enumerate().all(|(i, &a)| a == i);
     let table: Vec<Vec<Verified>> = table
         .into_iter()
         .map(|row| {
-            if distinct {
+            if identity {
+                row
+            } else if distinct {
                 // each value moved to its place (a column asked once)
                 let mut row: Vec<Option<Verified>> = row.into_iter().map(Some).collect();
                 at.iter().filter_map(|&i| row[i].take()).collect()
