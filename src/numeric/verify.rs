@@ -16,6 +16,7 @@ use super::bits_for_digits;
 use super::decimal::{render, round_sig, short, to_sig};
 use crate::error::{Error, Result};
 use rug::Float;
+use std::borrow::Cow;
 
 /// How many times the ladder climbs before giving up.
 pub const MAX_ATTEMPTS: u32 = 3;
@@ -222,7 +223,7 @@ fn judge(
     a: &Estimate,
     b: &Estimate,
 ) -> std::result::Result<Verified, u32> {
-    judged(digits, a, b).map(|j| j.verified(name, precs, || b.value.clone()))
+    judged(digits, a, b).map(|j| j.verified(name, precs, || b.value.clone(), || b.err.clone()))
 }
 
 /// What [`judge`] decides of a value, without the value itself (a table's
@@ -233,19 +234,36 @@ struct Judged {
     value: Option<Float>,
     text: String,
     digits: u32,
-    err_bound: Float,
+    /// The bound; `None`: the higher run's own error estimate (a value it
+    /// computed alone, `diff_weight` 0), moved in rather than copied.
+    err_bound: Option<Float>,
 }
 
 impl Judged {
-    fn verified(self, name: &str, precs: (u32, u32), value: impl FnOnce() -> Float) -> Verified {
+    fn verified(
+        self,
+        name: &str,
+        precs: (u32, u32),
+        value: impl FnOnce() -> Float,
+        err: impl FnOnce() -> Float,
+    ) -> Verified {
         Verified {
             name: name.to_string(),
             value: self.value.unwrap_or_else(value),
             text: self.text,
             digits: self.digits,
-            err_bound: self.err_bound,
+            err_bound: self.err_bound.unwrap_or_else(err),
             precs,
         }
+    }
+}
+
+/// A bound as [`Judged`] keeps it: `None` where it is the estimate's own
+/// error.
+fn kept(bound: Cow<'_, Float>) -> Option<Float> {
+    match bound {
+        Cow::Borrowed(_) => None,
+        Cow::Owned(b) => Some(b),
     }
 }
 
@@ -256,7 +274,7 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
             value: None,
             text: text.clone(),
             digits,
-            err_bound: Float::new(p),
+            err_bound: Some(Float::new(p)),
         });
     }
     if a.exact_zero && b.exact_zero {
@@ -264,7 +282,7 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
             value: Some(Float::new(p)),
             text: "0".to_string(),
             digits,
-            err_bound: Float::new(p),
+            err_bound: Some(Float::new(p)),
         });
     }
     let bound = error_bound(a, b);
@@ -274,12 +292,12 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
     if b.value.cmp_abs(&bound) != Some(std::cmp::Ordering::Greater) {
         // indistinguishable from zero: print 0 if the bound is negligible
         // at the requested digits relative to the quantity's natural scale
-        if bound <= negligible(b, digits) {
+        if *bound <= negligible(b, digits) {
             return Ok(Judged {
                 value: None,
                 text: "0".to_string(),
                 digits: 0,
-                err_bound: bound,
+                err_bound: kept(bound),
             });
         }
         return Err(0);
@@ -289,11 +307,11 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
             value: None,
             text,
             digits,
-            err_bound: bound,
+            err_bound: kept(bound),
         });
     }
-    let lo = Float::with_val(p, &b.value - &bound);
-    let hi = Float::with_val(p, &b.value + &bound);
+    let lo = Float::with_val(p, &b.value - &*bound);
+    let hi = Float::with_val(p, &b.value + &*bound);
     match (round_sig(&lo, digits), round_sig(&hi, digits)) {
         (Some(a), Some(b2)) if a == b2 => {
             let (neg, d, e) = a;
@@ -301,7 +319,7 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
                 value: None,
                 text: render(neg, &d, e),
                 digits,
-                err_bound: bound,
+                err_bound: kept(bound),
             })
         }
         _ => Err(agreeing_digits(&b.value, &bound, digits)),
@@ -309,10 +327,11 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
 }
 
 /// The bound the ladder holds the higher run's value to:
-/// |v(p1) − v(p2)|·diff_weight + err(p2), at p2.
-fn error_bound(a: &Estimate, b: &Estimate) -> Float {
+/// |v(p1) − v(p2)|·diff_weight + err(p2), at p2 (err(p2) itself, not a
+/// copy, where the weight is 0).
+fn error_bound<'a>(a: &Estimate, b: &'a Estimate) -> Cow<'a, Float> {
     if b.diff_weight == 0 {
-        return b.err.clone();
+        return Cow::Borrowed(&b.err);
     }
     let mut bound = Float::with_val(b.value.prec(), &a.value - &b.value);
     bound.abs_mut();
@@ -320,7 +339,7 @@ fn error_bound(a: &Estimate, b: &Estimate) -> Float {
         bound *= b.diff_weight;
     }
     bound += &b.err;
-    bound
+    Cow::Owned(bound)
 }
 
 /// An error negligible at `digits` digits of the quantity's natural scale:
@@ -369,7 +388,7 @@ fn absolute_fallback(last: bool, digits: u32, a: &Estimate, b: &Estimate) -> Opt
         return None;
     }
     let bound = error_bound(a, b);
-    if !bound.is_finite() || bound > negligible(b, digits) {
+    if !bound.is_finite() || *bound > negligible(b, digits) {
         return None;
     }
     (1..digits).rev().find_map(|d| judged(d, a, b).ok())
@@ -544,7 +563,7 @@ where
                 match judged(digits, ea, &eb)
                     .or_else(|r| absolute_fallback(last, digits, ea, &eb).ok_or(r))
                 {
-                    Ok(j) => out.push(j.verified(name, precs, || eb.value)),
+                    Ok(j) => out.push(j.verified(name, precs, || eb.value, || eb.err)),
                     Err(reached) => {
                         // a value the higher run computed alone was not
                         // compared: its error estimate is its whole bound
