@@ -50,6 +50,13 @@ impl Exact {
     /// `2*pi/3`, `0.1*pi`.
     pub fn parse(name: &str, text: &str, allow_pi: bool) -> Result<Self> {
         let bad = || {
+            if exponent_out_of_range(text) {
+                return Error::invalid(
+                    name,
+                    text,
+                    format!("the exponent must be within ±{MAX_EXPONENT}"),
+                );
+            }
             let forms = if allow_pi {
                 "an exact number such as 0.25, 1/3, 1e-3, pi/6 or 2*pi/3"
             } else {
@@ -325,46 +332,71 @@ fn decimal_text(n: &Integer, k: i64) -> String {
     digits_text(*n < 0, m, e)
 }
 
-/// The exact text of the decimal `text` (an optional sign, digits with an
-/// optional point, an optional exponent: what [`parse_decimal`] accepts,
-/// whitespace aside), from its digits: the same text as [`decimal_text`]
-/// gives its value. `None` for any other form.
+/// The exact text of the decimal `text` (what [`decimal_digits`] reads),
+/// from its digits: the same text as [`decimal_text`] gives its value.
+/// `None` for any other form.
 fn decimal_text_of_given(text: &str) -> Option<String> {
-    let b = text.as_bytes();
-    let (neg, b) = match b.first()? {
-        b'-' => (true, &b[1..]),
-        b'+' => (false, &b[1..]),
-        _ => (false, b),
-    };
-    let (mant, exp) = match b.iter().position(|&c| c == b'e' || c == b'E') {
-        Some(i) => {
-            let e: i64 = std::str::from_utf8(&b[i + 1..]).ok()?.parse().ok()?;
-            (&b[..i], e)
-        }
-        None => (b, 0),
-    };
-    if exp.abs() > 100_000 {
-        return None;
-    }
-    let (int, frac) = match mant.iter().position(|&c| c == b'.') {
-        Some(i) => (&mant[..i], &mant[i + 1..]),
-        None => (mant, &mant[mant.len()..]),
-    };
-    if (int.is_empty() && frac.is_empty()) || !int.iter().chain(frac).all(u8::is_ascii_digit) {
-        return None;
-    }
-    // the digits int·frac without leading zeros; the value is
-    // digits·10^(exp − frac.len())
-    let mut digits: Vec<u8> = int.iter().chain(frac).copied().collect();
-    let lead = digits.iter().take_while(|&&c| c == b'0').count();
-    digits.drain(..lead);
-    let trail = digits.iter().rev().take_while(|&&c| c == b'0').count();
-    if trail == digits.len() {
+    let (neg, m, e) = decimal_digits(text)?;
+    if m.is_empty() {
         return Some("0".into());
     }
-    digits.truncate(digits.len() - trail);
-    let m = std::str::from_utf8(&digits).ok()?;
-    Some(digits_text(neg, m, exp - frac.len() as i64 + trail as i64))
+    Some(digits_text(neg, &m, e))
+}
+
+/// Largest |exponent| of a decimal's `e` part.
+const MAX_EXPONENT: u64 = 100_000;
+
+/// Whether some number of `text` (a decimal, or one side of a fraction)
+/// has an integer exponent beyond ±[`MAX_EXPONENT`].
+fn exponent_out_of_range(text: &str) -> bool {
+    text.split(['/', '*']).any(|part| {
+        let part = part.trim();
+        part.rfind(['e', 'E']).is_some_and(|i| {
+            let x = part[i + 1..].trim_start_matches(['+', '-']);
+            // digits only, and above the range (or too many for a u64)
+            !x.is_empty()
+                && x.bytes().all(|b| b.is_ascii_digit())
+                && x.parse::<u64>().map_or(true, |v| v > MAX_EXPONENT)
+        })
+    })
+}
+
+/// A decimal ±m·10^e read from an optional sign, digits with an optional
+/// point and an optional exponent (|exponent| ≤ [`MAX_EXPONENT`]): its sign, m its
+/// digits without leading or trailing zeros (empty for zero), e. `None` for
+/// any other form.
+fn decimal_digits(s: &str) -> Option<(bool, String, i64)> {
+    let (neg, s) = match s.as_bytes().first()? {
+        b'-' => (true, &s[1..]),
+        b'+' => (false, &s[1..]),
+        _ => (false, s),
+    };
+    let (mant, exp) = match s.find(['e', 'E']) {
+        Some(i) => {
+            let e: i64 = s[i + 1..].parse().ok()?;
+            (&s[..i], e)
+        }
+        None => (s, 0),
+    };
+    if exp.unsigned_abs() > MAX_EXPONENT {
+        return None;
+    }
+    let (int, frac) = mant.split_once('.').unwrap_or((mant, ""));
+    if (int.is_empty() && frac.is_empty())
+        || !int.bytes().chain(frac.bytes()).all(|b| b.is_ascii_digit())
+    {
+        return None;
+    }
+    // trailing zeros move to the exponent; leading ones are dropped
+    let mut digits = String::with_capacity(int.len() + frac.len());
+    digits.push_str(int);
+    digits.push_str(frac);
+    let kept = digits.trim_end_matches('0').len();
+    let e = exp - frac.len() as i64 + (digits.len() - kept) as i64;
+    digits.truncate(kept);
+    let lead = digits.len() - digits.trim_start_matches('0').len();
+    digits.drain(..lead);
+    Some((neg, digits, e))
 }
 
 /// The exact text of ±m·10^e (m: decimal digits, neither leading nor
@@ -428,38 +460,7 @@ fn parse_rational(s: &str) -> Option<Rational> {
 
 /// Parses a decimal number with optional sign, fraction and exponent exactly.
 fn parse_decimal(s: &str) -> Option<Rational> {
-    let (neg, s) = match s.as_bytes().first()? {
-        b'-' => (true, &s[1..]),
-        b'+' => (false, &s[1..]),
-        _ => (false, s),
-    };
-    let (mant, exp) = match s.find(['e', 'E']) {
-        Some(i) => {
-            let e: i64 = s[i + 1..].parse().ok()?;
-            (&s[..i], e)
-        }
-        None => (s, 0),
-    };
-    if exp.abs() > 100_000 {
-        return None;
-    }
-    let (int, frac) = match mant.split_once('.') {
-        Some((a, b)) => (a, b),
-        None => (mant, ""),
-    };
-    if int.is_empty() && frac.is_empty() {
-        return None;
-    }
-    if !int.bytes().all(|b| b.is_ascii_digit()) || !frac.bytes().all(|b| b.is_ascii_digit()) {
-        return None;
-    }
-    // the digits without trailing zeros (their count moves to the exponent)
-    let mut digits = String::with_capacity(int.len() + frac.len());
-    digits.push_str(int);
-    digits.push_str(frac);
-    let kept = digits.trim_end_matches('0').len();
-    let e = exp - frac.len() as i64 + (digits.len() - kept) as i64;
-    digits.truncate(kept);
+    let (neg, digits, e) = decimal_digits(s)?;
     if digits.is_empty() {
         return Some(Rational::new());
     }
@@ -575,13 +576,8 @@ mod tests {
         .collect();
         // generated: random digits (runs of zeros and of 2s and 5s among
         // them), a point anywhere or none, an exponent or none, a sign
-        let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
-        let mut next = |m: u64| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x % m
-        };
+        let mut bits = crate::numeric::xorshift(0x9e37_79b9_7f4a_7c15);
+        let mut next = |m: u64| bits() % m;
         for _ in 0..3000 {
             let len = 1 + next(40) as usize;
             let pool = [b"0123456789".as_slice(), b"00000", b"2580", b"5"];
@@ -691,6 +687,19 @@ mod tests {
             assert!(Exact::parse("x", s, true).is_err(), "{s}");
         }
         assert!(Exact::parse("m1", "pi", false).is_err());
+        // an exponent beyond the range is refused and named, not wrapped
+        // around (i64::MIN read as 1 before)
+        for s in [
+            "1e-9223372036854775808",
+            "1e9223372036854775807",
+            "1e-100001",
+            "2.5E100001",
+            "1/1e-99999999999999999999999",
+        ] {
+            let e = Exact::parse("x", s, false).unwrap_err().to_string();
+            assert!(e.contains("exponent must be within ±100000"), "{s}: {e}");
+        }
+        assert!(Exact::parse("x", "1e-100000", false).is_ok());
     }
 
     #[test]
@@ -744,13 +753,7 @@ mod tests {
     /// go to MPFR).
     #[test]
     fn a_word_quotient_is_mpfrs_rounding() {
-        let mut x: u64 = 0x5851_f42d_4c95_7f2d;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
+        let mut next = crate::numeric::xorshift(0x5851_f42d_4c95_7f2d);
         let pow = |b: u32, e: u32| Integer::from(Integer::u_pow_u(b, e));
         for _ in 0..4000 {
             let n = Integer::from(next())

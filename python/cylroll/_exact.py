@@ -60,11 +60,12 @@ def exact_text(name: str, x: Any, allow_float: bool = False) -> str:
         sign, digits, exp = x.as_tuple()
         if isinstance(exp, int) and -60 <= exp <= 60:
             return format(x, "f")
-        if isinstance(exp, int) and abs(exp) <= 50_000:
+        if abs(x.adjusted()) <= 100_000:
             # as written (1E-5000): the library reads it exactly and quotes it
             # so, where the fraction would be thousands of digits
             return str(x)
-        return _fraction_text(Fraction(x))
+        # beyond the library's exponents (and Fraction would build 10**exp)
+        raise _invalid(name, x, "the exponent must be within ±100000")
     if isinstance(x, numbers.Integral):
         n = int(x)
         # str() of an int beyond 4300 digits raises Python's own ValueError;

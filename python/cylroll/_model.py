@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numbers
 import os
+import re
 from fractions import Fraction
 from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
 
@@ -404,10 +405,18 @@ def _grid_point(t_end: str, i: int, steps: int) -> str:
     return f"{q.numerator}/{q.denominator}"
 
 
+# the exponent of a decimal; beyond ±100000 the library refuses it (Fraction
+# would build 10**exponent, however large, before anything else)
+_EXPONENT = re.compile(r"e[+-]?0*(\d+)")
+
+
 def _to_fraction(text: str) -> Fraction:
     t = text.strip().lower()
     if "pi" in t:
         raise _invalid("t_end", text, "expected an exact number such as 0.25, 1/3 or 1e-3")
+    for m in _EXPONENT.finditer(t):
+        if len(m.group(1)) > 6 or int(m.group(1)) > 100_000:
+            raise _invalid("t_end", text, "the exponent must be within ±100000")
     try:
         if "/" in t:
             a, b = t.split("/", 1)

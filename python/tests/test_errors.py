@@ -4,6 +4,7 @@ import os
 import signal
 import threading
 import time
+from decimal import Decimal
 
 import pytest
 
@@ -61,6 +62,15 @@ def test_bad_requests():
         m.trajectory([1, "-1"])
     with pytest.raises(cylroll.InvalidParameterError):
         m.trajectory(t_end=0, steps=3)
+    # an exponent beyond the library's range is refused before 10**exponent
+    # is built, on both sides
+    for t in ("1e-9223372036854775808", "2E100001"):
+        with pytest.raises(cylroll.InvalidParameterError, match="exponent must be within"):
+            m.trajectory(t_end=t, steps=3)
+        with pytest.raises(cylroll.InvalidParameterError, match="exponent must be within"):
+            m.trajectory([0, t])
+    with pytest.raises(cylroll.InvalidParameterError, match="exponent must be within"):
+        m.trajectory([0, Decimal("1e-999999999")])
     with pytest.raises(cylroll.InvalidParameterError, match="contradicts contact = slip"):
         m.replace(contact="slip", mu_contact="0.3")
     with pytest.raises(cylroll.InvalidParameterError, match="branch"):

@@ -426,7 +426,7 @@ where
 {
     let w = names.len();
     let mut rows = ladder_rows(digits, names, 1, false, |p, run| {
-        f(p, run).map(|v| estimate_rows(v, Vec::new(), w))
+        f(p, run).map(|v| estimate_rows(v, w))
     })?;
     Ok(rows.pop().unwrap_or_default())
 }
@@ -450,7 +450,7 @@ where
 {
     let w = names.len();
     ladder_rows(digits, names, rows, true, |p, run| {
-        f(p, run).map(|v| estimate_rows(v, Vec::new(), w))
+        f(p, run).map(|v| estimate_rows(v, w))
     })
 }
 
@@ -460,15 +460,11 @@ where
 /// then dropped).
 pub(crate) type RowIter<'a> = Box<dyn Iterator<Item = Vec<Estimate>> + 'a>;
 
-/// The rows of a flat vector of estimates: `widths[r]` estimates in row r
-/// (one per name, `w`, beyond the list or where it is empty).
-pub(crate) fn estimate_rows(est: Vec<Estimate>, widths: Vec<usize>, w: usize) -> RowIter<'static> {
+/// The rows of a flat vector of estimates, `w` (one per name) in each.
+pub(crate) fn estimate_rows(est: Vec<Estimate>, w: usize) -> RowIter<'static> {
     let mut it = est.into_iter();
-    let mut r = 0;
     Box::new(std::iter::from_fn(move || {
-        let n = widths.get(r).copied().unwrap_or(w);
-        r += 1;
-        let row: Vec<Estimate> = it.by_ref().take(n).collect();
+        let row: Vec<Estimate> = it.by_ref().take(w).collect();
         (!row.is_empty()).then_some(row)
     }))
 }
@@ -679,15 +675,12 @@ mod tests {
                 let c = Estimate::zero(p, Float::with_val(p, 1u32));
                 let row1 = [(2, 3), (3, 5), (4, 9)].map(|nd| est(p, nd, 0.0));
                 let cut = short && run == Run::Low && rungs.get() == 1;
-                let mut out = vec![est(p, (1, 3), 0.0)];
-                let widths = if cut {
-                    vec![1]
+                let row0 = if cut {
+                    vec![est(p, (1, 3), 0.0)]
                 } else {
-                    out.extend([b, c]);
-                    Vec::new()
+                    vec![est(p, (1, 3), 0.0), b, c]
                 };
-                out.extend(row1);
-                Ok(estimate_rows(out, widths, 3))
+                Ok(Box::new([row0, row1.to_vec()].into_iter()) as RowIter)
             })
         };
         let rungs = Cell::new(0);
@@ -715,12 +708,13 @@ mod tests {
         // the higher run leaving a value is an error
         let e = ladder_rows(30, &["a", "b"], 1, false, |p, run| {
             let n = if run == Run::High { 1 } else { 2 };
-            Ok(estimate_rows(vec![est(p, (1, 3), 0.0); n], vec![n], 2))
+            Ok(Box::new(std::iter::once(vec![est(p, (1, 3), 0.0); n])) as RowIter)
         });
         assert!(matches!(e, Err(Error::NotConverged { .. })));
         // a row wider than the names is refused, not read into the next
         let e = ladder_rows(30, &["a"], 2, true, |p, _| {
-            Ok(estimate_rows(vec![est(p, (1, 3), 0.0); 3], vec![2, 1], 1))
+            let rows = [vec![est(p, (1, 3), 0.0); 2], vec![est(p, (1, 3), 0.0)]];
+            Ok(Box::new(rows.into_iter()) as RowIter)
         });
         assert!(e.is_err());
     }

@@ -154,14 +154,21 @@ pub fn push_point_estimates(
     let zero = pt.exact_zero;
     let weight = pt.diff_weight;
     let (vals, errs) = pt.into_columns();
-    // column i's estimate from its value and the route's error, if any
-    let mut emit = |i: usize, v: Float, err: Option<Float>| {
+    let mut vals: Vec<Option<Float>> = vals.into_iter().map(Some).collect();
+    let mut errs: Option<Vec<Option<Float>>> = errs.map(|e| e.into_iter().map(Some).collect());
+    for &i in idx {
+        let Some(v) = vals.get_mut(i).and_then(Option::take) else {
+            continue;
+        };
         let p = v.prec();
         let sc = Arc::clone(&scales[i]);
         if zero & (1 << i) != 0 {
             out.push(Estimate::zero_shared(p, sc));
-            return;
+            continue;
         }
+        let err = errs
+            .as_mut()
+            .and_then(|e| e.get_mut(i).and_then(Option::take));
         let mut e = match err {
             Some(err) if err.prec() == p => Estimate::shared(v, err, sc),
             Some(err) => Estimate::shared(v, Float::with_val(p, &err), sc),
@@ -178,30 +185,6 @@ pub fn push_point_estimates(
             e.diff_weight = weight;
         }
         out.push(e);
-    };
-    // each column asked, its value and error moved out: in one pass where
-    // the columns are asked in order (a table's), else by index
-    if idx.windows(2).all(|w| w[0] < w[1]) {
-        let mut want = idx.iter().peekable();
-        let mut errs = errs.map(Vec::into_iter);
-        for (i, v) in vals.into_iter().enumerate() {
-            let err = errs.as_mut().and_then(Iterator::next);
-            if want.peek() == Some(&&i) {
-                want.next();
-                emit(i, v, err);
-            }
-        }
-    } else {
-        let mut vals: Vec<Option<Float>> = vals.into_iter().map(Some).collect();
-        let mut errs: Option<Vec<Option<Float>>> = errs.map(|e| e.into_iter().map(Some).collect());
-        for &i in idx {
-            if let Some(v) = vals.get_mut(i).and_then(Option::take) {
-                let err = errs
-                    .as_mut()
-                    .and_then(|e| e.get_mut(i).and_then(Option::take));
-                emit(i, v, err);
-            }
-        }
     }
 }
 
@@ -390,7 +373,7 @@ pub fn laddered(
 ) -> Result<Vec<Vec<Verified>>> {
     let w = names.len();
     laddered_short(runs, first, names, rows, |m, run| {
-        est(m, run).map(|v| estimate_rows(v, Vec::new(), w))
+        est(m, run).map(|v| estimate_rows(v, w))
     })
 }
 

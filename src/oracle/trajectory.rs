@@ -333,7 +333,7 @@ fn trajectory_block(
                 out.push(te);
                 out.push(th);
             }
-            return Ok(Box::new(estimate_rows(out, Vec::new(), 2).chain(ev_rows)) as RowIter);
+            return Ok(Box::new(estimate_rows(out, 2).chain(ev_rows)) as RowIter);
         }
         // each row's estimates made from its point when the ladder judges
         // the row (the point's values moved into them)

@@ -99,7 +99,7 @@ pub(super) fn first_bracket(
             // the four samples of the gap evaluated side by side
             let xs: [f64; BETWEEN] =
                 std::array::from_fn(|i| last + (sf - last) * (i + 1) as f64 / (BETWEEN + 1) as f64);
-            let vs = ChebFit::eval_f64_4(c64, 0.0, lenf, xs);
+            let vs = ChebFit::eval_f64_at(c64, 0.0, lenf, xs);
             for (x, v) in xs.into_iter().zip(vs) {
                 if v.abs() > floor {
                     seq.push((x, v < 0.0, None));

@@ -356,25 +356,18 @@ impl ChebFit {
 
     /// Clenshaw in f64 for coefficients `c` on [a, b].
     pub fn eval_f64(c: &[f64], a: f64, b: f64, v: f64) -> f64 {
-        let x = (2.0 * v - a - b) / (b - a);
-        let (mut b1, mut b2) = (0.0, 0.0);
-        for ck in c.iter().skip(1).rev() {
-            let t = 2.0 * x * b1 - b2 + ck;
-            b2 = b1;
-            b1 = t;
-        }
-        c.first().copied().unwrap_or(0.0) + x * b1 - b2
+        Self::eval_f64_at(c, a, b, [v])[0]
     }
 
-    /// [`ChebFit::eval_f64`] at four points at once: the four recurrences
+    /// [`ChebFit::eval_f64`] at N points at once: the N recurrences
     /// interleaved, each the same operations in the same order as alone
     /// (the same bits), run side by side instead of one after another (the
     /// recurrence's chain of dependent operations is its cost).
-    pub fn eval_f64_4(c: &[f64], a: f64, b: f64, v: [f64; 4]) -> [f64; 4] {
+    pub fn eval_f64_at<const N: usize>(c: &[f64], a: f64, b: f64, v: [f64; N]) -> [f64; N] {
         let x = v.map(|v| (2.0 * v - a - b) / (b - a));
-        let (mut b1, mut b2) = ([0.0f64; 4], [0.0f64; 4]);
+        let (mut b1, mut b2) = ([0.0f64; N], [0.0f64; N]);
         for ck in c.iter().skip(1).rev() {
-            for k in 0..4 {
+            for k in 0..N {
                 let t = 2.0 * x[k] * b1[k] - b2[k] + ck;
                 b2[k] = b1[k];
                 b1[k] = t;
@@ -401,28 +394,32 @@ mod tests {
     use super::*;
     use rug::float::Constant;
 
-    /// The four interleaved recurrences give eval_f64's bits at each point
+    /// The interleaved recurrences give the bits of one recurrence alone at each point
     /// (coefficients of mixed signs and sizes, points inside and outside
     /// the interval, degree 0 to 90).
     #[test]
     fn four_points_at_once_are_four_evaluations() {
-        let mut x: u64 = 0x2545_f491_4f6c_dd1d;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut bits = crate::numeric::xorshift(0x2545_f491_4f6c_dd1d);
+        // uniform in [−1, 1)
+        let mut next = || (bits() >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0;
         for n in [0usize, 1, 2, 3, 17, 64, 91] {
             let c: Vec<f64> = (0..n)
                 .map(|k| next() * 10f64.powi(-(k as i32 % 9)))
                 .collect();
             let (a, b) = (next() - 2.0, next() + 2.0);
             let v = [next() * 3.0, a, b, 0.5 * (a + b) + next()];
-            let four = ChebFit::eval_f64_4(&c, a, b, v);
+            let four = ChebFit::eval_f64_at(&c, a, b, v);
             for k in 0..4 {
                 let one = ChebFit::eval_f64(&c, a, b, v[k]);
                 assert_eq!(four[k].to_bits(), one.to_bits(), "n = {n}, point {k}");
+                // Clenshaw's recurrence written out once more, alone
+                let x = (2.0 * v[k] - a - b) / (b - a);
+                let (mut b1, mut b2) = (0.0f64, 0.0f64);
+                for ck in c.iter().skip(1).rev() {
+                    (b1, b2) = (2.0 * x * b1 - b2 + ck, b1);
+                }
+                let alone = c.first().copied().unwrap_or(0.0) + x * b1 - b2;
+                assert_eq!(four[k].to_bits(), alone.to_bits(), "n = {n}, point {k}");
             }
         }
     }
