@@ -4,7 +4,7 @@
 //! of against a lower run's values. Held here against the same tables at 45
 //! digits, which verify the columns with a bound of their own a hundred
 //! thousand million times smaller: every printed digit must be the 45-digit
-//! value's, rounded — for every contact law of a conservative phase, from
+//! value's, rounded, and within the error bound printed beside it — for every contact law of a conservative phase, from
 //! rest and from a moving start, in SI units and in units beyond binary64's
 //! range (g = 10^-330, where the error is measured instead), at the start,
 //! at tiny times, and just before the separation, where N12 is a
@@ -51,6 +51,16 @@ fn agrees(v: &Verified, reference: &Verified, what: &str) {
     assert!(v.digits > 0, "{what}: no digit");
     let want = to_sig(&reference.value, v.digits);
     assert_eq!(v.text, want, "{what}: {} digits", v.digits);
+    // the error bound printed beside the value holds it: the reference
+    // lies within the two bounds of the value computed
+    let gap = Float::with_val(256, &v.value - &reference.value).abs();
+    let lim = Float::with_val(256, &v.err_bound + &reference.err_bound);
+    assert!(
+        gap <= lim,
+        "{what}: {} from the reference, beyond the bound {}",
+        to_sig(&gap, 3),
+        to_sig(&v.err_bound, 3)
+    );
 }
 
 /// Every column of every row at 20 and 30 digits against 45.

@@ -349,8 +349,24 @@ pub fn first_phase(
                 row_deltas.push(d);
                 continue;
             }
-            let (a, energy) = route.columns_at(&d, &tf, p)?;
             let low = wants.low_deltas.get(i);
+            let pc = if wants.run == Run::High && wants.derived_at_high && low.is_some() {
+                crate::integrate::energy::derived_prec(wants.digits, p)
+            } else {
+                p
+            };
+            // the derived columns at pc bits: δ rounded to them, t rounded
+            // once from its exact value (t and θ themselves stay at p)
+            let at_pc = (pc < p).then(|| (Float::with_val(pc, &d), t.to_float(pc)));
+            let (a, energy) = match &at_pc {
+                Some((dc, tc)) => {
+                    let (mut a, energy) = route.columns_at(dc, tc, pc)?;
+                    a[0] = tf.clone();
+                    a[1] = route.odd(Float::with_val(p, &th0w + &d));
+                    (a, energy)
+                }
+                None => route.columns_at(&d, &tf, p)?,
+            };
             let ulps = |x: &Float| Float::with_val(p, x.abs_ref()) >> (p as i32 - 4);
             let (err, weight) = match (wants.run, low) {
                 (Run::Low, _) => (None, 1),
@@ -358,7 +374,18 @@ pub fn first_phase(
                     // the lower run left these columns: their error is what
                     // δ's bound (the two runs' difference and the route's
                     // own bound) carries into them and the roundings
-                    let mut err = route.column_errors(&a, &d, d1, &derr, &tf, p)?;
+                    let mut err = match &at_pc {
+                        Some((dc, tc)) => {
+                            // δ and the lower run's δ rounded to pc bits: four
+                            // units of δ's last place there join δ's bound
+                            // (the two roundings, and derr's own to pc)
+                            let derr_c = Float::with_val(pc, &derr)
+                                + (Float::with_val(pc, d.abs_ref()) >> (pc as i32 - 2));
+                            let dl = Float::with_val(pc, d1);
+                            route.column_errors(&a, dc, &dl, &derr_c, tc, pc)?
+                        }
+                        None => route.column_errors(&a, &d, d1, &derr, &tf, p)?,
+                    };
                     // θ is compared with the lower run's, as in a θ-only table
                     err[1] = Float::with_val(p, &derr) + ulps(&a[1]);
                     err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);

@@ -137,7 +137,9 @@ pub struct Request {
     /// carry t and θ only in the ladder's lower run, and the higher run
     /// computes the other columns with the error δ's bound and the formulas'
     /// roundings carry into them (given the lower run's δ), instead of
-    /// comparing them with a lower run's ([`crate::integrate::energy::Route::column_errors`]).
+    /// comparing them with a lower run's ([`crate::integrate::energy::Route::column_errors`]),
+    /// at the fewest limbs that hold the digits asked and a guard
+    /// (`energy::derived_prec`), those roundings counted.
     pub derived_at_high: bool,
 }
 

@@ -81,22 +81,26 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
         return None;
     }
     let n = digits as i64;
+    // |x| = m·2^bm exactly: m the significand's limbs as MPFR holds them
+    // (read in place, not copied; the low bits below the precision zero)
+    let sig = x.get_significand()?;
+    let m = sig.as_limbs();
+    let bm = i64::from(x.get_exp()?) - 64 * m.len() as i64;
+    let bm = i32::try_from(bm).ok()?;
+    // the decimal exponent from the top limb (a first guess: the loop
+    // below corrects it by one where it is off)
+    let top = *m.last()?;
+    let lg = (top as f64).log10()
+        + (i64::from(bm) + 64 * (m.len() as i64 - 1)) as f64 * std::f64::consts::LOG10_2;
+    let mut e = lg.floor() as i64 + 1;
     SCRATCH.with(|sc| {
         let mut sc = sc.borrow_mut();
         let (y, mi, mx) = &mut *sc;
-        // |x| = mx·2^bx exactly (mx the significand as an integer)
-        let bx = x.to_integer_exp_in_place(mx)?;
-        mx.abs_mut();
-        // the decimal exponent from the top limb (a first guess: the loop
-        // below corrects it by one where it is off)
-        let limbs = mx.as_limbs();
-        let top = *limbs.last()?;
-        let lg = (top as f64).log10()
-            + (i64::from(bx) + 64 * (limbs.len() as i64 - 1)) as f64 * std::f64::consts::LOG10_2;
-        let mut e = lg.floor() as i64 + 1;
+        // the general path's significand as an integer, made when needed
+        let mut bx = None;
         for _ in 0..3 {
             let k = n - e;
-            if let Some(u) = scaled_u128(mx.as_limbs(), k, bx) {
+            if let Some(u) = scaled_u128(m, k, bm) {
                 // the common case in machine integers: the same rounding
                 buf.clear();
                 push_u128(buf, u);
@@ -108,6 +112,15 @@ pub fn approx_sig_into(x: &Float, digits: u32, buf: &mut Vec<u8>) -> Option<(boo
                 continue;
             }
             if (0..=POW10_INT_MAX).contains(&k) {
+                // |x| = mx·2^bx exactly (mx the significand as an integer)
+                let bx = match bx {
+                    Some(b) => b,
+                    None => {
+                        let b = x.to_integer_exp_in_place(mx)?;
+                        mx.abs_mut();
+                        *bx.insert(b)
+                    }
+                };
                 // exact: |x|·10^k = mx·10^k·2^bx, rounded once
                 POW10_INT.with(|c| {
                     let mut c = c.borrow_mut();

@@ -776,3 +776,47 @@ pub fn extra_bits_at(log2_t: f64, p: u32) -> u32 {
         0
     }
 }
+
+/// The precision of a table's columns derived from θ alone in the higher
+/// run (`Wants::derived_at_high`): the digits asked and 16 guard bits, up to
+/// the last bit but one of the fewest limbs that hold them (MPFR's two-limb
+/// paths are below 128 bits: 127 bits at 20 or 30 digits, where the run's
+/// own precision takes three limbs; all of them where that bit is needed);
+/// at most the run's `p`. The
+/// columns' error bounds count the roundings at this precision, and δ's
+/// rounding to it.
+pub(crate) fn derived_prec(digits: u32, p: u32) -> u32 {
+    let need = crate::numeric::bits_for_digits(digits) + 16;
+    let top = need.div_ceil(64) * 64;
+    (if top > need { top - 1 } else { top }).min(p)
+}
+
+#[cfg(test)]
+mod derived_prec_tests {
+    use super::derived_prec;
+    use crate::numeric::bits_for_digits;
+    use crate::numeric::verify::precisions;
+
+    /// The digits' bits and 16 more, the fewest limbs, never above the
+    /// higher run's precision; written out at 20, 30 and 100 digits.
+    #[test]
+    fn the_fewest_limbs_for_the_digits_and_a_guard() {
+        assert_eq!(derived_prec(20, precisions(20, 0).1), 127);
+        assert_eq!(derived_prec(30, precisions(30, 0).1), 127);
+        // 333 + 16 bits: six limbs, one less than the higher run's seven
+        assert_eq!(precisions(100, 0).1.div_ceil(64), 7);
+        assert_eq!(derived_prec(100, precisions(100, 0).1), 383);
+        for digits in 1..=2000 {
+            let p2 = precisions(digits, 0).1;
+            let pc = derived_prec(digits, p2);
+            assert!(pc <= p2);
+            assert!(pc == p2 || pc >= bits_for_digits(digits) + 16, "{digits}");
+            // no fewer limbs would hold the digits and the guard
+            let need = bits_for_digits(digits) + 16;
+            assert!(pc == p2 || pc.div_ceil(64) == need.div_ceil(64), "{digits}");
+            assert!(pc == p2 || pc % 64 == 63 || pc == need, "{digits}");
+        }
+        // at most p
+        assert_eq!(derived_prec(30, 100), 100);
+    }
+}

@@ -281,7 +281,8 @@ fn shadow_errors(dy: &Dyn, a: &[Float], delta: &Float, b: &Float, t: &Float) -> 
     // δ exact (b = 0, the start): no derivative is needed, nor infinite;
     // the time's conversion to p bits is counted as a rounding
     let seed = if b.is_zero() { 0.0 } else { 1.0 };
-    let sh = shadow::columns(dy, delta.to_f64(), seed, t.to_f64(), true);
+    use crate::numeric::to_f64_near;
+    let sh = shadow::columns(dy, to_f64_near(delta), seed, to_f64_near(t), true);
     // b = bm·2^be; the rounding unit 2^−p
     let (bm, be) = if b.is_zero() {
         (0.0, -(p as i32))
@@ -300,7 +301,7 @@ fn shadow_errors(dy: &Dyn, a: &[Float], delta: &Float, b: &Float, t: &Float) -> 
     for (s, x) in sh.iter().zip(&a[2..20]) {
         // the shadow holds the formulas: finite, within binary64's normal
         // range, and the value p bits computed, to binary64's accuracy
-        let xv = x.to_f64().abs();
+        let xv = to_f64_near(x).abs();
         if !s.is_finite()
             || !held(x)
             || !(s.v == 0.0 || (1e-280..=1e280).contains(&s.v.abs()))
