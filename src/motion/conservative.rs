@@ -378,9 +378,10 @@ pub fn first_phase(
                         Some((dc, tc)) => {
                             // δ and the lower run's δ rounded to pc bits: four
                             // units of δ's last place there join δ's bound
-                            // (the two roundings, and derr's own to pc)
-                            let derr_c = Float::with_val(pc, &derr)
-                                + (Float::with_val(pc, d.abs_ref()) >> (pc as i32 - 2));
+                            // (the two roundings), derr itself rounded up
+                            let (mut derr_c, _) =
+                                Float::with_val_round(pc, &derr, rug::float::Round::Up);
+                            derr_c += Float::with_val(pc, d.abs_ref()) >> (pc as i32 - 2);
                             let dl = Float::with_val(pc, d1);
                             route.column_errors(&a, dc, &dl, &derr_c, tc, pc)?
                         }
