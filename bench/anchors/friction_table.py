@@ -90,6 +90,16 @@ def main():
             warm_n = f" ({row['heyoka_runs']} runs)" if row.get("heyoka_runs", 3) < 3 else ""
             print(f"| {names[task]} | {d} | {fmt(cy)} | {fmt(hc)} | {fmt(hw)}{warm_n} | {cy / hw:.2g} | {hc / cy:.2g} "
                   f"| {row['agreement_min']:.1f} | {fmt(lb)} |")
+    alt = [(task, d, res["per_digits"][str(d)][task]["alternation"]) for task in ("events", "theta", "rows")
+           for d in digits if "alternation" in res["per_digits"][str(d)].get(task, {})]
+    if alt:
+        print()
+        print("| cylroll process / heyoka warm, timed in alternation | digits | pairs | cylroll process CPU "
+              "| heyoka warm CPU | ratio of the medians | per pair, min–max |")
+        print("|---|---|---|---|---|---|---|")
+        for task, d, x in alt:
+            print(f"| {names[task]} | {d} | {x['pairs']} | {fmt(x['cylroll_cpu_s'])} | {fmt(x['heyoka_warm_cpu_s'])} "
+                  f"| {x['ratio']:.2f} | {x['ratio_min']:.2f}–{x['ratio_max']:.2f} |")
     paired = [(d, res["per_digits"][str(d)]["rows_over_theta"]) for d in digits
               if "rows_over_theta" in res["per_digits"][str(d)]]
     lib_pairs = library_pairs(os.path.join(r, "cylroll_friction_pair.jsonl"))
@@ -111,7 +121,8 @@ def main():
           "the flight to the impact. heyoka: CPU of this process, cold = integrators built (JIT, "
           "caches emptied) + first run, warm = median of re-runs. Ratios above 1 in the first ratio "
           "column mean heyoka warm is faster; in the second, that cylroll's process is faster than "
-          "heyoka's first call. Digits agreeing: heyoka against cylroll's verified output (events: "
+          "heyoka's first call. In alternation: heyoka's warm run and the cylroll command one after "
+          "the other in heyoka's process, the order swapped every pair (the same stretch of the machine). Digits agreeing: heyoka against cylroll's verified output (events: "
           "t and θ of both events; θ: all 1000 values; rows: every column, relative to the column's "
           "largest value). Library: divan's median wall time of the library call on its own grid "
           "(1000 times on [0, 4.920]), θ only (t3_friction) or every column (t3_friction_rows); the library pair: `oracle::theta_at_times` and `oracle::trajectory` on that grid, called in alternation in one process, on the command's allocator.")

@@ -44,7 +44,10 @@ run), 3 above:
   cylroll trajectory ... --times t0,t1,...,t999 --digits D --format csv --columns t,theta,mode
   cylroll trajectory ... --times t0,t1,...,t999 --digits D --format csv
 The first (theta alone, no force computed) is the cylroll side of the theta task,
-the second (every column) of the rows task.
+the second (every column) of the rows task. Each heyoka child then times its
+warm run and the task's cylroll command in alternation (15 pairs up to 100
+digits, 5 above; `--pairs`), so that the ratio of the two is read from one
+stretch of the machine: the ratio of the medians and each pair's own.
 
 Agreement: heyoka's event times and angles, its 1000 thetas and (rows) every
 column against cylroll's verified digits; digits = -log10 of the largest error
@@ -431,9 +434,31 @@ def measure_task(build, task, cold_reps, min_runs, budget):
     return val, statistics.median(colds), cm, n, ints
 
 
-def child(d, task, times_file, out_file, cold_reps):
+def alternate(run_heyoka, cyl_args, pairs):
+    """heyoka's warm run and the cylroll command timed in alternation (heyoka
+    first in the even pairs, cylroll in the odd ones), so that both figures
+    sample the same stretch of a shared machine: CPU medians of each, the ratio
+    of the medians, and each pair's own ratio's range."""
+    hs, cs = [], []
+    for k in range(pairs):
+        for which in ((0, 1) if k % 2 == 0 else (1, 0)):
+            if which == 0:
+                c = common.cpu()
+                run_heyoka()
+                hs.append(common.cpu() - c)
+            else:
+                cs.append(cylroll(cyl_args)[1])
+    per_pair = [c / h for c, h in zip(cs, hs)]
+    return dict(pairs=pairs, heyoka_warm_cpu_s=statistics.median(hs), cylroll_cpu_s=statistics.median(cs),
+                ratio=statistics.median(cs) / statistics.median(hs), ratio_min=min(per_pair),
+                ratio_max=max(per_pair))
+
+
+def child(d, task, times_file, out_file, cold_reps, cyl_file=None):
     """One heyoka measurement (a task at d digits) in its own process: the parent
-    can stop it at its time limit. Writes the timings and the values as JSON."""
+    can stop it at its time limit. Writes the timings and the values as JSON;
+    with `cyl_file` (the cylroll command's arguments and the pairs, as JSON),
+    also heyoka's warm run and that command timed in alternation."""
     hy.llvm_state.set_diskcache_enabled(False)
     c = common.cpu()
     model = Model()
@@ -447,6 +472,9 @@ def child(d, task, times_file, out_file, cold_reps):
     val, cold, warm, n, ints = measure_task(lambda: Integrators(model, p, full), fn, cold_reps, min_runs, budget)
     out = dict(prec_bits=p, order=int(ints.get("stick/stick").order), derivation_cpu_s=derive_s,
                heyoka_cold_cpu_s=cold, heyoka_cold_builds=cold_reps, heyoka_warm_cpu_s=warm, heyoka_runs=n)
+    if cyl_file:
+        spec = json.load(open(cyl_file))
+        out["alternation"] = alternate(lambda: fn(ints), spec["args"], spec["pairs"])
     if task == "events":
         out["values"] = [dict(kind=e["kind"], mode=e["mode"], t=str(e["t"]), theta=str(e["theta"])) for e in val]
     elif task == "theta":
@@ -457,12 +485,19 @@ def child(d, task, times_file, out_file, cold_reps):
         json.dump(out, f)
 
 
-def heyoka_in_child(d, task, times_file, work, cold_reps, limit_s):
-    """Runs child() in a fresh interpreter; (result dict or None, message)."""
+def heyoka_in_child(d, task, times_file, work, cold_reps, limit_s, cyl_args=None, pairs=0):
+    """Runs child() in a fresh interpreter; (result dict or None, message). With
+    `cyl_args` and `pairs` > 0, the child also times heyoka's warm run and that
+    cylroll command in alternation."""
     out_file = os.path.join(work, f"heyoka_{task}_{d}.json")
     if os.path.exists(out_file):
         os.remove(out_file)
     cmd = [sys.executable, os.path.abspath(__file__), "--child", str(d), task, times_file, out_file, str(cold_reps)]
+    if cyl_args and pairs > 0:
+        cyl_file = os.path.join(work, f"cylroll_{task}_{d}.json")
+        with open(cyl_file, "w") as f:
+            json.dump(dict(args=cyl_args, pairs=pairs), f)
+        cmd.append(cyl_file)
     try:
         cp = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=limit_s)
     except subprocess.TimeoutExpired:
@@ -475,7 +510,8 @@ def heyoka_in_child(d, task, times_file, work, cold_reps, limit_s):
 def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--child":
         d, task, times_file, out_file, cold_reps = sys.argv[2:7]
-        return child(int(d), task, times_file, out_file, int(cold_reps))
+        cyl_file = sys.argv[7] if len(sys.argv) > 7 else None
+        return child(int(d), task, times_file, out_file, int(cold_reps), cyl_file)
     ap = argparse.ArgumentParser()
     ap.add_argument("--digits", default="30,100,300,1000")
     ap.add_argument("--rows-digits", default="30,100")
@@ -490,6 +526,11 @@ def main():
     os.makedirs(work, exist_ok=True)
     tasks = a.tasks.split(",")
     rows_digits = common.digits_list(a.rows_digits)
+
+    def alt_pairs(d):
+        # heyoka warm and the cylroll command in alternation: as many pairs as
+        # the every-column / θ-only pairs (a third above 100 digits)
+        return a.pairs if d <= 100 else max(3, a.pairs // 3)
 
     sep60 = json.loads(cylroll(["separation"] + CASE + ["--digits", "60", "--format", "json"])[0])
     h, times = grid(sep60["t_s"])
@@ -511,9 +552,11 @@ def main():
         r = dict(prec_bits=math.ceil(d * math.log2(10)) + GUARD_BITS)
         res["per_digits"][str(d)] = r
         if "events" in tasks:
-            out, cc, cw, cn = cylroll_timed(["separation"] + CASE + ["--digits", str(d), "--format", "json"], reps)
+            ev_args = ["separation"] + CASE + ["--digits", str(d), "--format", "json"]
+            out, cc, cw, cn = cylroll_timed(ev_args, reps)
             cev = json.loads(out)["events"]
-            hv, err = heyoka_in_child(d, "events", times_file, work, cold_reps, a.time_limit)
+            hv, err = heyoka_in_child(d, "events", times_file, work, cold_reps, a.time_limit, ev_args,
+                                      alt_pairs(d))
             row = dict(cylroll_cpu_s=cc, cylroll_wall_s=cw, cylroll_runs=cn,
                        cylroll_events=[dict(kind=e["kind"], t=e["t"][:60], theta=e["theta"][:60]) for e in cev])
             if hv is None:
@@ -535,14 +578,15 @@ def main():
                 continue
             # theta: `--columns t,theta,mode` (theta alone, no force); rows: every column
             key = f"trajectory_cmd_{task}"
+            cols = ["--columns", "t,theta,mode"] if task == "theta" else []
+            traj_args = ["trajectory"] + CASE + ["--times", ",".join(times), "--digits", str(d),
+                                                 "--format", "csv"] + cols
             if key not in r:
-                cols = ["--columns", "t,theta,mode"] if task == "theta" else []
-                out, cc, cw, cn = cylroll_timed(["trajectory"] + CASE + ["--times", ",".join(times), "--digits", str(d),
-                                                                         "--format", "csv"] + cols, reps)
+                out, cc, cw, cn = cylroll_timed(traj_args, reps)
                 r[key] = dict(cylroll_cpu_s=cc, cylroll_wall_s=cw, cylroll_runs=cn)
                 traj_csv = out
             row = dict(r[key])
-            hv, err = heyoka_in_child(d, task, times_file, work, cold_reps, a.time_limit)
+            hv, err = heyoka_in_child(d, task, times_file, work, cold_reps, a.time_limit, traj_args, alt_pairs(d))
             if hv is None:
                 row["error"] = err
             else:
