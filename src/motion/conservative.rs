@@ -350,48 +350,25 @@ pub fn first_phase(
                 continue;
             }
             let low = wants.low_deltas.get(i);
-            let pc = if wants.run == Run::High && wants.derived_at_high && low.is_some() {
-                crate::integrate::energy::derived_prec(wants.digits, p)
-            } else {
-                p
-            };
-            // the derived columns at pc bits: δ rounded to them, t rounded
-            // once from its exact value (t and θ themselves stay at p)
-            let at_pc = (pc < p).then(|| (Float::with_val(pc, &d), t.to_float(pc)));
-            let (a, energy) = match &at_pc {
-                Some((dc, tc)) => {
-                    let (mut a, energy) = route.columns_at(dc, tc, pc)?;
-                    a[0] = tf.clone();
-                    a[1] = route.odd(Float::with_val(p, &th0w + &d));
-                    (a, energy)
-                }
-                None => route.columns_at(&d, &tf, p)?,
-            };
             let ulps = |x: &Float| Float::with_val(p, x.abs_ref()) >> (p as i32 - 4);
+            if let (Run::High, Some(d1), true) = (wants.run, low, wants.derived_at_high) {
+                // the lower run left these columns: their error is what δ's
+                // bound (the two runs' difference and the route's own
+                // bound) carries into them and the roundings
+                let (a, energy, mut err) =
+                    derived_columns(route, &d, d1, &derr, t, &tf, &th0w, wants.digits, p)?;
+                // θ is compared with the lower run's, as in a θ-only table
+                err[1] = Float::with_val(p, &derr) + ulps(&a[1]);
+                err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
+                let mut pt = point_of(a, energy, mode, Some(err), zero_bits(ctx, mode));
+                pt.diff_weight = 0;
+                rows.push(pt);
+                row_deltas.push(d);
+                continue;
+            }
+            let (a, energy) = route.columns_at(&d, &tf, p)?;
             let (err, weight) = match (wants.run, low) {
                 (Run::Low, _) => (None, 1),
-                (Run::High, Some(d1)) if wants.derived_at_high => {
-                    // the lower run left these columns: their error is what
-                    // δ's bound (the two runs' difference and the route's
-                    // own bound) carries into them and the roundings
-                    let mut err = match &at_pc {
-                        Some((dc, tc)) => {
-                            // δ and the lower run's δ rounded to pc bits: four
-                            // units of δ's last place there join δ's bound
-                            // (the two roundings), derr itself rounded up
-                            let (mut derr_c, _) =
-                                Float::with_val_round(pc, &derr, rug::float::Round::Up);
-                            derr_c += Float::with_val(pc, d.abs_ref()) >> (pc as i32 - 2);
-                            let dl = Float::with_val(pc, d1);
-                            route.column_errors(&a, dc, &dl, &derr_c, tc, pc)?
-                        }
-                        None => route.column_errors(&a, &d, d1, &derr, &tf, p)?,
-                    };
-                    // θ is compared with the lower run's, as in a θ-only table
-                    err[1] = Float::with_val(p, &derr) + ulps(&a[1]);
-                    err[0] = Float::with_val(p, tf.abs_ref()) >> (p as i32 - 2);
-                    (Some(err), 0)
-                }
                 (Run::High, _) => {
                     // the columns' errors from δ's. Where the lower run's δ
                     // differs from this one by more than δ's bound,
@@ -501,6 +478,62 @@ fn zero_bits(ctx: &Ctx, mode: Mode) -> u32 {
     z
 }
 
+/// A table's higher-run row of a conservative phase (`Wants::derived_at_high`):
+/// every column at δ = `d` and time `t` (`tf` at `p` bits; θ0 `th0w`) and its error,
+/// what δ's bound — `derr`, and the lower run's δ `d1` — and the roundings
+/// carry into it ([`Route::column_errors`]); with the total energy. The
+/// columns are evaluated at the fewest limbs that hold the digits asked
+/// ([`crate::integrate::energy::derived_prec`]: δ rounded there, four units
+/// of its last place added to δ's bound, t rounded once from its exact
+/// value), t and θ kept at `p`; where a column's bound there is not below
+/// 2^−(b+4) of its value (b the digits' bits: a cancellation, N12 just before
+/// the separation, or a column at 0), the row is evaluated at `p` instead,
+/// where the ladder would otherwise climb for want of those roundings.
+#[allow(clippy::too_many_arguments)]
+fn derived_columns(
+    route: &mut Route,
+    d: &Float,
+    d1: &Float,
+    derr: &Float,
+    t: &Exact,
+    tf: &Float,
+    th0w: &Float,
+    digits: u32,
+    p: u32,
+) -> Result<(Vec<Float>, Float, Vec<Float>)> {
+    let pc = crate::integrate::energy::derived_prec(digits, p);
+    if pc < p {
+        let dc = Float::with_val(pc, d);
+        let tc = t.to_float(pc);
+        let (mut a, energy) = route.columns_at(&dc, &tc, pc)?;
+        // δ and the lower run's δ rounded to pc bits: four units of δ's
+        // last place there (δ's rounding counted twice, the lower run's
+        // once) join δ's bound, itself rounded up
+        let (mut derr_c, _) = Float::with_val_round(pc, derr, rug::float::Round::Up);
+        derr_c += Float::with_val(pc, d.abs_ref()) >> (pc as i32 - 2);
+        let dl = Float::with_val(pc, d1);
+        let err = route.column_errors(&a, &dc, &dl, &derr_c, &tc, tf, pc)?;
+        let lim = crate::numeric::bits_for_digits(digits) as i32 + 5;
+        let enough = a
+            .iter()
+            .zip(&err)
+            .skip(2)
+            .all(|(v, e)| match (v.get_exp(), e.get_exp()) {
+                (_, None) => e.is_zero(),
+                (Some(ev), Some(ee)) => ee + lim <= ev,
+                (None, Some(_)) => false,
+            });
+        if enough {
+            a[0] = tf.clone();
+            a[1] = route.odd(Float::with_val(p, th0w + d));
+            return Ok((a, energy, err));
+        }
+    }
+    let (a, energy) = route.columns_at(d, tf, p)?;
+    let err = route.column_errors(&a, d, d1, derr, tf, tf, p)?;
+    Ok((a, energy, err))
+}
+
 /// A point from the 21 columns of [`Route::columns_at`].
 fn point_of(c: Vec<Float>, energy: Float, mode: Mode, err: Option<Vec<Float>>, zero: u32) -> Point {
     debug_assert_eq!(c.len(), COLUMNS.len());
@@ -581,4 +614,53 @@ pub fn sample_at(ctx: &Ctx, mode: Mode, pt: &Point) -> Result<Sample> {
 /// refinement found none (the same root, at the edge of the interval).
 fn root_or(found: Option<(Float, Float)>, d: &Float, prec: u32) -> Float {
     found.map_or_else(|| Float::with_val(prec, d), |(x, _)| x)
+}
+
+#[cfg(test)]
+mod derived_tests {
+    use super::*;
+    use crate::model::{Contact, Floor, Ideal, Params, Start};
+    use crate::numeric::verify::precisions;
+
+    /// A table's higher-run row takes its derived columns at the fewest
+    /// limbs where their bounds there leave the digits asked to spare, and
+    /// at the run's precision where a column cancels (N12 a hair from the
+    /// separation): there the roundings at 127 bits would make the ladder
+    /// climb. Either way each column is the one at the run's precision to
+    /// within its bound.
+    #[test]
+    fn a_cancelling_row_takes_the_runs_precision() {
+        let theta0 = Exact::parse("theta0", "1/10", false).unwrap();
+        let ideal = Ideal::new(
+            Params::identical_solid(),
+            Floor::Roll,
+            Contact::Roll,
+            Start::rest(theta0),
+        )
+        .unwrap();
+        let mut route = Route::new(&ideal).unwrap();
+        let (digits, p) = (30, precisions(30, 0).1);
+        let (ds, _) = route.delta_s(p).unwrap();
+        let th0w = route.work.start().theta0.to_float(p);
+        let t = Exact::parse("t", "1", true).unwrap();
+        let tf = t.to_float(p);
+        let n12 = col!("N12");
+        for (d, want) in [
+            (Float::with_val(p, &ds / 2u32), 127),
+            (
+                Float::with_val(p, &ds - (Float::with_val(p, 1u32) >> 60u32)),
+                p,
+            ),
+        ] {
+            let derr = Float::with_val(p, d.abs_ref()) >> (p as i32 - 8);
+            let (a, _, err) =
+                derived_columns(&mut route, &d, &d, &derr, &t, &tf, &th0w, digits, p).unwrap();
+            assert_eq!(a[n12].prec(), want);
+            let (full, _) = route.columns_at(&d, &tf, p).unwrap();
+            for k in 2..COLUMNS.len() {
+                let gap = Float::with_val(p, &a[k] - &full[k]).abs();
+                assert!(gap <= err[k], "{} at δ = {d:.10e}", COLUMNS[k]);
+            }
+        }
+    }
 }

@@ -139,7 +139,8 @@ pub struct Request {
     /// roundings carry into them (given the lower run's δ), instead of
     /// comparing them with a lower run's ([`crate::integrate::energy::Route::column_errors`]),
     /// at the fewest limbs that hold the digits asked and a guard
-    /// (`energy::derived_prec`), those roundings counted.
+    /// (`energy::derived_prec`), those roundings counted, or at the run's
+    /// precision where a column cancels there.
     pub derived_at_high: bool,
 }
 

@@ -128,9 +128,7 @@ pub fn precisions(digits: u32, attempt: u32) -> (u32, u32) {
 /// Largest number of significant digits on which every value in [v−b, v+b]
 /// agrees when rounded (0 if none).
 pub fn agreeing_digits(v: &Float, b: &Float, max: u32) -> u32 {
-    let p = v.prec();
-    let lo = Float::with_val(p, v - b);
-    let hi = Float::with_val(p, v + b);
+    let (lo, hi) = outward(v, b, v.prec());
     if lo.is_sign_negative() != hi.is_sign_negative() || lo.is_zero() || hi.is_zero() {
         return 0;
     }
@@ -143,6 +141,14 @@ pub fn agreeing_digits(v: &Float, b: &Float, max: u32) -> u32 {
         }
     }
     best
+}
+
+/// [v − b, v + b] at `p` bits, its ends rounded outward (down and up).
+fn outward(v: &Float, b: &Float, p: u32) -> (Float, Float) {
+    use rug::float::Round;
+    let (lo, _) = Float::with_val_round(p, v - b, Round::Down);
+    let (hi, _) = Float::with_val_round(p, v + b, Round::Up);
+    (lo, hi)
 }
 
 /// The text [`judge`] would print, found with one decimal conversion
@@ -310,8 +316,9 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
             err_bound: kept(bound),
         });
     }
-    let lo = Float::with_val(p, &b.value - &*bound);
-    let hi = Float::with_val(p, &b.value + &*bound);
+    // the interval's ends rounded outward (a value at fewer bits than its
+    // bound's difference would lose the half unit otherwise)
+    let (lo, hi) = outward(&b.value, &bound, p);
     match (round_sig(&lo, digits), round_sig(&hi, digits)) {
         (Some(a), Some(b2)) if a == b2 => {
             let (neg, d, e) = a;
@@ -811,6 +818,31 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// A value on a decimal rounding boundary, held at fewer bits than its
+    /// bound resolves: the interval's ends are rounded outward, so the
+    /// digit it would round to either way is not printed (to nearest, both
+    /// ends were the value itself, 1.5, and "2" was printed).
+    #[test]
+    fn an_interval_across_a_rounding_boundary_is_not_cut() {
+        for p in [8u32, 64, 127] {
+            let v = Float::with_val(p, 1.5);
+            let err = Float::with_val(p, 1u32) >> (p as i32 + 40);
+            let e = Estimate::new(v, err, Float::with_val(p, 1u32));
+            assert!(
+                judged(1, &e, &e).is_err(),
+                "1.5 ± 2^-{} at {p} bits",
+                p + 40
+            );
+            let (lo, hi) = outward(&e.value, &e.err, p);
+            assert!(lo < 1.5 && hi > 1.5);
+            // two digits: 1.5 either way
+            assert_eq!(
+                judged(2, &e, &e).map(|j| j.text).ok().as_deref(),
+                Some("1.5")
+            );
         }
     }
 

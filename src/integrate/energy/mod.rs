@@ -778,15 +778,22 @@ pub fn extra_bits_at(log2_t: f64, p: u32) -> u32 {
 }
 
 /// The precision of a table's columns derived from θ alone in the higher
-/// run (`Wants::derived_at_high`): the digits asked and 16 guard bits, up to
-/// the last bit but one of the fewest limbs that hold them (MPFR's two-limb
-/// paths are below 128 bits: 127 bits at 20 or 30 digits, where the run's
-/// own precision takes three limbs; all of them where that bit is needed);
-/// at most the run's `p`. The
-/// columns' error bounds count the roundings at this precision, and δ's
-/// rounding to it.
+/// run (`Wants::derived_at_high`) at the ladder's precision `p` for
+/// `digits`: the bits of the digits asked, 16 guard bits and the 48 more of
+/// each rung the ladder has climbed (where a value falls short, the next
+/// rung's columns carry smaller roundings too), up to the last bit but one
+/// of the fewest limbs that hold them (MPFR's two-limb paths are below 128
+/// bits: 127 bits at 20 or 30 digits on the first rung, where the run's own
+/// precision takes three limbs; all of them where that bit is needed); at
+/// most `p`, and `p` itself where `p` is not the higher precision of a rung.
+/// The columns' error bounds count the roundings at this precision, and
+/// δ's rounding to it.
 pub(crate) fn derived_prec(digits: u32, p: u32) -> u32 {
-    let need = crate::numeric::bits_for_digits(digits) + 16;
+    use crate::numeric::verify::{precisions, MAX_ATTEMPTS};
+    let Some(rung) = (0..MAX_ATTEMPTS).find(|&a| precisions(digits, a).1 == p) else {
+        return p;
+    };
+    let need = crate::numeric::bits_for_digits(digits) + 16 + 48 * rung;
     let top = need.div_ceil(64) * 64;
     (if top > need { top - 1 } else { top }).min(p)
 }
@@ -795,7 +802,7 @@ pub(crate) fn derived_prec(digits: u32, p: u32) -> u32 {
 mod derived_prec_tests {
     use super::derived_prec;
     use crate::numeric::bits_for_digits;
-    use crate::numeric::verify::precisions;
+    use crate::numeric::verify::{precisions, MAX_ATTEMPTS};
 
     /// The digits' bits and 16 more, the fewest limbs, never above the
     /// higher run's precision; written out at 20, 30 and 100 digits.
@@ -807,16 +814,24 @@ mod derived_prec_tests {
         assert_eq!(precisions(100, 0).1.div_ceil(64), 7);
         assert_eq!(derived_prec(100, precisions(100, 0).1), 383);
         for digits in 1..=2000 {
-            let p2 = precisions(digits, 0).1;
-            let pc = derived_prec(digits, p2);
-            assert!(pc <= p2);
-            assert!(pc == p2 || pc >= bits_for_digits(digits) + 16, "{digits}");
-            // no fewer limbs would hold the digits and the guard
-            let need = bits_for_digits(digits) + 16;
-            assert!(pc == p2 || pc.div_ceil(64) == need.div_ceil(64), "{digits}");
-            assert!(pc == p2 || pc % 64 == 63 || pc == need, "{digits}");
+            for rung in 0..MAX_ATTEMPTS {
+                let p2 = precisions(digits, rung).1;
+                let pc = derived_prec(digits, p2);
+                let need = bits_for_digits(digits) + 16 + 48 * rung;
+                assert!(pc <= p2);
+                assert!(pc == p2 || pc >= need, "{digits} {rung}");
+                // no fewer limbs would hold the digits and the guard
+                assert!(pc == p2 || pc.div_ceil(64) == need.div_ceil(64), "{digits}");
+                assert!(pc == p2 || pc % 64 == 63 || pc == need, "{digits}");
+            }
         }
-        // at most p
+        // each rung's columns more precise than the last's
+        let pcs: Vec<u32> = (0..MAX_ATTEMPTS)
+            .map(|a| derived_prec(30, precisions(30, a).1))
+            .collect();
+        assert_eq!(pcs, [127, 191, 255]);
+        // a precision that is not a rung's higher one: itself
         assert_eq!(derived_prec(30, 100), 100);
+        assert_eq!(derived_prec(30, precisions(30, 0).0), precisions(30, 0).0);
     }
 }

@@ -232,11 +232,14 @@ impl Route {
     /// with their derivative ([`crate::mechanics::dynamics::shadow`]), whose
     /// values must be `a`'s to binary64's accuracy. Where they are not (a
     /// value or a constant outside binary64's range), the error is measured
-    /// instead: the columns at δ_low and 32 bits more (the roundings and δ's
-    /// difference at once, counted twice) and at δ + derr. The t and θ
+    /// instead: the columns at δ_low, 32 bits more and the time `t_hi` (the
+    /// time more precise than `t` where `t` was rounded to p bits for these
+    /// columns: its rounding measured too; else `t` itself) — the roundings
+    /// and δ's difference at once, counted twice — and at δ + derr. The t and θ
     /// entries are left 0 (the caller's), as is the work (0 by the laws).
     ///
     /// Errors: none beyond building the engine at `p`.
+    #[allow(clippy::too_many_arguments)]
     pub fn column_errors(
         &mut self,
         a: &[Float],
@@ -244,6 +247,7 @@ impl Route {
         delta_low: &Float,
         derr: &Float,
         t: &Float,
+        t_hi: &Float,
         p: u32,
     ) -> Result<Vec<Float>> {
         let b = Float::with_val(p, delta - delta_low).abs() + derr;
@@ -258,7 +262,7 @@ impl Route {
             self.caches.dyn_above.insert(p, hi);
         }
         let hi = &self.caches.dyn_above[&p];
-        let (lo, _) = columns_of(hi, sign, &Float::with_val(p + 32, delta_low), t);
+        let (lo, _) = columns_of(hi, sign, &Float::with_val(p + 32, delta_low), t_hi);
         let (up, _) = self.columns_at(&Float::with_val(p, delta + derr), t, p)?;
         let mut err: Vec<Float> = a
             .iter()
