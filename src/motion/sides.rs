@@ -15,7 +15,7 @@
 use super::point::Point;
 use super::{EventRec, Motion, Request};
 use crate::error::{Error, Result};
-use rug::Float;
+use rug::{Assign, Float};
 
 /// Where a requested time (or angle) lies relative to an event.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -60,18 +60,40 @@ pub fn within_digits(t: &Float, end: &Float, digits: u32, scale: &Float) -> bool
 /// The event nearest `t` in time, if `t` is within its margin (`ts` the
 /// time unit).
 pub fn near_in_time(events: &[EventRec], t: &Float, p: u32, ts: &Float) -> Option<usize> {
+    let margins = time_margins(events, p, ts);
+    near_in_time_within(events, &margins, t, &mut Float::new(t.prec()))
+}
+
+/// Each event's margin in time ([`near_in_time`]'s), made once for many
+/// times.
+fn time_margins(events: &[EventRec], p: u32, ts: &Float) -> Vec<Float> {
     events
         .iter()
-        .enumerate()
-        .filter(|(_, e)| {
-            Float::with_val(t.prec(), t - &e.at.t).abs() <= margin(&e.at.t, &e.t_err, p, Some(ts))
-        })
-        .min_by(|(_, a), (_, b)| {
-            let da = Float::with_val(t.prec(), t - &a.at.t).abs();
-            let db = Float::with_val(t.prec(), t - &b.at.t).abs();
-            da.total_cmp(&db)
-        })
-        .map(|(k, _)| k)
+        .map(|e| margin(&e.at.t, &e.t_err, p, Some(ts)))
+        .collect()
+}
+
+/// [`near_in_time`] with the events' margins made ([`time_margins`]) and a
+/// scratch number for the distances: the first event nearest `t` of those
+/// `t` is within the margin of (|t − t_e| rounded at t's precision).
+fn near_in_time_within(
+    events: &[EventRec],
+    margins: &[Float],
+    t: &Float,
+    d: &mut Float,
+) -> Option<usize> {
+    let mut best: Option<(usize, Float)> = None;
+    for (k, (e, m)) in events.iter().zip(margins).enumerate() {
+        if d.prec() != t.prec() {
+            d.set_prec(t.prec());
+        }
+        d.assign(t - &e.at.t);
+        d.abs_mut();
+        if *d <= *m && best.as_ref().is_none_or(|(_, b)| d.total_cmp(b).is_lt()) {
+            best = Some((k, d.clone()));
+        }
+    }
+    best.map(|(k, _)| k)
 }
 
 /// The event nearest the angle `theta`, if within its margin.
@@ -109,11 +131,14 @@ pub fn side_of(x: &Float, ev: &Float, err: &Float, p: u32, scale: Option<&Float>
 /// this precision.
 pub fn mark_near(m: &mut Motion, req: &Request, p: u32) {
     let n = m.rows.len().max(m.thetas.len());
+    // each event's margin once, not once per row
+    let margins = time_margins(&m.events, p, &m.ts);
+    let mut d = Float::new(p);
     m.near = m
         .times
         .iter()
         .take(n.min(req.times.len()))
-        .map(|t| near_in_time(&m.events, t, p, &m.ts))
+        .map(|t| near_in_time_within(&m.events, &margins, t, &mut d))
         .collect();
     m.target_near = m
         .target
