@@ -32,9 +32,59 @@ struct Level {
 pub struct TanhSinh {
     prec: u32,
     t_max: f64,
-    levels: Vec<Level>,
+    /// The levels made so far, shared with this thread's other rules of
+    /// the same precision and kind ([`shared_level`]).
+    levels: Vec<std::sync::Arc<Level>>,
     /// Nodes by the exponential recurrence ([`TanhSinh::with_fast_nodes`]).
     fast_nodes: bool,
+}
+
+thread_local! {
+    /// The levels made on this thread, by (precision, fast nodes), the
+    /// most recently used last: a rule's nodes depend on nothing else, and
+    /// every answer builds its rules afresh (an energy engine per
+    /// precision), so a thread's later answers at the same precisions take
+    /// the levels its earlier ones made — the same numbers, not made again.
+    static LEVELS: std::cell::RefCell<Vec<Pooled>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// One (precision, fast nodes) entry of [`LEVELS`]: its levels 0, 1, ….
+type Pooled = ((u32, bool), Vec<std::sync::Arc<Level>>);
+
+/// How many (precision, kind) entries [`LEVELS`] keeps: a ladder's two
+/// precisions and a few more (a table and its events at other digits).
+const LEVELS_KEPT: usize = 8;
+
+/// Level `l` of the rules of `key` from this thread's pool, made by `make`
+/// (and kept) where the pool has only the levels below it.
+fn shared_level(key: (u32, bool), l: usize, make: impl FnOnce() -> Level) -> std::sync::Arc<Level> {
+    let found = LEVELS.with(|c| {
+        let mut c = c.borrow_mut();
+        let i = c.iter().position(|(k, _)| *k == key)?;
+        let entry = c.remove(i);
+        let lv = entry.1.get(l).cloned();
+        c.push(entry);
+        lv
+    });
+    if let Some(lv) = found {
+        return lv;
+    }
+    let lv = std::sync::Arc::new(make());
+    LEVELS.with(|c| {
+        let mut c = c.borrow_mut();
+        match c.iter_mut().find(|(k, _)| *k == key) {
+            Some((_, levels)) if levels.len() == l => levels.push(lv.clone()),
+            Some(_) => {}
+            None if l == 0 => {
+                if c.len() == LEVELS_KEPT {
+                    c.remove(0);
+                }
+                c.push((key, vec![lv.clone()]));
+            }
+            None => {}
+        }
+    });
+    lv
 }
 
 /// The result of one integration.
@@ -105,6 +155,16 @@ impl TanhSinh {
     fn ensure_level(&mut self, level: usize) {
         while self.levels.len() <= level {
             let l = self.levels.len();
+            let key = (self.prec, self.fast_nodes);
+            let lv = shared_level(key, l, || self.make_level(l));
+            self.levels.push(lv);
+        }
+    }
+
+    /// The nodes and weights of level `l` (a function of the precision,
+    /// the kind of nodes and `l` alone).
+    fn make_level(&self, l: usize) -> Level {
+        {
             let p = self.prec + 16;
             let h = Float::with_val(p, 1u32) >> (l as i32);
             let half_pi = Float::with_val(p, Constant::Pi) / 2u32;
@@ -145,7 +205,7 @@ impl TanhSinh {
                 w.push(Float::with_val(self.prec, wk));
                 k += step;
             }
-            self.levels.push(Level { q, one_minus_q, w });
+            Level { q, one_minus_q, w }
         }
     }
 
@@ -311,6 +371,44 @@ impl TanhSinh {
 
 #[cfg(test)]
 mod tests {
+
+    /// A rule made where this thread has made one at the same precision
+    /// takes that rule's levels (the same numbers, not made again), and
+    /// integrates to the same bits as a rule made on a thread with none.
+    #[test]
+    fn a_threads_rules_share_their_levels() {
+        let p = 200;
+        let delta = Float::with_val(p, 1u32);
+        let f = |x: &Float, out: &mut Float| {
+            out.assign(x.sqrt_ref());
+            *out += 1u32;
+        };
+        let fresh = std::thread::spawn(move || {
+            let mut ts = TanhSinh::with_fast_nodes(p);
+            let r = ts.integrate(&Float::with_val(p, 1u32), p - 20, f);
+            (r.value, r.err, r.levels)
+        })
+        .join()
+        .unwrap();
+        let mut a = TanhSinh::with_fast_nodes(p);
+        let ra = a.integrate(&delta, p - 20, f);
+        let mut b = TanhSinh::with_fast_nodes(p);
+        let rb = b.integrate(&delta, p - 20, f);
+        for r in [&ra, &rb] {
+            assert_eq!((&r.value, &r.err, r.levels), (&fresh.0, &fresh.1, fresh.2));
+        }
+        assert!(a.levels.len() > 3);
+        assert!(a
+            .levels
+            .iter()
+            .zip(&b.levels)
+            .all(|(x, y)| std::sync::Arc::ptr_eq(x, y)));
+        // the other kind of nodes is kept apart
+        let mut c = TanhSinh::new(p);
+        c.integrate(&delta, p - 20, f);
+        assert!(!std::sync::Arc::ptr_eq(&a.levels[1], &c.levels[1]));
+    }
+
     use super::*;
 
     fn check(
