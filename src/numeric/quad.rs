@@ -55,9 +55,18 @@ type Pooled = ((u32, bool), Vec<std::sync::Arc<Level>>);
 /// precisions and a few more (a table and its events at other digits).
 const LEVELS_KEPT: usize = 8;
 
+/// The highest precision whose levels [`LEVELS`] keeps (about 330
+/// digits): a few hundred kB per precision there, where above it a rule's
+/// nodes are a small part of its integrals' cost and tens of MB to keep.
+const LEVELS_MAX_PREC: u32 = 1100;
+
 /// Level `l` of the rules of `key` from this thread's pool, made by `make`
-/// (and kept) where the pool has only the levels below it.
+/// (and kept) where the pool has only the levels below it; made alone above
+/// [`LEVELS_MAX_PREC`].
 fn shared_level(key: (u32, bool), l: usize, make: impl FnOnce() -> Level) -> std::sync::Arc<Level> {
+    if key.0 > LEVELS_MAX_PREC {
+        return std::sync::Arc::new(make());
+    }
     let found = LEVELS.with(|c| {
         let mut c = c.borrow_mut();
         let i = c.iter().position(|(k, _)| *k == key)?;
