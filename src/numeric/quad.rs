@@ -56,7 +56,7 @@ type Pooled = ((u32, bool), Vec<std::sync::Arc<Level>>);
 const LEVELS_KEPT: usize = 8;
 
 /// The highest precision whose levels [`LEVELS`] keeps (about 330
-/// digits): a few hundred kB per precision there, where above it a rule's
+/// digits): up to about a megabyte per precision there, where above it a rule's
 /// nodes are a small part of its integrals' cost and tens of MB to keep.
 const LEVELS_MAX_PREC: u32 = 1100;
 
