@@ -4,7 +4,8 @@
 //! of against a lower run's values. Held here against the same tables at 45
 //! digits, which verify the columns with a bound of their own a hundred
 //! thousand million times smaller: every printed digit must be the 45-digit
-//! value's, rounded, and within the error bound printed beside it — for every contact law of a conservative phase, from
+//! value's, rounded, all the digits asked, and within the error bound
+//! printed beside it — for every contact law of a conservative phase, from
 //! rest and from a moving start, in SI units and in units beyond binary64's
 //! range (g = 10^-330, where the error is measured instead), at the start,
 //! at tiny times, and just before the separation, where N12 is a

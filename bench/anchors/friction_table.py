@@ -122,7 +122,8 @@ def main():
           "caches emptied) + first run, warm = median of re-runs. Ratios above 1 in the first ratio "
           "column mean heyoka warm is faster; in the second, that cylroll's process is faster than "
           "heyoka's first call. In alternation: heyoka's warm run and the cylroll command one after "
-          "the other in heyoka's process, the order swapped every pair (the same stretch of the machine). Digits agreeing: heyoka against cylroll's verified output (events: "
+          "the other in heyoka's process, the order swapped every pair (the same stretch of the machine). "
+          "Digits agreeing: heyoka against cylroll's verified output (events: "
           "t and θ of both events; θ: all 1000 values; rows: every column, relative to the column's "
           "largest value). Library: divan's median wall time of the library call on its own grid "
           "(1000 times on [0, 4.920]), θ only (t3_friction) or every column (t3_friction_rows); the library pair: `oracle::theta_at_times` and `oracle::trajectory` on that grid, called in alternation in one process, on the command's allocator.")

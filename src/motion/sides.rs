@@ -57,37 +57,21 @@ pub fn within_digits(t: &Float, end: &Float, digits: u32, scale: &Float) -> bool
     Float::with_val(p, t - end).abs() <= tol
 }
 
-/// The event nearest `t` in time, if `t` is within its margin (`ts` the
-/// time unit).
-pub fn near_in_time(events: &[EventRec], t: &Float, p: u32, ts: &Float) -> Option<usize> {
-    let margins = time_margins(events, p, ts);
-    near_in_time_within(events, &margins, t, &mut Float::new(t.prec()))
-}
-
-/// Each event's margin in time ([`near_in_time`]'s), made once for many
-/// times.
-fn time_margins(events: &[EventRec], p: u32, ts: &Float) -> Vec<Float> {
-    events
-        .iter()
-        .map(|e| margin(&e.at.t, &e.t_err, p, Some(ts)))
-        .collect()
-}
-
-/// [`near_in_time`] with the events' margins made ([`time_margins`]) and a
-/// scratch number for the distances: the first event nearest `t` of those
-/// `t` is within the margin of (|t − t_e| rounded at t's precision).
-fn near_in_time_within(
-    events: &[EventRec],
+/// The event whose value in `ats` (with its margin in `margins`) is nearest
+/// `x`, if `x` is within that margin: |x − a| rounded at x's precision (in
+/// the scratch number `d`), the first of equally near ones.
+fn nearest_within<'a>(
+    x: &Float,
+    ats: impl Iterator<Item = &'a Float>,
     margins: &[Float],
-    t: &Float,
     d: &mut Float,
 ) -> Option<usize> {
     let mut best: Option<(usize, Float)> = None;
-    for (k, (e, m)) in events.iter().zip(margins).enumerate() {
-        if d.prec() != t.prec() {
-            d.set_prec(t.prec());
+    for (k, (a, m)) in ats.zip(margins).enumerate() {
+        if d.prec() != x.prec() {
+            d.set_prec(x.prec());
         }
-        d.assign(t - &e.at.t);
+        d.assign(x - a);
         d.abs_mut();
         if *d <= *m && best.as_ref().is_none_or(|(_, b)| d.total_cmp(b).is_lt()) {
             best = Some((k, d.clone()));
@@ -98,19 +82,12 @@ fn near_in_time_within(
 
 /// The event nearest the angle `theta`, if within its margin.
 pub fn near_in_angle(events: &[EventRec], theta: &Float, p: u32) -> Option<usize> {
-    events
+    let margins: Vec<Float> = events
         .iter()
-        .enumerate()
-        .filter(|(_, e)| {
-            Float::with_val(theta.prec(), theta - &e.at.theta).abs()
-                <= margin(&e.at.theta, &e.theta_err, p, None)
-        })
-        .min_by(|(_, a), (_, b)| {
-            let da = Float::with_val(theta.prec(), theta - &a.at.theta).abs();
-            let db = Float::with_val(theta.prec(), theta - &b.at.theta).abs();
-            da.total_cmp(&db)
-        })
-        .map(|(k, _)| k)
+        .map(|e| margin(&e.at.theta, &e.theta_err, p, None))
+        .collect();
+    let ats = events.iter().map(|e| &e.at.theta);
+    nearest_within(theta, ats, &margins, &mut Float::new(theta.prec()))
 }
 
 /// The side of `x` (a time, `scale` the time unit; or an angle, None)
@@ -131,14 +108,18 @@ pub fn side_of(x: &Float, ev: &Float, err: &Float, p: u32, scale: Option<&Float>
 /// this precision.
 pub fn mark_near(m: &mut Motion, req: &Request, p: u32) {
     let n = m.rows.len().max(m.thetas.len());
-    // each event's margin once, not once per row
-    let margins = time_margins(&m.events, p, &m.ts);
+    // each event's margin in time (`ts` the time unit) once, not once per row
+    let margins: Vec<Float> = m
+        .events
+        .iter()
+        .map(|e| margin(&e.at.t, &e.t_err, p, Some(&m.ts)))
+        .collect();
     let mut d = Float::new(p);
     m.near = m
         .times
         .iter()
         .take(n.min(req.times.len()))
-        .map(|t| near_in_time_within(&m.events, &margins, t, &mut d))
+        .map(|t| nearest_within(t, m.events.iter().map(|e| &e.at.t), &margins, &mut d))
         .collect();
     m.target_near = m
         .target
@@ -298,5 +279,32 @@ pub fn trim_events(m: &mut Motion, req: &Request, p: u32) {
                 m.impact = None;
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod nearest_tests {
+    use super::*;
+
+    /// The nearest of the events whose margin holds the value, the first of
+    /// equally near ones, none where no margin holds it (written out by
+    /// hand).
+    #[test]
+    fn the_nearest_event_within_its_margin() {
+        let f = |x: f64| Float::with_val(64, x);
+        let ats = [f(1.0), f(2.0), f(2.5)];
+        let margins = [f(0.1), f(1.0), f(1.0)];
+        let mut d = Float::new(64);
+        let near = |x: f64, d: &mut Float| nearest_within(&f(x), ats.iter(), &margins, d);
+        // 2.2: events 1 (0.2) and 2 (0.3) hold it
+        assert_eq!(near(2.2, &mut d), Some(1));
+        // 1.05: event 0 (0.05, within 0.1) before event 1 (0.95)
+        assert_eq!(near(1.05, &mut d), Some(0));
+        // 1.5: event 0's margin does not hold it; event 1 and 2 do, 1 nearer
+        assert_eq!(near(1.5, &mut d), Some(1));
+        // 2.25: events 1 and 2 equally near, the first
+        assert_eq!(near(2.25, &mut d), Some(1));
+        assert_eq!(near(10.0, &mut d), None);
+        assert_eq!(near(-0.5, &mut d), None);
     }
 }

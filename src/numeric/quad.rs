@@ -173,49 +173,47 @@ impl TanhSinh {
     /// The nodes and weights of level `l` (a function of the precision,
     /// the kind of nodes and `l` alone).
     fn make_level(&self, l: usize) -> Level {
-        {
-            let p = self.prec + 16;
-            let h = Float::with_val(p, 1u32) >> (l as i32);
-            let half_pi = Float::with_val(p, Constant::Pi) / 2u32;
-            let (start, step) = if l == 0 { (0u32, 1u32) } else { (1, 2) };
-            let mut q = Vec::new();
-            let mut one_minus_q = Vec::new();
-            let mut w = Vec::new();
-            let mut k = start;
-            let step_exp = Float::with_val(p, &h * step).exp();
-            let mut et = Float::new(p);
-            loop {
-                let t = Float::with_val(p, &h * k);
-                if t.to_f64() > self.t_max {
-                    break;
-                }
-                // u = (π/2) sinh t; e = exp(-2u); q = e/(1+e); cosh u = (1+e)/(2 sqrt e)
-                let (sh, ch) = if self.fast_nodes {
-                    if (k - start) % (64 * step) == 0 {
-                        et.assign(t.exp_ref());
-                    } else {
-                        et *= &step_exp;
-                    }
-                    let inv = Float::with_val(p, et.recip_ref());
-                    let sh = Float::with_val(p, &et - &inv) / 2u32;
-                    let ch = Float::with_val(p, &et + &inv) / 2u32;
-                    (sh, ch)
-                } else {
-                    t.sinh_cosh(Float::new(p))
-                };
-                let u = Float::with_val(p, &half_pi * &sh);
-                let e = Float::with_val(p, -2 * u).exp();
-                let one_plus = Float::with_val(p, 1u32 + &e);
-                let qk = Float::with_val(self.prec, &e / &one_plus);
-                // 1/cosh²u = 4e/(1+e)²
-                let wk = Float::with_val(p, &half_pi * ch) * 4u32 * &e / one_plus.square();
-                one_minus_q.push(Float::with_val(self.prec, 1u32 - &qk));
-                q.push(qk);
-                w.push(Float::with_val(self.prec, wk));
-                k += step;
+        let p = self.prec + 16;
+        let h = Float::with_val(p, 1u32) >> (l as i32);
+        let half_pi = Float::with_val(p, Constant::Pi) / 2u32;
+        let (start, step) = if l == 0 { (0u32, 1u32) } else { (1, 2) };
+        let mut q = Vec::new();
+        let mut one_minus_q = Vec::new();
+        let mut w = Vec::new();
+        let mut k = start;
+        let step_exp = Float::with_val(p, &h * step).exp();
+        let mut et = Float::new(p);
+        loop {
+            let t = Float::with_val(p, &h * k);
+            if t.to_f64() > self.t_max {
+                break;
             }
-            Level { q, one_minus_q, w }
+            // u = (π/2) sinh t; e = exp(-2u); q = e/(1+e); cosh u = (1+e)/(2 sqrt e)
+            let (sh, ch) = if self.fast_nodes {
+                if (k - start) % (64 * step) == 0 {
+                    et.assign(t.exp_ref());
+                } else {
+                    et *= &step_exp;
+                }
+                let inv = Float::with_val(p, et.recip_ref());
+                let sh = Float::with_val(p, &et - &inv) / 2u32;
+                let ch = Float::with_val(p, &et + &inv) / 2u32;
+                (sh, ch)
+            } else {
+                t.sinh_cosh(Float::new(p))
+            };
+            let u = Float::with_val(p, &half_pi * &sh);
+            let e = Float::with_val(p, -2 * u).exp();
+            let one_plus = Float::with_val(p, 1u32 + &e);
+            let qk = Float::with_val(self.prec, &e / &one_plus);
+            // 1/cosh²u = 4e/(1+e)²
+            let wk = Float::with_val(p, &half_pi * ch) * 4u32 * &e / one_plus.square();
+            one_minus_q.push(Float::with_val(self.prec, 1u32 - &qk));
+            q.push(qk);
+            w.push(Float::with_val(self.prec, wk));
+            k += step;
         }
+        Level { q, one_minus_q, w }
     }
 
     /// ∫_0^Δ f(δ) dδ, with `f(δ, out)` writing the integrand at distance δ from
@@ -380,6 +378,7 @@ impl TanhSinh {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
 
     /// A rule made where this thread has made one at the same precision
     /// takes that rule's levels (the same numbers, not made again), and
@@ -417,8 +416,6 @@ mod tests {
         c.integrate(&delta, p - 20, f);
         assert!(!std::sync::Arc::ptr_eq(&a.levels[1], &c.levels[1]));
     }
-
-    use super::*;
 
     fn check(
         prec: u32,
