@@ -67,19 +67,23 @@ fn shared_level(key: (u32, bool), l: usize, make: impl FnOnce() -> Level) -> std
     if key.0 > LEVELS_MAX_PREC {
         return std::sync::Arc::new(make());
     }
-    let found = LEVELS.with(|c| {
-        let mut c = c.borrow_mut();
-        let i = c.iter().position(|(k, _)| *k == key)?;
-        let entry = c.remove(i);
-        let lv = entry.1.get(l).cloned();
-        c.push(entry);
-        lv
-    });
+    // (a rule used while the thread's locals are torn down makes its own)
+    let found = LEVELS
+        .try_with(|c| {
+            let mut c = c.borrow_mut();
+            let i = c.iter().position(|(k, _)| *k == key)?;
+            let entry = c.remove(i);
+            let lv = entry.1.get(l).cloned();
+            c.push(entry);
+            lv
+        })
+        .ok()
+        .flatten();
     if let Some(lv) = found {
         return lv;
     }
     let lv = std::sync::Arc::new(make());
-    LEVELS.with(|c| {
+    let _ = LEVELS.try_with(|c| {
         let mut c = c.borrow_mut();
         match c.iter_mut().find(|(k, _)| *k == key) {
             Some((_, levels)) if levels.len() == l => levels.push(lv.clone()),
