@@ -73,6 +73,9 @@ pub struct Fast {
 pub struct Wants<'a> {
     /// The requested times (ascending).
     pub times: &'a [Exact],
+    /// The same rounded to nearest ([`super::Motion::times`]; empty: not
+    /// given), to decide most comparisons without the exact ones.
+    pub times_f: &'a [Float],
     /// Which run of the ladder (the energy route certifies θ(t) differently).
     pub run: Run,
     /// Digits requested (for messages).
@@ -92,6 +95,47 @@ pub struct Wants<'a> {
     /// The rows' columns but t and θ computed by the higher run alone
     /// ([`super::Request::derived_at_high`]).
     pub derived_at_high: bool,
+}
+
+/// How many of `times` (ascending) are at most `end`: decided from the
+/// rounded times (`rounded`, all at one precision q, each within a unit
+/// of its time: a rational's rounding half a unit, a multiple of π's a
+/// unit) where a rounded time lies outside end·(1 ± 2^(4−q)) — there the
+/// time is on the same side of `end` as its rounding —, exactly where it
+/// lies inside (or the rounded times are not given, or `end` ≤ 0). A
+/// table's times before a phase's end cost one comparison each, not a
+/// division of big integers.
+fn covered_times(times: &[Exact], rounded: &[Float], end: &Float) -> usize {
+    let q = rounded.first().map_or(0, |r| r.prec());
+    let usable = rounded.len() == times.len()
+        && q > 8
+        && end.is_sign_positive()
+        && !end.is_zero()
+        && rounded.iter().all(|r| r.prec() == q);
+    let bounds = usable.then(|| {
+        let p = end.prec().max(q) + 8;
+        let e = Float::with_val(p, end);
+        let rel = Float::with_val(p, &e >> (q as i32 - 4));
+        let below = Float::with_val_round(p, &e - &rel, rug::float::Round::Down).0;
+        let above = Float::with_val_round(p, &e + &rel, rug::float::Round::Up).0;
+        (below, above)
+    });
+    times
+        .iter()
+        .enumerate()
+        .take_while(|(i, t)| {
+            if let Some((below, above)) = &bounds {
+                let r = &rounded[*i];
+                if r <= below {
+                    return true;
+                }
+                if r >= above {
+                    return false;
+                }
+            }
+            t.le_float(end)
+        })
+        .count()
 }
 
 /// The first phase from the start, in the conservative mode `mode`, by
@@ -257,7 +301,12 @@ pub fn first_phase(
         })
     });
     crate::cancel::check()?;
-    let (t_end, t_err_q) = route.engine(p)?.time(&d_end);
+    let (t_end, t_err_q) = if ending == Ending::Separation {
+        // d_end is δs itself: its time is the route's (kept between answers)
+        route.time_s(p)?
+    } else {
+        route.engine(p)?.time(&d_end)
+    };
     crate::cancel::check()?;
     let (cols_end, energy_end) = route.columns_at(&d_end, &t_end, p)?;
     let thd_end = Float::with_val(p, cols_end[2].abs_ref());
@@ -296,17 +345,17 @@ pub fn first_phase(
         }
     }
     // the rows inside the phase
-    let covered = wants
-        .times
-        .iter()
-        .take_while(|t| t.le_float(&t_end))
-        .count();
+    let covered = covered_times(wants.times, wants.times_f, &t_end);
     let times = &wants.times[..covered];
     let mut rows = Vec::with_capacity(if wants.theta_only { 0 } else { times.len() });
     let mut row_deltas = Vec::with_capacity(if wants.theta_only { 0 } else { times.len() });
     let mut thetas = Vec::with_capacity(if wants.theta_only { times.len() } else { 0 });
     if !times.is_empty() {
-        let mut cache = (0, Vec::new());
+        // the times' conversion of the ladder's other run, if of these times
+        let (kept_times, mut cache) = std::mem::take(&mut route.caches.times_at);
+        if kept_times[..] != *times {
+            cache = (0, Vec::new());
+        }
         let deltas = route.deltas_at(
             times,
             p,
@@ -315,7 +364,9 @@ pub fn first_phase(
             &mut cache,
             wants.digits,
             Some(&t_end),
-        )?;
+        );
+        route.caches.times_at = (times.to_vec(), cache);
+        let deltas = deltas?;
         for (i, (t, (d, derr))) in times.iter().zip(deltas).enumerate() {
             if wants.theta_only {
                 let th = Float::with_val(p, &th0w + &d);
@@ -662,5 +713,61 @@ mod derived_tests {
                 assert!(gap <= err[k], "{} at δ = {d:.10e}", COLUMNS[k]);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod covered_tests {
+    use super::*;
+    use rug::{Integer, Rational};
+
+    /// The count from the rounded times is the exact count: times at the
+    /// end itself, a unit of the rounding and less on either side of it
+    /// (rationals whose rounding is the end's own), multiples of π, zero,
+    /// and without rounded times or with an end ≤ 0.
+    #[test]
+    fn times_covered_by_the_rounded_times_are_the_exact_count() {
+        let q = 120;
+        // end: 7/3 at 150 bits; rationals near it, offset by k/2^(q+s)
+        let end = Float::with_val(150, Rational::from((7, 3)));
+        let end_q = end.to_rational().expect("finite");
+        let near = |k: i64, s: u32| {
+            let step = Rational::from((k, 1)) / Rational::from(Integer::from(1) << (q + s));
+            Exact::rational(end_q.clone() + step)
+        };
+        let pi_over = |n: i64| Exact::parse("t", &format!("pi/{n}"), true).expect("pi");
+        let exact_count =
+            |times: &[Exact], end: &Float| times.iter().take_while(|t| t.le_float(end)).count();
+        let mut cases: Vec<Vec<Exact>> = Vec::new();
+        for k in [-64i64, -9, -1, 0, 1, 9, 64] {
+            for s in [0u32, 2, 20] {
+                cases.push(vec![
+                    Exact::rational(Rational::new()),
+                    pi_over(4),
+                    Exact::rational(Rational::from((2, 1))),
+                    near(k - 1, s),
+                    near(k, s),
+                    near(k + 1, s),
+                    Exact::rational(Rational::from((3, 1))),
+                ]);
+            }
+        }
+        cases.push(vec![pi_over(2), pi_over(2), near(0, 0), near(0, 0)]);
+        cases.push(vec![near(1, 40), near(1, 40)]);
+        let mut counts = std::collections::BTreeSet::new();
+        for times in &cases {
+            let rounded: Vec<Float> = times.iter().map(|t| t.to_float(q)).collect();
+            let want = exact_count(times, &end);
+            counts.insert(want);
+            assert_eq!(covered_times(times, &rounded, &end), want, "{times:?}");
+            assert_eq!(covered_times(times, &[], &end), want);
+            let zero = Float::new(150);
+            assert_eq!(
+                covered_times(times, &rounded, &zero),
+                exact_count(times, &zero)
+            );
+        }
+        // the end falls before, inside and after the near run
+        assert!(counts.len() >= 4, "{counts:?}");
     }
 }

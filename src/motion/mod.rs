@@ -252,6 +252,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         let route = caches.sticking(model)?;
         let wants = conservative::Wants {
             times: &req.times,
+            times_f: &w.out.times,
             run: req.run,
             digits: req.digits,
             theta_only: req.theta_only,

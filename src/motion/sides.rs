@@ -80,6 +80,50 @@ fn nearest_within<'a>(
     best.map(|(k, _)| k)
 }
 
+/// [`nearest_within`] of each of `xs`: where `xs` ascend (a table's times),
+/// each event's rows are found by bisection — the rows within an event's
+/// margin are a run (|x − a| rounded is monotone on each side of a), so a
+/// table's rows far from every event cost no subtraction —, and the rows
+/// in it are compared as [`nearest_within`] compares them (the first of
+/// equally near events). Otherwise row by row.
+fn nearest_rows(xs: &[Float], ats: &[&Float], margins: &[Float]) -> Vec<Option<usize>> {
+    let Some(x0) = xs.first() else {
+        return Vec::new();
+    };
+    let mut d = Float::new(x0.prec());
+    if !xs.windows(2).all(|w| w[0] <= w[1]) {
+        return xs
+            .iter()
+            .map(|x| nearest_within(x, ats.iter().copied(), margins, &mut d))
+            .collect();
+    }
+    let mut best: Vec<Option<(usize, Float)>> = vec![None; xs.len()];
+    for (k, (a, m)) in ats.iter().zip(margins).enumerate() {
+        let mut within = |x: &Float| {
+            if d.prec() != x.prec() {
+                d.set_prec(x.prec());
+            }
+            d.assign(x - *a);
+            d.abs_mut();
+            d <= *m
+        };
+        // before a and out of the margin; then a run within it
+        let lo = xs.partition_point(|x| x < *a && !within(x));
+        let hi = lo + xs[lo..].partition_point(|x| x <= *a || within(x));
+        for (x, b) in xs[lo..hi].iter().zip(&mut best[lo..hi]) {
+            if d.prec() != x.prec() {
+                d.set_prec(x.prec());
+            }
+            d.assign(x - *a);
+            d.abs_mut();
+            if d <= *m && b.as_ref().is_none_or(|(_, bd)| d.total_cmp(bd).is_lt()) {
+                *b = Some((k, d.clone()));
+            }
+        }
+    }
+    best.into_iter().map(|b| b.map(|(k, _)| k)).collect()
+}
+
 /// The event nearest the angle `theta`, if within its margin.
 pub fn near_in_angle(events: &[EventRec], theta: &Float, p: u32) -> Option<usize> {
     let margins: Vec<Float> = events
@@ -114,13 +158,9 @@ pub fn mark_near(m: &mut Motion, req: &Request, p: u32) {
         .iter()
         .map(|e| margin(&e.at.t, &e.t_err, p, Some(&m.ts)))
         .collect();
-    let mut d = Float::new(p);
-    m.near = m
-        .times
-        .iter()
-        .take(n.min(req.times.len()))
-        .map(|t| nearest_within(t, m.events.iter().map(|e| &e.at.t), &margins, &mut d))
-        .collect();
+    let times = &m.times[..n.min(req.times.len()).min(m.times.len())];
+    let ats: Vec<&Float> = m.events.iter().map(|e| &e.at.t).collect();
+    m.near = nearest_rows(times, &ats, &margins);
     m.target_near = m
         .target
         .as_ref()
@@ -306,5 +346,46 @@ mod nearest_tests {
         assert_eq!(near(2.25, &mut d), Some(1));
         assert_eq!(near(10.0, &mut d), None);
         assert_eq!(near(-0.5, &mut d), None);
+    }
+
+    /// A table's rows by bisection: the same event for every row as the
+    /// row-by-row search (and, written out, at the margins' edges and the
+    /// ties above), ascending or not, at rows with overlapping margins,
+    /// at an event itself and beyond every event.
+    #[test]
+    fn the_rows_by_bisection_are_the_rows_one_by_one() {
+        let f = |x: f64| Float::with_val(64, x);
+        let events = [f(1.0), f(2.0), f(2.5)];
+        let ats: Vec<&Float> = events.iter().collect();
+        let margins = [f(0.1), f(1.0), f(1.0)];
+        let one_by_one = |xs: &[Float]| -> Vec<Option<usize>> {
+            let mut d = Float::new(64);
+            xs.iter()
+                .map(|x| nearest_within(x, ats.iter().copied(), &margins, &mut d))
+                .collect()
+        };
+        // every 1/64 from −1 to 5 (the margins' edges 0.9, 1.1, 1.0, 3.0 and
+        // 3.5 on the grid as near as binary64 has them)
+        let grid: Vec<Float> = (-64..=320).map(|i| f(i as f64 / 64.0)).collect();
+        let got = nearest_rows(&grid, &ats, &margins);
+        assert_eq!(got, one_by_one(&grid));
+        let at = |x: f64| got[((x + 1.0) * 64.0) as usize];
+        assert_eq!(at(2.25), Some(1));
+        assert_eq!(at(1.0), Some(0));
+        assert_eq!(at(0.0), None);
+        assert_eq!(at(1.5), Some(1));
+        assert_eq!(at(3.5), Some(2));
+        assert_eq!(at(3.515625), None);
+        // repeated times and a descending stretch
+        let odd: Vec<Float> = [3.0, 0.95, 0.95, 2.2, 1.05, 5.0, 2.25]
+            .iter()
+            .map(|&x| f(x))
+            .collect();
+        assert_eq!(nearest_rows(&odd, &ats, &margins), one_by_one(&odd));
+        let mut sorted = odd.clone();
+        sorted.sort_by(|a, b| a.total_cmp(b));
+        assert_eq!(nearest_rows(&sorted, &ats, &margins), one_by_one(&sorted));
+        assert!(nearest_rows(&[], &ats, &margins).is_empty());
+        assert_eq!(nearest_rows(&grid[..3], &[], &[]), vec![None; 3]);
     }
 }

@@ -36,25 +36,31 @@ pub fn signature(m: &Motion) -> Vec<String> {
         Some(e) => format!("ends at the {}", e.name()),
         None => "no end before the last time".to_string(),
     });
-    let rows: Vec<String> = m
-        .rows
-        .iter()
-        .map(|p| p.phase.tag())
-        .chain(m.thetas.iter().map(|(_, p, _)| p.tag()))
-        .collect();
     // the rows' phases, run by run ("rows: 3 stick/stick, 2 flight")
-    let mut runs: Vec<(usize, String)> = Vec::new();
-    for r in rows {
-        match runs.last_mut() {
-            Some((n, last)) if *last == r => *n += 1,
-            _ => runs.push((1, r)),
-        }
-    }
+    let phases = m.rows.iter().map(|p| p.phase);
+    let runs = tag_runs(phases.chain(m.thetas.iter().map(|(_, p, _)| *p)));
     if !runs.is_empty() {
         let text: Vec<String> = runs.iter().map(|(n, r)| format!("{n} {r}")).collect();
         s.push(format!("rows: {}", text.join(" ")));
     }
     s
+}
+
+/// The runs of equal tags in `phases`, with their lengths: a tag is made
+/// where the phase changes, not per row (two phases may share a tag, a
+/// flight's: their runs are one).
+fn tag_runs(phases: impl Iterator<Item = Phase>) -> Vec<(usize, String)> {
+    let mut runs: Vec<(usize, String)> = Vec::new();
+    let mut last: Option<Phase> = None;
+    for ph in phases {
+        match runs.last_mut() {
+            Some((n, _)) if last == Some(ph) => *n += 1,
+            Some((n, tag)) if *tag == ph.tag() => *n += 1,
+            _ => runs.push((1, ph.tag())),
+        }
+        last = Some(ph);
+    }
+    runs
 }
 
 /// An integrated value: its own error estimate is a few units of the
@@ -480,4 +486,41 @@ pub fn theta_estimates(m: &Motion) -> Vec<Estimate> {
 /// The phases of a θ-only motion.
 pub fn theta_phases(m: &Motion) -> Vec<Phase> {
     m.thetas.iter().map(|(_, p, _)| *p).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::motion::{Mode, State};
+
+    #[test]
+    fn tag_runs_are_the_runs_of_the_rows_tags() {
+        let stick = Phase::Contact(Mode {
+            floor: State::Stick,
+            contact: State::Stick,
+        });
+        let slip = Phase::Contact(Mode {
+            floor: State::Slip(1),
+            contact: State::Stick,
+        });
+        // two flights of one tag ("flight"): one run
+        let fly_slip = Phase::Flight {
+            floor: State::Slip(-1),
+        };
+        let fly_stick = Phase::Flight {
+            floor: State::Stick,
+        };
+        let rows = [
+            stick, stick, stick, slip, fly_slip, fly_slip, fly_stick, stick,
+        ];
+        let got = tag_runs(rows.iter().copied());
+        let want: Vec<(usize, String)> = vec![
+            (3, "stick/stick".into()),
+            (1, "slip+/stick".into()),
+            (3, "flight".into()),
+            (1, "stick/stick".into()),
+        ];
+        assert_eq!(got, want);
+        assert!(tag_runs(std::iter::empty()).is_empty());
+    }
 }

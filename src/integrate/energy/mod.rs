@@ -14,6 +14,7 @@
 //! solved as its mirror image ([`Route::odd`] restores the odd quantities).
 
 pub mod engine;
+mod kept;
 mod roots;
 mod rows;
 
@@ -92,6 +93,10 @@ pub struct Caches {
     /// The dynamics at 32 bits beyond a precision, per precision: the
     /// rows' columns where their error is measured ([`Route::column_errors`]).
     pub dyn_above: HashMap<u32, Dyn>,
+    /// A table's times and [`Route::deltas_at`]'s conversion of them (its
+    /// `cache`), kept for the ladder's other run of the same times: one
+    /// conversion per rung, as a reused [`Route`] makes it.
+    pub times_at: (Vec<Exact>, (u32, Vec<Float>)),
 }
 
 /// The energy route of one conservative model.
@@ -246,15 +251,37 @@ impl Route {
     }
 
     /// δs = θs − θ0 at `prec`, as (value, error), with the bracket scanned at
-    /// low precision first. Both are deterministic and cached.
+    /// low precision first. Both are deterministic and cached, and kept per
+    /// thread between answers for the same model and precision (`kept`: the
+    /// bits a fresh thread computes).
     pub fn delta_s(&mut self, prec: u32) -> Result<(Float, Float)> {
         if let Some(v) = self.caches.delta_s_at.get(&prec) {
             return Ok(v.clone());
         }
-        let (lo, hi) = self.scan_bracket()?;
-        let e = self.engine(prec)?;
-        let v = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
+        let v = match kept::get(&self.work, prec, kept::Fact::DeltaS) {
+            Some(v) => v,
+            None => {
+                let (lo, hi) = self.scan_bracket()?;
+                let e = self.engine(prec)?;
+                let v = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
+                kept::put(&self.work, prec, kept::Fact::DeltaS, &v);
+                v
+            }
+        };
         self.caches.delta_s_at.insert(prec, v.clone());
+        Ok(v)
+    }
+
+    /// t(δs) at `prec` by [`Engine::time`] (the θ form's quadrature), as
+    /// (value, error estimate): the time of the closed branch's end. Kept
+    /// per thread as [`Route::delta_s`].
+    pub fn time_s(&mut self, prec: u32) -> Result<(Float, Float)> {
+        if let Some(v) = kept::get(&self.work, prec, kept::Fact::TimeS) {
+            return Ok(v);
+        }
+        let (ds, _) = self.delta_s(prec)?;
+        let v = self.engine(prec)?.time(&ds);
+        kept::put(&self.work, prec, kept::Fact::TimeS, &v);
         Ok(v)
     }
 
