@@ -323,7 +323,7 @@ pub fn first_phase(
             // t* by the cheaper half-angle quadrature where it applies
             // (θ ≤ 2π/3; else the θ form, as `time`): the branch point's
             // detection is to cost little on top of the phase
-            let (t, terr, _) = route.engine(p)?.time_fast(d, wants.run == Run::High, false);
+            let (t, terr) = route.branch_time(d, p, wants.run == Run::High)?;
             let (cols, en) = route.columns_at(d, &t, p)?;
             let thd = Float::with_val(p, cols[col!("theta_dot")].abs_ref());
             let t_err = if thd.is_zero() {

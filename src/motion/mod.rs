@@ -199,7 +199,11 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             near: Vec::new(),
             target_near: None,
             ts: ctx.ts.clone(),
-            times: req.times.iter().map(|t| t.to_float(wp)).collect(),
+            times: caches
+                .times
+                .as_ref()
+                .and_then(|r| r.rounded(&req.times, wp))
+                .unwrap_or_else(|| req.times.iter().map(|t| t.to_float(wp)).collect()),
         },
         next: 0,
         e0,
@@ -249,7 +253,9 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
     // --- a conservative first phase: the energy route
     crate::cancel::check()?;
     if req.method == Method::Auto && mode.is_conservative() {
+        let rounded = caches.times.clone();
         let route = caches.sticking(model)?;
+        route.caches.rounded_times = rounded;
         let wants = conservative::Wants {
             times: &req.times,
             times_f: &w.out.times,

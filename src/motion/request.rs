@@ -7,7 +7,7 @@ use super::point::Point;
 use super::sides::Side;
 use super::{default_horizon, flight};
 use crate::error::Result;
-use crate::exact::Exact;
+use crate::exact::{Exact, RoundedTimes};
 use crate::integrate::energy::Route as EnergyRoute;
 use crate::model::{Model, Which};
 use crate::numeric::verify::Run;
@@ -238,6 +238,9 @@ pub struct Caches {
     pub sticking: Option<EnergyRoute>,
     /// The model's [`default_horizon`], once computed.
     pub horizon: Option<Float>,
+    /// The request's times rounded to odd once, for every run's rounding
+    /// of them ([`RoundedTimes`]; None: each run converts them).
+    pub times: Option<std::sync::Arc<RoundedTimes>>,
 }
 
 impl Caches {

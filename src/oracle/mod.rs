@@ -29,7 +29,7 @@ pub use trajectory::{
 };
 
 use crate::error::{Error, Result};
-use crate::exact::Exact;
+use crate::exact::{Exact, RoundedTimes};
 use crate::model::{Law, Model, Which};
 use crate::motion::point::col;
 use crate::motion::{self, Branch, Caches, Kind, Method, Motion, Phase, Request, Until};
@@ -102,10 +102,21 @@ fn check_digits(digits: u32) -> Result<()> {
 }
 
 fn check_times(times: &[Exact]) -> Result<()> {
-    for w in times.windows(2) {
+    check_times_rounded(times, None)
+}
+
+/// [`check_times`], the order of two neighbours read from their roundings
+/// to odd where these differ (`rounded`, of these times: a rounding to odd
+/// is monotone, so unequal roundings order their times), else exactly.
+fn check_times_rounded(times: &[Exact], rounded: Option<&RoundedTimes>) -> Result<()> {
+    let rounded = rounded.filter(|r| r.len() == times.len());
+    for (i, w) in times.windows(2).enumerate() {
+        let known = rounded.and_then(|r| r.order(i, i + 1));
         // exactly where both are rational or both multiples of π (no
         // conversion, and no two times too close for a float to order)
-        let descending = if w[0].times_pi == w[1].times_pi {
+        let descending = if let Some(o) = known {
+            o == std::cmp::Ordering::Greater
+        } else if w[0].times_pi == w[1].times_pi {
             w[1].coef < w[0].coef
         } else {
             w[1].to_float(256) < w[0].to_float(256)
@@ -133,6 +144,15 @@ fn infinite(model: &Model, what: &str) -> Error {
 }
 
 fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -> Runs<'a> {
+    // the times rounded to odd once, above the first rung's precisions
+    // (its runs' and the Taylor route's time precision for both, set by
+    // the lower run: `Route::deltas_at`): each run rounds them from these
+    // (a climb above converts them itself)
+    let rounded = (times.len() > 1).then(|| {
+        let (p1, _) = crate::numeric::verify::precisions(opts.digits, 0);
+        let top = crate::numeric::taylor::time_prec_for(p1 + p1 / 8 + 40, 0) + 2;
+        std::sync::Arc::new(crate::exact::RoundedTimes::new(&times, top))
+    });
     Runs {
         model,
         req: Request {
@@ -149,7 +169,10 @@ fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -
             low_deltas: Vec::new(),
             derived_at_high: false,
         },
-        caches: Caches::default(),
+        caches: Caches {
+            times: rounded,
+            ..Caches::default()
+        },
         at_events: Vec::new(),
         target_at: None,
         side_bits: 0,

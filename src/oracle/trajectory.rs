@@ -5,8 +5,8 @@
 
 use super::ladder::{self, event_estimates, events_of, laddered, laddered_short};
 use super::{
-    branch_notes, check_digits, check_part_at, check_times, empty_answer, energy_drift,
-    energy_note, infinite, runs, Answer, Options, Question, Row,
+    branch_notes, check_digits, check_part_at, check_times, check_times_rounded, empty_answer,
+    energy_drift, energy_note, infinite, runs, Answer, Options, Question, Row,
 };
 use crate::error::{Error, Result};
 use crate::exact::Exact;
@@ -273,7 +273,8 @@ fn trajectory_block(
     columns: &[String],
 ) -> Result<Block> {
     check_digits(opts.digits)?;
-    check_times(times)?;
+    let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
+    check_times_rounded(times, runs.caches.times.as_deref())?;
     if model.starts_at_equilibrium() {
         return Err(infinite(model, "every time along the motion"));
     }
@@ -289,7 +290,6 @@ fn trajectory_block(
     idx.extend(asked.iter().copied().filter(|&k| k > 1));
     let theta_only = idx.len() == 2;
     let exact_t = ladder::exact_times(times);
-    let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
     runs.req.theta_only = theta_only;
     runs.req.derived_at_high = !theta_only;
     let (p1, _) = precisions(opts.digits, 0);
@@ -424,12 +424,12 @@ pub fn theta_at_times(
     opts: &Options,
 ) -> Result<(Vec<Verified>, Vec<Phase>)> {
     check_digits(opts.digits)?;
-    check_times(times)?;
+    let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
+    check_times_rounded(times, runs.caches.times.as_deref())?;
     check_part_at(model, opts)?;
     if model.starts_at_equilibrium() {
         return Err(infinite(model, "every time along the motion"));
     }
-    let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
     runs.req.theta_only = true;
     let (p1, _) = precisions(opts.digits, 0);
     let mut first = runs.at(p1, Run::Low)?;

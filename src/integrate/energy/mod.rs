@@ -97,6 +97,9 @@ pub struct Caches {
     /// `cache`), kept for the ladder's other run of the same times: one
     /// conversion per rung, as a reused [`Route`] makes it.
     pub times_at: (Vec<Exact>, (u32, Vec<Float>)),
+    /// A table's times rounded to odd by the caller, from which
+    /// [`Route::deltas_at`] rounds them (None: it converts them).
+    pub rounded_times: Option<std::sync::Arc<crate::exact::RoundedTimes>>,
 }
 
 /// The energy route of one conservative model.
@@ -258,13 +261,13 @@ impl Route {
         if let Some(v) = self.caches.delta_s_at.get(&prec) {
             return Ok(v.clone());
         }
-        let v = match kept::get(&self.work, prec, kept::Fact::DeltaS) {
+        let v = match kept::get(&self.work, prec, kept::Fact::DeltaS, None) {
             Some(v) => v,
             None => {
                 let (lo, hi) = self.scan_bracket()?;
                 let e = self.engine(prec)?;
                 let v = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
-                kept::put(&self.work, prec, kept::Fact::DeltaS, &v);
+                kept::put(&self.work, prec, kept::Fact::DeltaS, None, &v);
                 v
             }
         };
@@ -276,12 +279,12 @@ impl Route {
     /// (value, error estimate): the time of the closed branch's end. Kept
     /// per thread as [`Route::delta_s`].
     pub fn time_s(&mut self, prec: u32) -> Result<(Float, Float)> {
-        if let Some(v) = kept::get(&self.work, prec, kept::Fact::TimeS) {
+        if let Some(v) = kept::get(&self.work, prec, kept::Fact::TimeS, None) {
             return Ok(v);
         }
         let (ds, _) = self.delta_s(prec)?;
         let v = self.engine(prec)?.time(&ds);
-        kept::put(&self.work, prec, kept::Fact::TimeS, &v);
+        kept::put(&self.work, prec, kept::Fact::TimeS, None, &v);
         Ok(v)
     }
 
@@ -463,6 +466,27 @@ impl Route {
         Ok(t_s)
     }
 
+    /// t(δ) at a branch point δ at `prec` by [`Engine::time_fast`] (`high`:
+    /// the ladder's higher run; no rule built), as (value, error estimate):
+    /// kept per thread as [`Route::delta_s`] where the engine holds no
+    /// Gauss–Legendre rule (then the route is the same fixed rule whatever
+    /// the engine did before).
+    pub fn branch_time(&mut self, delta: &Float, prec: u32, high: bool) -> Result<(Float, Float)> {
+        let fact = kept::Fact::BranchTime { high };
+        let e = self.engine(prec)?;
+        if e.has_gauss_rules() {
+            let (t, err, _) = e.time_fast(delta, high, false);
+            return Ok((t, err));
+        }
+        if let Some(v) = kept::get(&self.work, prec, fact, Some(delta)) {
+            return Ok(v);
+        }
+        let (t, err, _) = self.engine(prec)?.time_fast(delta, high, false);
+        let v = (t, err);
+        kept::put(&self.work, prec, fact, Some(delta), &v);
+        Ok(v)
+    }
+
     /// The right-hand side θ̈ = sin θ·P(c)/K(c)² of the model at `p` bits:
     /// with A_H = K(θ0)θ̇0² + 2(g/r) cos θ0, P = (g/r) q0 + q1 A_H/2 +
     /// q2 A_H c − (g/r) q2 c² (θ̈ = sin θ (g/r + ½K'θ̇²)/K with θ̇² = H/K).
@@ -517,7 +541,12 @@ impl Route {
         if cache.0 < tq {
             // once for both runs of a rung: at the p2 run's precision
             let hi = taylor::time_prec_for(p + p / 8 + 40, extra);
-            *cache = (hi, times.iter().map(|t| t.to_float(hi)).collect());
+            let rounded = self.caches.rounded_times.as_ref();
+            let floats = rounded.and_then(|r| r.rounded(times, hi));
+            *cache = (
+                hi,
+                floats.unwrap_or_else(|| times.iter().map(|t| t.to_float(hi)).collect()),
+            );
         }
         let tt_all = &cache.1;
         // the separation-time check, and the last time

@@ -94,6 +94,13 @@ impl Engine {
         self.dynm.prec
     }
 
+    /// Whether a Gauss–Legendre rule has been built ([`Engine::time_fast`]
+    /// uses one where it is built: its result then depends on what the
+    /// engine did before).
+    pub fn has_gauss_rules(&self) -> bool {
+        !self.gl.is_empty()
+    }
+
     /// t(δ) = ∫_0^δ dθ/θ̇ and its error estimate. δ = 0 gives 0.
     pub fn time(&mut self, delta: &Float) -> (Float, Float) {
         let p = self.prec();
