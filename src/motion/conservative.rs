@@ -18,7 +18,7 @@ use crate::integrate::solve::Sample;
 use crate::mechanics::system::{self as sy, System};
 use crate::model::{Law, Which};
 use crate::numeric::verify::Run;
-use rug::Float;
+use rug::{Assign, Float};
 
 /// What ended the conservative phase.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -352,9 +352,10 @@ pub fn first_phase(
     let mut thetas = Vec::with_capacity(if wants.theta_only { times.len() } else { 0 });
     if !times.is_empty() {
         // the times' conversion of the ladder's other run, if of these times
-        let (kept_times, mut cache) = std::mem::take(&mut route.caches.times_at);
+        let (mut kept_times, mut cache) = std::mem::take(&mut route.caches.times_at);
         if kept_times[..] != *times {
             cache = (0, Vec::new());
+            kept_times = times.to_vec();
         }
         let deltas = route.deltas_at(
             times,
@@ -365,13 +366,23 @@ pub fn first_phase(
             wants.digits,
             Some(&t_end),
         );
-        route.caches.times_at = (times.to_vec(), cache);
+        route.caches.times_at = (kept_times, cache);
         let deltas = deltas?;
+        let mut ulps = Float::new(p);
         for (i, (t, (d, derr))) in times.iter().zip(deltas).enumerate() {
             if wants.theta_only {
-                let th = Float::with_val(p, &th0w + &d);
-                let ulps = Float::with_val(p, th.abs_ref()) >> (p as i32 - 4);
-                thetas.push((route.odd(th), Phase::Contact(mode), Some(derr + ulps)));
+                // θ = θ0 + δ in δ's own number (at p), its bound in δ's
+                // bound's: no new numbers per time
+                let (mut th, mut err) = (d, derr);
+                if th.prec() == p {
+                    th += &th0w;
+                } else {
+                    th = Float::with_val(p, &th0w + &th);
+                }
+                ulps.assign(th.abs_ref());
+                ulps >>= p as i32 - 4;
+                err += &ulps;
+                thetas.push((route.odd(th), Phase::Contact(mode), Some(err)));
                 continue;
             }
             let tf = t.to_float(p);

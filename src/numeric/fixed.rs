@@ -389,8 +389,11 @@ impl<const L: usize> Acc<L> {
 pub(crate) fn mul_u<const L: usize>(r: &Fx<L>, u: &Fx<L>, prod: &mut [u64]) -> Fx<L> {
     let lf = Fx::<L>::LF;
     let prod = &mut prod[..2 * L + 2];
-    prod.fill(0);
-    mac_mag(prod, r, u, L.saturating_sub(3));
+    // the products a_i b_j with i + j below the cut are left out: the limbs
+    // below it are never written, nor read (the cut is at most lf)
+    let cut = L.saturating_sub(3);
+    prod[cut..].fill(0);
+    mac_mag(prod, r, u, cut);
     let mut m = [0u64; L];
     m.copy_from_slice(&prod[lf..lf + L]);
     Fx::from_mag(m, r.neg)

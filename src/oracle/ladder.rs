@@ -472,13 +472,22 @@ pub fn exact_times(times: &[Exact]) -> Vec<Option<String>> {
     times.iter().map(Exact::terminating_text).collect()
 }
 
-/// θ and its phase at the times of a θ-only motion.
-pub fn theta_estimates(m: &Motion) -> Vec<Estimate> {
-    m.thetas
-        .iter()
-        .map(|(th, _, err)| match err {
-            Some(e) => Estimate::new(th.clone(), e.clone(), one(th.prec())),
-            None => integrated(th, one(th.prec())),
+/// θ at the times of a θ-only motion (moved out of it).
+pub fn theta_estimates(m: &mut Motion) -> Vec<Estimate> {
+    // the values and bounds moved, not copied; one scale per precision
+    let mut scale: Option<Arc<Float>> = None;
+    std::mem::take(&mut m.thetas)
+        .into_iter()
+        .map(|(th, _, err)| {
+            let p = th.prec();
+            let s = match &scale {
+                Some(s) if s.prec() == p => s.clone(),
+                _ => scale.insert(Arc::new(one(p))).clone(),
+            };
+            match err {
+                Some(e) => Estimate::shared(th, e, s),
+                None => integrated_shared(th, s),
+            }
         })
         .collect()
 }

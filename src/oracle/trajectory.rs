@@ -327,7 +327,11 @@ fn trajectory_block(
         if theta_only {
             let tf = std::mem::take(&mut m.times);
             let mut out = Vec::with_capacity(2 * n_rows);
-            for ((t, th), text) in tf.into_iter().zip(ladder::theta_estimates(&m)).zip(exact_t) {
+            for ((t, th), text) in tf
+                .into_iter()
+                .zip(ladder::theta_estimates(&mut m))
+                .zip(exact_t)
+            {
                 let mut te = ladder::integrated_shared(t, shared[0].clone());
                 te.exact_text = text.clone();
                 out.push(te);
@@ -440,10 +444,7 @@ pub fn theta_at_times(
         first,
         &["theta".to_string()],
         times.len(),
-        |m, _| {
-            let m = &m;
-            Ok(ladder::theta_estimates(m))
-        },
+        |mut m, _| Ok(ladder::theta_estimates(&mut m)),
     )?;
     Ok((
         rows.into_iter()
