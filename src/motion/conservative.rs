@@ -352,10 +352,11 @@ pub fn first_phase(
     let mut thetas = Vec::with_capacity(if wants.theta_only { times.len() } else { 0 });
     if !times.is_empty() {
         // the times' conversion of the ladder's other run, if of these times
+        let same = route.caches.times_at_holds(times);
         let (mut kept_times, mut cache) = std::mem::take(&mut route.caches.times_at);
-        if kept_times[..] != *times {
+        if !same {
             cache = (0, Vec::new());
-            kept_times = times.to_vec();
+            kept_times = route.caches.times_key(times);
         }
         let deltas = route.deltas_at(
             times,

@@ -202,7 +202,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             times: caches
                 .times
                 .as_ref()
-                .and_then(|r| r.rounded(&req.times, wp))
+                .and_then(|r| r.rounded_of(&req.times, wp))
                 .unwrap_or_else(|| req.times.iter().map(|t| t.to_float(wp)).collect()),
         },
         next: 0,

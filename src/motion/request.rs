@@ -239,8 +239,9 @@ pub struct Caches {
     /// The model's [`default_horizon`], once computed.
     pub horizon: Option<Float>,
     /// The request's times rounded to odd once, for every run's rounding
-    /// of them ([`RoundedTimes`]; None: each run converts them).
-    pub times: Option<std::sync::Arc<RoundedTimes>>,
+    /// of them ([`RoundedTimes`]; None: each run converts them). Set by the
+    /// crate only, from the request's own times, which do not change after.
+    pub(crate) times: Option<std::sync::Arc<RoundedTimes>>,
 }
 
 impl Caches {

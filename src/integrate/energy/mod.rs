@@ -96,10 +96,42 @@ pub struct Caches {
     /// A table's times and [`Route::deltas_at`]'s conversion of them (its
     /// `cache`), kept for the ladder's other run of the same times: one
     /// conversion per rung, as a reused [`Route`] makes it.
-    pub times_at: (Vec<Exact>, (u32, Vec<Float>)),
-    /// A table's times rounded to odd by the caller, from which
+    pub times_at: (TimesKey, (u32, Vec<Float>)),
+    /// A table's times rounded to odd by the crate's motion, of the
+    /// request's own times (set by the crate only), from which
     /// [`Route::deltas_at`] rounds them (None: it converts them).
-    pub rounded_times: Option<std::sync::Arc<crate::exact::RoundedTimes>>,
+    pub(crate) rounded_times: Option<std::sync::Arc<crate::exact::RoundedTimes>>,
+}
+
+/// Which times [`Caches::times_at`] holds the conversion of.
+#[derive(Default)]
+pub enum TimesKey {
+    /// None yet.
+    #[default]
+    None,
+    /// These.
+    Times(Vec<Exact>),
+    /// The first `n` of a rounding's times ([`Caches::rounded_times`]).
+    Rounded(std::sync::Arc<crate::exact::RoundedTimes>, usize),
+}
+
+impl Caches {
+    /// Whether [`Caches::times_at`] holds the conversion of `times`.
+    pub fn times_at_holds(&self, times: &[Exact]) -> bool {
+        match (&self.times_at.0, &self.rounded_times) {
+            (TimesKey::Rounded(a, n), Some(b)) => std::sync::Arc::ptr_eq(a, b) && *n == times.len(),
+            (TimesKey::Times(v), _) => v[..] == *times,
+            _ => false,
+        }
+    }
+
+    /// The key of `times` for [`Caches::times_at`].
+    pub fn times_key(&self, times: &[Exact]) -> TimesKey {
+        match &self.rounded_times {
+            Some(r) => TimesKey::Rounded(r.clone(), times.len()),
+            None => TimesKey::Times(times.to_vec()),
+        }
+    }
 }
 
 /// The energy route of one conservative model.
@@ -526,13 +558,15 @@ impl Route {
         // there (only the trajectory's rows need δ to full relative
         // accuracy): the times' precision and the Chebyshev route's (the
         // Taylor route gives them to the times that need them)
-        let log2_ts = self.log2_time_unit();
-        let log2_t_min = times
-            .iter()
-            .filter(|t| !t.is_zero())
-            .min_by(|a, b| a.cmp_value(b))
-            .map_or(f64::INFINITY, |t| log2_f64(&t.to_float(64)));
+        // (the smallest time only where the rows need it: a θ column's
+        // absolute error does not)
         let extra = if rel_delta {
+            let log2_ts = self.log2_time_unit();
+            let log2_t_min = times
+                .iter()
+                .filter(|t| !t.is_zero())
+                .min_by(|a, b| a.cmp_value(b))
+                .map_or(f64::INFINITY, |t| log2_f64(&t.to_float(64)));
             extra_bits_at(log2_t_min - log2_ts, p)
         } else {
             0
@@ -542,7 +576,7 @@ impl Route {
             // once for both runs of a rung: at the p2 run's precision
             let hi = taylor::time_prec_for(p + p / 8 + 40, extra);
             let rounded = self.caches.rounded_times.as_ref();
-            let floats = rounded.and_then(|r| r.rounded(times, hi));
+            let floats = rounded.and_then(|r| r.rounded_of(times, hi));
             *cache = (
                 hi,
                 floats.unwrap_or_else(|| times.iter().map(|t| t.to_float(hi)).collect()),
