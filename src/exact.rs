@@ -354,11 +354,12 @@ impl RoundedTimes {
 fn round_to_odd(q: &Rational, prec: u32) -> Float {
     let (mut f, dir) = Float::with_val_round(prec, q, rug::float::Round::Zero);
     if dir != std::cmp::Ordering::Equal {
-        // the significand's limbs as MPFR holds them, the bits below the
-        // precision zero: the last bit is bit 64·limbs − prec
+        // the significand's limbs as MPFR holds them, its top bit set and
+        // the bits below the precision zero: the last bit is bit
+        // (limbs' bits − prec), whatever the limb size
         let clear = f
             .get_significand()
-            .is_some_and(|sig| !sig.get_bit(64 * prec.div_ceil(64) - prec));
+            .is_some_and(|sig| !sig.get_bit(sig.significant_bits() - prec));
         if clear {
             if f.is_sign_positive() {
                 f.next_up();

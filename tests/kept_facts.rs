@@ -117,3 +117,84 @@ fn answers_after_other_answers_are_those_of_a_fresh_thread() {
         }
     }
 }
+
+fn separation_text(digits: u32) -> String {
+    format!(
+        "{:?}",
+        oracle::separation(&ideal("1/10"), &Options::digits(digits))
+    )
+}
+
+/// A quadrature stopped by a cancellation returns NaN: computed on a
+/// thread whose flag is set, then cleared, it must leave nothing that the
+/// thread's later answers read (it did: the next table on the thread
+/// failed, its event sequence not converging).
+#[test]
+fn a_cancelled_computation_leaves_nothing_for_later_answers() {
+    use cylroll::integrate::energy::Route;
+    use cylroll::model::Ideal;
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::Arc;
+    let fresh = std::thread::spawn(|| separation_text(30))
+        .join()
+        .expect("fresh");
+    let after = std::thread::spawn(|| {
+        let mut r = Route::new(&Ideal::paper_default(q("1/10"))).expect("route");
+        let (p1, p2) = cylroll::numeric::verify::precisions(30, 0);
+        for p in [p1, p2] {
+            r.delta_s(p).expect("delta_s");
+        }
+        let flag = Arc::new(AtomicBool::new(true));
+        cylroll::cancel::install(flag.clone());
+        let mut stopped = Vec::new();
+        for p in [p1, p2] {
+            if let Ok((t, e)) = r.time_s(p) {
+                stopped.push(t.is_finite() && e.is_finite());
+            }
+        }
+        flag.store(false, Ordering::Relaxed);
+        (stopped, separation_text(30))
+    })
+    .join()
+    .expect("cancelled thread");
+    // the stopped quadratures were not finite (the case this guards)
+    assert!(after.0.iter().all(|finite| !finite), "{:?}", after.0);
+    assert_eq!(after.1, fresh);
+}
+
+/// An engine whose public settings were changed (the Chebyshev route off,
+/// as a cross-check does) computes its own values; they are not kept for
+/// the thread's later answers, which are a fresh thread's. (Its t(δs)
+/// differs from the default engine's in the last bits: kept, it changed
+/// the separation's time.)
+#[test]
+fn values_of_an_engine_with_changed_settings_are_not_kept() {
+    use cylroll::integrate::energy::Route;
+    use cylroll::model::Ideal;
+    let (p1, p2) = cylroll::numeric::verify::precisions(100, 0);
+    let route = || Route::new(&Ideal::paper_default(q("1/10"))).expect("route");
+    let (fresh, default_times) = std::thread::spawn(move || {
+        let text = separation_text(100);
+        let mut r = route();
+        let times: Vec<_> = [p1, p2]
+            .iter()
+            .map(|&p| r.time_s(p).expect("t").0)
+            .collect();
+        (text, times)
+    })
+    .join()
+    .expect("fresh");
+    let (after, changed_times) = std::thread::spawn(move || {
+        let mut r = route();
+        let mut times = Vec::new();
+        for p in [p1, p2] {
+            r.engine(p).expect("engine").use_cheb = false;
+            times.push(r.time_s(p).expect("t").0);
+        }
+        (separation_text(100), times)
+    })
+    .join()
+    .expect("changed");
+    assert_ne!(default_times, changed_times, "the settings change no bits");
+    assert_eq!(after, fresh);
+}

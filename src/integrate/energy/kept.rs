@@ -14,7 +14,12 @@
 //! one is used depends on what the engine did before). So the numbers
 //! kept are the numbers a fresh thread computes, bit for bit (a test in
 //! `tests/` asks this of whole answers); nothing that depends on what was
-//! asked before is kept.
+//! asked before is kept. The callers keep only what an engine with its
+//! settings as made computes (a cross-check may turn a route off), nothing
+//! while the thread's computation is cancelled (a stopped quadrature
+//! returns NaN), and with each value the quadrature work it added to the
+//! engine, which a kept value adds again: an engine that takes a kept
+//! value is left as one that computed it.
 
 use crate::model::Ideal;
 use rug::Float;
@@ -35,8 +40,11 @@ pub enum Fact {
     },
 }
 
-/// A fact, the point it is at (None: the fact names it) and its value.
-type Kept = (Fact, Option<Float>, (Float, Float));
+/// A fact, the point it is at (None: the fact names it), its value, and
+/// the work its computation added to the engine's count of quadrature
+/// work (which decides when a Gauss–Legendre rule pays for itself: a kept
+/// fact adds it again, so that the engine is left as a fresh thread's).
+type Kept = (Fact, Option<Float>, (Float, Float), f64);
 
 /// One model at one precision.
 struct Entry {
@@ -64,10 +72,15 @@ fn same_point(a: Option<&Float>, b: Option<&Float>) -> bool {
     }
 }
 
-/// The fact kept for `model` at `prec` and the point `at`, if any (the
-/// entry becomes the most recently used). A thread whose locals are torn
-/// down keeps nothing.
-pub fn get(model: &Ideal, prec: u32, fact: Fact, at: Option<&Float>) -> Option<(Float, Float)> {
+/// The fact kept for `model` at `prec` and the point `at`, if any, with
+/// its engine work (the entry becomes the most recently used). A thread
+/// whose locals are torn down keeps nothing.
+pub fn get(
+    model: &Ideal,
+    prec: u32,
+    fact: Fact,
+    at: Option<&Float>,
+) -> Option<((Float, Float), f64)> {
     FACTS
         .try_with(|f| {
             let mut f = f.borrow_mut();
@@ -76,8 +89,8 @@ pub fn get(model: &Ideal, prec: u32, fact: Fact, at: Option<&Float>) -> Option<(
             let v = e
                 .facts
                 .iter()
-                .find(|(k, x, _)| *k == fact && same_point(x.as_ref(), at))
-                .map(|(_, _, v)| v.clone());
+                .find(|(k, x, _, _)| *k == fact && same_point(x.as_ref(), at))
+                .map(|(_, _, v, w)| (v.clone(), *w));
             f.push(e);
             v
         })
@@ -87,8 +100,21 @@ pub fn get(model: &Ideal, prec: u32, fact: Fact, at: Option<&Float>) -> Option<(
 
 /// Keeps `v` as the fact of `model` at `prec` and the point `at` (the
 /// oldest entry leaves when [`KEPT`] are held; an entry's oldest fact when
-/// it holds [`FACTS_PER_ENTRY`]).
-pub fn put(model: &Ideal, prec: u32, fact: Fact, at: Option<&Float>, v: &(Float, Float)) {
+/// it holds [`FACTS_PER_ENTRY`]). Nothing is kept while the thread's
+/// computation is cancelled, nor a value or bound that is not finite: a
+/// quadrature stopped by the cancellation returns NaN, which later answers
+/// on the thread would have read.
+pub fn put(
+    model: &Ideal,
+    prec: u32,
+    fact: Fact,
+    at: Option<&Float>,
+    v: &(Float, Float),
+    work: f64,
+) {
+    if crate::cancel::cancelled() || !v.0.is_finite() || !v.1.is_finite() {
+        return;
+    }
     let _ = FACTS.try_with(|f| {
         let mut f = f.borrow_mut();
         let mut e = match f.iter().position(|e| e.prec == prec && e.model == *model) {
@@ -105,11 +131,11 @@ pub fn put(model: &Ideal, prec: u32, fact: Fact, at: Option<&Float>, v: &(Float,
             }
         };
         e.facts
-            .retain(|(k, x, _)| !(*k == fact && same_point(x.as_ref(), at)));
+            .retain(|(k, x, _, _)| !(*k == fact && same_point(x.as_ref(), at)));
         if e.facts.len() >= FACTS_PER_ENTRY {
             e.facts.remove(0);
         }
-        e.facts.push((fact, at.cloned(), v.clone()));
+        e.facts.push((fact, at.cloned(), v.clone(), work));
         f.push(e);
     });
 }
@@ -134,24 +160,42 @@ mod tests {
     fn kept_by_model_precision_and_fact_and_oldest_leaves() {
         let (a, b) = (model("1/10"), model("1/5"));
         let v = |x: u32| (Float::with_val(64, x), Float::with_val(64, 1u32));
-        put(&a, 100, Fact::DeltaS, None, &v(1));
-        put(&a, 200, Fact::DeltaS, None, &v(2));
-        put(&b, 100, Fact::TimeS, None, &v(3));
-        assert_eq!(get(&a, 100, Fact::DeltaS, None), Some(v(1)));
-        assert_eq!(get(&a, 200, Fact::DeltaS, None), Some(v(2)));
+        put(&a, 100, Fact::DeltaS, None, &v(1), 0.0);
+        put(&a, 200, Fact::DeltaS, None, &v(2), 0.0);
+        put(&b, 100, Fact::TimeS, None, &v(3), 0.0);
+        assert_eq!(get(&a, 100, Fact::DeltaS, None), Some((v(1), 0.0)));
+        assert_eq!(get(&a, 200, Fact::DeltaS, None), Some((v(2), 0.0)));
         assert_eq!(get(&a, 100, Fact::TimeS, None), None);
-        assert_eq!(get(&b, 100, Fact::TimeS, None), Some(v(3)));
+        assert_eq!(get(&b, 100, Fact::TimeS, None), Some((v(3), 0.0)));
         assert_eq!(get(&b, 100, Fact::DeltaS, None), None);
         assert_eq!(get(&b, 200, Fact::TimeS, None), None);
         // the oldest leaves: fill with other precisions of b
         for k in 0..KEPT as u32 {
-            put(&b, 1000 + k, Fact::DeltaS, None, &v(k));
+            put(&b, 1000 + k, Fact::DeltaS, None, &v(k), 0.0);
         }
         assert_eq!(get(&a, 100, Fact::DeltaS, None), None);
         assert_eq!(
             get(&b, 1000 + KEPT as u32 - 1, Fact::DeltaS, None),
-            Some(v(KEPT as u32 - 1))
+            Some((v(KEPT as u32 - 1), 0.0))
         );
+    }
+
+    /// A kept branch time leaves the engine's count of quadrature work
+    /// where computing it leaves it (the count decides when a
+    /// Gauss–Legendre rule is built), and gives the computed bits.
+    #[test]
+    fn a_kept_time_adds_the_work_its_computation_did() {
+        let m = model("1/10");
+        let route = || super::super::Route::new(&m).unwrap();
+        let p = 200;
+        let d = Float::with_val(p, 0.5);
+        let (mut a, mut b) = (route(), route());
+        let computed = a.branch_time(&d, p, false).unwrap();
+        let work = a.engine(p).unwrap().quadrature_work();
+        assert!(work > 0.0);
+        let taken = b.branch_time(&d, p, false).unwrap();
+        assert_eq!(taken, computed);
+        assert_eq!(b.engine(p).unwrap().quadrature_work(), work);
     }
 
     #[test]
@@ -161,21 +205,21 @@ mod tests {
         let at = |x: f64, p: u32| Float::with_val(p, x);
         let low = Fact::BranchTime { high: false };
         let high = Fact::BranchTime { high: true };
-        put(&a, 300, low, Some(&at(0.5, 300)), &v(1));
-        put(&a, 300, high, Some(&at(0.5, 300)), &v(2));
-        assert_eq!(get(&a, 300, low, Some(&at(0.5, 300))), Some(v(1)));
-        assert_eq!(get(&a, 300, high, Some(&at(0.5, 300))), Some(v(2)));
+        put(&a, 300, low, Some(&at(0.5, 300)), &v(1), 0.0);
+        put(&a, 300, high, Some(&at(0.5, 300)), &v(2), 0.0);
+        assert_eq!(get(&a, 300, low, Some(&at(0.5, 300))), Some((v(1), 0.0)));
+        assert_eq!(get(&a, 300, high, Some(&at(0.5, 300))), Some((v(2), 0.0)));
         // another point, the same point at another precision, no point
         assert_eq!(get(&a, 300, low, Some(&at(0.25, 300))), None);
         assert_eq!(get(&a, 300, low, Some(&at(0.5, 200))), None);
         assert_eq!(get(&a, 300, low, None), None);
         // replaced, not repeated; the oldest fact leaves a full entry
-        put(&a, 300, low, Some(&at(0.5, 300)), &v(3));
-        assert_eq!(get(&a, 300, low, Some(&at(0.5, 300))), Some(v(3)));
+        put(&a, 300, low, Some(&at(0.5, 300)), &v(3), 0.0);
+        assert_eq!(get(&a, 300, low, Some(&at(0.5, 300))), Some((v(3), 0.0)));
         for k in 0..FACTS_PER_ENTRY as u32 {
-            put(&a, 300, low, Some(&at(k as f64 + 2.0, 300)), &v(k));
+            put(&a, 300, low, Some(&at(k as f64 + 2.0, 300)), &v(k), 0.0);
         }
         assert_eq!(get(&a, 300, high, Some(&at(0.5, 300))), None);
-        assert_eq!(get(&a, 300, low, Some(&at(2.0, 300))), Some(v(0)));
+        assert_eq!(get(&a, 300, low, Some(&at(2.0, 300))), Some((v(0), 0.0)));
     }
 }

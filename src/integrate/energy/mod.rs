@@ -294,12 +294,14 @@ impl Route {
             return Ok(v.clone());
         }
         let v = match kept::get(&self.work, prec, kept::Fact::DeltaS, None) {
-            Some(v) => v,
+            Some((v, _)) => v,
             None => {
                 let (lo, hi) = self.scan_bracket()?;
                 let e = self.engine(prec)?;
                 let v = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
-                kept::put(&self.work, prec, kept::Fact::DeltaS, None, &v);
+                if e.settings_are_default() {
+                    kept::put(&self.work, prec, kept::Fact::DeltaS, None, &v, 0.0);
+                }
                 v
             }
         };
@@ -311,12 +313,15 @@ impl Route {
     /// (value, error estimate): the time of the closed branch's end. Kept
     /// per thread as [`Route::delta_s`].
     pub fn time_s(&mut self, prec: u32) -> Result<(Float, Float)> {
-        if let Some(v) = kept::get(&self.work, prec, kept::Fact::TimeS, None) {
+        if let Some((v, _)) = kept::get(&self.work, prec, kept::Fact::TimeS, None) {
             return Ok(v);
         }
         let (ds, _) = self.delta_s(prec)?;
-        let v = self.engine(prec)?.time(&ds);
-        kept::put(&self.work, prec, kept::Fact::TimeS, None, &v);
+        let e = self.engine(prec)?;
+        let v = e.time(&ds);
+        if e.settings_are_default() {
+            kept::put(&self.work, prec, kept::Fact::TimeS, None, &v, 0.0);
+        }
         Ok(v)
     }
 
@@ -506,16 +511,20 @@ impl Route {
     pub fn branch_time(&mut self, delta: &Float, prec: u32, high: bool) -> Result<(Float, Float)> {
         let fact = kept::Fact::BranchTime { high };
         let e = self.engine(prec)?;
-        if e.has_gauss_rules() {
+        if e.has_gauss_rules() || !e.settings_are_default() {
             let (t, err, _) = e.time_fast(delta, high, false);
             return Ok((t, err));
         }
-        if let Some(v) = kept::get(&self.work, prec, fact, Some(delta)) {
+        if let Some((v, work)) = kept::get(&self.work, prec, fact, Some(delta)) {
+            self.engine(prec)?.add_quadrature_work(work);
             return Ok(v);
         }
-        let (t, err, _) = self.engine(prec)?.time_fast(delta, high, false);
+        let e = self.engine(prec)?;
+        let before = e.quadrature_work();
+        let (t, err, _) = e.time_fast(delta, high, false);
         let v = (t, err);
-        kept::put(&self.work, prec, fact, Some(delta), &v);
+        let work = e.quadrature_work() - before;
+        kept::put(&self.work, prec, fact, Some(delta), &v, work);
         Ok(v)
     }
 

@@ -137,6 +137,11 @@ impl Oracle {
                 format!("must be between 1 and {MAX_DIGITS}"),
             ));
         }
+        // the rounded times belong to the motion's request, not to this
+        // oracle's questions
+        let mut route = route;
+        route.caches.rounded_times = None;
+        route.caches.times_at = Default::default();
         Ok(Oracle {
             model: model.clone(),
             digits,

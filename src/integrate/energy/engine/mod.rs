@@ -101,6 +101,25 @@ impl Engine {
         !self.gl.is_empty()
     }
 
+    /// Whether the engine's public settings are those it was made with
+    /// (the Chebyshev route from [`CHEB_MIN_BITS`] on, pieces cut for ρ
+    /// 3): only such an engine's values are kept for other answers.
+    pub fn settings_are_default(&self) -> bool {
+        self.use_cheb == (self.prec() >= CHEB_MIN_BITS) && self.cheb_target == 3.0
+    }
+
+    /// The tanh-sinh work done so far (the count that decides when a
+    /// Gauss–Legendre rule pays for itself).
+    pub(crate) fn quadrature_work(&self) -> f64 {
+        self.ts_work
+    }
+
+    /// Counts `work` as done (a kept value's own, taken instead of its
+    /// computation: the engine is left as the computation leaves it).
+    pub(crate) fn add_quadrature_work(&mut self, work: f64) {
+        self.ts_work += work;
+    }
+
     /// t(δ) = ∫_0^δ dθ/θ̇ and its error estimate. δ = 0 gives 0.
     pub fn time(&mut self, delta: &Float) -> (Float, Float) {
         let p = self.prec();
