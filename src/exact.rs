@@ -260,7 +260,7 @@ fn word_quotient(q: &Rational, prec: u32) -> Option<Float> {
 /// Melquiond, "Emulation of FMA and correctly rounded sums: proved
 /// algorithms using rounding to odd", IEEE TC 2008): the same bits as
 /// [`Exact::to_float`], from one division. A decimal time (a word's
-/// denominator, [`word_quotient`]) and a multiple of π are converted
+/// denominator, `word_quotient`) and a multiple of π are converted
 /// directly, as [`Exact::to_float`] converts them.
 #[derive(Debug, Clone)]
 pub struct RoundedTimes {

@@ -111,7 +111,7 @@ pub enum TimesKey {
     None,
     /// These.
     Times(Vec<Exact>),
-    /// The first `n` of a rounding's times ([`Caches::rounded_times`]).
+    /// The first `n` of a rounding's times (the caches' `rounded_times`).
     Rounded(std::sync::Arc<crate::exact::RoundedTimes>, usize),
 }
 
