@@ -1,19 +1,36 @@
-//! An answer does not depend on what its thread asked before.
+//! An answer does not depend on what the process asked before.
 //!
-//! A thread keeps a model's δs and t(δs) at each working precision between
-//! answers, and the tanh-sinh rules' nodes: a library user asking the same
-//! model again (a table, then another) does not pay for them again. What is
-//! kept must be the very bits a fresh thread computes. Each answer here —
-//! values, digits, error bounds, events, notes, written out whole with
-//! `{:?}` — is computed on a fresh thread, then again on one thread after
-//! the other questions, in an order that has the thread reuse every kept
-//! fact (the mirrored start shares its model's facts: both are solved as
-//! the same fall to the right), and the two must be the same text.
+//! The process keeps a model's δs, t(δs) and branch point's time at each
+//! working precision between answers (and a thread the tanh-sinh rules'
+//! nodes): a library user asking the same model again (a table, then
+//! another) does not pay for them again. What is kept must be the very bits
+//! a fresh process computes. Each answer here — values, digits, error
+//! bounds, events, notes, written out whole with `{:?}` — is computed with
+//! nothing kept (`forget_kept`, on a fresh thread), then again after the
+//! other questions, on threads of their own, in an order that has every
+//! kept fact reused (the mirrored start shares its model's facts: both are
+//! solved as the same fall to the right), and the two must be the same
+//! text. The tests of this file run one at a time (the kept facts are the
+//! process's).
 
 use cylroll::exact::Exact;
+use cylroll::integrate::energy::forget_kept;
 use cylroll::model::{Law, Model};
 use cylroll::oracle::{self, Options};
 use rug::Rational;
+
+/// One test at a time: each forgets the process's kept facts.
+static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+fn one_at_a_time() -> std::sync::MutexGuard<'static, ()> {
+    ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// `f` on a fresh thread with nothing kept.
+fn fresh<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    forget_kept();
+    std::thread::spawn(f).join().expect("fresh thread")
+}
 
 fn q(s: &str) -> Exact {
     Exact::parse("x", s, true).expect("number")
@@ -92,22 +109,25 @@ fn questions() -> Vec<Question> {
 }
 
 #[test]
-fn answers_after_other_answers_are_those_of_a_fresh_thread() {
-    let fresh: Vec<String> = questions()
-        .into_iter()
-        .map(|(_, f)| std::thread::spawn(f).join().expect("fresh thread"))
-        .collect();
-    for (text, (name, _)) in fresh.iter().zip(questions()) {
+fn answers_after_other_answers_are_those_of_a_fresh_process() {
+    let _one = one_at_a_time();
+    let fresh_texts: Vec<String> = questions().into_iter().map(|(_, f)| fresh(f)).collect();
+    for (text, (name, _)) in fresh_texts.iter().zip(questions()) {
         assert!(!text.starts_with("Err"), "{name}: {text}");
     }
-    let warm: Vec<Vec<String>> = std::thread::spawn(|| {
-        // each question after all the others, twice over
-        (0..2)
-            .map(|_| questions().into_iter().map(|(_, f)| f()).collect())
-            .collect()
-    })
-    .join()
-    .expect("warm thread");
+    forget_kept();
+    // each question after all the others, twice over: on one thread, then
+    // each on a thread of its own (the facts are the process's)
+    let warm: Vec<Vec<String>> = vec![
+        std::thread::spawn(|| questions().into_iter().map(|(_, f)| f()).collect())
+            .join()
+            .expect("warm thread"),
+        questions()
+            .into_iter()
+            .map(|(_, f)| std::thread::spawn(f).join().expect("warm thread"))
+            .collect(),
+    ];
+    let fresh = fresh_texts;
     for round in &warm {
         for ((got, want), (name, _)) in round.iter().zip(&fresh).zip(questions()) {
             assert_eq!(
@@ -135,9 +155,9 @@ fn a_cancelled_computation_leaves_nothing_for_later_answers() {
     use cylroll::model::Ideal;
     use std::sync::atomic::{AtomicBool, Ordering};
     use std::sync::Arc;
-    let fresh = std::thread::spawn(|| separation_text(30))
-        .join()
-        .expect("fresh");
+    let _one = one_at_a_time();
+    let fresh = fresh(|| separation_text(30));
+    forget_kept();
     let after = std::thread::spawn(|| {
         let mut r = Route::new(&Ideal::paper_default(q("1/10"))).expect("route");
         let (p1, p2) = cylroll::numeric::verify::precisions(30, 0);
@@ -173,7 +193,8 @@ fn values_of_an_engine_with_changed_settings_are_not_kept() {
     use cylroll::model::Ideal;
     let (p1, p2) = cylroll::numeric::verify::precisions(100, 0);
     let route = || Route::new(&Ideal::paper_default(q("1/10"))).expect("route");
-    let (fresh, default_times) = std::thread::spawn(move || {
+    let _one = one_at_a_time();
+    let (fresh, default_times) = fresh(move || {
         let text = separation_text(100);
         let mut r = route();
         let times: Vec<_> = [p1, p2]
@@ -181,9 +202,8 @@ fn values_of_an_engine_with_changed_settings_are_not_kept() {
             .map(|&p| r.time_s(p).expect("t").0)
             .collect();
         (text, times)
-    })
-    .join()
-    .expect("fresh");
+    });
+    forget_kept();
     let (after, changed_times) = std::thread::spawn(move || {
         let mut r = route();
         let mut times = Vec::new();

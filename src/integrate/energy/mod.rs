@@ -18,6 +18,7 @@ mod kept;
 mod roots;
 mod rows;
 
+pub use kept::forget as forget_kept;
 pub use rows::RowContext;
 
 use crate::error::{Error, Result};
@@ -286,9 +287,9 @@ impl Route {
     }
 
     /// δs = θs − θ0 at `prec`, as (value, error), with the bracket scanned at
-    /// low precision first. Both are deterministic and cached, and kept per
-    /// thread between answers for the same model and precision (`kept`: the
-    /// bits a fresh thread computes).
+    /// low precision first. Both are deterministic and cached, and kept by
+    /// the process between answers for the same model and precision (`kept`:
+    /// the bits a fresh process computes).
     pub fn delta_s(&mut self, prec: u32) -> Result<(Float, Float)> {
         if let Some(v) = self.caches.delta_s_at.get(&prec) {
             return Ok(v.clone());
@@ -311,7 +312,7 @@ impl Route {
 
     /// t(δs) at `prec` by [`Engine::time`] (the θ form's quadrature), as
     /// (value, error estimate): the time of the closed branch's end. Kept
-    /// per thread as [`Route::delta_s`].
+    /// by the process as [`Route::delta_s`].
     pub fn time_s(&mut self, prec: u32) -> Result<(Float, Float)> {
         if let Some((v, _)) = kept::get(&self.work, prec, kept::Fact::TimeS, None) {
             return Ok(v);
@@ -505,7 +506,7 @@ impl Route {
 
     /// t(δ) at a branch point δ at `prec` by [`Engine::time_fast`] (`high`:
     /// the ladder's higher run; no rule built), as (value, error estimate):
-    /// kept per thread as [`Route::delta_s`] where the engine holds no
+    /// kept by the process as [`Route::delta_s`] where the engine holds no
     /// Gauss–Legendre rule (then the route is the same fixed rule whatever
     /// the engine did before).
     pub fn branch_time(&mut self, delta: &Float, prec: u32, high: bool) -> Result<(Float, Float)> {
