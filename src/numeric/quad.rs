@@ -32,20 +32,26 @@ struct Level {
 pub struct TanhSinh {
     prec: u32,
     t_max: f64,
-    /// The levels made so far, shared with this thread's other rules of
+    /// The levels made so far, shared with the process's other rules of
     /// the same precision and kind ([`shared_level`]).
     levels: Vec<std::sync::Arc<Level>>,
     /// Nodes by the exponential recurrence ([`TanhSinh::with_fast_nodes`]).
     fast_nodes: bool,
 }
 
-thread_local! {
-    /// The levels made on this thread, by (precision, fast nodes), the
-    /// most recently used last: a rule's nodes depend on nothing else, and
-    /// every answer builds its rules afresh (an energy engine per
-    /// precision), so a thread's later answers at the same precisions take
-    /// the levels its earlier ones made — the same numbers, not made again.
-    static LEVELS: std::cell::RefCell<Vec<Pooled>> = const { std::cell::RefCell::new(Vec::new()) };
+/// The levels made so far, by (precision, fast nodes), the most recently
+/// used last: a rule's nodes depend on nothing else, and every answer
+/// builds its rules afresh (an energy engine per precision), so the
+/// process's later answers at the same precisions take the levels its
+/// earlier ones made — the same numbers, not made again — whichever thread
+/// asks (the Python package runs each call on a worker thread of its own;
+/// a table's blocks run on several cores).
+static LEVELS: std::sync::Mutex<Vec<Pooled>> = std::sync::Mutex::new(Vec::new());
+
+/// [`LEVELS`], whatever a thread that panicked while holding it left
+/// (every change is whole before the lock is released).
+fn levels_pool() -> std::sync::MutexGuard<'static, Vec<Pooled>> {
+    LEVELS.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 /// One (precision, fast nodes) entry of [`LEVELS`]: its levels 0, 1, ….
@@ -60,31 +66,29 @@ const LEVELS_KEPT: usize = 8;
 /// nodes are a small part of its integrals' cost and tens of MB to keep.
 const LEVELS_MAX_PREC: u32 = 1100;
 
-/// Level `l` of the rules of `key` from this thread's pool, made by `make`
+/// Level `l` of the rules of `key` from the process's pool, made by `make`
 /// (and kept) where the pool has only the levels below it; made alone above
 /// [`LEVELS_MAX_PREC`].
 fn shared_level(key: (u32, bool), l: usize, make: impl FnOnce() -> Level) -> std::sync::Arc<Level> {
     if key.0 > LEVELS_MAX_PREC {
         return std::sync::Arc::new(make());
     }
-    // (a rule used while the thread's locals are torn down makes its own)
-    let found = LEVELS
-        .try_with(|c| {
-            let mut c = c.borrow_mut();
-            let i = c.iter().position(|(k, _)| *k == key)?;
+    let found = {
+        let mut c = levels_pool();
+        c.iter().position(|(k, _)| *k == key).and_then(|i| {
             let entry = c.remove(i);
             let lv = entry.1.get(l).cloned();
             c.push(entry);
             lv
         })
-        .ok()
-        .flatten();
+    };
     if let Some(lv) = found {
         return lv;
     }
+    // made outside the lock (two threads may both make it: the first kept)
     let lv = std::sync::Arc::new(make());
-    let _ = LEVELS.try_with(|c| {
-        let mut c = c.borrow_mut();
+    {
+        let mut c = levels_pool();
         match c.iter_mut().find(|(k, _)| *k == key) {
             Some((_, levels)) if levels.len() == l => levels.push(lv.clone()),
             Some(_) => {}
@@ -96,7 +100,7 @@ fn shared_level(key: (u32, bool), l: usize, make: impl FnOnce() -> Level) -> std
             }
             None => {}
         }
-    });
+    }
     lv
 }
 
@@ -384,25 +388,34 @@ impl TanhSinh {
 mod tests {
     use super::*;
 
-    /// A rule made where this thread has made one at the same precision
-    /// takes that rule's levels (the same numbers, not made again), and
-    /// integrates to the same bits as a rule made on a thread with none.
+    /// A rule made where one at the same precision was made before (on
+    /// this thread or another) takes that rule's levels (the same numbers,
+    /// not made again), and integrates to the same bits as a rule whose
+    /// levels are all its own.
     #[test]
-    fn a_threads_rules_share_their_levels() {
+    fn rules_share_their_levels() {
         let p = 200;
         let delta = Float::with_val(p, 1u32);
         let f = |x: &Float, out: &mut Float| {
             out.assign(x.sqrt_ref());
             *out += 1u32;
         };
-        let fresh = std::thread::spawn(move || {
+        let fresh = {
             let mut ts = TanhSinh::with_fast_nodes(p);
+            for l in 0..16 {
+                let lv = std::sync::Arc::new(ts.make_level(l));
+                ts.levels.push(lv);
+            }
             let r = ts.integrate(&Float::with_val(p, 1u32), p - 20, f);
             (r.value, r.err, r.levels)
+        };
+        let mut a = std::thread::spawn(move || {
+            let mut a = TanhSinh::with_fast_nodes(p);
+            a.integrate(&Float::with_val(p, 1u32), p - 20, f);
+            a
         })
         .join()
         .unwrap();
-        let mut a = TanhSinh::with_fast_nodes(p);
         let ra = a.integrate(&delta, p - 20, f);
         let mut b = TanhSinh::with_fast_nodes(p);
         let rb = b.integrate(&delta, p - 20, f);
