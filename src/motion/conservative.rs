@@ -12,7 +12,7 @@ use super::mode::{Branch, Kind, Mode, Phase};
 use super::point::{col, Point, TwoState, COLUMNS};
 use super::EventRec;
 use crate::error::{Error, Result};
-use crate::exact::Exact;
+use crate::exact::{Exact, TableTimes};
 use crate::integrate::energy::Route;
 use crate::integrate::solve::Sample;
 use crate::mechanics::system::{self as sy, System};
@@ -139,7 +139,9 @@ fn covered_times(times: &[Exact], rounded: &[Float], end: &Float) -> usize {
 }
 
 /// The first phase from the start, in the conservative mode `mode`, by
-/// the energy route of `model.sticking()`.
+/// the energy route of `model.sticking()` (`table_times`: the requested
+/// times at the Taylor route's precision, kept by the answer for the
+/// ladder's other run).
 ///
 /// Errors: the energy route's (a time it cannot certify, an angle it
 /// cannot verify); an angle that is not reached in the phase is not an
@@ -147,6 +149,7 @@ fn covered_times(times: &[Exact], rounded: &[Float], end: &Float) -> usize {
 pub fn first_phase(
     ctx: &Ctx,
     route: &mut Route,
+    table_times: &mut TableTimes,
     mode: Mode,
     wants: &Wants,
     p: u32,
@@ -351,24 +354,15 @@ pub fn first_phase(
     let mut row_deltas = Vec::with_capacity(if wants.theta_only { 0 } else { times.len() });
     let mut thetas = Vec::with_capacity(if wants.theta_only { times.len() } else { 0 });
     if !times.is_empty() {
-        // the times' conversion of the ladder's other run, if of these times
-        let same = route.caches.times_at_holds(times);
-        let (mut kept_times, mut cache) = std::mem::take(&mut route.caches.times_at);
-        if !same {
-            cache = (0, Vec::new());
-            kept_times = route.caches.times_key(times);
-        }
         let deltas = route.deltas_at(
             times,
             p,
             wants.run,
             !wants.theta_only,
-            &mut cache,
+            table_times,
             wants.digits,
             Some(&t_end),
-        );
-        route.caches.times_at = (kept_times, cache);
-        let deltas = deltas?;
+        )?;
         let mut ulps = Float::new(p);
         for (i, (t, (d, derr))) in times.iter().zip(deltas).enumerate() {
             if wants.theta_only {

@@ -201,7 +201,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             ts: ctx.ts.clone(),
             times: caches
                 .times
-                .as_ref()
+                .rounded()
                 .and_then(|r| r.rounded_of(&req.times, wp))
                 .unwrap_or_else(|| req.times.iter().map(|t| t.to_float(wp)).collect()),
         },
@@ -253,9 +253,11 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
     // --- a conservative first phase: the energy route
     crate::cancel::check()?;
     if req.method == Method::Auto && mode.is_conservative() {
-        let rounded = caches.times.clone();
-        let route = caches.sticking(model)?;
-        route.caches.rounded_times = rounded;
+        // the route and the table's times: two of the caches at once
+        if caches.sticking.is_none() {
+            caches.sticking(model)?;
+        }
+        let route = caches.sticking.as_mut().expect("made above");
         let wants = conservative::Wants {
             times: &req.times,
             times_f: &w.out.times,
@@ -268,7 +270,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             low_deltas: &req.low_deltas,
             derived_at_high: req.derived_at_high,
         };
-        let fast = conservative::first_phase(&ctx, route, mode, &wants, prec)?;
+        let fast = conservative::first_phase(&ctx, route, &mut caches.times, mode, &wants, prec)?;
         crate::cancel::check()?;
         w.out.routes.push(Route::Energy);
         for e in fast.events {

@@ -7,7 +7,7 @@ use super::point::Point;
 use super::sides::Side;
 use super::{default_horizon, flight};
 use crate::error::Result;
-use crate::exact::{Exact, RoundedTimes};
+use crate::exact::{Exact, TableTimes};
 use crate::integrate::energy::Route as EnergyRoute;
 use crate::model::{Model, Which};
 use crate::numeric::verify::Run;
@@ -238,10 +238,12 @@ pub struct Caches {
     pub sticking: Option<EnergyRoute>,
     /// The model's [`default_horizon`], once computed.
     pub horizon: Option<Float>,
-    /// The request's times rounded to odd once, for every run's rounding
-    /// of them ([`RoundedTimes`]; None: each run converts them). Set by the
-    /// crate only, from the request's own times, which do not change after.
-    pub(crate) times: Option<std::sync::Arc<RoundedTimes>>,
+    /// The request's times: rounded to odd once, for every run's rounding
+    /// of them, and at the Taylor route's precision for both runs of a rung
+    /// ([`TableTimes`]; without a rounding each run converts them). Made by
+    /// the crate only, from the request's own times, which do not change
+    /// after.
+    pub(crate) times: TableTimes,
 }
 
 impl Caches {

@@ -29,7 +29,7 @@ pub use trajectory::{
 };
 
 use crate::error::{Error, Result};
-use crate::exact::{Exact, RoundedTimes};
+use crate::exact::{Exact, RoundedTimes, TableTimes};
 use crate::model::{Law, Model, Which};
 use crate::motion::point::col;
 use crate::motion::{self, Branch, Caches, Kind, Method, Motion, Phase, Request, Until};
@@ -151,7 +151,7 @@ fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -
     let rounded = (times.len() > 1).then(|| {
         let (p1, _) = crate::numeric::verify::precisions(opts.digits, 0);
         let top = crate::numeric::taylor::time_prec_for(p1 + p1 / 8 + 40, 0) + 2;
-        std::sync::Arc::new(crate::exact::RoundedTimes::new(&times, top))
+        std::sync::Arc::new(RoundedTimes::new(&times, top))
     });
     Runs {
         model,
@@ -170,7 +170,7 @@ fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -
             derived_at_high: false,
         },
         caches: Caches {
-            times: rounded,
+            times: TableTimes::new(rounded),
             ..Caches::default()
         },
         at_events: Vec::new(),

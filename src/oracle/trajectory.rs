@@ -274,7 +274,7 @@ fn trajectory_block(
 ) -> Result<Block> {
     check_digits(opts.digits)?;
     let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
-    check_times_rounded(times, runs.caches.times.as_deref())?;
+    check_times_rounded(times, runs.caches.times.rounded())?;
     if model.starts_at_equilibrium() {
         return Err(infinite(model, "every time along the motion"));
     }
@@ -429,7 +429,7 @@ pub fn theta_at_times(
 ) -> Result<(Vec<Verified>, Vec<Phase>)> {
     check_digits(opts.digits)?;
     let mut runs = runs(model, opts, times.to_vec(), Until::LastTime);
-    check_times_rounded(times, runs.caches.times.as_deref())?;
+    check_times_rounded(times, runs.caches.times.rounded())?;
     check_part_at(model, opts)?;
     if model.starts_at_equilibrium() {
         return Err(infinite(model, "every time along the motion"));

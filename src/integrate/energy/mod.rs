@@ -94,45 +94,6 @@ pub struct Caches {
     /// The dynamics at 32 bits beyond a precision, per precision: the
     /// rows' columns where their error is measured ([`Route::column_errors`]).
     pub dyn_above: HashMap<u32, Dyn>,
-    /// A table's times and [`Route::deltas_at`]'s conversion of them (its
-    /// `cache`), kept for the ladder's other run of the same times: one
-    /// conversion per rung, as a reused [`Route`] makes it.
-    pub times_at: (TimesKey, (u32, Vec<Float>)),
-    /// A table's times rounded to odd by the crate's motion, of the
-    /// request's own times (set by the crate only), from which
-    /// [`Route::deltas_at`] rounds them (None: it converts them).
-    pub(crate) rounded_times: Option<std::sync::Arc<crate::exact::RoundedTimes>>,
-}
-
-/// Which times [`Caches::times_at`] holds the conversion of.
-#[derive(Default)]
-pub enum TimesKey {
-    /// None yet.
-    #[default]
-    None,
-    /// These.
-    Times(Vec<Exact>),
-    /// The first `n` of a rounding's times (the caches' `rounded_times`).
-    Rounded(std::sync::Arc<crate::exact::RoundedTimes>, usize),
-}
-
-impl Caches {
-    /// Whether [`Caches::times_at`] holds the conversion of `times`.
-    pub fn times_at_holds(&self, times: &[Exact]) -> bool {
-        match (&self.times_at.0, &self.rounded_times) {
-            (TimesKey::Rounded(a, n), Some(b)) => std::sync::Arc::ptr_eq(a, b) && *n == times.len(),
-            (TimesKey::Times(v), _) => v[..] == *times,
-            _ => false,
-        }
-    }
-
-    /// The key of `times` for [`Caches::times_at`].
-    pub fn times_key(&self, times: &[Exact]) -> TimesKey {
-        match &self.rounded_times {
-            Some(r) => TimesKey::Rounded(r.clone(), times.len()),
-            None => TimesKey::Times(times.to_vec()),
-        }
-    }
 }
 
 /// The energy route of one conservative model.
@@ -548,7 +509,8 @@ impl Route {
     /// separation-time check (each time ≤ t_s), one Taylor run to the last
     /// time, and the quadrature check there. ε is twice the estimate (at
     /// least |δ|·2^-(p−9)), as the Newton inversion used to report it.
-    /// `cache` holds the times as Floats (converted once per rung).
+    /// `cache` holds the times as Floats (converted once per rung, for
+    /// both runs).
     #[allow(clippy::too_many_arguments)]
     pub fn deltas_at(
         &mut self,
@@ -556,7 +518,7 @@ impl Route {
         p: u32,
         run: Run,
         rel_delta: bool,
-        cache: &mut (u32, Vec<Float>),
+        cache: &mut crate::exact::TableTimes,
         digits: u32,
         t_end: Option<&Float>,
     ) -> Result<Vec<(Float, Float)>> {
@@ -582,17 +544,9 @@ impl Route {
             0
         };
         let tq = taylor::time_prec_for(p, extra);
-        if cache.0 < tq {
-            // once for both runs of a rung: at the p2 run's precision
-            let hi = taylor::time_prec_for(p + p / 8 + 40, extra);
-            let rounded = self.caches.rounded_times.as_ref();
-            let floats = rounded.and_then(|r| r.rounded_of(times, hi));
-            *cache = (
-                hi,
-                floats.unwrap_or_else(|| times.iter().map(|t| t.to_float(hi)).collect()),
-            );
-        }
-        let tt_all = &cache.1;
+        // once for both runs of a rung: at the p2 run's precision
+        let hi = taylor::time_prec_for(p + p / 8 + 40, extra);
+        let tt_all = cache.at_least(times, tq, hi);
         // the separation-time check, and the last time
         let mut i_max = None;
         for (i, (t, tt)) in times.iter().zip(tt_all).enumerate() {

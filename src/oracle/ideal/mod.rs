@@ -137,11 +137,6 @@ impl Oracle {
                 format!("must be between 1 and {MAX_DIGITS}"),
             ));
         }
-        // the rounded times belong to the motion's request, not to this
-        // oracle's questions
-        let mut route = route;
-        route.caches.rounded_times = None;
-        route.caches.times_at = Default::default();
         Ok(Oracle {
             model: model.clone(),
             digits,
@@ -446,7 +441,7 @@ impl Oracle {
         self.route.check_times(times)?;
         let floor = self.route.work.floor();
         let contact = self.route.work.contact();
-        let mut cache = (0, Vec::new());
+        let mut cache = crate::exact::TableTimes::default();
         // the time is an input: printed exactly when it is a terminating
         // decimal (a denominator of 2s and 5s only; checked first, as writing
         // out a long fraction costs more than the whole row), so that a time
@@ -478,7 +473,7 @@ impl Oracle {
     /// Errors: as [`Oracle::trajectory`].
     pub fn theta_at_times(&mut self, times: &[Exact]) -> Result<Vec<Verified>> {
         self.route.check_times(times)?;
-        let mut cache = (0, Vec::new());
+        let mut cache = crate::exact::TableTimes::default();
         let rows = ladder_table(self.digits, &["theta"], times.len(), |p, run| {
             let deltas =
                 self.route
