@@ -380,7 +380,11 @@ pub fn first_phase(
                 thetas.push((route.odd(th), Phase::Contact(mode), Some(err)));
                 continue;
             }
-            let tf = t.to_float(p);
+            // the motion's own rounding of t at p bits where it has it
+            let tf = match wants.times_f.get(i) {
+                Some(x) if x.prec() == p => x.clone(),
+                _ => t.to_float(p),
+            };
             // a row within 2^−(p/2) of the phase's end or of an event in it
             // (in the time unit) is computed whole in both runs: the higher
             // run may place it on the other side of the event and give it

@@ -272,8 +272,11 @@ impl Route {
     }
 
     /// t(δs) at `prec` by [`Engine::time`] (the θ form's quadrature), as
-    /// (value, error estimate): the time of the closed branch's end. Kept
-    /// by the process as [`Route::delta_s`].
+    /// (value, error estimate): the time of the closed branch's end, as the
+    /// motion has always taken it. Kept by the process as
+    /// [`Route::delta_s`]. ([`Route::t_s_at`] is the cheaper half-angle
+    /// quadrature's, for the ideal `Oracle`'s check that a time is before
+    /// the separation: another rounding of the same time.)
     pub fn time_s(&mut self, prec: u32) -> Result<(Float, Float)> {
         if let Some((v, _)) = kept::get(&self.work, prec, kept::Fact::TimeS, None) {
             return Ok(v);
@@ -473,20 +476,21 @@ impl Route {
     pub fn branch_time(&mut self, delta: &Float, prec: u32, high: bool) -> Result<(Float, Float)> {
         let fact = kept::Fact::BranchTime { high };
         let e = self.engine(prec)?;
-        if e.has_gauss_rules() || !e.settings_are_default() {
-            let (t, err, _) = e.time_fast(delta, high, false);
-            return Ok((t, err));
-        }
-        if let Some((v, work)) = kept::get(&self.work, prec, fact, Some(delta)) {
-            self.engine(prec)?.add_quadrature_work(work);
-            return Ok(v);
+        let keep = !e.has_gauss_rules() && e.settings_are_default();
+        if keep {
+            if let Some((v, work)) = kept::get(&self.work, prec, fact, Some(delta)) {
+                self.engine(prec)?.add_quadrature_work(work);
+                return Ok(v);
+            }
         }
         let e = self.engine(prec)?;
         let before = e.quadrature_work();
         let (t, err, _) = e.time_fast(delta, high, false);
-        let v = (t, err);
         let work = e.quadrature_work() - before;
-        kept::put(&self.work, prec, fact, Some(delta), &v, work);
+        let v = (t, err);
+        if keep {
+            kept::put(&self.work, prec, fact, Some(delta), &v, work);
+        }
         Ok(v)
     }
 
