@@ -105,6 +105,12 @@ pub struct Flight {
     y2: Float,
     vx2: Float,
     vy2: Float,
+    /// x2 − x1 and ẋ2 − ẋ1 at separation, from the line of centres
+    /// (r sin θ, r θ̇ cos θ): the relative motion is never the difference
+    /// of the two centres' abscissae, which a fast spin ω0 makes as large
+    /// as ω0 r1 t while their difference stays of the size of r.
+    dx: Float,
+    dvx: Float,
     psi2: Float,
     w2: Float,
     work: Float,
@@ -134,9 +140,11 @@ impl Flight {
         let r2 = f(&sys.rho[1]);
         let x1 = f(&q[sy::X1]);
         let vx1 = f(&v[sy::X1]);
-        let x2 = Float::with_val(p, &r * &sn) + &x1;
+        let dx = Float::with_val(p, &r * &sn);
+        let dvx = Float::with_val(p, &r * &cs) * thd;
+        let x2 = Float::with_val(p, &dx + &x1);
         let y2 = Float::with_val(p, &r * &cs) + &q[sy::Y1];
-        let vx2 = Float::with_val(p, &r * &cs) * thd + &vx1;
+        let vx2 = Float::with_val(p, &dvx + &vx1);
         let vy2 = -(Float::with_val(p, &r * &sn) * thd);
         // cylinder 1 alone on the floor
         let s1 = f(&at.s1);
@@ -190,6 +198,8 @@ impl Flight {
             y2,
             vx2,
             vy2,
+            dx,
+            dvx,
             psi2: f(&q[sy::psi(0)]),
             w2: f(&v[sy::psi(0)]),
             work: f(&s.work),
@@ -254,6 +264,27 @@ impl Flight {
         (x, vx, ph, w)
     }
 
+    /// x2 − x1 and ẋ2 − ẋ1 at flight time τ, from their values at
+    /// separation: Δx = Δx0 + Δẋ0 τ − ẍ1 (tt²/2 + tt (τ − tt)) with tt the
+    /// part of τ cylinder 1 spends sliding (its velocity terms cancel
+    /// exactly, never through the centres' abscissae).
+    fn relative_x(&self, tau: &Float) -> (Float, Float) {
+        let p = self.p;
+        let tt = match &self.tau_stick {
+            Some(ts) if tau > ts => ts.clone(),
+            _ => tau.clone(),
+        };
+        let rest = Float::with_val(p, tau - &tt);
+        let mut x = Float::with_val(p, &self.dvx * tau) + &self.dx;
+        let mut vx = self.dvx.clone();
+        if !self.a1.is_zero() {
+            let k = Float::with_val(p, tt.square_ref()) / 2u32 + Float::with_val(p, &tt * &rest);
+            x -= Float::with_val(p, &self.a1 * &k);
+            vx -= Float::with_val(p, &self.a1 * &tt);
+        }
+        (x, vx)
+    }
+
     /// Cylinder 2's centre at flight time τ.
     fn body2(&self, tau: &Float) -> (Float, Float) {
         let p = self.p;
@@ -267,12 +298,8 @@ impl Flight {
     fn recontact(&self, r: &Float, tau_floor: &Float, ctx: &Ctx) -> Result<Option<Float>> {
         let p = self.p;
         // first piece: Δ = Δ0 + Δ1 τ + Δ2 τ², d = |Δ|² − r² with d(0) = ḋ(0) = 0
-        let (x1, vx1, _, _) = self.body1(&Float::new(p));
-        let d0 = (
-            Float::with_val(p, &self.x2 - &x1),
-            Float::with_val(p, &self.y2 - &self.r1),
-        );
-        let d1 = (Float::with_val(p, &self.vx2 - &vx1), self.vy2.clone());
+        let d0 = (self.dx.clone(), Float::with_val(p, &self.y2 - &self.r1));
+        let d1 = (self.dvx.clone(), self.vy2.clone());
         let d2 = (
             -Float::with_val(p, &self.a1 / 2u32),
             -Float::with_val(p, &self.g / 2u32),
@@ -332,9 +359,8 @@ impl Flight {
         if let Some(ts) = &self.tau_stick {
             if ts < tau_floor {
                 let d = |tau: &Float| -> Float {
-                    let (x1, _, _, _) = self.body1(tau);
-                    let (x2, y2) = self.body2(tau);
-                    let dx = Float::with_val(p, &x2 - &x1);
+                    let (dx, _) = self.relative_x(tau);
+                    let (_, y2) = self.body2(tau);
                     let dy = Float::with_val(p, &y2 - &self.r1);
                     Float::with_val(p, dx.square_ref()) + Float::with_val(p, dy.square_ref())
                         - Float::with_val(p, r.square_ref())
@@ -415,9 +441,8 @@ impl Flight {
         } else {
             Float::new(p)
         };
-        let xx = Float::with_val(p, &x2 - &x1);
+        let (xx, xd) = self.relative_x(&tau);
         let yy = Float::with_val(p, &y2 - &self.r1);
-        let xd = Float::with_val(p, &self.vx2 - &vx1);
         let yd = vy2.clone();
         let dd = Float::with_val(p, xx.square_ref()) + Float::with_val(p, yy.square_ref());
         let theta = Float::with_val(p, xx.atan2_ref(&yy));
