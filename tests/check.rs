@@ -622,3 +622,69 @@ fn an_rtol_finer_than_the_oracle_digits_is_refused_and_a_verdict_on_its_bound_le
     assert_eq!(v["first_undecided"]["row"], "1");
     assert_eq!(v["first_failure"], serde_json::Value::Null);
 }
+
+/// Tolerances that cannot be held, and a `mode` cell that is not a mode,
+/// are refused (exit 2, one line, nothing on standard output): `--rtol
+/// 1e-400` was read as 0 and the check passed, `banana` was judged as a
+/// change of mode. And a row in another mode, or a zero limit (`--rtol 0
+/// --atol 0`, an undecided verdict), has no err/limit: printed `-` (it was
+/// `inf` in the text, JSON and CSV reports).
+#[test]
+fn unjudgeable_tolerances_and_unknown_modes_are_refused() {
+    let good = golden_csv("main_mu_0_3");
+    for (args, needle) in [
+        (&["--rtol", "1e-400"][..], "--rtol"),
+        (&["--atol", "1e-320"][..], "--atol"),
+        (&["--tol", "theta=1e-400"][..], "1e-400"),
+    ] {
+        let mut all = vec!["--case", "main_mu_0_3"];
+        all.extend_from_slice(args);
+        let out = check_file(&good, &all);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+    // zero written as zero is a tolerance (atol alone, rtol alone): judged,
+    // not refused (atol 0 leaves the oracle's zeros undecided: exit 3)
+    for (args, code) in [(&["--rtol", "0"][..], 0), (&["--atol", "0e5"][..], 3)] {
+        let mut all = vec!["--case", "main_mu_0_3"];
+        all.extend_from_slice(args);
+        let out = check_file(&good, &all);
+        assert_eq!(
+            out.status.code(),
+            Some(code),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let dir = edited("main_mu_0_3", 5, "mode", |_| "banana".into());
+    let out = check_file(&dir.path().join("cand.csv"), &["--case", "main_mu_0_3"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        err.contains("row 5") && err.contains("\"banana\" is not a mode"),
+        "{err}"
+    );
+    // a row in another mode, a zero limit: no `inf` in any format
+    let dir = edited("main_mu_0_3", 5, "mode", |_| "flight".into());
+    let cand = dir.path().join("cand.csv");
+    for (args, code) in [(&[][..], 1), (&["--rtol", "0", "--atol", "0"][..], 3)] {
+        for fmt in ["text", "json", "csv"] {
+            let mut all = vec!["--case", "main_mu_0_3", "--format", fmt];
+            all.extend_from_slice(args);
+            let out = check_file(if code == 1 { &cand } else { &good }, &all);
+            // a zero limit: a golden row's 20 digits differ from the oracle's
+            // (fail) or lie within its bound (undecided)
+            let got = out.status.code();
+            assert!(
+                got == Some(code) || (code == 3 && got == Some(1)),
+                "{args:?} {fmt}: {got:?}"
+            );
+            let text = String::from_utf8_lossy(&out.stdout);
+            assert!(!text.contains("inf"), "{args:?} {fmt}: {text}");
+        }
+    }
+}

@@ -564,6 +564,25 @@ fn friction_input_errors_name_the_parameter() {
             vec!["separation", "--floor", "slip", "--mu-floor", "1"],
             "mu_floor",
         ),
+        // --mu's value named as --mu (it was named mu_floor)
+        (vec!["separation", "--mu", "-1"], "invalid mu = \"-1\""),
+        (
+            vec!["separation", "--mu", "0.3,0.5"],
+            "invalid mu = \"0.3,0.5\"",
+        ),
+        // an explicit roll with μ = 0 was computed frictionless, silently
+        (
+            vec!["separation", "--floor", "roll", "--mu-floor", "0"],
+            "contradicts floor = roll",
+        ),
+        (
+            vec!["separation", "--contact", "roll", "--mu-contact", "0"],
+            "contradicts contact = roll",
+        ),
+        (
+            vec!["separation", "--floor", "roll", "--mu", "0,0"],
+            "contradicts floor = roll",
+        ),
         (vec!["separation", "--k2", "0", "--mu-contact", "1"], "k2"),
         (vec!["time", "--to", "0.05", "--mu-contact", "1"], "to"),
         (
@@ -1959,4 +1978,39 @@ fn the_event_skeleton_reads_in_plain_words() {
         "{sig}"
     );
     assert!(!sig.contains("Some(") && !sig.contains("None"), "{sig}");
+}
+
+/// A common rolling ω0 far above the motion's own rates: every body's rate
+/// carries ω0's term and the slip speeds, their differences, cancel. At
+/// ω0 = 10^20 and 10 digits the slip onset's mode test fails; the refusal
+/// said "no consistent continuation … a Painlevé-type inconsistency of the
+/// rigid-body model", a false claim about the model (ω0 moves the positions
+/// only). It now names ω0 and the bits it costs, and leaves the model's
+/// question open; ω0 = 10^15 is answered, at 10 digits as at 30, with the
+/// slip onset and parting of ω0 = 0.
+#[test]
+fn a_huge_common_rolling_rate_is_not_called_painleve() {
+    let with_w0 = |w0: &str| {
+        let mut m = main_mu_0_3_edited(|_| {});
+        let mut st = m.start().clone();
+        st.omega0 = Exact::parse("omega0", w0, false).unwrap().coef;
+        m = Model::new(m.params().clone(), law("0.3"), law("0.3"), st).unwrap();
+        m
+    };
+    let msg = oracle::separation(&with_w0("1e20"), &Options::digits(10))
+        .expect_err("answered")
+        .to_string();
+    assert!(msg.contains("omega0 = 1.0e20"), "{msg}");
+    assert!(!msg.contains("Painlev"), "{msg}");
+    assert!(!msg.contains("no consistent continuation"), "{msg}");
+    let events = |w0: &str, digits: u32| -> Vec<(String, String)> {
+        let a = oracle::separation(&with_w0(w0), &Options::digits(digits)).unwrap();
+        a.events
+            .iter()
+            .map(|e| (format!("{:?}", e.kind), e.t.text.clone()))
+            .collect()
+    };
+    for digits in [10, 30] {
+        assert_eq!(events("1e15", digits), events("0", digits), "{digits}");
+    }
 }

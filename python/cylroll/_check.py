@@ -29,7 +29,10 @@ _TEXT = ("mode",)
 
 def _num(x: Any) -> Any:
     """A JSON number, or the string ``inf``/``nan`` the report uses for a
-    non-finite one, as a float."""
+    non-finite one, as a float; ``"-"`` (no ratio: the ``mode`` column) as
+    None."""
+    if x == "-":
+        return None
     if isinstance(x, str):
         return float(x)
     return x
@@ -42,8 +45,9 @@ class PhaseStats(NamedTuple):
     max_abs: float
     #: the time where it occurs
     max_abs_t: str
-    #: largest |err| / limit in the phase (inf for a row in another mode)
-    worst_err_over_limit: float
+    #: largest |err| / limit in the phase (None for ``mode``: its failures
+    #: are rows in another mode)
+    worst_err_over_limit: Optional[float]
     #: rows out of tolerance (``mode``: rows in another mode)
     failures: int
     #: values whose verdict the oracle's error bound leaves open
@@ -75,7 +79,8 @@ class ColumnStats(NamedTuple):
     #: the time where it occurs
     max_rel_t: str
     #: largest |candidate − oracle| / (atol + rtol·|oracle|): above 1 fails
-    worst_err_over_limit: float
+    #: (None for ``mode``, whose failures are rows in another mode)
+    worst_err_over_limit: Optional[float]
     #: which term of that limit was the larger where it occurs: ``"atol"``
     #: (an oracle value near 0), ``"rtol"``, or ``"mode"``
     worst_bound: str

@@ -32,7 +32,7 @@ pub mod tol;
 
 pub use branch::{BranchReport, Parting, Request as BranchRequest};
 pub use read::{File, Source, Text, MAX_LINE_BYTES};
-pub use tol::{parse_override, Override, Tol};
+pub use tol::{parse_override, tolerance_of, Override, Tol};
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;

@@ -386,7 +386,22 @@ fn parse_row(line: &str, row: RowLabel, h: &Header, source: &str) -> Result<(Exa
             continue;
         }
         if h.idx[k] == MODE {
-            vals.push((MODE, cell.trim_matches('"').to_string(), f64::NAN));
+            let text = cell.trim_matches('"');
+            // a mode the model has (flight, or FLOOR/CONTACT of stick,
+            // slip+, slip-, slip, held): anything else is bad input, not
+            // a change of mode to judge
+            if crate::motion::Phase::parse(text).is_none() {
+                return Err(refuse(
+                    source,
+                    format!(
+                        "row {row}, column mode: {:?} is not a mode (allowed: flight, or \
+                         FLOOR/CONTACT with each of stick, slip+, slip-, slip, held, e.g. \
+                         stick/slip+)",
+                        crate::error::shorten(text)
+                    ),
+                ));
+            }
+            vals.push((MODE, text.to_string(), f64::NAN));
             continue;
         }
         let v: f64 = cell.parse().map_err(|_| {

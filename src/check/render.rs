@@ -11,6 +11,26 @@ fn rel_text(r: Option<f64>) -> String {
 
 /// A number: a short decimal string, or (for Python) a JSON number; a
 /// non-finite one is the string `inf`/`nan` either way.
+/// err/limit as text: `-` where there is no ratio (the `mode` column,
+/// whose failures are rows in another mode, ranked above every ratio).
+fn ratio_text(x: f64) -> String {
+    if x.is_finite() {
+        format!("{x:.3e}")
+    } else {
+        "-".into()
+    }
+}
+
+/// err/limit in JSON: a number (a string with `strings`), `"-"` where
+/// there is no ratio ([`ratio_text`]).
+fn ratio_json(x: f64, strings: bool) -> Value {
+    if x.is_finite() {
+        num(x, strings)
+    } else {
+        Value::String("-".into())
+    }
+}
+
 fn num(x: f64, strings: bool) -> Value {
     if strings || !x.is_finite() {
         Value::String(if x.is_finite() {
@@ -145,7 +165,7 @@ impl CheckReport {
                 (format!("{:.2e}", t.rtol), format!("{:.2e}", t.atol))
             });
             s.push_str(&format!(
-                "{:<11} {:>9} {:>9} {:>10.3e} {:>12} {:>10} {:>12} {:>10.3e} {:>5} {:>9}\n",
+                "{:<11} {:>9} {:>9} {:>10.3e} {:>12} {:>10} {:>12} {:>10} {:>5} {:>9}\n",
                 c.name,
                 rt,
                 at,
@@ -153,7 +173,7 @@ impl CheckReport {
                 c.max_abs_t,
                 rel_text(c.max_rel),
                 c.max_rel_t,
-                c.worst_ratio,
+                ratio_text(c.worst_ratio),
                 c.worst_bound,
                 c.failures
             ));
@@ -170,8 +190,11 @@ impl CheckReport {
                     format!("; worst {}: {} rows in another mode", c.name, p.failures)
                 } else {
                     format!(
-                        "; worst {}: err/limit {:.3e}, max_abs {:.3e} at t = {}",
-                        c.name, p.worst_ratio, p.max_abs, p.max_abs_t
+                        "; worst {}: err/limit {}, max_abs {:.3e} at t = {}",
+                        c.name,
+                        ratio_text(p.worst_ratio),
+                        p.max_abs,
+                        p.max_abs_t
                     )
                 }
             });
@@ -301,13 +324,13 @@ impl CheckReport {
         for c in &self.columns {
             let (rt, at) = tols(c);
             s.push_str(&format!(
-                "{},{:.3e},{},{},{},{:.3e},{},{},{},{rt},{at},all\n",
+                "{},{:.3e},{},{},{},{},{},{},{},{rt},{at},all\n",
                 c.name,
                 c.max_abs,
                 c.max_abs_t,
                 rel_text(c.max_rel),
                 c.max_rel_t,
-                c.worst_ratio,
+                ratio_text(c.worst_ratio),
                 c.worst_bound,
                 c.failures,
                 c.undecided
@@ -318,11 +341,11 @@ impl CheckReport {
                 let Some(pc) = c.phases.get(k) else { continue };
                 let (rt, at) = tols(c);
                 s.push_str(&format!(
-                    "{},{:.3e},{},-,-,{:.3e},-,{},{},{rt},{at},{} {}\n",
+                    "{},{:.3e},{},-,-,{},-,{},{},{rt},{at},{} {}\n",
                     c.name,
                     pc.max_abs,
                     pc.max_abs_t,
-                    pc.worst_ratio,
+                    ratio_text(pc.worst_ratio),
                     pc.failures,
                     pc.undecided,
                     k + 1,
@@ -348,7 +371,7 @@ impl CheckReport {
                         json!({
                             "max_abs": num(p.max_abs, strings),
                             "max_abs_t": p.max_abs_t,
-                            "worst_err_over_limit": num(p.worst_ratio, strings),
+                            "worst_err_over_limit": ratio_json(p.worst_ratio, strings),
                             "failures": count(p.failures, strings),
                             "undecided": count(p.undecided, strings),
                             "passed": p.failures == 0 && p.undecided == 0,
@@ -365,7 +388,7 @@ impl CheckReport {
                     "max_abs_t": c.max_abs_t,
                     "max_rel": c.max_rel.map(|r| num(r, strings)),
                     "max_rel_t": c.max_rel_t,
-                    "worst_err_over_limit": num(c.worst_ratio, strings),
+                    "worst_err_over_limit": ratio_json(c.worst_ratio, strings),
                     "worst_bound": c.worst_bound,
                     "failures": count(c.failures, strings),
                     "undecided": count(c.undecided, strings),

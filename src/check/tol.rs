@@ -35,13 +35,30 @@ pub struct Override {
 }
 
 /// A tolerance value: finite and >= 0.
+/// A tolerance's text as a number: finite and >= 0, and either 0 or at
+/// least 1e-300 (a positive number below binary64's range would be read as
+/// 0, or as a subnormal of a few bits, and judged so); `None` otherwise.
+pub fn tolerance_of(text: &str) -> Option<f64> {
+    let v: f64 = text.trim().parse().ok()?;
+    if !v.is_finite() || v < 0.0 || (v > 0.0 && v < 1e-300) {
+        return None;
+    }
+    // zero only as a zero significand (`0`, `0.00`, `0e7`), not as `1e-400`
+    let t = text.trim().trim_start_matches(['+', '-']);
+    let sig = t.split(['e', 'E']).next().unwrap_or("");
+    if v == 0.0 && !sig.bytes().all(|b| b == b'0' || b == b'.') {
+        return None;
+    }
+    Some(v)
+}
+
 fn tol_value(name: &str, spec: &str, text: &str) -> Result<f64> {
-    match text.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
-        _ => Err(Error::invalid(
+    match tolerance_of(text) {
+        Some(v) => Ok(v),
+        None => Err(Error::invalid(
             name,
             spec,
-            format!("{text:?} is not a tolerance: expected COLUMN=RTOL[,ATOL] with finite numbers >= 0, e.g. theta=1e-3,1e-6"),
+            format!("{text:?} is not a tolerance: expected COLUMN=RTOL[,ATOL] with numbers that are 0 or from 1e-300 to finite, e.g. theta=1e-3,1e-6"),
         )),
     }
 }

@@ -300,12 +300,11 @@ fn tol_override_arg(s: &str) -> std::result::Result<cylroll::check::Override, St
     })
 }
 
-/// A tolerance: a finite number >= 0.
+/// A tolerance: 0, or a finite number from 1e-300 on
+/// ([`cylroll::check::tolerance_of`]).
 fn tol_arg(s: &str) -> std::result::Result<f64, String> {
-    match s.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
-        _ => Err("must be a finite number >= 0 (e.g. 1e-8)".into()),
-    }
+    cylroll::check::tolerance_of(s)
+        .ok_or_else(|| "must be a finite number >= 0: 0, or from 1e-300 on (e.g. 1e-8)".into())
 }
 
 impl Common {
@@ -363,7 +362,13 @@ impl Common {
         // a start at the top is the ideal models' limit θ0 → 0+ and is
         // judged by the command that runs
         let (pairs, from_file) = self.pairs()?;
-        input::model_from_pairs(&pairs).map_err(|e| {
+        input::model_from_pairs(&pairs).map_err(|mut e| {
+            // a coefficient --mu gave is named as the user wrote it
+            if let (Some(mu), Error::InvalidParameter { name, value, .. }) = (&self.mu, &mut e) {
+                if (name == "mu_floor" || name == "mu_contact") && value == mu {
+                    *name = "mu".into();
+                }
+            }
             // the file is named when the value at fault is its own
             let file_key = matches!(&e, Error::InvalidParameter { name, .. }
                 if from_file.contains(name));

@@ -312,16 +312,16 @@ fn text(a: &Answer, stats: Option<&RowStats>) -> String {
     }
     for (i, e) in a.events.iter().enumerate() {
         out.push_str(&format!(
-            "event {}: {}{} at t = {} [{} digits], theta = {} [{} digits]{}{}\n",
+            "event {}: {}{} at t = {} [{}], theta = {} [{}]{}{}\n",
             i + 1,
             e.kind.name(),
             e.which
                 .map(|w| format!(" ({})", w.name()))
                 .unwrap_or_default(),
             e.t.text,
-            e.t.digits,
+            digits_word(e.t.digits),
             e.theta.text,
-            e.theta.digits,
+            digits_word(e.theta.digits),
             e.phase
                 .map(|m| format!(" -> {m}"))
                 .unwrap_or_else(|| " (end of the model)".into()),
@@ -358,7 +358,16 @@ fn value_note(v: &Verified) -> String {
     } else if v.digits == 0 {
         format!("[indistinguishable from 0: |x| <= {}]", v.err_text())
     } else {
-        format!("[{} digits; |err| <= {}]", v.digits, v.err_text())
+        format!("[{}; |err| <= {}]", digits_word(v.digits), v.err_text())
+    }
+}
+
+/// `1 digit`, `N digits`.
+fn digits_word(n: u32) -> String {
+    if n == 1 {
+        "1 digit".into()
+    } else {
+        format!("{n} digits")
     }
 }
 

@@ -131,22 +131,53 @@ fn inconsistency_at(
 /// heavier than the lower one (a light upper cylinder is the fixed lower
 /// one's limit, and slow), or a moment of inertia below 10^-12 of m r²
 /// (k1, k2). There the mode test's Euler steps do not resolve the fast
-/// motion.
-fn disparity(ctx: &Ctx) -> Option<String> {
+/// motion. Or a common rolling ω0 whose speed ω0 r1 exceeds the motion's own
+/// by more than a third of the working precision's bits: the slip speeds
+/// the test reads cancel there.
+fn disparity(ctx: &Ctx) -> Option<(String, bool)> {
     let pr = ctx.model.params();
     let limit = rug::Rational::from(rug::Integer::from(rug::Integer::u_pow_u(10, 12)));
     let r = rug::Rational::from(&pr.m2 / &pr.m1);
     if r > limit {
-        return Some(format!(
-            "the masses differ by a factor {}",
-            crate::numeric::decimal::short(&Float::with_val(64, &r))
+        return Some((
+            format!(
+                "the masses differ by a factor {}",
+                crate::numeric::decimal::short(&Float::with_val(64, &r))
+            ),
+            true,
         ));
     }
     for (name, k) in [("k1", &pr.k1), ("k2", &pr.k2)] {
         if *k > 0 && rug::Rational::from(k.recip_ref()) > limit {
-            return Some(format!(
-                "{name} = {} leaves a spin almost without inertia",
-                crate::numeric::decimal::short(&Float::with_val(64, k))
+            return Some((
+                format!(
+                    "{name} = {} leaves a spin almost without inertia",
+                    crate::numeric::decimal::short(&Float::with_val(64, k))
+                ),
+                true,
+            ));
+        }
+    }
+    // a common rolling ω0 moves every body alike, but its terms are in the
+    // rates the slip speeds are differences of: ω0 r1 against the motion's
+    // own speed sqrt(g r) costs log2 of their ratio in bits there
+    let w0 = &ctx.model.start().omega0;
+    if *w0 != 0 {
+        let p = 64;
+        let speed = Float::with_val(p, w0).abs() * Float::with_val(p, &pr.r1);
+        let rsum = rug::Rational::from(&pr.r1 + &pr.r2);
+        let own = (Float::with_val(p, &pr.g) * Float::with_val(p, &rsum)).sqrt();
+        let ratio = speed / own;
+        if ratio.get_exp().is_some_and(|e| e > (ctx.p / 3) as i32) {
+            return Some((
+                format!(
+                    "the common rolling rate omega0 = {} makes the bodies' speeds {} times the \
+                     motion's own (sqrt(g (r1 + r2))), and the slip speeds, their differences, \
+                     lose that much at this precision (a higher --digits keeps more)",
+                    crate::numeric::decimal::short(&Float::with_val(64, w0)),
+                    crate::numeric::decimal::short(&ratio)
+                ),
+                false,
             ));
         }
     }
@@ -160,10 +191,13 @@ fn disparity(ctx: &Ctx) -> Option<String> {
 /// fast part of such a motion takes to change.
 fn verdict(ctx: &Ctx, question: &str, model_says: &str) -> String {
     match disparity(ctx) {
-        Some(cause) => format!(
+        Some((cause, true)) => format!(
             "{cause}, and the motion it makes fast is too fast for the test of the candidates; \
              whether the rigid-body model {question} is not decided"
         ),
+        Some((cause, false)) => {
+            format!("{cause}; whether the rigid-body model {question} is not decided")
+        }
         None => model_says.to_string(),
     }
 }
@@ -275,7 +309,11 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
         (0, false) => Err(Error::NotConverged {
             quantity: "mode".into(),
             requested: 0,
-            reached: format!("no consistent continuation at {at}"),
+            reached: if disparity(ctx).is_some() {
+                format!("no candidate passed the test at {at}")
+            } else {
+                format!("no consistent continuation at {at}")
+            },
             // the verdict first: a one-line message shortens the list of
             // the candidates' reasons, not the conclusion
             detail: format!(

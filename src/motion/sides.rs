@@ -46,14 +46,33 @@ fn margin(v: &Float, err: &Float, p: u32, scale: Option<&Float>) -> Float {
     (Float::with_val(wp, err) + floor) * 4u32
 }
 
-/// Whether `t` and `end` agree to more than `digits` significant digits
-/// (|t − end| ≤ (|end| + scale)·10^−(digits+3), `scale` the natural scale:
-/// the time unit for a time, 1 for an angle): a value at an event to the
-/// digits asked, the same decision at every working precision.
+/// Whether `t` is `end` to the `digits` significant digits asked: within
+/// half a unit of `end`'s `digits`-th significant digit (so that `end` as
+/// printed to those digits, rounded either way, is one; at least 10 digits
+/// are held to, so that a coarse request does not take a value a per cent
+/// past the end for the end), or within (|end| + scale)·10^−(digits+3),
+/// `scale` the natural scale (the time unit for a time, 1 for an angle: an
+/// `end` near 0). A value at an event to the digits asked; the same
+/// decision at every working precision (the bounds are far above 2^−p).
 pub fn within_digits(t: &Float, end: &Float, digits: u32, scale: &Float) -> bool {
     let p = t.prec();
-    let tol = (Float::with_val(p, end.abs_ref()) + scale)
+    let mut tol = (Float::with_val(p, end.abs_ref()) + scale)
         / Float::with_val(p, Float::u_pow_u(10, digits + 3));
+    let e = end.to_f64().abs();
+    if e.is_finite() && e > 0.0 {
+        // half a unit of the digits-th significant digit: 10^(k − digits)/2
+        // with 10^(k−1) ≤ |end| < 10^k
+        let k = e.log10().floor() as i64 + 1 - i64::from(digits.max(10));
+        let unit = if k >= 0 {
+            Float::with_val(p, Float::u_pow_u(10, k as u32))
+        } else {
+            Float::with_val(p, 1u32) / Float::with_val(p, Float::u_pow_u(10, (-k) as u32))
+        };
+        let half = unit / 2u32;
+        if half > tol {
+            tol = half;
+        }
+    }
     Float::with_val(p, t - end).abs() <= tol
 }
 

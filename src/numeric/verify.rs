@@ -118,9 +118,13 @@ impl Verified {
     }
 }
 
-/// The two working precisions for `digits` at ladder rung `attempt`.
+/// The two working precisions for `digits` at ladder rung `attempt`: the
+/// digits' bits and [`GUARD_BITS`], at least 64 (one limb: no dearer than
+/// fewer bits; below it, with a few digits asked of widely ranging
+/// parameters — an upper cylinder 10^20 times the lower's mass — both runs
+/// agreed on wrong values), 48 more per rung; p2 = p1 + 32 + p1/8.
 pub fn precisions(digits: u32, attempt: u32) -> (u32, u32) {
-    let p1 = bits_for_digits(digits) + GUARD_BITS + 48 * attempt;
+    let p1 = (bits_for_digits(digits) + GUARD_BITS).max(64) + 48 * attempt;
     let p2 = p1 + 32 + p1 / 8;
     (p1, p2)
 }

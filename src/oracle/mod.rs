@@ -630,7 +630,7 @@ fn at_angle(
     name: &str,
     keys: &[&str],
     est: impl Fn(&motion::Point) -> Vec<Estimate>,
-) -> Result<(Vec<Verified>, Phase, Option<String>, motion::Mode)> {
+) -> Result<(Vec<Verified>, Phase, Vec<String>, motion::Mode)> {
     check_digits(opts.digits)?;
     check_part_at(model, opts)?;
     if model.starts_at_equilibrium() {
@@ -664,6 +664,8 @@ fn at_angle(
         .map(|t| t.phase)
         .ok_or_else(|| Error::not_physical("internal: the angle was not reached"))?;
     let start_mode = first.start_mode;
+    // past a branch point on the way: which branch the value is on
+    let branch = branch_notes(&first, opts);
     let names: Vec<String> = keys.iter().map(|k| k.to_string()).collect();
     let at_event = runs.target_at.map(|k| {
         format!(
@@ -687,9 +689,18 @@ fn at_angle(
     Ok((
         rows.into_iter().next().unwrap_or_default(),
         phase,
-        at_event,
+        at_event.into_iter().chain(branch).collect(),
         start_mode,
     ))
+}
+
+/// The note for an angle answered at θs ([`Route::delta_of`]: past it by
+/// less than the digits asked resolve).
+fn at_separation_note(theta: &Exact) -> String {
+    format!(
+        "theta = {theta} is past theta_s by less than the digits asked resolve: the values are \
+         the state at theta_s (N12 = 0 there)"
+    )
 }
 
 /// The time at which θ first reaches `theta`.
@@ -702,6 +713,10 @@ pub fn time(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         check_digits(opts.digits)?;
         let mut o = Oracle::new(&ideal, opts.digits)?;
         ans.values.push(o.time_at(theta)?);
+        if o.route.at_separation {
+            ans.notes.push(at_separation_note(theta));
+        }
+        ans.notes.extend(o.branch_window_note(theta)?);
         ans.phase = Some(Phase::Contact(conservative_mode(model)));
         ans.start_mode = Some(conservative_mode(model));
         ans.routes.push(motion::Route::Energy);
@@ -758,7 +773,7 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         // and the work of a conservative motion
         let mode = conservative_mode(model);
         let extra = ladder(digits, &["s1", "s12", "work"], |p| {
-            let d = o.route.delta_of("theta", theta, p)?;
+            let d = o.route.delta_of("theta", theta, p, digits)?;
             let (cols, _) = o.route.columns_at(&d, &Float::new(p), p)?;
             let sc = ladder::column_scales(model, p);
             let z = |i: usize, zero: bool| {
@@ -818,6 +833,10 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
             }
         }
         ans.values = values;
+        if o.route.at_separation {
+            ans.notes.push(at_separation_note(theta));
+        }
+        ans.notes.extend(o.branch_window_note(theta)?);
         ans.phase = Some(Phase::Contact(mode));
         ans.start_mode = Some(mode);
         ans.routes.push(motion::Route::Energy);

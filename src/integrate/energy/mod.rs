@@ -108,6 +108,9 @@ pub struct Route {
     pub red: Reduced,
     /// What depends only on the model and a precision.
     pub caches: Caches,
+    /// Set by [`Route::delta_of`] when it answered an angle past θs by less
+    /// than the digits asked resolve at θs itself (for the answer's note).
+    pub at_separation: bool,
 }
 
 impl Route {
@@ -129,6 +132,7 @@ impl Route {
             sign,
             red,
             caches: Caches::default(),
+            at_separation: false,
         };
         // N12 and N1 at the start, at a precision that resolves their
         // signs: a force within its terms' rounding is computed again at
@@ -373,8 +377,12 @@ impl Route {
         ))
     }
 
-    /// δ = θ − θ0 (working frame) for a user angle, checked to lie in the motion.
-    pub fn delta_of(&mut self, param: &str, theta: &Exact, p: u32) -> Result<Float> {
+    /// δ = θ − θ0 (working frame) for a user angle, checked to lie in the
+    /// motion. An angle past θs by less than `digits` significant digits
+    /// resolve ([`crate::motion::sides::within_digits`]: θs as printed to
+    /// those digits, rounded up, is one) is answered at θs: δs is returned
+    /// (`digits` 0: refused, for a proof at the angle itself).
+    pub fn delta_of(&mut self, param: &str, theta: &Exact, p: u32, digits: u32) -> Result<Float> {
         let w = self.to_work(theta);
         let th0 = self.work.start().theta0.clone();
         let d = Float::with_val(p, w.to_float(p) - th0.to_float(p));
@@ -422,6 +430,14 @@ impl Route {
                 return Ok(d);
             }
             if Float::with_val(q, &dq - &margin) > ds {
+                // compared as angles (θ and θs: their digits, not δ's)
+                let one = Float::with_val(q, 1u32);
+                let th_q = Float::with_val(q, th0.to_float(q) + &dq);
+                let ths_q = Float::with_val(q, th0.to_float(q) + &ds);
+                if digits > 0 && crate::motion::sides::within_digits(&th_q, &ths_q, digits, &one) {
+                    self.at_separation = true;
+                    return Ok(Float::with_val(p, &ds));
+                }
                 return Err(Error::invalid(
                     param,
                     theta,

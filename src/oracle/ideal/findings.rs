@@ -211,7 +211,10 @@ impl Oracle {
             let (delta, derr) = match at {
                 At::Start => (Float::new(p), Float::new(p)),
                 At::Separation => self.route.delta_s(p)?,
-                At::Angle(th) => (self.route.delta_of("theta", th, p)?, Float::new(p)),
+                At::Angle(th) => (
+                    self.route.delta_of("theta", th, p, self.digits)?,
+                    Float::new(p),
+                ),
                 At::Root(c_iso, hp) => {
                     let a_h = N12Poly::a_h(&self.route.engine(p)?.dynm);
                     let coef = hp.at(&a_h, p + 16);

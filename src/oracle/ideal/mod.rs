@@ -267,6 +267,47 @@ impl Oracle {
         single(v).map(Some)
     }
 
+    /// The note for an angle asked at or past the branch point θ* (where the
+    /// cylinders may lawfully stay together or part, up to θs): the value
+    /// is on the `stay` branch. `None` before θ* or where the motion has no
+    /// branch point. Decided at 64 bits with the root's bound: an angle
+    /// within it of θ* counts as at θ* (the note says "at or past").
+    ///
+    /// Errors: as [`Oracle::branch_point`]'s isolation.
+    pub fn branch_window_note(&mut self, theta: &Exact) -> Result<Option<String>> {
+        const P: u32 = 64;
+        if self.model.floor() == Floor::Fixed {
+            return Ok(None);
+        }
+        let hp = self.route.free_normal_poly();
+        if self.route.sign_at_start(&hp)? > 0 {
+            return Ok(None);
+        }
+        let (ds, ds_err) = self.route.delta_s(P)?;
+        let Some((d, err)) = self.route.first_root("branch point", &hp, None, &ds, P)? else {
+            return Ok(None);
+        };
+        // coinciding with θs within both bounds (as branch_point): none
+        let gap = Float::with_val(P, &d - &ds).abs();
+        if gap <= Float::with_val(P, &err + &ds_err) * 4u32 || d > ds {
+            return Ok(None);
+        }
+        let th0 = self.route.work.start().theta0.to_float(P);
+        let dq = Float::with_val(P, self.route.to_work(theta).to_float(P) - &th0);
+        if Float::with_val(P, &dq + &err) < d {
+            return Ok(None);
+        }
+        let th_star = self.route.odd(Float::with_val(P, &th0 + &d));
+        Ok(Some(format!(
+            "theta = {theta} lies at or past the branch point theta_indeterminate ≈ {}, where \
+             the rigid-body motion is not unique (from there the cylinders may stay together or \
+             part, up to theta_s): the values are on the branch where they stay together (the \
+             branch followed); on --branch part the cylinders have parted at \
+             theta_indeterminate and this angle is reached in flight, if at all",
+            crate::numeric::decimal::to_sig(&th_star, 12)
+        )))
+    }
+
     /// θs alone: the first angle past θ0 where N12 = 0, with verified digits
     /// (the same quantity as [`Separation::theta_s`], without the other
     /// findings of [`Oracle::separation`]).
@@ -323,7 +364,7 @@ impl Oracle {
             return Err(self.route.infinite_time_error("the time to any angle"));
         }
         let v = ladder_runs(self.digits, &["t"], |p, run| {
-            let d = self.route.delta_of("to", theta, p)?;
+            let d = self.route.delta_of("to", theta, p, self.digits)?;
             let ts = self.route.scale_time(p);
             let (t, err, _) = self.route.engine(p)?.time_fast(&d, run == Run::High, true);
             Ok(vec![Estimate::new(t, err, ts)])
@@ -338,7 +379,7 @@ impl Oracle {
         let floor = self.route.work.floor();
         let contact = self.route.work.contact();
         let mut out = ladder(self.digits, &FORCE_KEYS[..6], |p| {
-            let d = self.route.delta_of("theta", theta, p)?;
+            let d = self.route.delta_of("theta", theta, p, self.digits)?;
             let sf = self.route.scale_force(p);
             let ts = self.route.scale_time(p);
             let e = self.route.engine(p)?;
@@ -397,7 +438,7 @@ impl Oracle {
             match mu {
                 Some(m) if m.text.starts_with(">=") => {
                     let th = ladder(self.digits, &["theta_mu_contact_max"], |p| {
-                        let d = self.route.delta_of("theta", theta, p)?;
+                        let d = self.route.delta_of("theta", theta, p, self.digits)?;
                         let th0 = self.route.work.start().theta0.to_float(p);
                         let th = Float::with_val(p, th0 + d);
                         Ok(vec![Estimate::rounded(

@@ -93,7 +93,7 @@ impl Oracle {
         if self.route.work.starts_at_equilibrium() {
             return Err(self.route.infinite_time_error("the time to any angle"));
         }
-        self.route.delta_of("to", theta, 64)?;
+        self.route.delta_of("to", theta, 64, 0)?;
         let th = Iv::exact(p, &self.route.to_work(theta));
         let t = self.rigorous_time_iv(&th, p)?;
         Ok(Proved::new("t", t, self.digits))
