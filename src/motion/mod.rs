@@ -131,7 +131,7 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
     }
     sides::mark_near(&mut m, req, prec);
     sides::apply_sides(&mut m, req)?;
-    sides::trim_events(&mut m, req, prec);
+    sides::trim_events(&mut m, req, prec, model.direction());
     Ok(m)
 }
 

@@ -167,6 +167,17 @@ pub fn side_of(x: &Float, ev: &Float, err: &Float, p: u32, scale: Option<&Float>
     }
 }
 
+/// [`side_of`] for an angle `x` against an event's angle, in the motion's
+/// order: `dir` the model's direction (−1 for a fall to the left, whose
+/// angles decrease: an angle above the event's is before it there).
+pub fn angle_side(x: &Float, ev: &Float, err: &Float, p: u32, dir: i32) -> Option<Side> {
+    side_of(x, ev, err, p, None).map(|s| match (s, dir < 0) {
+        (Side::Before, true) => Side::After,
+        (Side::After, true) => Side::Before,
+        (s, _) => s,
+    })
+}
+
 /// Flags the rows (and the target) that cannot be told from an event at
 /// this precision.
 pub fn mark_near(m: &mut Motion, req: &Request, p: u32) {
@@ -286,7 +297,7 @@ pub fn apply_sides(m: &mut Motion, req: &Request) -> Result<()> {
 /// place the times near them; not the answer's): only those up to the last
 /// time stay — by the side decided for the last time where there is one,
 /// the same at every precision.
-pub fn trim_events(m: &mut Motion, req: &Request, p: u32) {
+pub fn trim_events(m: &mut Motion, req: &Request, p: u32, dir: i32) {
     // an angle decided before (or at) event k: the events from k on are
     // not the answer's (some precisions reach the angle first, some the
     // event)
@@ -296,7 +307,7 @@ pub fn trim_events(m: &mut Motion, req: &Request, p: u32) {
         // the events found just past the angle are not the answer's
         let th = target.theta.clone();
         m.events
-            .retain(|e| side_of(&th, &e.at.theta, &e.theta_err, p, None) != Some(Side::Before));
+            .retain(|e| angle_side(&th, &e.at.theta, &e.theta_err, p, dir) != Some(Side::Before));
     }
     if req.until == super::Until::LastTime {
         if let Some(last) = req.times.last() {

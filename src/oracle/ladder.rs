@@ -297,7 +297,12 @@ impl Runs<'_> {
                     .get(k)
                     .zip(first.events.get(k))
                     .is_some_and(|(a, b)| {
-                        a.kind == b.kind && a.which == b.which && a.phase == b.phase
+                        // the first run's phase entered is None where it
+                        // stopped at the event (the target angle reached
+                        // there): the same event, whatever the next phase
+                        a.kind == b.kind
+                            && a.which == b.which
+                            && (b.phase.is_none() || a.phase == b.phase)
                     })
             };
             rows.retain(|&(i, k)| {
@@ -328,9 +333,13 @@ impl Runs<'_> {
                 if same(k) {
                     let ev = &m.events[k];
                     let th = theta.to_float(q);
-                    if let Some(side) =
-                        motion::sides::side_of(&th, &ev.at.theta, &ev.theta_err, q, None)
-                    {
+                    if let Some(side) = motion::sides::angle_side(
+                        &th,
+                        &ev.at.theta,
+                        &ev.theta_err,
+                        q,
+                        self.model.direction(),
+                    ) {
                         // past the separation (or the end) by less than the
                         // digits asked resolve: the state at it
                         let at_end = (ev.kind == motion::Kind::Separation || ev.kind.ends())
@@ -361,7 +370,7 @@ impl Runs<'_> {
         self.req.target_side = target_side;
         motion::sides::apply_sides(first, &self.req)?;
         let (p1, _) = precisions(self.req.digits, 0);
-        motion::sides::trim_events(first, &self.req, p1);
+        motion::sides::trim_events(first, &self.req, p1, self.model.direction());
         Ok(())
     }
 }

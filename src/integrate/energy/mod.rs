@@ -229,15 +229,19 @@ impl Route {
     /// most of a cold `time_at`.
     pub fn scan_bracket(&mut self) -> Result<(Float, Float)> {
         if self.caches.scan_s.is_none() {
-            let coef = self.n12_coefficients(SCAN_PREC)?;
-            let th0 = self.work.start().theta0.to_float(SCAN_PREC);
-            let hi = Float::with_val(SCAN_PREC, rug::float::Constant::Pi) - &th0;
-            let zero = Float::new(SCAN_PREC);
-            let mut c = Float::new(SCAN_PREC);
+            // the heavier upper cylinder's scale in the coefficients, the
+            // lighter one's in N12 near θs: the bits of their ratio more
+            // (m2 = 10^30 m1 at 96 bits alone bracketed the wrong angle)
+            let sp = SCAN_PREC + roots::disparity_bits(self.work.params());
+            let coef = self.n12_coefficients(sp)?;
+            let th0 = self.work.start().theta0.to_float(sp);
+            let hi = Float::with_val(sp, rug::float::Constant::Pi) - &th0;
+            let zero = Float::new(sp);
+            let mut c = Float::new(sp);
             let bracket = crate::numeric::root::first_sign_change(&zero, &hi, SCAN_STEPS, |d| {
                 c.assign(&th0 + d);
                 c.cos_mut();
-                let mut v = Float::new(SCAN_PREC);
+                let mut v = Float::new(sp);
                 crate::numeric::poly::horner(&coef, &c, &mut v);
                 v
             });
@@ -263,9 +267,21 @@ impl Route {
             Some((v, _)) => v,
             None => {
                 let (lo, hi) = self.scan_bracket()?;
-                let e = self.engine(prec)?;
-                let v = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
-                if e.settings_are_default() {
+                // N12 near θs is of the lighter cylinder's scale, its terms
+                // of the heavier one's: refined with the bits of their
+                // ratio more (0 up to m2 = 2^16 m1), then rounded to prec
+                let extra = roots::disparity_bits(self.work.params());
+                let e = self.engine(prec + extra)?;
+                let (d, err) = e.refine_root("theta_s", &lo, &hi, |eng, d| eng.n12(d))?;
+                let default = e.settings_are_default();
+                let v = if extra == 0 {
+                    (d, err)
+                } else {
+                    let (dr, _) = Float::with_val_round(prec, &d, rug::float::Round::Nearest);
+                    let ulp = Float::with_val(prec, dr.abs_ref()) >> (prec as i32 - 1);
+                    (dr, Float::with_val(prec, &err) + ulp)
+                };
+                if default {
                     kept::put(&self.work, prec, kept::Fact::DeltaS, None, &v, 0.0);
                 }
                 v

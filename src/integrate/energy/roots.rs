@@ -175,7 +175,7 @@ impl Route {
 /// are of the upper cylinder's scale throughout (and isolating a branch
 /// point ~m2/m1 from θs beyond the digits asked would tell it apart at one
 /// working precision and not at the other).
-fn disparity_bits(p: &crate::model::Params) -> u32 {
+pub(super) fn disparity_bits(p: &crate::model::Params) -> u32 {
     let ratio = Float::with_val(64, Rational::from(&p.m2 / &p.m1));
     let e = ratio.get_exp().unwrap_or(0).max(0).unsigned_abs();
     // below 2^16 the 64 bits hold the dip with room to spare (tested to
