@@ -570,19 +570,6 @@ fn friction_input_errors_name_the_parameter() {
             vec!["separation", "--mu", "0.3,0.5"],
             "invalid mu = \"0.3,0.5\"",
         ),
-        // an explicit roll with μ = 0 was computed frictionless, silently
-        (
-            vec!["separation", "--floor", "roll", "--mu-floor", "0"],
-            "contradicts floor = roll",
-        ),
-        (
-            vec!["separation", "--contact", "roll", "--mu-contact", "0"],
-            "contradicts contact = roll",
-        ),
-        (
-            vec!["separation", "--floor", "roll", "--mu", "0,0"],
-            "contradicts floor = roll",
-        ),
         (vec!["separation", "--k2", "0", "--mu-contact", "1"], "k2"),
         (vec!["time", "--to", "0.05", "--mu-contact", "1"], "to"),
         (

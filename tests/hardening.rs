@@ -1863,6 +1863,26 @@ fn printed_ends_given_back_are_answered() {
         2,
         &["after the first impact"],
     );
+    // proved values are of the angle itself: past θs no enclosure is formed,
+    // the verified state at θs is given and says so (a review found
+    // `--rigorous` proving N12 < 0 there under the note "the state at
+    // theta_s")
+    let out = stdout_ok(&[
+        "forces",
+        "--theta0",
+        "1/10",
+        "--digits",
+        "12",
+        "--theta",
+        "1.05077206202",
+        "--rigorous",
+    ]);
+    assert!(
+        out.contains("N12                  = 0  [verified: 0 digits; not enclosed]"),
+        "{out}"
+    );
+    assert!(!out.contains("proved"), "{out}");
+    assert!(out.contains("the forces are not enclosed"), "{out}");
     // at 5 digits, an angle 2·10^-12 past θs is θs to those digits
     let n12 = value(
         &[

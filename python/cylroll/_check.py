@@ -29,8 +29,8 @@ _TEXT = ("mode",)
 
 def _num(x: Any) -> Any:
     """A JSON number, or the string ``inf``/``nan`` the report uses for a
-    non-finite one, as a float; ``"-"`` (no ratio: the ``mode`` column) as
-    None."""
+    non-finite one, as a float; ``"-"`` (no finite ratio: the ``mode``
+    column, a value off a zero limit) as None."""
     if x == "-":
         return None
     if isinstance(x, str):
@@ -45,8 +45,9 @@ class PhaseStats(NamedTuple):
     max_abs: float
     #: the time where it occurs
     max_abs_t: str
-    #: largest |err| / limit in the phase (None for ``mode``: its failures
-    #: are rows in another mode)
+    #: largest |err| / limit in the phase (None where there is no finite
+    #: ratio: ``mode``, whose failures are rows in another mode, or a value
+    #: off a zero limit)
     worst_err_over_limit: Optional[float]
     #: rows out of tolerance (``mode``: rows in another mode)
     failures: int
@@ -79,7 +80,8 @@ class ColumnStats(NamedTuple):
     #: the time where it occurs
     max_rel_t: str
     #: largest |candidate − oracle| / (atol + rtol·|oracle|): above 1 fails
-    #: (None for ``mode``, whose failures are rows in another mode)
+    #: (None where there is no finite ratio: ``mode``, or a value off a
+    #: zero limit)
     worst_err_over_limit: Optional[float]
     #: which term of that limit was the larger where it occurs: ``"atol"``
     #: (an oracle value near 0), ``"rtol"``, or ``"mode"``

@@ -9,10 +9,9 @@ fn rel_text(r: Option<f64>) -> String {
     r.map_or("-".into(), |r| format!("{r:.3e}"))
 }
 
-/// A number: a short decimal string, or (for Python) a JSON number; a
-/// non-finite one is the string `inf`/`nan` either way.
-/// err/limit as text: `-` where there is no ratio (the `mode` column,
-/// whose failures are rows in another mode, ranked above every ratio).
+/// err/limit as text: `-` where there is no finite ratio (the `mode`
+/// column, whose failures are rows in another mode, ranked above every
+/// ratio; a value off a zero limit, `--rtol 0 --atol 0`).
 fn ratio_text(x: f64) -> String {
     if x.is_finite() {
         format!("{x:.3e}")
@@ -22,7 +21,7 @@ fn ratio_text(x: f64) -> String {
 }
 
 /// err/limit in JSON: a number (a string with `strings`), `"-"` where
-/// there is no ratio ([`ratio_text`]).
+/// there is no finite ratio ([`ratio_text`]).
 fn ratio_json(x: f64, strings: bool) -> Value {
     if x.is_finite() {
         num(x, strings)
@@ -31,6 +30,8 @@ fn ratio_json(x: f64, strings: bool) -> Value {
     }
 }
 
+/// A number: a short decimal string, or (for Python) a JSON number; a
+/// non-finite one is the string `inf`/`nan` either way.
 fn num(x: f64, strings: bool) -> Value {
     if strings || !x.is_finite() {
         Value::String(if x.is_finite() {

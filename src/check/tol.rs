@@ -34,7 +34,6 @@ pub struct Override {
     pub atol: Option<f64>,
 }
 
-/// A tolerance value: finite and >= 0.
 /// A tolerance's text as a number: finite and >= 0, and either 0 or at
 /// least 1e-300 (a positive number below binary64's range would be read as
 /// 0, or as a subnormal of a few bits, and judged so); `None` otherwise.
@@ -52,6 +51,7 @@ pub fn tolerance_of(text: &str) -> Option<f64> {
     Some(v)
 }
 
+/// A tolerance value of `--tol` ([`tolerance_of`]).
 fn tol_value(name: &str, spec: &str, text: &str) -> Result<f64> {
     match tolerance_of(text) {
         Some(v) => Ok(v),

@@ -29,8 +29,9 @@ pub const FRICTION_KEYS: [&str; 2] = ["mu_floor", "mu_contact"];
 /// The law of one contact from its keyword (`floor` / `contact`: roll,
 /// slip, fixed, coulomb) and its coefficient (`mu_floor` / `mu_contact`),
 /// either of which may be absent: a coefficient applies to a rolling (or
-/// `coulomb`) contact; `0` agrees with `slip` (and contradicts an explicit
-/// `roll`), `inf` with `roll`; a held
+/// `coulomb`) contact; `0` agrees with `slip` (a rolling contact given μ = 0
+/// is frictionless: the Python package always sends `roll` with its
+/// coefficients), `inf` with `roll`; a held
 /// cylinder has no floor coefficient (`none` is accepted, as echoed).
 ///
 /// Errors: a keyword or coefficient that does not parse; a coefficient
@@ -67,16 +68,6 @@ pub fn law_of(vals: &Pairs, w: Which) -> Result<Law> {
     }
     let law = Law::parse_mu(mu_key, mu_text)?;
     match (&base, &law) {
-        // an explicit `roll` is a contact that can hold: μ = 0 (frictionless)
-        // contradicts it, as μ = ∞ contradicts `slip`
-        (Some(Law::Rolling), Law::Frictionless) => Err(Error::invalid(
-            mu_key,
-            mu_text,
-            format!(
-                "contradicts {kw_key} = roll (a frictionless contact cannot roll): \
-                 drop {kw_key} = roll, or give {kw_key} = slip"
-            ),
-        )),
         (Some(Law::Frictionless), Law::Frictionless) | (None | Some(Law::Rolling), _) => Ok(law),
         (Some(Law::Frictionless), _) => Err(Error::invalid(
             mu_key,

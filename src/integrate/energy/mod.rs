@@ -396,8 +396,9 @@ impl Route {
     /// δ = θ − θ0 (working frame) for a user angle, checked to lie in the
     /// motion. An angle past θs by less than `digits` significant digits
     /// resolve ([`crate::motion::sides::within_digits`]: θs as printed to
-    /// those digits, rounded up, is one) is answered at θs: δs is returned
-    /// (`digits` 0: refused, for a proof at the angle itself).
+    /// those digits, rounded to nearest, is one) is answered at θs: δs is
+    /// returned and [`Route::at_separation`] set (`digits` 0: refused, for
+    /// a proof at the angle itself).
     pub fn delta_of(&mut self, param: &str, theta: &Exact, p: u32, digits: u32) -> Result<Float> {
         let w = self.to_work(theta);
         let th0 = self.work.start().theta0.clone();

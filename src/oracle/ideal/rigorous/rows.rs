@@ -83,7 +83,10 @@ impl Oracle {
     /// Errors: θ outside the motion; an enclosure that cannot be formed (a
     /// normal force whose enclosure contains 0 for its ratio, at θs).
     pub fn rigorous_forces(&mut self, theta: &Exact, p: u32) -> Result<Vec<Option<Proved>>> {
-        // inside the motion, as the verified answer decides
+        // inside the motion, as the verified answer decides; an angle past
+        // θs, which the verified answer takes as θs to the digits asked, is
+        // refused here: the proof is of the angle itself
+        self.route.delta_of("theta", theta, 64, 0)?;
         self.forces_at(theta)?;
         let k = self.consts(p);
         let th = Iv::exact(p, &self.route.to_work(theta));
