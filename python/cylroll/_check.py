@@ -10,6 +10,8 @@ not unique. The report's attribute names are the keys of
 from __future__ import annotations
 
 import csv
+import decimal
+import fractions
 import io
 import json
 import os
@@ -293,9 +295,41 @@ def _cell(name: str, x: Any) -> str:
         raise TypeError(f"column {name}: a bool is not a number")
     if isinstance(x, (int, np.integer)):
         return str(int(x))
+    # exact numbers are judged as they are, not through a float64
+    if isinstance(x, decimal.Decimal):
+        return str(x)
+    if isinstance(x, fractions.Fraction):
+        return _fraction_text(name, x)
+    if isinstance(x, np.floating) and np.finfo(x.dtype).nmant > 52:
+        # a wider float (longdouble): its own shortest round-trip decimal
+        return np.format_float_scientific(x, unique=True).replace(".e", "e")
     # the shortest decimal that reads back as the same float (inf and nan
     # are refused by the core, with the row named)
     return repr(float(x))
+
+
+def _fraction_text(name: str, x: fractions.Fraction) -> str:
+    """The exact decimal of a Fraction whose denominator is 2^a 5^b; any
+    other is refused (it has no decimal, and a rounding would be judged)."""
+    d = x.denominator
+    a = b = 0
+    while d % 2 == 0:
+        d //= 2
+        a += 1
+    while d % 5 == 0:
+        d //= 5
+        b += 1
+    if d != 1:
+        raise ValueError(
+            f"column {name}: {x} has no exact decimal: give it as a decimal string or a "
+            f"Decimal (the candidate is judged as written, not rounded)"
+        )
+    k = max(a, b)
+    # x·10^k is an integer: its digits with the point k places from the right
+    n = x.numerator * 10**k // x.denominator
+    sign = "-" if n < 0 else ""
+    digits = str(abs(n)).rjust(k + 1, "0")
+    return f"{sign}{digits[:-k]}.{digits[-k:]}" if k else f"{sign}{digits}"
 
 
 def _from_mapping(cand: Any) -> Tuple[List[str], List[List[str]]]:

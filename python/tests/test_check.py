@@ -199,3 +199,32 @@ def test_the_earlier_helper_is_the_same_check(golden_dir):
                                 rtol=1e-12, atol=1e-14)
     assert rep.passed
     assert json.loads(json.dumps(rep.to_dict()))["case"] == "main_mu_0_3"
+
+
+def test_exact_cells_are_judged_as_they_are():
+    """Decimal, Fraction and longdouble cells went through float64: an exact
+    25-digit candidate failed at rtol 1e-20, a Fraction time was judged at
+    0.3333333333333333. Now a Decimal is its own text, a Fraction with a
+    terminating decimal its exact decimal, any other Fraction refused."""
+    import numpy as np
+    from decimal import Decimal
+    from fractions import Fraction
+
+    m = cylroll.golden.case("mujoco_main")
+    t = ["0", "0.5", "1"]
+    th = [v.decimal() for v in m.trajectory(t, digits=30).values("theta")]
+    assert all(isinstance(x, Decimal) for x in th)
+    rep = cylroll.check({"t": t, "theta": th}, "mujoco_main", rtol=1e-20, atol=0, digits=25)
+    assert rep.verdict == "pass", str(rep)
+    ft = [Fraction(0), Fraction(1, 2), Fraction(1)]
+    rep = cylroll.check({"t": ft, "theta": th}, "mujoco_main", rtol=1e-20, atol=0, digits=25)
+    assert rep.verdict == "pass", str(rep)
+    # as floats the same values fail there (what the cells were before)
+    fl = [float(x) for x in th]
+    assert cylroll.check({"t": t, "theta": fl}, "mujoco_main", rtol=1e-20, atol=0,
+                         digits=25).verdict == "fail"
+    with pytest.raises(ValueError, match="1/3 has no exact decimal"):
+        cylroll.check({"t": [Fraction(1, 3)], "theta": ["0.1"]}, "mujoco_main")
+    # a longdouble keeps its own digits (its shortest round-trip decimal)
+    from cylroll._check import _cell
+    assert _cell("theta", np.longdouble("0.1")) in ("1e-01", "0.1")
