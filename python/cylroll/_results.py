@@ -398,7 +398,11 @@ class Trajectory(_Motion):
         head = (f"Trajectory: {n} row{'s' if n != 1 else ''} x {len(self.columns)} columns "
                 f"({self.digits} digits requested; every digit shown is verified)")
         show = list(range(n)) if n <= 8 else [0, 1, 2, 3, None, n - 3, n - 2, n - 1]
-        cols = ["t", "theta", "theta_dot", "N12"]
+        # t, θ, θ̇ and N12 where the table has them, else its first four columns
+        # (a table made with ``columns=``)
+        cols = [c for c in ("t", "theta", "theta_dot", "N12") if c in self.columns]
+        if not cols:
+            cols = list(self.columns[:4])
         lines = [head, "  " + "  ".join(f"{c:<18}" for c in cols) + "  mode"]
         for i in show:
             if i is None:

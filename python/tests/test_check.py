@@ -228,3 +228,13 @@ def test_exact_cells_are_judged_as_they_are():
     # a longdouble keeps its own digits (its shortest round-trip decimal)
     from cylroll._check import _cell
     assert _cell("theta", np.longdouble("0.1")) in ("1e-01", "0.1")
+
+
+def test_an_unreadable_candidate_is_an_input_file_error(tmp_path):
+    """A candidate path that cannot be read raised InvalidParameterError (a
+    ValueError), so ``except OSError`` missed it; it is the documented
+    InputFileError, as a parameter file's."""
+    for bad in (tmp_path / "nonexistent.csv", tmp_path):
+        with pytest.raises(cylroll.InputFileError, match="cannot be read") as e:
+            cylroll.check(str(bad), "main_roll_roll")
+        assert isinstance(e.value, OSError) and e.value.exit_code == 2

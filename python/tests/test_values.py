@@ -242,6 +242,12 @@ def test_trajectory_columns_carry_the_digits_of_the_full_table():
         for c in cols:
             assert [v.text for v in part.values(c)] == [v.text for v in full.values(c)], c
         assert part.to_numpy().shape == (len(times), len(cols))
+        # its text shows the columns it has (it raised ValueError for a
+        # table without t, theta_dot or N12, so pytest could not show it)
+        text = repr(part)
+        assert text.startswith(f"Trajectory: {len(times)} rows x {len(cols)} columns")
+        shown = [c for c in ("t", "theta", "theta_dot", "N12") if c in cols] or cols[:4]
+        assert text.splitlines()[1].split() == shown + ["mode"]
     with pytest.raises(cylroll.InvalidParameterError, match="columns"):
         m.trajectory(times, digits=10, columns=["theta", "nope"])
     with pytest.raises(cylroll.InvalidParameterError, match="only once"):

@@ -85,8 +85,12 @@ impl Source for File {
         &self.name
     }
     fn open(&self) -> Result<Box<dyn BufRead + '_>> {
-        let f = std::fs::File::open(&self.path)
-            .map_err(|e| refuse(&self.name, format!("cannot be read: {e}")))?;
+        // a file that cannot be opened is an input file's error (as a
+        // parameter file's), not a malformed candidate
+        let f = std::fs::File::open(&self.path).map_err(|e| Error::Io {
+            path: self.name.clone(),
+            what: format!("cannot be read: {e}"),
+        })?;
         Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, f)))
     }
 }
@@ -313,7 +317,10 @@ fn next_line<R: BufRead + ?Sized>(
     let n = r
         .take(MAX_LINE_BYTES + 1)
         .read_until(b'\n', buf)
-        .map_err(|e| refuse(source, format!("cannot be read: {e}")))?;
+        .map_err(|e| Error::Io {
+            path: source.to_string(),
+            what: format!("cannot be read: {e}"),
+        })?;
     if n == 0 {
         return Ok(None);
     }
