@@ -338,3 +338,40 @@ fn a_light_upper_cylinder_separates_as_on_a_fixed_one() {
         }
     }
 }
+
+/// An upper cylinder 10^30 times the lower one, on a frictionless floor or
+/// with a frictionless contact: θs by the polynomial route
+/// (`separation_angle`: the polynomial in cos θ, isolated at 64 bits and
+/// its coefficients' magnitude) against the energy route's θs (the root of
+/// N12 along the quadrature's δ, which lost the lighter cylinder's terms at
+/// most digits before it carried the bits of the mass ratio; at 30 digits:
+/// `separation --m2 1e30 --floor slip`, `--contact slip`), at every digits.
+#[test]
+fn a_heavy_upper_cylinder_by_both_routes() {
+    for (floor, contact, want) in [
+        (
+            Floor::Slip,
+            Contact::Roll,
+            "0.392634623838569937619437696974",
+        ),
+        (
+            Floor::Roll,
+            Contact::Slip,
+            "0.343088606583533745971213131719",
+        ),
+    ] {
+        let m = model(floor, contact, "1/2", "1e30", "1/10");
+        let want = Float::with_val(256, Float::parse(want).unwrap());
+        for digits in [3u32, 10, 15, 20] {
+            let mut o = Oracle::new(&m, digits).unwrap();
+            let v = o
+                .separation_angle()
+                .unwrap_or_else(|e| panic!("{floor:?}/{contact:?} {digits}: {e}"));
+            assert_eq!(
+                v.text,
+                to_sig(&want, digits),
+                "{floor:?}/{contact:?} {digits}"
+            );
+        }
+    }
+}

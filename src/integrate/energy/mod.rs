@@ -109,7 +109,9 @@ pub struct Route {
     /// What depends only on the model and a precision.
     pub caches: Caches,
     /// Set by [`Route::delta_of`] when it answered an angle past θs by less
-    /// than the digits asked resolve at θs itself (for the answer's note).
+    /// than the digits asked resolve at θs itself (for the answer's note);
+    /// never cleared by the route (`oracle::time` and `oracle::forces` read
+    /// it from a route of their own): a caller reusing a route clears it.
     pub at_separation: bool,
 }
 

@@ -23,6 +23,7 @@ pub mod rigorous;
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::integrate::energy::{Route, SCAN_PREC};
+use crate::mechanics::polys::HPoly;
 use crate::model::{Contact, Floor, Ideal};
 use crate::numeric::verify::{ladder, ladder_runs, ladder_table, Estimate, Run, Verified};
 use rug::{Assign, Float};
@@ -217,6 +218,33 @@ impl Oracle {
         })
     }
 
+    /// The branch point's δ* isolated at 64 bits, with the free normal
+    /// acceleration's polynomial: (polynomial, δ*, its error), or `None`
+    /// where the motion has none (a held lower cylinder, ρ̈_free > 0 from the
+    /// start, no root before θs, or one coinciding with θs within 4× the two
+    /// bounds; `ds` δs and `ds_err` its bound).
+    fn branch_delta(
+        &mut self,
+        ds: &Float,
+        ds_err: &Float,
+    ) -> Result<Option<(HPoly, Float, Float)>> {
+        if self.model.floor() == Floor::Fixed {
+            return Ok(None);
+        }
+        let hp = self.route.free_normal_poly();
+        if self.route.sign_at_start(&hp)? > 0 {
+            return Ok(None);
+        }
+        let Some((d, err)) = self.route.first_root("branch point", &hp, None, ds, 64)? else {
+            return Ok(None);
+        };
+        let gap = Float::with_val(64, &d - ds).abs();
+        if gap <= Float::with_val(64, &err + ds_err) * 4u32 || d > *ds {
+            return Ok(None);
+        }
+        Ok(Some((hp, d, err)))
+    }
+
     /// θ*, the branch point: the first angle past θ0, before θs, where the
     /// free relative normal acceleration r θ̇² − g cos θ turns positive while
     /// the cylinders press on each other — from there parting is as lawful
@@ -230,24 +258,11 @@ impl Oracle {
     ///
     /// Errors: a root the refinement cannot verify.
     pub fn branch_point(&mut self, theta_s: &Verified) -> Result<Option<Verified>> {
-        if self.model.floor() == Floor::Fixed {
-            return Ok(None);
-        }
-        let hp = self.route.free_normal_poly();
-        if self.route.sign_at_start(&hp)? > 0 {
-            return Ok(None);
-        }
         let th0 = self.route.work.start().theta0.to_float(64);
         let ds = Float::with_val(64, theta_s.value.clone().abs() - th0.abs());
-        let Some((d, err)) = self.route.first_root("branch point", &hp, None, &ds, 64)? else {
+        let Some((hp, _, _)) = self.branch_delta(&ds, &theta_s.err_bound)? else {
             return Ok(None);
         };
-        // coinciding with θs within both bounds: no branch point
-        let gap = Float::with_val(64, &d - &ds).abs();
-        let tol = Float::with_val(64, &err + &theta_s.err_bound) * 4u32;
-        if gap <= tol || d > ds {
-            return Ok(None);
-        }
         let v = ladder(self.digits, &["theta_indeterminate"], |p| {
             let (ds, _) = self.route.delta_s(p)?;
             let (d, err) = self
@@ -276,22 +291,10 @@ impl Oracle {
     /// Errors: as [`Oracle::branch_point`]'s isolation.
     pub fn branch_window_note(&mut self, theta: &Exact) -> Result<Option<String>> {
         const P: u32 = 64;
-        if self.model.floor() == Floor::Fixed {
-            return Ok(None);
-        }
-        let hp = self.route.free_normal_poly();
-        if self.route.sign_at_start(&hp)? > 0 {
-            return Ok(None);
-        }
         let (ds, ds_err) = self.route.delta_s(P)?;
-        let Some((d, err)) = self.route.first_root("branch point", &hp, None, &ds, P)? else {
+        let Some((_, d, err)) = self.branch_delta(&ds, &ds_err)? else {
             return Ok(None);
         };
-        // coinciding with θs within both bounds (as branch_point): none
-        let gap = Float::with_val(P, &d - &ds).abs();
-        if gap <= Float::with_val(P, &err + &ds_err) * 4u32 || d > ds {
-            return Ok(None);
-        }
         let th0 = self.route.work.start().theta0.to_float(P);
         let dq = Float::with_val(P, self.route.to_work(theta).to_float(P) - &th0);
         if Float::with_val(P, &dq + &err) < d {
@@ -304,7 +307,7 @@ impl Oracle {
              part, up to theta_s): the values are on the branch where they stay together (the \
              branch followed); on --branch part the cylinders have parted at \
              theta_indeterminate and this angle is reached in flight, if at all",
-            crate::numeric::decimal::to_sig(&th_star, 12)
+            crate::numeric::decimal::approx_text(&th_star)
         )))
     }
 
