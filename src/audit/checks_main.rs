@@ -14,7 +14,8 @@ use super::truth::{self, Case, StartKind, Sys, PREC};
 use crate::error::Result;
 use crate::mechanics::Reduced;
 use crate::model::{Contact, Floor};
-use crate::numeric::decimal::short;
+// residuals are measurements, not bounds: quoted to nearest
+use crate::numeric::decimal::short_near as short;
 use crate::paper::{sec2, Sym, X};
 use rug::Rational;
 

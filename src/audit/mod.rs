@@ -36,7 +36,8 @@ pub mod truth;
 
 use crate::error::{Error, Result};
 use crate::exact::rational_text;
-use crate::numeric::decimal::{short, to_sig};
+// residuals are measurements, not bounds: quoted to nearest
+use crate::numeric::decimal::{short_near as short, to_sig};
 use crate::paper::{self, Printed};
 use ctx::Ctx;
 use finding::{Finding, Verdict};

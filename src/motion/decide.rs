@@ -142,7 +142,7 @@ fn disparity(ctx: &Ctx) -> Option<(String, bool)> {
         return Some((
             format!(
                 "the masses differ by a factor {}",
-                crate::numeric::decimal::short(&Float::with_val(64, &r))
+                crate::numeric::decimal::short_near(&Float::with_val(64, &r))
             ),
             true,
         ));
@@ -152,7 +152,7 @@ fn disparity(ctx: &Ctx) -> Option<(String, bool)> {
             return Some((
                 format!(
                     "{name} = {} leaves a spin almost without inertia",
-                    crate::numeric::decimal::short(&Float::with_val(64, k))
+                    crate::numeric::decimal::short_near(&Float::with_val(64, k))
                 ),
                 true,
             ));
@@ -174,8 +174,8 @@ fn disparity(ctx: &Ctx) -> Option<(String, bool)> {
                     "the common rolling rate omega0 = {} makes the bodies' speeds {} times the \
                      motion's own (sqrt(g (r1 + r2))), and the slip speeds, their differences, \
                      lose that much at this precision (a higher --digits keeps more)",
-                    crate::numeric::decimal::short(&Float::with_val(64, w0)),
-                    crate::numeric::decimal::short(&ratio)
+                    crate::numeric::decimal::short_near(&Float::with_val(64, w0)),
+                    crate::numeric::decimal::short_near(&ratio)
                 ),
                 false,
             ));

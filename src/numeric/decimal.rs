@@ -7,10 +7,16 @@ use rug::{Assign, Float};
 /// as (sign, digit string of length `digits`, decimal exponent e) meaning
 /// ±0.d1d2…·10^e. `None` for zero or non-finite values.
 pub fn round_sig(x: &Float, digits: u32) -> Option<(bool, String, i64)> {
+    round_sig_dir(x, digits, Round::Nearest)
+}
+
+/// [`round_sig`] rounded in the direction `round` (toward +∞ for
+/// `Round::Up`, as MPFR rounds its decimal output).
+pub fn round_sig_dir(x: &Float, digits: u32, round: Round) -> Option<(bool, String, i64)> {
     if x.is_zero() || !x.is_finite() {
         return None;
     }
-    let s = x.to_string_radix_round(10, Some(digits as usize), Round::Nearest);
+    let s = x.to_string_radix_round(10, Some(digits as usize), round);
     // forms: "-1.2345e-7", "1.2345", "1.2345e12"
     let (neg, s) = match s.strip_prefix('-') {
         Some(r) => (true, r),
@@ -307,7 +313,9 @@ fn push_u64(buf: &mut Vec<u8>, mut v: u64, width: usize) {
     buf.extend_from_slice(&tmp[start..]);
 }
 
-/// Plain text of ±0.d·10^e: positional when −7 ≤ e ≤ 21, else `d.ddde±x`.
+/// Plain text of ±0.d·10^e: positional when −7 ≤ e ≤ 21 and the integer
+/// part has no more digits than `d` (so that every digit printed is one of
+/// `d`, never a padding zero: 100 to 1 digit is `1e2`), else `d.ddde±x`.
 pub fn render(neg: bool, d: &str, e: i64) -> String {
     let n = d.len() as i64;
     let mut out = String::with_capacity(d.len() + 10);
@@ -315,14 +323,13 @@ pub fn render(neg: bool, d: &str, e: i64) -> String {
         out.push('-');
     }
     let zeros = |out: &mut String, k: i64| out.extend(std::iter::repeat_n('0', k.max(0) as usize));
-    if (-6..=21).contains(&e) {
+    if (-6..=21).contains(&e) && e <= n {
         if e <= 0 {
             out.push_str("0.");
             zeros(&mut out, -e);
             out.push_str(d);
-        } else if e >= n {
+        } else if e == n {
             out.push_str(d);
-            zeros(&mut out, e - n);
         } else {
             let (a, b) = d.split_at(e as usize);
             out.push_str(a);
@@ -350,9 +357,27 @@ pub fn to_sig(x: &Float, digits: u32) -> String {
     }
 }
 
-/// A short (3-digit) rendering of a non-negative error bound, e.g. `2.1e-41`.
+/// A short (2-digit) rendering of a non-negative upper bound, e.g.
+/// `2.2e-41` for 2.13e-41: rounded up, so that the bound printed is still a
+/// bound (|err| <= the text).
 pub fn short(x: &Float) -> String {
-    match round_sig(x, 2) {
+    short_dir(x, Round::Up)
+}
+
+/// A short (2-digit) rendering of a non-negative lower bound, rounded down
+/// (the text <= the value).
+pub fn short_down(x: &Float) -> String {
+    short_dir(x, Round::Down)
+}
+
+/// A short (2-digit) rendering of a number that is not a bound (a
+/// parameter, a ratio, quoted in a message), rounded to nearest.
+pub fn short_near(x: &Float) -> String {
+    short_dir(x, Round::Nearest)
+}
+
+fn short_dir(x: &Float, round: Round) -> String {
+    match round_sig_dir(x, 2, round) {
         Some((_, d, e)) => format!("{}.{}e{}", &d[..1], &d[1..], e - 1),
         None => "0".to_string(),
     }
@@ -538,12 +563,23 @@ mod tests {
         let p = 200;
         let pi = Float::with_val(p, rug::float::Constant::Pi);
         assert_eq!(to_sig(&pi, 5), "3.1416");
-        assert_eq!(to_sig(&Float::with_val(p, &pi * 1000u32), 3), "3140");
+        // no padding zero is printed as if it were a digit
+        assert_eq!(to_sig(&Float::with_val(p, &pi * 1000u32), 3), "3.14e3");
+        assert_eq!(to_sig(&Float::with_val(p, &pi * 1000u32), 4), "3142");
+        assert_eq!(to_sig(&Float::with_val(p, 100), 1), "1e2");
+        assert_eq!(to_sig(&Float::with_val(p, 14383358069470040.4f64), 15), "1.43833580694700e16");
         assert_eq!(to_sig(&Float::with_val(p, &pi / 100000u32), 3), "0.0000314");
         assert_eq!(to_sig(&Float::with_val(p, &pi / 1e12), 3), "3.14e-12");
         assert_eq!(to_sig(&Float::with_val(p, -0.5), 2), "-0.50");
         assert_eq!(to_sig(&Float::with_val(p, 9.9996), 4), "10.00");
         assert_eq!(to_sig(&Float::with_val(p, 1e30), 2), "1.0e30");
-        assert_eq!(short(&Float::with_val(p, 2.13e-41)), "2.1e-41");
+        // bounds: an upper bound rounds up, a lower bound down, an exact
+        // two-digit value stays
+        assert_eq!(short(&Float::with_val(p, 2.13e-41)), "2.2e-41");
+        assert_eq!(short_down(&Float::with_val(p, 2.17e-41)), "2.1e-41");
+        assert_eq!(short(&Float::with_val(p, 6.82e-34)), "6.9e-34");
+        assert_eq!(short(&Float::with_val(p, 9.91e-3)), "1.0e-2");
+        assert_eq!(short(&Float::with_val(p, 0.25)), "2.5e-1");
+        assert_eq!(short_down(&Float::with_val(p, 0.25)), "2.5e-1");
     }
 }

@@ -210,7 +210,7 @@ fn energy_note((drift, unit): &(Float, Float)) -> String {
         // the balance was verified relative to the energy's own scale
         note.push_str(&format!(
             ", the energy itself |E(0)| = {} m2 g r (E's zero at cylinder 1's centre)",
-            crate::numeric::decimal::short(unit)
+            crate::numeric::decimal::short_near(unit)
         ));
     }
     note

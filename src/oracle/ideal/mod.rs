@@ -565,10 +565,12 @@ pub fn friction_ratio(
         .remove(0)
     } else if nv.digits == 0 && fv.digits > 0 {
         let p = fv.value.prec();
-        let lower = Float::with_val(p, fv.value.abs_ref()) / &nv.err_bound;
+        // |F| >= |F~| − err(F) and N <= bound(N): the ratio is at least
+        // their quotient (rounded down when printed)
+        let lower = (Float::with_val(p, fv.value.abs_ref()) - &fv.err_bound) / &nv.err_bound;
         Verified {
             name: key.to_string(),
-            text: format!(">={}", crate::numeric::decimal::short(&lower)),
+            text: format!(">={}", crate::numeric::decimal::short_down(&lower)),
             value: lower,
             digits: 0,
             err_bound: Float::with_val(p, f64::INFINITY),

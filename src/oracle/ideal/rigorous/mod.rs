@@ -114,8 +114,8 @@ impl Proved {
 
 impl Proved {
     /// The enclosure as decimal text (mid, rad): mid to `digits` + 5
-    /// significant digits, rad rounded up so that [mid − rad, mid + rad] as
-    /// printed still contains the enclosure.
+    /// significant digits, rad (from the printed mid) rounded up so that
+    /// [mid − rad, mid + rad] as printed still contains the enclosure.
     pub fn texts(&self, digits: u32) -> (String, String) {
         let (mid, _) = self.iv.mid_rad();
         let mid_text = crate::numeric::decimal::to_sig(&mid, digits + 5);
@@ -129,8 +129,7 @@ impl Proved {
         let b = Rational::from(&mid_q - &lo_q);
         let r = if a > b { a } else { b };
         let r = Float::with_val_round(p, &r, Round::Up).0;
-        // 2 significant digits rounded to nearest err by < 5%: print 6% more
-        let r = Float::with_val_round(p, &r * 1.06f64, Round::Up).0;
+        // printed with 2 significant digits rounded up
         (mid_text, crate::numeric::decimal::short(&r))
     }
 }
