@@ -14,13 +14,16 @@ import decimal
 import fractions
 import io
 import json
+import numbers
 import os
+from decimal import Decimal, localcontext
+from fractions import Fraction
 from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
 
 from . import _cylroll
-from ._model import Model, _digits
+from ._model import Model, _count, _digits
 
 __all__ = ["check", "CheckReport", "ColumnStats", "PhaseStats", "FirstFailure", "Phase",
            "EventVerdict", "BranchReport"]
@@ -361,15 +364,43 @@ def _csv_text(names: List[str], rows: List[List[str]]) -> str:
     return buf.getvalue()
 
 
-def _tols(tol: Optional[Mapping[str, Any]]) -> List[Tuple[str, float, Optional[float]]]:
+def _tol_text(name: str, x: Any) -> str:
+    """A tolerance as the decimal text the library reads (as the command
+    line's): a float as its shortest repr, an int, ``Decimal`` or text as
+    given, a ``Fraction`` to 17 significant digits (so that 1e-400 stays
+    itself, refused, and is not read as 0)."""
+    if isinstance(x, bool):
+        raise TypeError(f"{name}: expected a number, got bool")
+    if isinstance(x, str):
+        return x
+    if isinstance(x, Decimal):
+        return str(x)
+    if isinstance(x, numbers.Integral):
+        return str(int(x))
+    if isinstance(x, Fraction):
+        if x < 0:
+            return "-" + _tol_text(name, -x)
+        with localcontext() as c:
+            c.prec = 17
+            return str(Decimal(x.numerator) / Decimal(x.denominator))
+    if isinstance(x, numbers.Real):
+        return repr(float(x))
+    raise TypeError(f"{name}: expected a number, got {type(x).__name__}")
+
+
+def _tols(tol: Optional[Mapping[str, Any]]) -> List[Tuple[str, str, Optional[str]]]:
+    if tol is not None and not hasattr(tol, "items"):
+        raise TypeError(f"tol: expected a mapping of column -> rtol or (rtol, atol), got {type(tol).__name__}")
     out = []
     for column, v in (tol or {}).items():
+        name = f"tol[{column!r}]"
         if isinstance(v, (tuple, list)):
             if len(v) != 2:
-                raise ValueError(f"tol[{column!r}]: expected rtol or (rtol, atol), got {v!r}")
-            out.append((str(column), float(v[0]), None if v[1] is None else float(v[1])))
+                raise ValueError(f"{name}: expected rtol or (rtol, atol), got {v!r}")
+            out.append((str(column), _tol_text(name, v[0]),
+                        None if v[1] is None else _tol_text(name, v[1])))
         else:
-            out.append((str(column), float(v), None))
+            out.append((str(column), _tol_text(name, v), None))
     return out
 
 
@@ -385,6 +416,7 @@ def check(
     event_tol: Optional[float] = None,
     digits: int = 20,
     past_end: str = "report",
+    max_rows: Optional[int] = None,
 ) -> CheckReport:
     """Judges another program's table against the oracle: the command line's
     ``cylroll check``, by the same scoring core.
@@ -420,7 +452,12 @@ def check(
     ``part_at`` an angle. ``event_tol``: the tolerance of an event in radians
     of θ (default 1e-3). ``past_end``: rows after the end of the model (the
     first impact) are left out and reported (``"report"``) or refused
-    (``"refuse"``).
+    (``"refuse"``). ``max_rows``: the largest number of data rows accepted
+    (default 1 000 000, at most 10^8; the candidate is read in chunks).
+
+    Tolerances (``rtol``, ``atol``, ``tol``'s values, ``event_tol``) are
+    numbers or their text: 0, or finite from 1e-300 on (a smaller one would
+    be judged as 0 or as a subnormal of a few bits, and is refused).
 
     Returns a :class:`CheckReport`; raises :class:`InvalidParameterError`
     (a ``ValueError``) for a malformed candidate, naming the row, and
@@ -444,8 +481,9 @@ def check(
         raise TypeError(f"branch: expected 'auto', 'stay' or 'part', got {type(branch).__name__}")
     if part_at is not None and not isinstance(part_at, str):
         part_at = repr(float(part_at))
-    d = _cylroll.check(text, path, source, case_name, pairs, float(rtol), float(atol),
-                       _tols(tol), branch, part_at,
-                       None if event_tol is None else float(event_tol), _digits(digits),
-                       str(past_end))
+    rows = None if max_rows is None else _count("max_rows", max_rows, 100_000_000)
+    d = _cylroll.check(text, path, source, case_name, pairs, _tol_text("rtol", rtol),
+                       _tol_text("atol", atol), _tols(tol), branch, part_at,
+                       None if event_tol is None else _tol_text("event_tol", event_tol),
+                       _digits(digits), str(past_end), rows)
     return CheckReport(d)

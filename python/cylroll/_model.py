@@ -166,8 +166,20 @@ class Model:
 
     def replace(self, *, allow_float: bool = False, **changes: Any) -> "Model":
         """A copy with some parameters changed (the constructor's keywords;
-        ``mu_floor=None`` removes a coefficient; ``mu`` sets both)."""
+        ``mu_floor=None`` removes a coefficient; ``mu`` sets both).
+
+        A new law replaces its contact's friction: ``floor=`` drops the
+        model's ``mu_floor`` and ``contact=`` its ``mu_contact``, unless the
+        same call gives them, so ``Model(mu="0.3").replace(floor="roll")``
+        is a rolling floor under a Coulomb contact (the coefficient would
+        otherwise remain that contact's law)."""
+        for k, allowed in (("floor", "'roll', 'slip' or 'fixed'"), ("contact", "'roll' or 'slip'")):
+            if k in changes and not isinstance(changes[k], str):
+                raise TypeError(f"{k}: expected {allowed}, got {type(changes[k]).__name__}")
         pairs = dict(self._pairs)
+        for law, coef in (("floor", "mu_floor"), ("contact", "mu_contact")):
+            if law in changes and coef not in changes and "mu" not in changes:
+                pairs.pop(coef, None)
         if "mu" in changes:
             mu = changes.pop("mu")
             if "mu_floor" in changes or "mu_contact" in changes:

@@ -75,12 +75,12 @@ fn py_error(py: Python<'_>, e: &Error) -> PyErr {
             "invalid_parameter",
             vec![
                 // the keyword's spelling in Python (the library names flags)
-                ("name", name.replace('-', "_")),
+                ("name", python_name(name)),
                 ("value", value.clone()),
-                ("allowed", allowed.clone()),
+                ("allowed", python_words(allowed)),
             ],
         ),
-        Error::NotPhysical { what } => ("not_physical", vec![("what", what.clone())]),
+        Error::NotPhysical { what } => ("not_physical", vec![("what", python_words(what))]),
         Error::NotConverged {
             quantity,
             requested,
@@ -92,7 +92,7 @@ fn py_error(py: Python<'_>, e: &Error) -> PyErr {
                 ("quantity", quantity.clone()),
                 ("requested", requested.to_string()),
                 ("reached", reached.clone()),
-                ("detail", detail.clone()),
+                ("detail", python_words(detail)),
             ],
         ),
         Error::NoSignChange { quantity, lo, hi } => (
@@ -113,10 +113,68 @@ fn py_error(py: Python<'_>, e: &Error) -> PyErr {
     };
     let build = || -> PyResult<PyErr> {
         let make = py.import("cylroll._errors")?.getattr("_from_library")?;
-        let exc = make.call1((kind, e.to_string(), e.exit_code(), fields))?;
+        let exc = make.call1((kind, python_message(e), e.exit_code(), fields))?;
         Ok(PyErr::from_value(exc))
     };
     build().unwrap_or_else(|err| err)
+}
+
+/// A parameter's name as the Python keyword: the command line's `to` (the
+/// angle of `time`) is `theta`, a flag's hyphens are underscores.
+fn python_name(name: &str) -> String {
+    match name {
+        "to" => "theta".to_string(),
+        n => n.replace('-', "_"),
+    }
+}
+
+/// A library text as a Python user reads it: the command line's flags
+/// become the keywords that ask the same (`--branch part` is
+/// `branch="part"`, `--part-at` `part_at`, `--digits` `digits`, `--params
+/// FILE` `Model.from_toml(FILE)`, …); nothing else changes.
+fn python_words(text: &str) -> String {
+    let text = text
+        .replace("--branch part", "branch=\"part\"")
+        .replace("--params FILE", "Model.from_toml(FILE)")
+        .replace("--params", "Model.from_toml");
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text.as_str();
+    while let Some(i) = rest.find("--") {
+        out.push_str(&rest[..i]);
+        let after = &rest[i + 2..];
+        let end = after
+            .find(|c: char| !(c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'))
+            .unwrap_or(after.len());
+        let flag = &after[..end];
+        if flag.starts_with(|c: char| c.is_ascii_lowercase()) {
+            out.push_str(&python_name(flag.trim_end_matches('-')));
+            out.push_str(&flag[flag.trim_end_matches('-').len()..]);
+        } else {
+            out.push_str("--");
+            out.push_str(flag);
+        }
+        rest = &after[end..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// An error's message in Python's words ([`python_words`]; an invalid
+/// parameter named by its keyword).
+fn python_message(e: &Error) -> String {
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            allowed,
+        } => Error::InvalidParameter {
+            name: python_name(name),
+            value: value.clone(),
+            allowed: python_words(allowed),
+        }
+        .to_string(),
+        other => python_words(&other.to_string()),
+    }
 }
 
 fn internal(py: Python<'_>, what: String) -> PyErr {
@@ -266,7 +324,8 @@ fn events(a: &Answer) -> Vec<Event> {
 fn answer_dict<'py>(py: Python<'py>, a: &Answer) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     d.set_item("values", values(&a.values))?;
-    d.set_item("notes", a.notes.clone())?;
+    let notes: Vec<String> = a.notes.iter().map(|n| python_words(n)).collect();
+    d.set_item("notes", notes)?;
     d.set_item("events", events(a))?;
     d.set_item("start_mode", a.start_mode.map(|m| m.tag()))?;
     d.set_item("end", a.end.map(|e| e.name()))?;
@@ -557,8 +616,22 @@ fn run_check(
     }
 }
 
-/// A tolerance override (column, rtol, atol or None) as the library's.
-type TolOverride = (String, f64, Option<f64>);
+/// A tolerance override (column, rtol, atol or None), each number as the
+/// decimal text Python gave (read as the command line's `--tol`).
+type TolOverride = (String, String, Option<String>);
+
+/// A tolerance's text as the command line reads it
+/// ([`cylroll::check::tolerance_of`]: 0, or a finite number from 1e-300
+/// on), or an error naming the keyword.
+fn tolerance(name: &str, text: &str) -> cylroll::Result<f64> {
+    cylroll::check::tolerance_of(text).ok_or_else(|| {
+        Error::invalid(
+            name,
+            text,
+            "must be a finite number >= 0: 0, or from 1e-300 on (e.g. 1e-8)",
+        )
+    })
+}
 
 /// `check`: judges a candidate (CSV text, or the path of a CSV file)
 /// against a golden case (by name) or a model (key/value pairs) with the
@@ -566,7 +639,7 @@ type TolOverride = (String, f64, Option<f64>);
 /// "text": the table, "passed": bool, "verdict": "pass" | "fail" |
 /// "undecided"}`.
 #[pyfunction]
-#[pyo3(signature = (csv, path, source, case_name, pairs, rtol, atol, tols, branch, part_at, event_tol, digits, past_end))]
+#[pyo3(signature = (csv, path, source, case_name, pairs, rtol, atol, tols, branch, part_at, event_tol, digits, past_end, max_rows))]
 #[allow(clippy::too_many_arguments)]
 fn check<'py>(
     py: Python<'py>,
@@ -575,16 +648,17 @@ fn check<'py>(
     source: String,
     case_name: String,
     pairs: Option<Pairs>,
-    rtol: f64,
-    atol: f64,
+    rtol: String,
+    atol: String,
     tols: Vec<TolOverride>,
     branch: String,
     part_at: Option<String>,
-    event_tol: Option<f64>,
+    event_tol: Option<String>,
     digits: u32,
     past_end: String,
+    max_rows: Option<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use cylroll::check::{BranchRequest, Limits, Override, PastEnd};
+    use cylroll::check::{BranchRequest, Limits, PastEnd};
     let rep = detached(py, move || {
         let (pairs, description, steps) = match pairs {
             Some(p) => (p, String::new(), 40),
@@ -597,18 +671,33 @@ fn check<'py>(
             model,
             steps,
         };
-        let mut lim = Limits::new(rtol, atol, digits);
+        let mut lim = Limits::new(tolerance("rtol", &rtol)?, tolerance("atol", &atol)?, digits);
         lim.tols = tols
             .into_iter()
             .map(|(column, rtol, atol)| {
+                let name = format!("tol['{column}']");
+                tolerance(&name, &rtol)?;
                 let spec = match atol {
-                    Some(a) => format!("{column}={rtol:e},{a:e}"),
-                    None => format!("{column}={rtol:e}"),
+                    Some(a) => {
+                        tolerance(&name, &a)?;
+                        format!("{column}={rtol},{a}")
+                    }
+                    None => format!("{column}={rtol}"),
                 };
-                // the command line's reading: a known column, finite numbers >= 0
-                cylroll::check::parse_override(&spec).map(|_| Override { column, rtol, atol })
+                // the command line's reading: a known column, tolerances as `tolerance`
+                cylroll::check::parse_override(&spec)
             })
             .collect::<cylroll::Result<_>>()?;
+        if let Some(n) = max_rows {
+            if !(1..=100_000_000).contains(&n) {
+                return Err(Error::invalid(
+                    "max_rows",
+                    n,
+                    "must be between 1 and 100000000",
+                ));
+            }
+            lim.max_rows = n;
+        }
         lim.branch = match (part_at, branch.as_str()) {
             (Some(a), _) => BranchRequest::PartAt(Exact::parse("part_at", &a, true)?),
             (None, "auto") => BranchRequest::Auto,
@@ -623,7 +712,7 @@ fn check<'py>(
             }
         };
         if let Some(e) = event_tol {
-            lim.event_tol = e;
+            lim.event_tol = tolerance("event_tol", &e)?;
         }
         lim.past_end = PastEnd::parse("past_end", &past_end)?;
         run_check(csv, path, &source, &case, &lim)

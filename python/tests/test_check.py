@@ -2,6 +2,8 @@
 core (per column, per phase, per event, per branch) from Python."""
 import csv
 import json
+from decimal import Decimal
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -192,6 +194,34 @@ def test_an_rtol_finer_than_the_digits_is_refused_and_a_verdict_on_the_bound_is_
     assert rep.first_failure is None and rep.first_undecided.row == 1
     with pytest.raises(AssertionError, match="did not verify"):
         assert_conforms(cand, "main_roll_roll", rtol=0, atol=0)
+
+
+def test_tolerances_are_read_as_the_command_line_reads_them():
+    cand = {"t": [0.0, 1.0], "theta": [0.1, 0.1]}
+    m = cylroll.Model(theta0="1/10")
+    # below 1e-300 is refused in every form, not read as 0 (binary64 would)
+    for bad in ("1e-400", Decimal("1e-400"), Fraction(1, 10**400), -1, "abc", "inf"):
+        with pytest.raises(cylroll.InvalidParameterError, match="^invalid rtol = "):
+            cylroll.check(cand, m, rtol=bad)
+    with pytest.raises(cylroll.InvalidParameterError, match="^invalid atol = "):
+        cylroll.check(cand, m, atol=Decimal("-1e-9"))
+    with pytest.raises(cylroll.InvalidParameterError, match="^invalid event_tol = "):
+        cylroll.check(cand, m, event_tol="1e-999")
+    with pytest.raises(cylroll.InvalidParameterError, match=r"^invalid tol\['theta'\] = "):
+        cylroll.check(cand, m, tol={"theta": (1e-3, "1e-400")})
+    for bad in (None, [1e-3], True):
+        with pytest.raises(TypeError, match="rtol: expected a number"):
+            cylroll.check(cand, m, rtol=bad)
+    # the forms a number comes in are the same tolerance
+    reps = [cylroll.check(cand, m, rtol=r, atol=0)
+            for r in (1e-3, "1e-3", Decimal("0.001"), Fraction(1, 1000), np.float64(1e-3))]
+    assert {r.column("theta").rtol for r in reps} == {1e-3}
+    # max_rows: the command line's --max-rows, by its keyword
+    with pytest.raises(cylroll.InvalidParameterError, match="raise max_rows"):
+        cylroll.check(cand, m, max_rows=1)
+    with pytest.raises(cylroll.InvalidParameterError, match="max_rows"):
+        cylroll.check(cand, m, max_rows=0)
+    assert cylroll.check(cand, m, max_rows=2, rtol=1, atol=1).passed
 
 
 def test_the_earlier_helper_is_the_same_check(golden_dir):

@@ -52,7 +52,7 @@ def test_bad_requests():
         m.time("0.5", digits=2001)
     with pytest.raises(cylroll.InvalidParameterError) as e:
         m.time("1.2")            # after separation
-    assert e.value.name == "to"
+    assert e.value.name == "theta"
     with pytest.raises(cylroll.InvalidParameterError):
         m.forces("0.05")         # before the start
     with pytest.raises(cylroll.InvalidParameterError) as e:
@@ -83,6 +83,28 @@ def test_bad_requests():
     with pytest.raises(cylroll.InvalidParameterError, match=r"theta in \[") as e:
         m.separation(branch="part", part_at="3")
     assert e.value.name == "part_at"
+
+
+def test_messages_name_the_python_keywords():
+    # the library's messages speak of the command line's flags; through
+    # Python they name the keywords that ask the same
+    m = cylroll.Model(theta0="1/10")
+    with pytest.raises(cylroll.InvalidParameterError) as e:
+        m.time("1.2")
+    assert str(e.value).startswith('invalid theta = "1.2": must lie in the motion')
+    with pytest.raises(cylroll.InvalidParameterError) as e:
+        m.separation(branch="part", part_at="0.1")
+    assert e.value.name == "part_at" and str(e.value).startswith('invalid part_at = "0.1"')
+    with pytest.raises(cylroll.NotPhysicalError) as e:
+        cylroll.Model().time("0.5")
+    assert "give a small theta0 or thetadot0" in str(e.value) and "--" not in str(e.value)
+    with pytest.raises(cylroll.InvalidParameterError) as e:
+        cylroll.Model(floor="rolling")
+    assert "goes to mu_floor)" in str(e.value)
+    # the notes too: the branch note names branch="part"
+    notes = m.separation(digits=10).notes
+    assert any('branch="part"' in n for n in notes)
+    assert not any("--" in n for n in notes)
 
 
 def test_no_physical_answer():

@@ -57,6 +57,27 @@ def test_replace_and_immutability():
         m.replace(mass=3)
 
 
+def test_replace_a_law_replaces_its_coefficient():
+    c = cylroll.Model(theta0="1/20", mu="0.3")
+    # a new floor law drops the floor's coefficient, not the contact's
+    r = c.replace(floor="roll")
+    assert r.laws == {"floor": "roll", "contact": "coulomb", "mu_floor": "inf", "mu_contact": "0.3"}
+    assert r == cylroll.Model(theta0="1/20", mu_contact="0.3")
+    # a frictionless floor under a Coulomb model is that, not a contradiction
+    s = c.replace(floor="slip")
+    assert s == cylroll.Model(theta0="1/20", floor="slip", mu_contact="0.3")
+    assert c.replace(contact="roll") == cylroll.Model(theta0="1/20", mu_floor="0.3")
+    # a coefficient given in the same call is kept: the contradiction is refused
+    with pytest.raises(cylroll.InvalidParameterError, match="contradicts"):
+        c.replace(floor="slip", mu_floor="0.2")
+    assert c.replace(floor="roll", mu_floor="0.2").laws["mu_floor"] == "0.2"
+    # mu in the same call sets both, the law's too
+    assert c.replace(contact="roll", mu="0.4").laws["mu_contact"] == "0.4"
+    # the law's type is named, as by the constructor
+    with pytest.raises(TypeError, match="floor: expected"):
+        c.replace(floor=1)
+
+
 def test_friction_forms():
     m = cylroll.Model(theta0="1/10", mu_floor=("1/2", "3/10"), mu_contact="0.5,0.3")
     assert m.friction == {"mu_floor": "0.5,0.3", "mu_contact": "0.5,0.3"}
