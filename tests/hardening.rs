@@ -2083,3 +2083,143 @@ fn a_heavy_upper_cylinder_on_a_frictionless_floor_is_answered_at_every_digits() 
         }
     }
 }
+
+/// A row just past the parting on the `part` branch with a sliding floor:
+/// the branch point's event enters the flight, and its state after was the
+/// state at it (the closed mode's θ̈, N12 > 0, mode `slip-/stick`), so a row
+/// the ladder placed after the event kept the closed mode's values, printed
+/// as verified — θ off by θ̇ times the row's distance from the event (5
+/// units of the 20th digit at t* + 1e-19). Each row's values at 20 and 30
+/// digits are the 50-digit row's, rounded, and its mode is the flight.
+#[test]
+fn a_row_just_past_a_parting_is_in_flight() {
+    use rug::{Float, Rational};
+    let base = ["--theta0", "0.1", "--mu-floor", "0.05", "--branch", "part"];
+    let sep = cyl()
+        .args(["separation", "--digits", "45"])
+        .args(base)
+        .output()
+        .unwrap();
+    let sep = String::from_utf8_lossy(&sep.stdout).to_string();
+    let ts = sep
+        .lines()
+        .find_map(|l| l.strip_prefix("t_s"))
+        .and_then(|l| l.split('=').nth(1))
+        .and_then(|l| l.split_whitespace().next())
+        .unwrap_or_else(|| panic!("{sep}"))
+        .to_string();
+    let q = |s: &str| Rational::from_str_radix(&decimal_fraction(s), 10).unwrap();
+    let row = |t: &str, digits: &str| -> Vec<String> {
+        let out = cyl()
+            .args(["trajectory", "--times", t, "--digits", digits])
+            .args(["--columns", "t,theta,theta_dot,theta_ddot,N12,mode"])
+            .args(["--format", "csv"])
+            .args(base)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{t} {digits}");
+        let text = String::from_utf8_lossy(&out.stdout).to_string();
+        let last = text.lines().last().unwrap().to_string();
+        last.split(',').map(str::to_string).collect()
+    };
+    for (digits, past) in [
+        (20u32, "1e-19"),
+        (20, "3e-20"),
+        (30, "9e-30"),
+        (30, "2e-29"),
+    ] {
+        let t = Rational::from(&q(&ts) + &q(past));
+        let t = Float::with_val(400, &t).to_string_radix(10, Some(60));
+        let r = row(&t, &digits.to_string());
+        let truth = row(&t, "50");
+        assert_eq!(r[5], "flight", "{digits} digits, t_s + {past}: {r:?}");
+        assert_eq!(r[4], "0", "{digits} digits, t_s + {past}: {r:?}");
+        for c in 1..4 {
+            let (a, b) = (
+                Float::with_val(400, q(&r[c])),
+                Float::with_val(400, q(&truth[c])),
+            );
+            // half a unit of the last digit printed, and a hair for the
+            // 50-digit value's own rounding
+            let e = b.clone().abs().log10().floor().to_f64() as i32 + 1;
+            let half = Float::with_val(400, 10f64.powi(e - digits as i32)) * 0.5001f64;
+            assert!(
+                Float::with_val(400, &a - &b).abs() <= half,
+                "{digits} digits, t_s + {past}, column {c}: {} vs {}",
+                r[c],
+                truth[c]
+            );
+        }
+    }
+}
+
+/// `x.yyyEz` as the fraction text `xyyy/10^k` (or `xyyy*10^k/1`) rug reads.
+fn decimal_fraction(s: &str) -> String {
+    let (m, e) = match s.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i64>().unwrap()),
+        None => (s, 0),
+    };
+    let (neg, m) = m.strip_prefix('-').map_or((false, m), |r| (true, r));
+    let (i, f) = m.split_once('.').unwrap_or((m, ""));
+    let digits = format!("{i}{f}");
+    let k = f.len() as i64 - e;
+    let sign = if neg { "-" } else { "" };
+    if k >= 0 {
+        format!("{sign}{digits}/1{}", "0".repeat(k as usize))
+    } else {
+        format!("{sign}{digits}{}/1", "0".repeat((-k) as usize))
+    }
+}
+
+/// θs as `separation --branch part` prints it, given back to `time` and
+/// `forces` at the same digits, is answered as the state at the parting
+/// with a note — as on the `stay` branch. The branch point that enters the
+/// flight was not taken for the end (only a `separation` event was), and
+/// the angle was refused: "must be reached while the cylinders touch".
+#[test]
+fn the_parting_angle_as_printed_is_answered_on_the_part_branch() {
+    for extra in [&[][..], &["--mu-floor", "0.05"][..]] {
+        let base = |cmd: &str| {
+            let mut c = cyl();
+            c.args([cmd, "--theta0", "0.1", "--branch", "part", "--digits", "20"])
+                .args(extra);
+            c
+        };
+        let sep = base("separation").output().unwrap();
+        let sep = String::from_utf8_lossy(&sep.stdout).to_string();
+        let ths = sep
+            .lines()
+            .find_map(|l| l.strip_prefix("theta_s"))
+            .and_then(|l| l.split('=').nth(1))
+            .and_then(|l| l.split_whitespace().next())
+            .unwrap_or_else(|| panic!("{sep}"))
+            .to_string();
+        let ts = sep
+            .lines()
+            .find_map(|l| l.strip_prefix("t_s"))
+            .and_then(|l| l.split('=').nth(1))
+            .and_then(|l| l.split_whitespace().next())
+            .unwrap()
+            .to_string();
+        for (cmd, flag) in [("time", "--to"), ("forces", "--theta")] {
+            let out = base(cmd).args([flag, &ths]).output().unwrap();
+            let text = String::from_utf8_lossy(&out.stdout);
+            assert_eq!(
+                out.status.code(),
+                Some(0),
+                "{extra:?} {cmd}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            assert!(
+                text.contains("cannot be told apart from the angle of the separation"),
+                "{extra:?} {cmd}: {text}"
+            );
+            if cmd == "time" {
+                assert!(
+                    text.contains(&format!("t = {ts} ")),
+                    "{extra:?}: {text} vs {ts}"
+                );
+            }
+        }
+    }
+}

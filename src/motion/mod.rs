@@ -651,16 +651,13 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                     if rising {
                         window_open = true;
                         w.out.windows.push((at.theta.clone(), None));
-                        let mut e = ev(
-                            Kind::Indeterminate,
-                            Some(Which::Contact),
-                            Some(if req.branch == Branch::Part {
-                                flight_phase
-                            } else {
-                                Phase::Contact(mode)
-                            }),
-                        );
-                        e.after = Some(at.clone());
+                        let entered = if req.branch == Branch::Part {
+                            flight_phase
+                        } else {
+                            Phase::Contact(mode)
+                        };
+                        let mut e = ev(Kind::Indeterminate, Some(Which::Contact), Some(entered));
+                        e.after = after_if_unchanged(&at, entered);
                         w.out.events.push(e);
                     } else {
                         window_open = false;
@@ -705,12 +702,9 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         if choice.branch_point && !window_open {
             window_open = true;
             w.out.windows.push((at.theta.clone(), None));
-            let mut e = ev(
-                Kind::Indeterminate,
-                Some(Which::Contact),
-                Some(choice.mode.map_or(flight_phase, Phase::Contact)),
-            );
-            e.after = Some(at.clone());
+            let entered = choice.mode.map_or(flight_phase, Phase::Contact);
+            let mut e = ev(Kind::Indeterminate, Some(Which::Contact), Some(entered));
+            e.after = after_if_unchanged(&at, entered);
             w.out.events.push(e);
         }
         let Some(new) = choice.mode else {
@@ -778,6 +772,18 @@ fn grazing(name: &str, t: &Float, mode: Mode) -> Error {
         ),
         detail: "a grazing event the rigid-body model cannot resolve at this precision".into(),
     }
+}
+
+/// A branch point's state after: the state at it where the phase it
+/// enters is the one it was in (the `stay` branch goes on in the same
+/// mode); else none of its own, and the rows just past it take the next
+/// event's at the same instant (the parting's first flight state, the new
+/// mode's: [`sides`]' `with_after`). The state at it, given as the state
+/// after a parting, kept the closed mode's θ̈, forces and mode for a row
+/// just past the parting (printed as verified, with θ off by θ̇ times the
+/// row's distance from the event).
+fn after_if_unchanged(at: &Point, entered: Phase) -> Option<Point> {
+    (at.phase == entered).then(|| at.clone())
 }
 
 /// The state just after an event at sample `s`, in the mode entered (its

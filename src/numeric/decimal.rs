@@ -567,7 +567,10 @@ mod tests {
         assert_eq!(to_sig(&Float::with_val(p, &pi * 1000u32), 3), "3.14e3");
         assert_eq!(to_sig(&Float::with_val(p, &pi * 1000u32), 4), "3142");
         assert_eq!(to_sig(&Float::with_val(p, 100), 1), "1e2");
-        assert_eq!(to_sig(&Float::with_val(p, 14383358069470040.4f64), 15), "1.43833580694700e16");
+        assert_eq!(
+            to_sig(&Float::with_val(p, 14383358069470040.4f64), 15),
+            "1.43833580694700e16"
+        );
         assert_eq!(to_sig(&Float::with_val(p, &pi / 100000u32), 3), "0.0000314");
         assert_eq!(to_sig(&Float::with_val(p, &pi / 1e12), 3), "3.14e-12");
         assert_eq!(to_sig(&Float::with_val(p, -0.5), 2), "-0.50");

@@ -341,14 +341,27 @@ impl Runs<'_> {
                         self.model.direction(),
                     ) {
                         // past the separation (or the end) by less than the
-                        // digits asked resolve: the state at it
-                        let at_end = (ev.kind == motion::Kind::Separation || ev.kind.ends())
-                            && side == Side::After
-                            && motion::sides::within_digits(&th, &ev.at.theta, digits, &one(q));
+                        // digits asked resolve: the state at it. On the
+                        // `part` branch the branch point that enters the
+                        // flight is the parting (its separation event
+                        // follows at the same instant, and is the nearer
+                        // only in name): θs as printed, given back, was
+                        // refused as "must be reached while the cylinders
+                        // touch"
+                        let parts = ev.kind == motion::Kind::Indeterminate
+                            && matches!(ev.phase, Some(motion::mode::Phase::Flight { .. }));
+                        let at_end =
+                            (ev.kind == motion::Kind::Separation || parts || ev.kind.ends())
+                                && side == Side::After
+                                && motion::sides::within_digits(&th, &ev.at.theta, digits, &one(q));
                         target_side = Some((k, if at_end { Side::At } else { side }));
                         if at_end {
                             self.target_at = Some(k);
-                            self.target_kind = Some(ev.kind);
+                            self.target_kind = Some(if parts {
+                                motion::Kind::Separation
+                            } else {
+                                ev.kind
+                            });
                         }
                         target = None;
                     }
