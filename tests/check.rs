@@ -688,3 +688,58 @@ fn unjudgeable_tolerances_and_unknown_modes_are_refused() {
         }
     }
 }
+
+/// A lawful parting inside the window, on a grid whose parting bracket
+/// holds θ* or θs as well: `--branch auto` fits the parting in the bracket
+/// and passes the candidate, as on finer and coarser grids. It was taken
+/// for that end's branch unseen (stay for θs, part for θ*) and failed: the
+/// verdict on one lawful motion depended on the grid. The oracle's own
+/// rows of each branch pass on every grid, followed by that branch.
+#[test]
+fn a_lawful_parting_passes_on_every_grid() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    let traj = |branch: &[&str], steps: &str| {
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["trajectory", "--params", "golden/cases/main_roll_roll.toml"])
+            .args(branch)
+            .args([
+                "--t-end", "7.08", "--steps", steps, "--format", "csv", "--digits", "25",
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        std::fs::write(&path, &out.stdout).unwrap();
+    };
+    // θ* ≈ 0.963, θs ≈ 1.048: grids of 35 and 70 steps bracket the parting
+    // at θ = 1 with θs, at 0.97 with θ* (35 steps)
+    for (branch, followed) in [
+        (&["--part-at", "1"][..], "part-at"),
+        (&["--part-at", "0.97"][..], "part-at"),
+        (&["--branch", "stay"][..], "stay"),
+        (&["--branch", "part"][..], "part"),
+    ] {
+        for steps in ["7", "35", "70", "700"] {
+            traj(branch, steps);
+            let out = check_file(&path, &["--case", "main_roll_roll", "--format", "json"]);
+            let v = json(&out);
+            assert_eq!(
+                out.status.code(),
+                Some(0),
+                "{branch:?} {steps} steps: {}",
+                v["branch"]
+            );
+            let f = v["branch"]["followed"]
+                .as_str()
+                .unwrap_or_default()
+                .to_string();
+            assert!(
+                f.starts_with(followed),
+                "{branch:?} {steps}: {}",
+                v["branch"]
+            );
+        }
+    }
+}

@@ -375,19 +375,37 @@ pub fn decide(
     );
     let (d_star, d_end) = (dist(star_s), dist(end_s));
     let mid_inside = s * p.theta_mid.1 > star_s && s * p.theta_mid.1 < end_s;
-    if d_star <= tol && d_end <= tol {
-        // the bracket holds the whole window: the rows after it decide
+    if d_star <= tol || d_end <= tol {
+        // the bracket holds an end of the window (or both): the parting may
+        // be at that end or anywhere in the bracket inside the window, and
+        // the rows after it decide (a coarse grid whose bracket holds θ* or
+        // θs alone was taken for that end's branch unseen: a lawful parting
+        // inside the window was then judged against the wrong branch, the
+        // verdict depending on the grid)
         let shift = Rows::open(src, case, lim)?.header.phi2_shift.to_f64();
-        let mut options = vec![(Branch::Stay, "stay"), (Branch::Part, "part")];
-        // parting inside the window: at the angle that fits its rows best
-        let fit = fit_part_at(case, (star_s, end_s), s, &f.after, tols, shift);
+        let mut options = Vec::new();
+        if d_end <= tol {
+            options.push((Branch::Stay, "stay"));
+        }
+        if d_star <= tol {
+            options.push((Branch::Part, "part"));
+        }
+        // parting inside the window: at the angle in the bracket that fits
+        // its rows best
+        let range = (a.max(star_s), b.min(end_s));
+        let fit = fit_part_at(case, range, s, &f.after, tols, shift);
         if let Some((theta, _, _)) = fit {
-            // (within event-tol of an end it is that end's branch, scored above)
-            if (s * theta - star_s).abs() > tol && (s * theta - end_s).abs() > tol {
-                let at = Exact::parse("part-at", &format!("{theta:e}"), false)?;
+            // (within event-tol of an end in the bracket it is that end's
+            // branch, scored with the others)
+            let near_end = (d_star <= tol && (s * theta - star_s).abs() <= tol)
+                || (d_end <= tol && (s * theta - end_s).abs() <= tol);
+            if !near_end {
+                // rounded to 10 significant digits, quoted exactly
+                let at =
+                    Exact::rational(Exact::parse("part-at", &format!("{theta:.9e}"), false)?.coef);
                 options.push((Branch::PartAt(at), "part-at"));
             }
-        } else if mid_inside {
+        } else if mid_inside && d_star <= tol && d_end <= tol {
             let at = Exact::parse("part-at", &p.theta_mid.0, false)?;
             options.push((Branch::PartAt(at), "part-at"));
         }
@@ -420,42 +438,51 @@ pub fn decide(
             .min_by(|x, y| x.2.total_cmp(&y.2));
         let listed: Vec<String> = scored
             .iter()
-            .map(|(_, name, d)| match d {
-                Some(d) => format!("{name} {d:.3e}"),
-                None => format!("{name} -"),
+            .map(|(b, name, d)| {
+                let name = match b {
+                    Branch::PartAt(at) => format!("{name} {at}"),
+                    _ => name.to_string(),
+                };
+                match d {
+                    Some(d) => format!("{name} {d:.3e}"),
+                    None => format!("{name} -"),
+                }
             })
             .collect();
+        let holds = match (d_star <= tol, d_end <= tol) {
+            (true, true) => format!("both theta* = {star_text} and theta_s = {end_text}"),
+            (true, false) => format!("the branch point theta* = {star_text}"),
+            _ => format!("the end of the closed branch theta_s = {end_text}"),
+        };
         match best {
             Some((b, name, _)) => {
                 rep.followed = b.clone();
                 rep.why = format!(
-                    "{found}: the bracket holds both theta* = {star_text} and theta_s = \
-                     {end_text} (within event-tol {tol:e}); the candidate's {} rows from its \
-                     parting on are nearest the {name} branch (sum of |candidate - reference| / \
-                     the column's scale: {})",
+                    "{found}: the bracket holds {holds} (within event-tol {tol:e}); the \
+                     candidate's {} rows from its parting on are nearest the {name} branch \
+                     (sum of |candidate - reference| / the column's scale: {})",
                     after.len(),
                     listed.join(", ")
                 );
             }
             None => {
+                // nothing after the parting to tell them apart: the end's
+                // branch (the closed one where the bracket holds both)
+                let (b, name) = if d_end <= tol {
+                    (Branch::Stay, "the closed branch (stay)")
+                } else {
+                    (
+                        Branch::Part,
+                        "the part branch, as velocity-level complementarity solvers take",
+                    )
+                };
+                rep.followed = b;
                 rep.why = format!(
-                    "{found}: the bracket holds both theta* = {star_text} and theta_s = \
-                     {end_text} (within event-tol {tol:e}) and the candidate has no numeric \
-                     column after it to tell the branches apart: the closed branch (stay)"
+                    "{found}: the bracket holds {holds} (within event-tol {tol:e}) and the \
+                     candidate has no numeric column after it to tell the branches apart: {name}"
                 );
             }
         }
-    } else if d_star <= tol {
-        rep.followed = Branch::Part;
-        rep.why = format!(
-            "{found}: at the branch point theta* = {star_text} (within event-tol {tol:e}): the \
-             part branch, as velocity-level complementarity solvers take"
-        );
-    } else if d_end <= tol {
-        rep.why = format!(
-            "{found}: at the end of the closed branch theta_s = {end_text} (within event-tol \
-             {tol:e}): the closed branch (stay)"
-        );
     } else if a > star_s && a < end_s {
         // where in its bracket it parted: the angle whose lawful flight is
         // nearest its rows after the parting (else the bracket's middle)
