@@ -2001,3 +2001,46 @@ fn a_huge_common_rolling_rate_is_not_called_painleve() {
         assert_eq!(events("1e15", digits), events("0", digits), "{digits}");
     }
 }
+
+/// A coefficient so large (10^1300 … 10^100000) that the contact could
+/// slip only within ~1/μ of θs, closer than the working precision resolves:
+/// the motion is the rolling one to the digits asked (the limit μ → ∞), at
+/// every digit count. The cone polynomial's isolation was capped at 8192
+/// extra bits, so its pair of roots around N12 = 0 merged into a sign
+/// change the refinement could not bracket: "slip onset: no sign change
+/// found" (exit 3) at 5–20 digits for μ = 10^50000.
+#[test]
+fn a_coefficient_beyond_the_precision_is_the_rolling_contact() {
+    let theta_s = |mu: &str, digits: &str| -> String {
+        let mut args = vec!["separation", "--theta0", "0.1", "--digits", digits];
+        if mu == "roll" {
+            args.extend(["--contact", "roll"]);
+        } else {
+            args.extend(["--mu-contact", mu]);
+        }
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{mu} {digits}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout)
+            .lines()
+            .find(|l| l.starts_with("theta_s "))
+            .and_then(|l| l.split('=').nth(1))
+            .and_then(|l| l.split_whitespace().next())
+            .unwrap()
+            .to_string()
+    };
+    for digits in ["5", "10", "20", "30"] {
+        let roll = theta_s("roll", digits);
+        for mu in ["1e1300", "1e50000", "1e100000"] {
+            assert_eq!(theta_s(mu, digits), roll, "mu {mu}, {digits} digits");
+        }
+    }
+}

@@ -122,10 +122,21 @@ impl Route {
         // and the slip onset missed). The ratio, not the sum in absolute
         // units: a model in other units (g = 10^-20) has the same roots.
         let coef = hp.at(&a_h, ISO);
-        let iso = isolation_bits(
+        let Some(iso) = isolation_bits(
             &coef,
             &unit.map_or_else(|| coef.clone(), |u| u.at(&a_h, ISO)),
-        ) + disparity_bits(self.work.params());
+            p,
+        ) else {
+            // a cone polynomial whose μ² puts its pair of roots around
+            // N12 = 0 closer than 2^−(p+64) together: the contact slips,
+            // if at all, only that close to θs, a phase whose effect on
+            // every value is below this precision's resolution; the
+            // closed mode's motion to θs is the motion to the digits (the
+            // limit μ → ∞). An isolation at fewer bits merged the pair, or
+            // found a sign change its refinement could not (exit 3).
+            return Ok(None);
+        };
+        let iso = iso + disparity_bits(self.work.params());
         // the end of the range at the precision it is known to (a root ~1/μ
         // before θs must not fall outside a 64-bit rounding of cos θs)
         let ep = iso.max(delta_end.prec());
@@ -193,8 +204,13 @@ pub(super) fn disparity_bits(p: &crate::model::Params) -> u32 {
 /// of the coefficients' absolute values over that of `unit`'s (the natural
 /// scale of its values) where above 1: Horner's rounding error at c in
 /// [−1, 1] is about the sum times 2^−prec, so that a dip of the unit's size
-/// between two close roots keeps its sign. Capped at 64 + 8192 bits.
-fn isolation_bits(coef: &[Float], unit: &[Float]) -> u32 {
+/// between two close roots keeps its sign. Capped at 64 + 8192 bits, or
+/// twice the working precision `p` (and 256 bits) where that is more: a
+/// pair of roots 2^−(extra/2) apart (a cone's around N12 = 0, ~1/μ) is
+/// then resolved wherever the working precision resolves it. `None` where
+/// the excess is beyond the cap: the pair lies closer together than the
+/// working precision resolves (a μ of 10^1233 and more at 30 digits).
+fn isolation_bits(coef: &[Float], unit: &[Float], p: u32) -> Option<u32> {
     // log2 of Σ|c_k|: e + log2 Σ|c_k 2^−e|, the sum in f64 in any units
     let log_sum = |cs: &[Float]| -> Option<f64> {
         let e = crate::numeric::max_exp(cs)?;
@@ -204,9 +220,11 @@ fn isolation_bits(coef: &[Float], unit: &[Float]) -> u32 {
             .sum();
         Some(f64::from(e) + sum.log2())
     };
+    let cap = f64::from(8192u32.max(2 * p + 256));
     let extra = match (log_sum(coef), log_sum(unit)) {
-        (Some(a), Some(u)) if a > u => (a - u).ceil().min(8192.0) as u32,
+        (Some(a), Some(u)) if a - u > cap => return None,
+        (Some(a), Some(u)) if a > u => (a - u).ceil() as u32,
         _ => 0,
     };
-    ISO + extra
+    Some(ISO + extra)
 }
