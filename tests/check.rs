@@ -743,3 +743,23 @@ fn a_lawful_parting_passes_on_every_grid() {
         }
     }
 }
+
+/// A schema-1 φ2 is judged in the reference's gauge (φ2 + r1 θ0 / r2), and
+/// its failure quotes it so, with the file's value beside: the reference's
+/// own file read as schema 1 fails by r1 θ0 / r2 = 0.1 at its first row,
+/// and the message showed "candidate 0 vs oracle 0" for an error of 0.1.
+#[test]
+fn a_schema_1_failure_quotes_phi2_in_the_gauge_it_was_judged_in() {
+    let out = check_file(
+        &golden_csv("main_mu_0_3"),
+        &["--case", "main_mu_0_3", "--schema", "1"],
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains(
+            "column phi2: candidate 0.10000000000000000 (schema 1: 0) vs oracle 0; |err| > 1.000e-10"
+        ),
+        "{text}"
+    );
+}

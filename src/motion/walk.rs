@@ -14,13 +14,24 @@ use crate::integrate::solve::Sample;
 use rug::Float;
 
 /// A requested time after the end of the model (`what` ended it at `end`).
-fn after_end(t: &Exact, end: &Float, what: &str) -> Error {
+/// The end is quoted with the digits its error `err` leaves (3 to 40),
+/// rounded down: it lies before the time refused, and reads so (rounded to
+/// nearest to 17 digits it could read as after it, and its 17th digit be
+/// wrong).
+fn after_end(t: &Exact, end: &Float, err: &Float, what: &str) -> Error {
+    let p = end.prec();
+    let digits = if err.is_zero() || end.is_zero() {
+        40
+    } else {
+        let rel = Float::with_val(p, end.abs_ref()) / err;
+        (rel.log10().to_f64().floor() as i64).clamp(3, 40) as u32
+    };
     Error::invalid(
         "times",
         t,
         format!(
-            "must not be after {what} at t ≈ {} (the model ends there)",
-            crate::numeric::decimal::approx_text(end)
+            "must not be after {what} at t = {} (rounded down; the model ends there)",
+            crate::numeric::decimal::to_sig_dir(end, digits, rug::float::Round::Down)
         ),
     )
 }
@@ -91,7 +102,7 @@ impl Walk<'_> {
         if sides::within_digits(tt, end, self.req.digits, &self.ctx.ts) {
             return Ok(());
         }
-        Err(after_end(&self.req.times[self.next], end, what))
+        Err(after_end(&self.req.times[self.next], end, err, what))
     }
 
     /// The motion ends at the last event (`what` for messages): every time

@@ -349,6 +349,15 @@ pub fn render(neg: bool, d: &str, e: i64) -> String {
     out
 }
 
+/// `x` to `digits` significant digits as text, rounded in the direction
+/// `round` ("0" for zero).
+pub fn to_sig_dir(x: &Float, digits: u32, round: Round) -> String {
+    match round_sig_dir(x, digits, round) {
+        Some((neg, d, e)) => render(neg, &d, e),
+        None => "0".to_string(),
+    }
+}
+
 /// `x` to `digits` significant digits as text ("0" for zero).
 pub fn to_sig(x: &Float, digits: u32) -> String {
     match round_sig(x, digits) {
