@@ -2239,3 +2239,20 @@ fn the_parting_angle_as_printed_is_answered_on_the_part_branch() {
         }
     }
 }
+
+/// A grid's time past the end of the model names `--t-end` and the step,
+/// not `times` (which the user did not give): it read `invalid times =
+/// "6"` for `--t-end 7 --steps 7`.
+#[test]
+fn a_grid_past_the_end_names_t_end_and_its_step() {
+    one_line_error(
+        &[
+            "trajectory", "--theta0", "0.1", "--mu", "0.3", "--t-end", "7", "--steps", "70",
+        ],
+        2,
+        &[
+            "invalid t-end = \"7\": the grid's time 5.9 (step 59 of 70) must not be after the first impact at t = 5.83837551736285157",
+            "(rounded down; the model ends there)",
+        ],
+    );
+}

@@ -548,6 +548,32 @@ fn trajectory_times(
     Ok((times, Some(origins)))
 }
 
+/// A refusal of a time of the grid `--t-end T --steps N` names `t-end`
+/// (the time refused is the grid's, not one the user gave): "invalid t-end
+/// = "7": the grid's time 6 (step 6 of 7) must not be after …".
+fn on_grid(e: Error, t_end: &str, steps: u32) -> Error {
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            allowed,
+        } if name == "times" => {
+            // which step of the grid: t·N/T
+            let step = Exact::parse("times", &value, false)
+                .ok()
+                .zip(Exact::parse("t-end", t_end, false).ok())
+                .map(|(t, te)| Rational::from(&t.coef * Rational::from(steps)) / &te.coef)
+                .filter(|k| *k.denom() == 1);
+            let at = match step {
+                Some(k) => format!("the grid's time {value} (step {k} of {steps})"),
+                None => format!("the grid's time {value}"),
+            };
+            Error::invalid("t-end", t_end, format!("{at} {allowed}"))
+        }
+        other => other,
+    }
+}
+
 /// Runs the command and returns the text to print on standard output.
 pub fn run(cli: Cli) -> Result<(Output, i32)> {
     let (common, answer) = match cli.command {
@@ -695,6 +721,7 @@ pub fn run(cli: Cli) -> Result<(Output, i32)> {
                 Some(c) => oracle::parse_columns(&c)?,
                 None => oracle::all_columns(),
             };
+            let grid = t_end.clone().zip(steps);
             let (times, origins) = trajectory_times(times, times_file, t_end, steps)?;
             let model = common.model()?;
             let opts = common.options()?;
@@ -707,9 +734,10 @@ pub fn run(cli: Cli) -> Result<(Output, i32)> {
                 common.rigorous,
                 common.format,
             )
-            .map_err(|e| match &origins {
-                Some(o) => o.locate(e, &times),
-                None => e,
+            .map_err(|e| match (&origins, &grid) {
+                (Some(o), _) => o.locate(e, &times),
+                (None, Some((te, n))) => on_grid(e, te, *n),
+                (None, None) => e,
             })?;
             return Ok((out, 0));
         }
