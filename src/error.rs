@@ -113,6 +113,34 @@ impl Error {
         }
     }
 
+    /// The error with `ctx` (e.g. the case or file a computation was
+    /// asked by) before the text that leads its message; an input or
+    /// output file's error (which names its path) and a cancellation as
+    /// they are.
+    pub fn context(self, ctx: &str) -> Self {
+        match self {
+            Error::InvalidParameter {
+                name,
+                value,
+                allowed,
+            } => Error::InvalidParameter {
+                name: format!("{ctx}: {name}"),
+                value,
+                allowed,
+            },
+            Error::NotPhysical { what } => Error::NotPhysical {
+                what: format!("{ctx}: {what}"),
+            },
+            Error::NotConverged { .. } => self.map_not_converged(|q, d| (format!("{ctx}: {q}"), d)),
+            Error::NoSignChange { quantity, lo, hi } => Error::NoSignChange {
+                quantity: format!("{ctx}: {quantity}"),
+                lo,
+                hi,
+            },
+            other => other,
+        }
+    }
+
     /// Shorthand for [`Error::NotPhysical`].
     pub fn not_physical(what: impl ToString) -> Self {
         Error::NotPhysical {

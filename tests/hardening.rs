@@ -2256,3 +2256,25 @@ fn a_grid_past_the_end_names_t_end_and_its_step() {
         ],
     );
 }
+
+/// A golden case that cannot be rendered is named with its file in the
+/// refusal, and the cause is said: a case from rest exactly at the top has
+/// no time grid ("the motion has no end", naming neither).
+#[test]
+fn a_golden_case_that_cannot_be_rendered_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("cases")).unwrap();
+    std::fs::write(dir.path().join("cases/top.toml"), "theta0 = \"0\"\n").unwrap();
+    let d = dir.path().to_str().unwrap();
+    one_line_error(
+        &["golden", "--dir", d],
+        2,
+        &[
+            "case top (",
+            "cases/top.toml): ",
+            "every time is infinite",
+            "give a small theta0",
+        ],
+    );
+    assert!(!dir.path().join("data").exists(), "nothing is written");
+}

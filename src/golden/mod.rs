@@ -308,7 +308,13 @@ fn grid_end(t_s: &Verified) -> Result<Rational> {
 fn end_time(sep: &Answer) -> Result<&Verified> {
     sep.value("t_impact")
         .or_else(|| sep.events.last().map(|e| &e.t))
-        .ok_or_else(|| Error::not_physical("the motion has no end"))
+        .ok_or_else(|| {
+            Error::not_physical(
+                "the motion has no end in time to lay a grid of times on (from rest exactly at \
+                 the unstable top, theta0 = 0 and thetadot0 = 0, every time is infinite); give \
+                 a small theta0 or thetadot0",
+            )
+        })
 }
 
 /// The method of each route, for the provenance.
@@ -461,7 +467,11 @@ pub fn write_all(golden_dir: &Path) -> Result<String> {
     fileset::check_writable(golden_dir, &["data"])?;
     let mut out = Vec::new();
     for c in &cases {
-        out.push((c.name.clone(), render(c)?));
+        let file = golden_dir.join("cases").join(format!("{}.toml", c.name));
+        out.push((
+            c.name.clone(),
+            render(c).map_err(|e| e.context(&format!("case {} ({})", c.name, file.display())))?,
+        ));
     }
     let data = golden_dir.join("data");
     let mut summary = String::new();
