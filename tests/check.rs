@@ -763,3 +763,24 @@ fn a_schema_1_failure_quotes_phi2_in_the_gauge_it_was_judged_in() {
         "{text}"
     );
 }
+
+/// A line too long to read is refused naming its data row and line (or
+/// the header), as every refusal names them (it said only "has a line
+/// longer than 65536 bytes").
+#[test]
+fn a_line_too_long_is_named_by_row_and_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("long.csv");
+    std::fs::write(&p, format!("t,theta\n0,0.1\n\n1,{}\n", "1".repeat(70_000))).unwrap();
+    let out = check_file(&p, &["--case", "main_mu_0_3"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("row 2 (line 4) is longer than 65536 bytes"),
+        "{err}"
+    );
+    std::fs::write(&p, format!("t,{}\n0,0.1\n", "x".repeat(70_000))).unwrap();
+    let err =
+        String::from_utf8_lossy(&check_file(&p, &["--case", "main_mu_0_3"]).stderr).to_string();
+    assert!(err.contains("the header row (line 1) is longer"), "{err}");
+}

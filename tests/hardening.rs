@@ -2278,3 +2278,30 @@ fn a_golden_case_that_cannot_be_rendered_is_named() {
     );
     assert!(!dir.path().join("data").exists(), "nothing is written");
 }
+
+/// A parameter file that is not TOML is refused naming the line (its number
+/// and text), and a 64-bit overflow says how to give the number (as text).
+#[test]
+fn a_toml_error_names_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("p.toml");
+    std::fs::write(&p, "theta0 = \"0.1\"\nm1 = 99999999999999999999999999\n").unwrap();
+    let f = p.to_str().unwrap();
+    one_line_error(
+        &["separation", "--params", f],
+        2,
+        &[
+            "not valid TOML at line 2 (\"m1 = 99999999999999999999999999\")",
+            "as text",
+        ],
+    );
+    std::fs::write(&p, "theta0 = \"0.1\"\ng = 1\ntheta0 = \"0.2\"\n").unwrap();
+    one_line_error(
+        &["separation", "--params", f],
+        2,
+        &[
+            "at line 3 (\"theta0 = \\\"0.2\\\"\")",
+            "duplicate key `theta0`",
+        ],
+    );
+}

@@ -146,7 +146,9 @@ impl<'a> Rows<'a> {
         let mut buf = Vec::new();
         let mut line = 0usize;
         let header = loop {
-            let next = next_line(&mut reader, &mut buf, &source)?;
+            let next = next_line(&mut reader, &mut buf, &source, || {
+                format!("the header row (line {})", line + 1)
+            })?;
             line += 1;
             match next {
                 None => return Err(refuse(&source, "is empty; expected a header row")),
@@ -176,7 +178,12 @@ impl<'a> Rows<'a> {
     /// Errors: the refusal; a read error.
     pub fn count_within_limit(mut self) -> Result<()> {
         let mut n = 0usize;
-        while let Some(line) = next_line(&mut self.reader, &mut self.buf, &self.source)? {
+        let mut at = self.line;
+        let lines = self.show_lines;
+        while let Some(line) = next_line(&mut self.reader, &mut self.buf, &self.source, || {
+            format!("row {}", RowLabel::new(n + 1, lines.then_some(at + 1)))
+        })? {
+            at += 1;
             if line.trim().is_empty() {
                 continue;
             }
@@ -209,7 +216,11 @@ impl<'a> Rows<'a> {
     /// The next data row: (its 1-based number, t, the other cells).
     pub fn next_row(&mut self) -> Result<Option<(usize, Exact, Vec<Cell>)>> {
         loop {
-            let Some(line) = next_line(&mut self.reader, &mut self.buf, &self.source)? else {
+            let (rows, at, lines) = (self.rows, self.line, self.show_lines);
+            let Some(line) = next_line(&mut self.reader, &mut self.buf, &self.source, || {
+                format!("row {}", RowLabel::new(rows + 1, lines.then_some(at + 1)))
+            })?
+            else {
                 return Ok(None);
             };
             self.line += 1;
@@ -307,11 +318,13 @@ fn parse_header(line: &str, source: &str, case: &Case, lim: &Limits) -> Result<H
 }
 
 /// Reads one line of at most [`MAX_LINE_BYTES`] (without its line end);
-/// `None` at the end of the input.
+/// `None` at the end of the input. `which` names the line for a refusal
+/// ("data row 3 (line 5)", as every refusal names it).
 fn next_line<R: BufRead + ?Sized>(
     r: &mut R,
     buf: &mut Vec<u8>,
     source: &str,
+    which: impl Fn() -> String,
 ) -> Result<Option<String>> {
     buf.clear();
     let n = r
@@ -327,7 +340,7 @@ fn next_line<R: BufRead + ?Sized>(
     if buf.len() as u64 > MAX_LINE_BYTES {
         return Err(refuse(
             source,
-            format!("has a line longer than {MAX_LINE_BYTES} bytes"),
+            format!("{} is longer than {MAX_LINE_BYTES} bytes", which()),
         ));
     }
     let text = std::str::from_utf8(buf).map_err(|_| refuse(source, "is not UTF-8 text"))?;

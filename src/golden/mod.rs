@@ -200,11 +200,7 @@ pub fn case_text_parts(
     text: &str,
 ) -> Result<(crate::model::input::Pairs, String, u32)> {
     let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-        Error::invalid(
-            "case",
-            name,
-            format!("not valid TOML: {}", e.message().trim()),
-        )
+        Error::invalid("case", name, crate::model::input::toml_refusal(text, &e))
     })?;
     case_parts(&table)
 }

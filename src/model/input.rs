@@ -208,13 +208,30 @@ pub fn strip_bom(text: &str) -> &str {
 /// Parses TOML text read from `path` into a table.
 pub fn read_toml(path: &std::path::Path, what: &str) -> Result<toml::Table> {
     let text = read_input(path, what, MAX_TOML_BYTES)?;
-    text.parse().map_err(|e: toml::de::Error| {
-        Error::invalid(
-            what,
-            path.display(),
-            format!("not valid TOML: {}", e.message().trim()),
-        )
-    })
+    text.parse()
+        .map_err(|e: toml::de::Error| Error::invalid(what, path.display(), toml_refusal(&text, &e)))
+}
+
+/// A TOML parse error as a refusal: its message, and the line it is on
+/// (its number and, shortened, its text) where the parser gives a place.
+pub fn toml_refusal(text: &str, e: &toml::de::Error) -> String {
+    let msg = e.message().trim();
+    match e.span() {
+        Some(span) if span.start <= text.len() => {
+            let start = text[..span.start].rfind('\n').map_or(0, |i| i + 1);
+            let line = text[..span.start].matches('\n').count() + 1;
+            let end = text[start..].find('\n').map_or(text.len(), |i| start + i);
+            let shown = crate::error::shorten(text[start..end].trim());
+            // TOML integers are 64-bit: a larger one is exact as text
+            let hint = if msg.contains("too large") {
+                "; give a number beyond 64-bit integers as text, key = \"…\""
+            } else {
+                ""
+            };
+            format!("not valid TOML at line {line} ({shown:?}): {msg}{hint}")
+        }
+        _ => format!("not valid TOML: {msg}"),
+    }
 }
 
 /// Builds and validates a model from key/value pairs, as every entry point
