@@ -784,3 +784,68 @@ fn a_line_too_long_is_named_by_row_and_line() {
         String::from_utf8_lossy(&check_file(&p, &["--case", "main_mu_0_3"]).stderr).to_string();
     assert!(err.contains("the header row (line 1) is longer"), "{err}");
 }
+
+/// An event just past the candidate's bracket (its last row 1e-16 s before
+/// the separation, already in flight) is outside it: judged by the times as
+/// written, not in binary64, where it was "inside the candidate's bracket"
+/// with error 0 and passed at `--event-tol 0`.
+#[test]
+fn an_event_a_hair_past_the_bracket_is_not_inside_it() {
+    use cylroll::exact::Exact;
+    let cyl = || {
+        let mut c = Command::cargo_bin("cylroll").unwrap();
+        c.current_dir(env!("CARGO_MANIFEST_DIR"));
+        c
+    };
+    let case = "golden/cases/main_mu_0_3.toml";
+    let sep = cyl()
+        .args(["separation", "--params", case, "--digits", "40"])
+        .output()
+        .unwrap();
+    let sep = String::from_utf8_lossy(&sep.stdout).to_string();
+    let ts = sep
+        .lines()
+        .find_map(|l| l.strip_prefix("t_s "))
+        .and_then(|l| l.split('=').nth(1))
+        .and_then(|l| l.split_whitespace().next())
+        .unwrap()
+        .to_string();
+    let before = |k: u32| {
+        let q = Exact::parse("t", &ts, false).unwrap().coef
+            - rug::Rational::from((k, rug::Integer::from(rug::Integer::u_pow_u(10, 16))));
+        rug::Float::with_val(400, q).to_string_radix(10, Some(60))
+    };
+    let times = format!("0,{},{}", before(2), before(1));
+    let out = cyl()
+        .args(["trajectory", "--params", case, "--times", &times])
+        .args([
+            "--format",
+            "csv",
+            "--digits",
+            "25",
+            "--columns",
+            "t,theta,mode",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    // the last row enters the flight 1e-16 s early
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let last = lines.pop().unwrap();
+    let (head, _) = last.rsplit_once(',').unwrap();
+    lines.push(format!("{head},flight"));
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("ev.csv");
+    std::fs::write(&p, lines.join("\n") + "\n").unwrap();
+    let out = check_file(&p, &["--case", "main_mu_0_3", "--event-tol", "0"]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    let sep_line = report
+        .lines()
+        .find(|l| l.starts_with("separation"))
+        .unwrap_or_else(|| panic!("{report}"));
+    assert!(
+        sep_line.contains("FAIL (the candidate's bracket is before the event by less than"),
+        "{sep_line}"
+    );
+    assert_eq!(out.status.code(), Some(1), "{report}");
+}

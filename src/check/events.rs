@@ -20,6 +20,27 @@ pub fn error(tr: &Transition, t: f64, theta: f64) -> f64 {
     }
 }
 
+/// Where the candidate's bracket (its two rows' times, as written) lies
+/// relative to the event time `t_ev`, exactly: 1 after it, −1 before it, 0
+/// around it (or a time that cannot be read).
+fn exact_side(tr: &Transition, t_ev: &rug::Float) -> i32 {
+    let q = |s: &str| {
+        crate::exact::Exact::parse("t", s, false)
+            .ok()
+            .map(|e| e.coef)
+    };
+    let (Some(a), Some(b), Some(ev)) = (q(&tr.t.0), q(&tr.t.1), t_ev.to_rational()) else {
+        return 0;
+    };
+    if a > ev {
+        1
+    } else if b < ev {
+        -1
+    } else {
+        0
+    }
+}
+
 /// Distance in time from `t` to a transition's bracket.
 fn distance(tr: &Transition, t: f64) -> f64 {
     if t < tr.t_f.0 {
@@ -129,10 +150,28 @@ pub fn judge(
                 used[i] = true;
                 next = i + 1;
                 let tr = &transitions[i];
-                let err = error(tr, t, theta);
+                let mut err = error(tr, t, theta);
+                // inside or not decided exactly (the candidate's times as
+                // written against the event's time): binary64 put an event
+                // 1e-16 s past the bracket inside it
+                let side = exact_side(tr, &e.t.value);
+                let unresolved = err == 0.0 && side != 0;
+                if unresolved {
+                    // outside by less than binary64 resolves in θ
+                    err = f64::from(side) * f64::EPSILON * theta.abs().max(1.0);
+                }
                 let ok = err.abs() <= tol;
                 v.why = if err == 0.0 {
                     "the event lies inside the candidate's bracket".into()
+                } else if unresolved {
+                    format!(
+                        "the candidate's bracket is {} the event by less than {:.3e} rad of \
+                         theta (binary64's resolution of the angles compared; {} event-tol {:e})",
+                        if side > 0 { "after" } else { "before" },
+                        err.abs(),
+                        if ok { "within" } else { "beyond" },
+                        tol
+                    )
                 } else {
                     format!(
                         "the candidate's bracket is {} the event by {:.3e} rad of theta ({} \
