@@ -9,6 +9,7 @@ from fractions import Fraction
 from typing import Any, Dict, Iterable, List, Optional, Tuple, Union
 
 from . import _cylroll
+from ._errors import InvalidParameterError
 from ._exact import Number, _invalid, exact_text, mu_text, time_text
 from ._results import Enclosure, Forces, Separation, Trajectory, Value
 
@@ -386,7 +387,16 @@ class Model:
             if not names or not all(isinstance(c, str) for c in names):
                 raise _invalid("columns", repr(names), "must be a non-empty sequence of column names")
             cols = ",".join(names)
-        d = _cylroll.trajectory(self._pairs, _digits(digits), texts, *_branch(branch, part_at), cols)
+        try:
+            d = _cylroll.trajectory(self._pairs, _digits(digits), texts,
+                                    *_branch(branch, part_at), cols)
+        except InvalidParameterError as e:
+            if times is not None or e.name != "times":
+                raise
+            # a time of the grid, not one given: named by t_end and its step
+            k = texts.index(e.value) if e.value in texts else None
+            at = f"the grid's time {e.value}" + (f" (step {k} of {steps})" if k is not None else "")
+            raise _invalid("t_end", te, f"{at} {e.allowed}") from None
         return Trajectory._build(self, digits, d)
 
 

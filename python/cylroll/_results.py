@@ -314,7 +314,6 @@ class Trajectory(_Motion):
     """
 
     columns: List[str]
-    rows: List[List[Value]]
     modes: List[str]
     model: "Model"
     digits: int
@@ -325,7 +324,10 @@ class Trajectory(_Motion):
         t.model = model
         t.digits = digits
         t.columns = list(d["columns"])
-        t.rows = [[Value._from(raw) for raw in r] for r in d["rows"]]
+        # by column: (texts, digits, error bounds, their short texts); a
+        # row's Values are made only when asked (``rows``, ``values``)
+        t._cols = list(d["cols"])
+        t._rows = None
         t.modes = list(d["modes"])
         t._motion(d)
         return t
@@ -336,33 +338,47 @@ class Trajectory(_Motion):
         except ValueError:
             raise KeyError(f"no column {name!r}; columns: {', '.join(self.columns)}") from None
 
+    def _values(self, j: int) -> List[Value]:
+        name = self.columns[j]
+        texts, digits, errs, err_texts = self._cols[j]
+        return [Value(name, a, b, c, e) for a, b, c, e in zip(texts, digits, errs, err_texts)]
+
+    @property
+    def rows(self) -> List[List[Value]]:
+        """The table as lists of :class:`Value`, one per time (made on first
+        use; ``column``, ``errors``, ``to_numpy`` and ``to_csv`` do not need
+        them)."""
+        if self._rows is None:
+            cols = [self._values(j) for j in range(len(self.columns))]
+            self._rows = [list(r) for r in zip(*cols)] if cols else [[] for _ in self.modes]
+        return self._rows
+
     def __len__(self) -> int:
-        return len(self.rows)
+        return len(self.modes)
 
     def values(self, name: str) -> List[Value]:
         """The column ``name`` as :class:`Value` s."""
-        i = self._index(name)
-        return [r[i] for r in self.rows]
+        return self._values(self._index(name))
 
     def column(self, name: str) -> np.ndarray:
         """The column ``name`` as a float64 array (each the float nearest the
         verified digits)."""
-        i = self._index(name)
-        return np.array([float(r[i].text) for r in self.rows], dtype=np.float64)
+        return np.array(self._cols[self._index(name)][0], dtype=np.float64)
 
     def __getitem__(self, name: str) -> np.ndarray:
         return self.column(name)
 
     def errors(self, name: str) -> np.ndarray:
-        """The error bounds of the column ``name`` (float64)."""
-        i = self._index(name)
-        return np.array([r[i].err for r in self.rows], dtype=np.float64)
+        """The error bounds of the column ``name`` (float64, rounded up)."""
+        return np.array(self._cols[self._index(name)][2], dtype=np.float64)
 
     def to_numpy(self) -> np.ndarray:
         """The table as a float64 array of shape (rows, columns), columns in
         :attr:`columns` order (the modes are in :attr:`modes`)."""
-        return np.array([[float(v.text) for v in r] for r in self.rows],
-                        dtype=np.float64).reshape(len(self.rows), len(self.columns))
+        out = np.empty((len(self.modes), len(self.columns)), dtype=np.float64)
+        for j, col in enumerate(self._cols):
+            out[:, j] = np.array(col[0], dtype=np.float64)
+        return out
 
     def to_dict(self) -> Dict[str, np.ndarray]:
         """name -> float64 array (``check`` takes this back)."""
@@ -384,8 +400,8 @@ class Trajectory(_Motion):
         the ``mode`` column last); written to ``path`` if given."""
         head = list(self.columns) + ["mode"]
         lines = [",".join(head)]
-        for i, r in enumerate(self.rows):
-            cells = [v.text for v in r] + [self.modes[i]]
+        texts = [c[0] for c in self._cols] + [self.modes]
+        for cells in zip(*texts):
             lines.append(",".join(cells))
         text = "\n".join(lines) + "\n"
         if path is not None:
@@ -394,7 +410,7 @@ class Trajectory(_Motion):
         return text
 
     def __str__(self) -> str:
-        n = len(self.rows)
+        n = len(self.modes)
         head = (f"Trajectory: {n} row{'s' if n != 1 else ''} x {len(self.columns)} columns "
                 f"({self.digits} digits requested; every digit shown is verified)")
         show = list(range(n)) if n <= 8 else [0, 1, 2, 3, None, n - 3, n - 2, n - 1]
@@ -408,8 +424,7 @@ class Trajectory(_Motion):
             if i is None:
                 lines.append("  ...")
                 continue
-            r = self.rows[i]
-            cells = [r[self.columns.index(c)].text[:18] for c in cols]
+            cells = [self._cols[self.columns.index(c)][0][i][:18] for c in cols]
             line = "  " + "  ".join(f"{c:<18}" for c in cells) + f"  {self.modes[i]}"
             lines.append(line)
         return "\n".join(lines)

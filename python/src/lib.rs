@@ -3,7 +3,8 @@
 //! Thin on purpose: every function takes the model as key/value pairs of exact
 //! decimal text (the keys of `--params`, built by the Python class
 //! `cylroll.Model`), calls the library, and returns plain Python data — the
-//! verified values as `(name, text, digits, err, err_text)` tuples. The Python
+//! verified values as `(name, text, digits, err, err_text)` tuples, a
+//! trajectory's table by column. The Python
 //! modules next to it (`cylroll/*.py`) give them their classes, docstrings and
 //! NumPy arrays.
 //!
@@ -40,9 +41,54 @@ fn value(v: &Verified) -> Value {
         v.name.clone(),
         v.text.clone(),
         v.digits,
-        v.err_bound.to_f64(),
+        err_f64(v),
         v.err_text(),
     )
+}
+
+/// A value's error bound as a float, rounded up: still a bound (and not
+/// 0 below binary64's range where the bound is not 0).
+fn err_f64(v: &Verified) -> f64 {
+    let f = v.err_bound.to_f64();
+    if v.err_bound > f {
+        f.next_up()
+    } else {
+        f
+    }
+}
+
+/// A trajectory's table as it crosses into Python, by column (the Python
+/// side makes a row's `Value`s only when asked): per column its texts,
+/// digits, error bounds and their short texts; the mode of each row.
+#[derive(Default)]
+struct Table {
+    text: Vec<Vec<String>>,
+    digits: Vec<Vec<u32>>,
+    err: Vec<Vec<f64>>,
+    err_text: Vec<Vec<String>>,
+    modes: Vec<String>,
+}
+
+impl Table {
+    /// Appends the rows of a block of the answer.
+    fn push(&mut self, a: &Answer) {
+        for r in &a.rows {
+            let w = r.values.len();
+            if self.text.len() < w {
+                self.text.resize_with(w, Vec::new);
+                self.digits.resize_with(w, Vec::new);
+                self.err.resize_with(w, Vec::new);
+                self.err_text.resize_with(w, Vec::new);
+            }
+            for (j, v) in r.values.iter().enumerate() {
+                self.text[j].push(v.text.clone());
+                self.digits[j].push(v.digits);
+                self.err[j].push(err_f64(v));
+                self.err_text[j].push(v.err_text());
+            }
+            self.modes.push(r.phase.tag());
+        }
+    }
 }
 
 /// A model's exact echo (key, text), with the laws (`floor`, `contact`,
@@ -444,8 +490,9 @@ fn forces<'py>(
     answer_dict(py, &a)
 }
 
-/// `trajectory`: the answer's dict with `columns`, `rows` (one list of
-/// values per time) and `modes` (the phase of each row).
+/// `trajectory`: the answer's dict with `columns`, `cols` (per column:
+/// texts, digits, error bounds, their short texts; see [`Table`]) and
+/// `modes` (the phase of each row).
 #[pyfunction]
 #[pyo3(signature = (pairs, digits, times, branch="stay".to_string(), part_at=None, columns=None))]
 fn trajectory<'py>(
@@ -470,26 +517,46 @@ fn trajectory<'py>(
             Some(c) => oracle::parse_columns(c)?,
             None => oracle::all_columns(),
         };
-        oracle::trajectory_of(
+        // in blocks of rows, as the command line streams a long table: the
+        // library's working numbers for one block at a time, the table kept
+        // as text and floats
+        let mut table = Table::default();
+        let head = oracle::trajectory_in_blocks(
             &model,
             &times,
             &options(digits, &branch, part_at.as_deref())?,
             &cols,
-        )
+            BLOCK_ROWS,
+            |_, block| {
+                table.push(&block);
+                Ok(())
+            },
+        )?;
+        Ok((head, table))
     })?;
+    let (a, table) = a;
     let d = answer_dict(py, &a)?;
     let numeric: Vec<&String> = a.columns.iter().filter(|c| *c != "mode").collect();
+    let n = numeric.len();
     d.set_item("columns", numeric)?;
-    d.set_item(
-        "rows",
-        a.rows.iter().map(|r| values(&r.values)).collect::<Vec<_>>(),
-    )?;
-    d.set_item(
-        "modes",
-        a.rows.iter().map(|r| r.phase.tag()).collect::<Vec<_>>(),
-    )?;
+    let Table {
+        text,
+        digits,
+        err,
+        err_text,
+        modes,
+    } = table;
+    let mut cols = Vec::with_capacity(n);
+    for (((t, g), e), et) in text.into_iter().zip(digits).zip(err).zip(err_text) {
+        cols.push((t, g, e, et));
+    }
+    d.set_item("cols", cols)?;
+    d.set_item("modes", modes)?;
     Ok(d)
 }
+
+/// Rows of a trajectory computed at once (the command line's block).
+const BLOCK_ROWS: usize = 2000;
 
 /// An enclosure as the Python side takes it: (name, proved text, proved
 /// digits, mid, rad), the printed [mid ± rad] containing the enclosure.

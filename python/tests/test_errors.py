@@ -101,6 +101,12 @@ def test_messages_name_the_python_keywords():
     with pytest.raises(cylroll.InvalidParameterError) as e:
         cylroll.Model(floor="rolling")
     assert "goes to mu_floor)" in str(e.value)
+    # a grid's time past the end names t_end and its step, not times
+    with pytest.raises(cylroll.InvalidParameterError) as e:
+        cylroll.Model(theta0="1/10", mu="0.3").trajectory(t_end="6", steps=50)
+    assert e.value.name == "t_end"
+    assert "t_end = " in str(e.value) and "the grid's time 5.88 (step 49 of 50) " \
+        "must not be after the first impact" in str(e.value)
     # the notes too: the branch note names branch="part"
     notes = m.separation(digits=10).notes
     assert any('branch="part"' in n for n in notes)

@@ -362,3 +362,24 @@ def test_the_branch_point_is_enclosed():
     lo_s, _ = enc["theta_s"].interval()
     _, hi_star = star.interval()
     assert hi_star < lo_s
+
+
+def test_a_table_by_column_is_the_table_by_row():
+    # the table crosses by column and its rows' Values are made on first
+    # use: every access gives the same digits and bounds
+    m = cylroll.Model(theta0="1/10", mu="0.3")
+    tr = m.trajectory(t_end="5", steps=50, digits=25)
+    assert len(tr) == 51 == len(tr.rows) == len(tr.modes)
+    arr = tr.to_numpy()
+    for j, c in enumerate(tr.columns):
+        vals = tr.values(c)
+        assert [r[j] for r in tr.rows] == vals
+        assert np.array_equal(arr[:, j], tr.column(c))
+        assert np.array_equal(tr.errors(c), [v.err for v in vals])
+        for v in vals:
+            # the float bound is rounded up, as its text: both are bounds
+            assert (v.err == 0) == (v.err_text == "0")
+            assert v.err <= float(v.err_text)
+    lines = tr.to_csv().splitlines()
+    assert lines[0] == ",".join(tr.columns + ["mode"])
+    assert lines[7] == ",".join([v.text for v in tr.rows[6]] + [tr.modes[6]])
