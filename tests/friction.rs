@@ -2044,3 +2044,65 @@ fn a_coefficient_beyond_the_precision_is_the_rolling_contact() {
         }
     }
 }
+
+/// The angle θ0 itself, with friction from a sticking start: t = 0 and the
+/// state at the start (θ̇ = θ̇0). Its δ = θ − θ0 came out a hair below 0
+/// (θ rounded at p + 16 bits, θ0 at p), the target was dropped as not
+/// reached in the first phase, and the answer was the state at the first
+/// event: t(0.1) = 4.156… (the slip onset's time) with 30 digits claimed.
+#[test]
+fn the_start_angle_is_the_start() {
+    let cyl = |args: &[&str]| -> String {
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .args(args)
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout).to_string()
+    };
+    let value = |text: &str, key: &str| -> String {
+        text.lines()
+            .find(|l| l.starts_with(&format!("{key} ")))
+            .and_then(|l| l.split('=').nth(1))
+            .and_then(|l| l.split_whitespace().next())
+            .unwrap_or_else(|| panic!("{key}: {text}"))
+            .to_string()
+    };
+    for (th0, law) in [
+        ("0.1", &["--mu", "0.3"][..]),
+        ("0.1", &["--mu-floor", "0.3"][..]),
+        ("-0.1", &["--mu", "0.3"][..]),
+        ("pi/30", &["--mu", "0.3"][..]),
+        ("1/7", &["--mu-contact", "0.5,0.4"][..]),
+    ] {
+        for digits in ["15", "20", "30"] {
+            let mut a = vec!["time", "--theta0", th0, "--to", th0, "--digits", digits];
+            a.extend_from_slice(law);
+            assert_eq!(value(&cyl(&a), "t"), "0", "{th0} {law:?} {digits}");
+        }
+    }
+    let text = cyl(&[
+        "forces",
+        "--theta0",
+        "0.3",
+        "--thetadot0",
+        "0.2",
+        "--mu",
+        "0.3",
+        "--theta",
+        "0.3",
+        "--digits",
+        "20",
+    ]);
+    assert_eq!(
+        value(&text, "theta_dot"),
+        "0.20000000000000000000",
+        "{text}"
+    );
+}

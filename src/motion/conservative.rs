@@ -208,9 +208,29 @@ pub fn first_phase(
         }
     }
     // the requested angles (user frame → δ in the working frame)
+    // δ = θ − θ0 from the exact numbers: rounded apart (θ at p + 16 bits
+    // against θ0 at p) an angle given as θ0 itself came out a hair before
+    // the start, was dropped as not reached in the phase, and the answer at
+    // θ0 was the state at the first event (t = 4.156… for t(θ0) = 0)
+    let th0e = route.work.start().theta0.clone();
     let angle_at = |e: &Exact, kind: Ending| -> Option<(Ending, Float)> {
         let th = if sign < 0 { e.neg() } else { e.clone() };
-        let d = Float::with_val(p, th.to_float(p + 16) - th0w.clone());
+        let d = if th.times_pi == th0e.times_pi || th0e.coef == 0 || th.coef == 0 {
+            let pi_th = th.times_pi && th.coef != 0;
+            let pi_0 = th0e.times_pi && th0e.coef != 0;
+            if pi_th == pi_0 {
+                let q = rug::Rational::from(&th.coef - &th0e.coef);
+                let mut d = Float::with_val(p + 16, &q);
+                if pi_th {
+                    d *= Float::with_val(p + 16, rug::float::Constant::Pi);
+                }
+                Float::with_val(p, &d)
+            } else {
+                Float::with_val(p, th.to_float(p + 32) - th0e.to_float(p + 32))
+            }
+        } else {
+            Float::with_val(p, th.to_float(p + 32) - th0e.to_float(p + 32))
+        };
         (d.is_sign_positive() || d.is_zero()).then_some((kind, d))
     };
     let mut exact_ends: Vec<(Ending, Float)> = Vec::new();
