@@ -26,6 +26,15 @@ pub mod verify;
 
 use rug::Float;
 
+/// Frees MPFR's caches of the calling thread (its constants such as π and
+/// its pool of integers). MPFR keeps them per thread and does not free
+/// them when a thread ends: a thread that computes and exits calls this
+/// last, or every such thread (a worker per Python call, a thread per block
+/// of rows) leaves them behind (a few hundred bytes to kilobytes a call).
+pub fn free_thread_caches() {
+    rug::float::free_cache(rug::float::FreeCache::Local);
+}
+
 /// Bits needed for `digits` significant decimal digits: ⌈digits·log2 10⌉.
 pub fn bits_for_digits(digits: u32) -> u32 {
     ((digits as f64) * std::f64::consts::LOG2_10).ceil() as u32

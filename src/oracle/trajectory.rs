@@ -235,7 +235,9 @@ fn blocks_at_once(
                         if let Some(f) = flag {
                             crate::cancel::install(f);
                         }
-                        trajectory_block(model, chunk, opts, columns)
+                        let b = trajectory_block(model, chunk, opts, columns);
+                        crate::numeric::free_thread_caches();
+                        b
                     })
             })
             .collect();
