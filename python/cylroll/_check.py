@@ -23,6 +23,7 @@ from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Tuple, Union
 import numpy as np
 
 from . import _cylroll
+from ._exact import _invalid, exact_text
 from ._model import Model, _count, _digits
 
 __all__ = ["check", "CheckReport", "ColumnStats", "PhaseStats", "FirstFailure", "Phase",
@@ -303,9 +304,16 @@ def _cell(name: str, x: Any) -> str:
         return str(x)
     if isinstance(x, fractions.Fraction):
         return _fraction_text(name, x)
-    if isinstance(x, np.floating) and np.finfo(x.dtype).nmant > 52:
-        # a wider float (longdouble): its own shortest round-trip decimal
+    if isinstance(x, np.floating) and np.finfo(x.dtype).nmant != 52:
+        # a narrower (float32, float16) or wider (longdouble) float: its
+        # own shortest round-trip decimal, as it prints and as a CSV file
+        # written from it carries it (float32 0.1 is 0.1, not the float64
+        # 0.10000000149011612)
         return np.format_float_scientific(x, unique=True).replace(".e", "e")
+    if x is None or isinstance(x, (complex, np.complexfloating)) or not isinstance(
+        x, (float, np.floating, numbers.Real)
+    ):
+        raise TypeError(f"expected a real number or its text, got {type(x).__name__}")
     # the shortest decimal that reads back as the same float (inf and nan
     # are refused by the core, with the row named)
     return repr(float(x))
@@ -324,7 +332,7 @@ def _fraction_text(name: str, x: fractions.Fraction) -> str:
         b += 1
     if d != 1:
         raise ValueError(
-            f"column {name}: {x} has no exact decimal: give it as a decimal string or a "
+            f"{x} has no exact decimal: give it as a decimal string or a "
             f"Decimal (the candidate is judged as written, not rounded)"
         )
     k = max(a, b)
@@ -345,10 +353,24 @@ def _from_mapping(cand: Any) -> Tuple[List[str], List[List[str]]]:
             arr = arr.reshape(1)
         if arr.ndim != 1:
             raise ValueError(f"column {name}: expected a 1-d array, got shape {arr.shape}")
-        if name in _TEXT:
-            cols.append([str(x).strip() for x in arr.tolist()])
-        else:
-            cols.append([_cell(name, x) for x in arr.tolist()])
+        if any(c in name for c in ',"\r\n'):
+            raise _invalid("candidate", name, "a column name may not hold a comma, a quote or a "
+                           "line break")
+        # numpy scalars of a float type other than float64 keep their type
+        # (tolist() would widen float32 to the float64 it is, not the
+        # decimal it prints as)
+        items = list(arr) if arr.dtype.kind == "f" and arr.dtype != np.float64 else arr.tolist()
+        cells = []
+        for i, x in enumerate(items):
+            try:
+                c = str(x).strip() if name in _TEXT else _cell(name, x)
+            except (TypeError, ValueError) as e:
+                raise _invalid("candidate", f"row {i + 1}, column {name}: {x!r}", str(e)) from None
+            if any(ch in c for ch in ',"\r\n'):
+                raise _invalid("candidate", f"row {i + 1}, column {name}: {c!r}",
+                               "a cell may not hold a comma, a quote or a line break")
+            cells.append(c)
+        cols.append(cells)
     n = {len(c) for c in cols}
     if len(n) > 1:
         lens = ", ".join(f"{k}: {len(c)}" for k, c in zip(names, cols))
@@ -480,7 +502,12 @@ def check(
     if not isinstance(branch, str):
         raise TypeError(f"branch: expected 'auto', 'stay' or 'part', got {type(branch).__name__}")
     if part_at is not None and not isinstance(part_at, str):
-        part_at = repr(float(part_at))
+        # exactly, as the Model's methods read an angle (a float as the
+        # decimal it prints as)
+        if isinstance(part_at, (float, np.floating)):
+            part_at = _cell("part_at", part_at)
+        else:
+            part_at = exact_text("part_at", part_at, False)
     rows = None if max_rows is None else _count("max_rows", max_rows, 100_000_000)
     d = _cylroll.check(text, path, source, case_name, pairs, _tol_text("rtol", rtol),
                        _tol_text("atol", atol), _tols(tol), branch, part_at,

@@ -18,6 +18,11 @@ from ._model import Model
 __all__ = ["names", "case", "description", "toml", "steps"]
 
 
+def _name(name: object) -> None:
+    if not isinstance(name, str):
+        raise TypeError(f"name: expected a golden case name (str), got {type(name).__name__}")
+
+
 def names() -> List[str]:
     """The names of the golden cases, sorted."""
     return list(_cylroll.golden_names())
@@ -26,12 +31,14 @@ def names() -> List[str]:
 def case(name: str) -> Model:
     """The model of the golden case ``name`` (with its friction laws, if any).
     Raises :class:`cylroll.InvalidParameterError` for an unknown name."""
+    _name(name)
     _, pairs, _, _ = _cylroll.golden_case(name)
     return Model._from_pairs(dict(pairs))
 
 
 def description(name: str) -> str:
     """The one-line description of the case."""
+    _name(name)
     return _cylroll.golden_case(name)[2]
 
 

@@ -181,6 +181,7 @@ fn python_name(name: &str) -> String {
 fn python_words(text: &str) -> String {
     let text = text
         .replace("--branch part", "branch=\"part\"")
+        .replace("past-end '", "past_end='")
         .replace("--params FILE", "Model.from_toml(FILE)")
         .replace("--params", "Model.from_toml");
     let mut out = String::with_capacity(text.len());
@@ -606,7 +607,9 @@ fn enclose(
             // with friction: where sticking ends, from a start where both
             // contacts stick (the command line's separation --rigorous)
             if what != "separation" || theta.is_some() {
-                return Err(cylroll::oracle::rigorous::unsupported("with friction"));
+                // the keyword that asked it (the command line names its flag)
+                return Err(cylroll::oracle::rigorous::unsupported("with friction")
+                    .map_invalid(|_, v| ("what".to_string(), format!("{what} {v}"))));
             }
             let ans = oracle::separation(&model, &Options::digits(digits))?;
             let slots = cylroll::oracle::rigorous::stick_end_proved(&model, &ans, digits).map_err(
@@ -789,7 +792,7 @@ fn check<'py>(
     let d = PyDict::new(py);
     d.set_item("passed", rep.passed())?;
     d.set_item("verdict", rep.verdict())?;
-    d.set_item("text", rep.text())?;
+    d.set_item("text", python_words(&rep.text()))?;
     d.set_item("report", rep.value(false).to_string())?;
     Ok(d)
 }

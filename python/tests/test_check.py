@@ -268,3 +268,39 @@ def test_an_unreadable_candidate_is_an_input_file_error(tmp_path):
         with pytest.raises(cylroll.InputFileError, match="cannot be read") as e:
             cylroll.check(str(bad), "main_roll_roll")
         assert isinstance(e.value, OSError) and e.value.exit_code == 2
+
+
+def test_cells_are_read_as_they_print_and_refused_by_row():
+    m = cylroll.Model(theta0="1/10")
+    tr = m.trajectory(["0", "0.1", "0.5"], digits=20)
+    # float32 times and values: the decimals they print as, as a CSV file
+    # written from them carries them (not their float64 widening)
+    d32 = {"t": np.array([0, 0.1, 0.5], dtype=np.float32),
+           "theta": tr["theta"].astype(np.float32)}
+    csv_text = "t,theta\n" + "\n".join(f"{t!s},{x!s}" for t, x in zip(d32["t"], d32["theta"])) + "\n"
+    a = cylroll.check(d32, m, rtol=1e-6, atol=0)
+    import tempfile, os
+    with tempfile.TemporaryDirectory() as tmp:
+        p = os.path.join(tmp, "c.csv")
+        with open(p, "w") as f:
+            f.write(csv_text)
+        b = cylroll.check(p, m, rtol=1e-6, atol=0)
+    assert a.passed and b.passed
+    assert a.column("theta").max_abs == b.column("theta").max_abs
+    # a cell that is not a real number is refused naming its row and column
+    for bad in (None, 1 + 2j, Fraction(1, 3), [1.0]):
+        with pytest.raises(cylroll.InvalidParameterError, match=r"row 2, column theta"):
+            cylroll.check({"t": [0, 0.1], "theta": np.array([0.1, bad], dtype=object)}, m)
+    with pytest.raises(cylroll.InvalidParameterError, match="comma"):
+        cylroll.check({"t": ["0", "0.1"], "theta": ["0.1", "0.1,2"]}, m)
+    with pytest.raises(cylroll.InvalidParameterError, match="column name"):
+        cylroll.check({"t": [0.0], "the,ta": [0.1]}, m)
+    # part_at exactly, as the Model's methods take it; a wrong type named
+    with pytest.raises(cylroll.InvalidParameterError, match="part_at"):
+        cylroll.check({"t": [0.0], "theta": [0.1]}, m, part_at=Fraction(1, 10))
+    with pytest.raises(TypeError, match="part_at"):
+        cylroll.check({"t": [0.0], "theta": [0.1]}, m, part_at=[1])
+    # the report speaks Python
+    assert "--" not in cylroll.check({"t": [0.0], "theta": [0.1]}, m).text
+    with pytest.raises(TypeError, match="name: expected a golden case name"):
+        cylroll.golden.case(3)

@@ -493,8 +493,12 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
                 "tol",
                 format!("{}={}", o.column, o.rtol),
                 format!(
-                    "names a column the candidate {} does not have (its columns: {})",
-                    src.name(),
+                    "names a column {} does not have (its columns: {})",
+                    if src.name() == "candidate" {
+                        "the candidate".to_string()
+                    } else {
+                        format!("the candidate {}", src.name())
+                    },
                     header.cols.join(", ")
                 ),
             ));
