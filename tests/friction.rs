@@ -2106,3 +2106,57 @@ fn the_start_angle_is_the_start() {
         "{text}"
     );
 }
+
+/// A value with no digit the two runs share, but negligible with its bound
+/// (the work 6.4e-80 a hair past the floor's slip onset, the runs 5e-81
+/// apart), is 0 to within |value| + bound, as a value within its bound of 0
+/// is: it was refused at 30 and 35 digits ("could not verify"), 0 at 20.
+/// The bound printed holds the 40-digit value.
+#[test]
+fn a_negligible_value_without_a_shared_digit_is_zero_within_its_bound() {
+    let t = "2.374725494927152814937895";
+    let run = |digits: &str, fmt: &str, columns: &str| -> String {
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args([
+                "trajectory",
+                "--params",
+                "golden/cases/main_floor_slips.toml",
+            ])
+            .args(["--times", t, "--digits", digits, "--columns", columns])
+            .args(["--format", fmt])
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{digits}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout).to_string()
+    };
+    let truth: f64 = run("40", "csv", "t,s1,work")
+        .lines()
+        .last()
+        .and_then(|l| l.split(',').nth(2))
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(truth > 6.4e-80 && truth < 6.5e-80, "{truth}");
+    for digits in ["25", "30", "35"] {
+        let text = run(digits, "text", "t,s1,work");
+        let bound: f64 = text
+            .lines()
+            .find_map(|l| l.split("|work| <= ").nth(1))
+            .unwrap_or_else(|| panic!("{digits}: {text}"))
+            .trim()
+            .parse()
+            .unwrap();
+        let negligible = 10f64.powi(-digits.parse::<i32>().unwrap());
+        assert!(
+            bound >= truth && bound <= negligible,
+            "{digits}: {bound} vs {truth}"
+        );
+    }
+}

@@ -402,7 +402,23 @@ fn absolute_fallback(last: bool, digits: u32, a: &Estimate, b: &Estimate) -> Opt
     if !bound.is_finite() || *bound > negligible(b, digits) {
         return None;
     }
-    (1..digits).rev().find_map(|d| judged(d, a, b).ok())
+    (1..digits)
+        .rev()
+        .find_map(|d| judged(d, a, b).ok())
+        .or_else(|| {
+            // no digit shared, but the value itself is negligible with its
+            // bound: 0 to within |value| + bound, as a value within its bound
+            // of 0 is (the work 6.4e-80 a hair past a slip onset, the runs
+            // 5e-81 apart, refused at 30 digits and 0 at 20)
+            let p = b.value.prec();
+            let whole = Float::with_val(p, b.value.abs_ref()) + &*bound;
+            (whole <= negligible(b, digits)).then(|| Judged {
+                value: None,
+                text: "0".to_string(),
+                digits: 0,
+                err_bound: Some(whole),
+            })
+        })
 }
 
 /// Runs `f` at two precisions (climbing the ladder if needed) and verifies
