@@ -526,3 +526,50 @@ fn every_golden_case_is_enclosed_around_its_verified_values() {
         "ideal {ideal}, friction {friction}"
     );
 }
+
+/// The proof of θs closes at every precision, not only up to ~256 bits: its
+/// Newton refinement started from the 64-bit isolated root converted to p
+/// bits, so its schedule took two steps (64 → 256 bits) and beyond 78 digits
+/// the proof fell back to a box of 1e-12 around the start (11 digits proved
+/// at 79, 90, 120 digits, silently). Every golden ideal case: θs and t_s are
+/// proved to every digit asked at 79, 120 and 300 digits, and contain the
+/// values verified at 40 more digits.
+#[test]
+fn theta_s_is_proved_to_every_digit_at_high_precision() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("golden");
+    let cases = cylroll::golden::load_cases(&dir).unwrap();
+    for case in &cases {
+        let Some(model) = case.model.ideal() else {
+            continue;
+        };
+        for digits in [79u32, 120, 300] {
+            let mut o = Oracle::new(&model, digits).unwrap();
+            let p = cylroll::numeric::bits_for_digits(digits) + 40;
+            let (th, ts) = o.rigorous_separation(p).unwrap();
+            let want = Oracle::new(&model, digits + 40)
+                .unwrap()
+                .separation()
+                .unwrap();
+            assert!(
+                th.iv.contains(&want.theta_s.value),
+                "{} {digits}",
+                case.name
+            );
+            assert!(
+                th.shown.digits >= digits,
+                "{} at {digits}: theta_s proved to {} digits",
+                case.name,
+                th.shown.digits
+            );
+            if let (Ok(t), Some(w)) = (ts, &want.t_s) {
+                assert!(t.iv.contains(&w.value), "{} {digits}: t_s", case.name);
+                assert!(
+                    t.shown.digits >= digits,
+                    "{} at {digits}: t_s proved to {} digits",
+                    case.name,
+                    t.shown.digits
+                );
+            }
+        }
+    }
+}

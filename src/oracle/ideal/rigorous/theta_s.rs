@@ -34,7 +34,11 @@ impl Oracle {
         let k = self.consts(p);
         let coef = self.n12_interval_coefficients(&k)?;
         let c0 = k.th0.cos();
-        match first_root_below(&coef, "theta_s", &Float::with_val(p, &start), &c0.hi, p)? {
+        // the start at its own 64 bits: Newton's schedule doubles from the
+        // precision the start carries (at p bits it took two steps from a
+        // 64-bit root, enough up to ~256 bits; beyond 78 digits the proof
+        // fell back to a 1e-12 box around the start: 11 digits proved)
+        match first_root_below(&coef, "theta_s", &start, &c0.hi, p)? {
             Some(c) => Ok(self.odd_iv(c.acos()?)),
             None => Err(not_enclosed(
                 "theta_s: the sign change of N12 could not be proved",
