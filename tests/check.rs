@@ -735,11 +735,12 @@ fn a_lawful_parting_passes_on_every_grid() {
                 .as_str()
                 .unwrap_or_default()
                 .to_string();
-            assert!(
-                f.starts_with(followed),
-                "{branch:?} {steps}: {}",
-                v["branch"]
-            );
+            let same = if followed == "part-at" {
+                f.starts_with("part-at ")
+            } else {
+                f == followed
+            };
+            assert!(same, "{branch:?} {steps}: {}", v["branch"]);
         }
     }
 }
@@ -815,7 +816,11 @@ fn an_event_a_hair_past_the_bracket_is_not_inside_it() {
             - rug::Rational::from((k, rug::Integer::from(rug::Integer::u_pow_u(10, 16))));
         rug::Float::with_val(400, q).to_string_radix(10, Some(60))
     };
-    let times = format!("0,{},{}", before(2), before(1));
+    let after = {
+        let q = Exact::parse("t", &ts, false).unwrap().coef + rug::Rational::from((1, 1000));
+        rug::Float::with_val(400, q).to_string_radix(10, Some(60))
+    };
+    let times = format!("0,{},{},{after}", before(2), before(1));
     let out = cyl()
         .args(["trajectory", "--params", case, "--times", &times])
         .args([
@@ -829,11 +834,10 @@ fn an_event_a_hair_past_the_bracket_is_not_inside_it() {
         .output()
         .unwrap();
     let text = String::from_utf8_lossy(&out.stdout).to_string();
-    // the last row enters the flight 1e-16 s early
+    // the third row enters the flight 1e-16 s early (the fourth is in it)
     let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
-    let last = lines.pop().unwrap();
-    let (head, _) = last.rsplit_once(',').unwrap();
-    lines.push(format!("{head},flight"));
+    let (head, _) = lines[3].rsplit_once(',').unwrap();
+    lines[3] = format!("{head},flight");
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("ev.csv");
     std::fs::write(&p, lines.join("\n") + "\n").unwrap();

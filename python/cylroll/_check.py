@@ -508,7 +508,7 @@ def check(
             part_at = _cell("part_at", part_at)
         else:
             part_at = exact_text("part_at", part_at, False)
-    rows = None if max_rows is None else _count("max_rows", max_rows, 100_000_000)
+    rows = None if max_rows is None else _count("max_rows", max_rows, _cylroll.MAX_ROWS)
     d = _cylroll.check(text, path, source, case_name, pairs, _tol_text("rtol", rtol),
                        _tol_text("atol", atol), _tols(tol), branch, part_at,
                        None if event_tol is None else _tol_text("event_tol", event_tol),

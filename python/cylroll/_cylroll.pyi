@@ -14,6 +14,7 @@ FRICTION_KEYS: List[str]
 COLUMNS: List[str]
 FORCE_KEYS: List[str]
 MAX_DIGITS: int
+MAX_ROWS: int
 LIBRARY_VERSION: str
 
 #: an answer: values, notes, events, start_mode, end, impact_surface, branch, mode,
@@ -39,6 +40,7 @@ def trajectory(
     times: List[str],
     branch: str = ...,
     part_at: Optional[str] = ...,
+    columns: Optional[str] = ...,
 ) -> _Answer: ...
 def check(
     csv: Optional[str],
@@ -46,14 +48,15 @@ def check(
     source: str,
     case_name: str,
     pairs: Optional[Dict[str, str]],
-    rtol: float,
-    atol: float,
-    tols: List[Tuple[str, float, Optional[float]]],
+    rtol: str,
+    atol: str,
+    tols: List[Tuple[str, str, Optional[str]]],
     branch: str,
     part_at: Optional[str],
-    event_tol: Optional[float],
+    event_tol: Optional[str],
     digits: int,
     past_end: str,
+    max_rows: Optional[int],
 ) -> Dict[str, object]: ...
 def enclose(
     pairs: Dict[str, str], digits: int, what: str, theta: Optional[str] = ...

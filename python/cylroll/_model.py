@@ -171,15 +171,17 @@ class Model:
 
         A new law replaces its contact's friction: ``floor=`` drops the
         model's ``mu_floor`` and ``contact=`` its ``mu_contact``, unless the
-        same call gives them, so ``Model(mu="0.3").replace(floor="roll")``
+        same call gives them (``mu`` gives both where the law takes one), so
+        ``Model(mu="0.3").replace(floor="roll")``
         is a rolling floor under a Coulomb contact (the coefficient would
         otherwise remain that contact's law)."""
         for k, allowed in (("floor", "'roll', 'slip' or 'fixed'"), ("contact", "'roll' or 'slip'")):
             if k in changes and not isinstance(changes[k], str):
                 raise TypeError(f"{k}: expected {allowed}, got {type(changes[k]).__name__}")
         pairs = dict(self._pairs)
+        # (mu, below, gives both again where the law takes one: not a held floor)
         for law, coef in (("floor", "mu_floor"), ("contact", "mu_contact")):
-            if law in changes and coef not in changes and "mu" not in changes:
+            if law in changes and coef not in changes:
                 pairs.pop(coef, None)
         if "mu" in changes:
             mu = changes.pop("mu")

@@ -174,33 +174,69 @@ fn python_name(name: &str) -> String {
     }
 }
 
+/// The command line's flags the library's messages name, and the Python
+/// keyword of each (the name with underscores; `--params` is a file read
+/// by `Model.from_toml`).
+const FLAGS: &[&str] = &[
+    "columns",
+    "digits",
+    "event-tol",
+    "golden",
+    "max-rows",
+    "mu",
+    "mu-contact",
+    "mu-floor",
+    "omega0",
+    "part-at",
+    "past-end",
+    "schema",
+    "steps",
+    "t-end",
+    "theta",
+    "theta0",
+    "thetadot0",
+    "times",
+    "times-file",
+    "to",
+    "tol",
+];
+
 /// A library text as a Python user reads it: the command line's flags
 /// become the keywords that ask the same (`--branch part` is
 /// `branch="part"`, `--part-at` `part_at`, `--digits` `digits`, `--params
-/// FILE` `Model.from_toml(FILE)`, …); nothing else changes.
+/// FILE` `Model.from_toml(FILE)`, …). Only a flag of [`FLAGS`] standing as
+/// a word (not inside a path, a column name or a cell quoted: `no--such`)
+/// is rewritten; nothing else changes.
 fn python_words(text: &str) -> String {
     let text = text
         .replace("--branch part", "branch=\"part\"")
         .replace("past-end '", "past_end='")
-        .replace("--params FILE", "Model.from_toml(FILE)")
-        .replace("--params", "Model.from_toml");
+        .replace("--params FILE", "Model.from_toml(FILE)");
     let mut out = String::with_capacity(text.len());
     let mut rest = text.as_str();
     while let Some(i) = rest.find("--") {
-        out.push_str(&rest[..i]);
-        let after = &rest[i + 2..];
+        let (before, at) = rest.split_at(i);
+        out.push_str(before);
+        let after = &at[2..];
         let end = after
             .find(|c: char| !(c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'))
             .unwrap_or(after.len());
-        let flag = &after[..end];
-        if flag.starts_with(|c: char| c.is_ascii_lowercase()) {
-            out.push_str(&python_name(flag.trim_end_matches('-')));
-            out.push_str(&flag[flag.trim_end_matches('-').len()..]);
+        let flag = after[..end].trim_end_matches('-');
+        // a word of its own: at the start, or after a space or bracket
+        let alone = out
+            .chars()
+            .last()
+            .is_none_or(|c| c.is_whitespace() || "([{,;:'\"`".contains(c));
+        if alone && flag == "params" {
+            out.push_str("Model.from_toml");
+            rest = &after[flag.len()..];
+        } else if alone && FLAGS.contains(&flag) {
+            out.push_str(&python_name(flag));
+            rest = &after[flag.len()..];
         } else {
             out.push_str("--");
-            out.push_str(flag);
+            rest = after;
         }
-        rest = &after[end..];
     }
     out.push_str(rest);
     out
@@ -220,6 +256,8 @@ fn python_message(e: &Error) -> String {
             allowed: python_words(allowed),
         }
         .to_string(),
+        // a file's error names its path as it is
+        Error::Io { .. } | Error::Write { .. } => e.to_string(),
         other => python_words(&other.to_string()),
     }
 }
@@ -692,19 +730,6 @@ fn run_check(
 /// decimal text Python gave (read as the command line's `--tol`).
 type TolOverride = (String, String, Option<String>);
 
-/// A tolerance's text as the command line reads it
-/// ([`cylroll::check::tolerance_of`]: 0, or a finite number from 1e-300
-/// on), or an error naming the keyword.
-fn tolerance(name: &str, text: &str) -> cylroll::Result<f64> {
-    cylroll::check::tolerance_of(text).ok_or_else(|| {
-        Error::invalid(
-            name,
-            text,
-            "must be a finite number >= 0: 0, or from 1e-300 on (e.g. 1e-8)",
-        )
-    })
-}
-
 /// `check`: judges a candidate (CSV text, or the path of a CSV file)
 /// against a golden case (by name) or a model (key/value pairs) with the
 /// command line's scoring core; returns `{"report": JSON text with numbers,
@@ -743,15 +768,19 @@ fn check<'py>(
             model,
             steps,
         };
-        let mut lim = Limits::new(tolerance("rtol", &rtol)?, tolerance("atol", &atol)?, digits);
+        let mut lim = Limits::new(
+            cylroll::check::tolerance("rtol", &rtol)?,
+            cylroll::check::tolerance("atol", &atol)?,
+            digits,
+        );
         lim.tols = tols
             .into_iter()
             .map(|(column, rtol, atol)| {
                 let name = format!("tol['{column}']");
-                tolerance(&name, &rtol)?;
+                cylroll::check::tolerance(&name, &rtol)?;
                 let spec = match atol {
                     Some(a) => {
-                        tolerance(&name, &a)?;
+                        cylroll::check::tolerance(&name, &a)?;
                         format!("{column}={rtol},{a}")
                     }
                     None => format!("{column}={rtol}"),
@@ -784,7 +813,7 @@ fn check<'py>(
             }
         };
         if let Some(e) = event_tol {
-            lim.event_tol = tolerance("event_tol", &e)?;
+            lim.event_tol = cylroll::check::tolerance("event_tol", &e)?;
         }
         lim.past_end = PastEnd::parse("past_end", &past_end)?;
         run_check(csv, path, &source, &case, &lim)
@@ -805,6 +834,7 @@ fn _cylroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("COLUMNS", motion::COLUMNS.to_vec())?;
     m.add("FORCE_KEYS", FORCES_KEYS.to_vec())?;
     m.add("MAX_DIGITS", cylroll::oracle::MAX_DIGITS)?;
+    m.add("MAX_ROWS", cylroll::check::MAX_ROWS_LIMIT)?;
     m.add("LIBRARY_VERSION", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(validate, m)?)?;
     m.add_function(wrap_pyfunction!(read_toml, m)?)?;

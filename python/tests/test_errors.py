@@ -107,6 +107,14 @@ def test_messages_name_the_python_keywords():
     assert e.value.name == "t_end"
     assert "t_end = " in str(e.value) and "the grid's time 5.88 (step 49 of 50) " \
         "must not be after the first impact" in str(e.value)
+    # only a flag standing as a word is rewritten: not a path, a column
+    # name or a cell that holds two hyphens
+    with pytest.raises(cylroll.InputFileError) as e:
+        cylroll.Model.from_toml("/nonexistent/no--such.toml")
+    assert "no--such.toml" in str(e.value)
+    with pytest.raises(cylroll.InvalidParameterError) as e:
+        cylroll.check({"t": [0.0], "the--ta": [0.1]}, "mujoco_main")
+    assert "the--ta" in str(e.value)
     # the notes too: the branch note names branch="part"
     notes = m.separation(digits=10).notes
     assert any('branch="part"' in n for n in notes)

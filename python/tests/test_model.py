@@ -71,8 +71,10 @@ def test_replace_a_law_replaces_its_coefficient():
     with pytest.raises(cylroll.InvalidParameterError, match="contradicts"):
         c.replace(floor="slip", mu_floor="0.2")
     assert c.replace(floor="roll", mu_floor="0.2").laws["mu_floor"] == "0.2"
-    # mu in the same call sets both, the law's too
+    # mu in the same call sets both, the law's too; a held floor takes none
     assert c.replace(contact="roll", mu="0.4").laws["mu_contact"] == "0.4"
+    assert c.replace(floor="fixed", mu="0.5") == cylroll.Model(theta0="1/20", floor="fixed",
+                                                              mu="0.5")
     # the law's type is named, as by the constructor
     with pytest.raises(TypeError, match="floor: expected"):
         c.replace(floor=1)

@@ -383,3 +383,12 @@ def test_a_table_by_column_is_the_table_by_row():
     lines = tr.to_csv().splitlines()
     assert lines[0] == ",".join(tr.columns + ["mode"])
     assert lines[7] == ",".join([v.text for v in tr.rows[6]] + [tr.modes[6]])
+
+
+def test_a_lower_bound_has_no_finite_error_bound():
+    # the friction a contact needs at θs, |F21|/N12 with N12 = 0 within its
+    # bound, is a lower bound: its error bound is infinite, printed so
+    m = cylroll.Model(theta0="1/10")
+    ths = m.separation(digits=20).theta_s.text
+    v = m.forces(ths, digits=20)["mu_contact"]
+    assert v.text.startswith(">=") and v.err == float("inf") and v.err_text == "inf"

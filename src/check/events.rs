@@ -20,25 +20,39 @@ pub fn error(tr: &Transition, t: f64, theta: f64) -> f64 {
     }
 }
 
-/// Where the candidate's bracket (its two rows' times, as written) lies
-/// relative to the event time `t_ev`, exactly: 1 after it, −1 before it, 0
-/// around it (or a time that cannot be read).
-fn exact_side(tr: &Transition, t_ev: &rug::Float) -> i32 {
-    let q = |s: &str| {
-        crate::exact::Exact::parse("t", s, false)
-            .ok()
-            .map(|e| e.coef)
-    };
-    let (Some(a), Some(b), Some(ev)) = (q(&tr.t.0), q(&tr.t.1), t_ev.to_rational()) else {
+/// A time as the candidate wrote it, exactly.
+fn written(s: &str) -> Option<rug::Rational> {
+    crate::exact::Exact::parse("t", s, false)
+        .ok()
+        .map(|e| e.coef)
+}
+
+/// Where the times `a` <= `b` (as written) lie relative to the event time
+/// `ev`, known to within its error bound, exactly: 1 after it, -1 before
+/// it, 0 around it or within its error (undecided: the caller's binary64
+/// reading stands), or a time that cannot be read.
+fn exact_side_of(a: &str, b: &str, ev: &crate::numeric::verify::Verified) -> i32 {
+    let (Some(a), Some(b), Some(t), Some(e)) = (
+        written(a),
+        written(b),
+        ev.value.to_rational(),
+        ev.err_bound.to_rational(),
+    ) else {
         return 0;
     };
-    if a > ev {
+    if a > rug::Rational::from(&t + &e) {
         1
-    } else if b < ev {
+    } else if b < rug::Rational::from(&t - &e) {
         -1
     } else {
         0
     }
+}
+
+/// Where the candidate's bracket (its two rows' times) lies relative to
+/// the event ([`exact_side_of`]).
+fn exact_side(tr: &Transition, ev: &crate::numeric::verify::Verified) -> i32 {
+    exact_side_of(&tr.t.0, &tr.t.1, ev)
 }
 
 /// Distance in time from `t` to a transition's bracket.
@@ -131,7 +145,16 @@ pub fn judge(
             out.list.push(v);
             continue;
         }
-        if t > t1 || t < t0 {
+        // outside the candidate's rows, decided on the times as written
+        // (binary64 put an event 1e-16 s past the last row inside them)
+        let outside = match (phases.first(), phases.last()) {
+            (Some(f), Some(l)) => match exact_side_of(&f.t_first, &l.t_last, &e.t) {
+                0 => t > t1 || t < t0,
+                _ => true,
+            },
+            _ => t > t1 || t < t0,
+        };
+        if outside {
             v.why = "outside the candidate's rows: not judged".into();
             out.list.push(v);
             continue;
@@ -154,11 +177,13 @@ pub fn judge(
                 // inside or not decided exactly (the candidate's times as
                 // written against the event's time): binary64 put an event
                 // 1e-16 s past the bracket inside it
-                let side = exact_side(tr, &e.t.value);
+                let side = exact_side(tr, &e.t);
                 let unresolved = err == 0.0 && side != 0;
                 if unresolved {
-                    // outside by less than binary64 resolves in θ
-                    err = f64::from(side) * f64::EPSILON * theta.abs().max(1.0);
+                    // outside by less than binary64 resolves in θ: the two
+                    // θ compared were each rounded to nearest, so their
+                    // difference, 0 in binary64, is at most an ulp of θ
+                    err = f64::from(side) * 2.0 * f64::EPSILON * theta.abs().max(f64::MIN_POSITIVE);
                 }
                 let ok = err.abs() <= tol;
                 v.why = if err == 0.0 {

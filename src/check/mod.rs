@@ -30,9 +30,12 @@ pub mod read;
 mod render;
 pub mod tol;
 
+/// The largest `max_rows` a candidate may be given (`--max-rows`).
+pub const MAX_ROWS_LIMIT: usize = 100_000_000;
+
 pub use branch::{BranchReport, Parting, Request as BranchRequest};
 pub use read::{File, Source, Text, MAX_LINE_BYTES};
-pub use tol::{parse_override, tolerance_of, Override, Tol};
+pub use tol::{parse_override, tolerance, tolerance_of, Override, Tol, TOLERANCE_ALLOWED};
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;

@@ -192,8 +192,9 @@ impl<'a> Rows<'a> {
                 return Err(refuse(
                     &self.source,
                     format!(
-                        "has more than {} data rows (raise --max-rows, at most 100000000)",
-                        self.max_rows
+                        "has more than {} data rows (raise --max-rows, at most {})",
+                        self.max_rows,
+                        super::MAX_ROWS_LIMIT
                     ),
                 ));
             }
@@ -232,8 +233,9 @@ impl<'a> Rows<'a> {
                 return Err(refuse(
                     &self.source,
                     format!(
-                        "has more than {} data rows (raise --max-rows, at most 100000000)",
-                        self.max_rows
+                        "has more than {} data rows (raise --max-rows, at most {})",
+                        self.max_rows,
+                        super::MAX_ROWS_LIMIT
                     ),
                 ));
             }

@@ -51,6 +51,15 @@ pub fn tolerance_of(text: &str) -> Option<f64> {
     Some(v)
 }
 
+/// What a tolerance may be, for messages.
+pub const TOLERANCE_ALLOWED: &str =
+    "must be a finite number >= 0: 0, or from 1e-300 on (e.g. 1e-8)";
+
+/// A tolerance named `name` ([`tolerance_of`]), or an error naming it.
+pub fn tolerance(name: &str, text: &str) -> Result<f64> {
+    tolerance_of(text).ok_or_else(|| Error::invalid(name, text, TOLERANCE_ALLOWED))
+}
+
 /// A tolerance value of `--tol` ([`tolerance_of`]).
 fn tol_value(name: &str, spec: &str, text: &str) -> Result<f64> {
     match tolerance_of(text) {

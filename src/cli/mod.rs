@@ -284,7 +284,7 @@ fn steps_arg(s: &str) -> std::result::Result<u32, String> {
 
 /// `--max-rows`: 1..=10^8 rows.
 fn rows_arg(s: &str) -> std::result::Result<usize, String> {
-    int_arg(s, 1, 100_000_000).map(|v| v as usize)
+    int_arg(s, 1, cylroll::check::MAX_ROWS_LIMIT as u64).map(|v| v as usize)
 }
 
 /// `--schema`: 1 or 2.
@@ -303,8 +303,7 @@ fn tol_override_arg(s: &str) -> std::result::Result<cylroll::check::Override, St
 /// A tolerance: 0, or a finite number from 1e-300 on
 /// ([`cylroll::check::tolerance_of`]).
 fn tol_arg(s: &str) -> std::result::Result<f64, String> {
-    cylroll::check::tolerance_of(s)
-        .ok_or_else(|| "must be a finite number >= 0: 0, or from 1e-300 on (e.g. 1e-8)".into())
+    cylroll::check::tolerance_of(s).ok_or_else(|| cylroll::check::TOLERANCE_ALLOWED.into())
 }
 
 impl Common {

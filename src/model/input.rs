@@ -217,7 +217,7 @@ pub fn read_toml(path: &std::path::Path, what: &str) -> Result<toml::Table> {
 pub fn toml_refusal(text: &str, e: &toml::de::Error) -> String {
     let msg = e.message().trim();
     match e.span() {
-        Some(span) if span.start <= text.len() => {
+        Some(span) if text.is_char_boundary(span.start) => {
             let start = text[..span.start].rfind('\n').map_or(0, |i| i + 1);
             let line = text[..span.start].matches('\n').count() + 1;
             let end = text[start..].find('\n').map_or(text.len(), |i| start + i);

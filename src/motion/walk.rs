@@ -20,18 +20,24 @@ use rug::Float;
 /// wrong).
 fn after_end(t: &Exact, end: &Float, err: &Float, what: &str) -> Error {
     let p = end.prec();
+    // the digits the precision carries (a margin of 8 bits), fewer where
+    // the end's error leaves fewer; 3 to 40
+    let carried = ((f64::from(p) - 8.0) * std::f64::consts::LOG10_2).floor() as i64;
     let digits = if err.is_zero() || end.is_zero() {
-        40
+        carried
     } else {
         let rel = Float::with_val(p, end.abs_ref()) / err;
-        (rel.log10().to_f64().floor() as i64).clamp(3, 40) as u32
-    };
+        (rel.log10().to_f64().floor() as i64).min(carried)
+    }
+    .clamp(3, 40) as u32;
+    // the end's lower end, rounded down: the true end is not below it
+    let end = Float::with_val(p, end - err);
     Error::invalid(
         "times",
         t,
         format!(
             "must not be after {what} at t = {} (rounded down; the model ends there)",
-            crate::numeric::decimal::to_sig_dir(end, digits, rug::float::Round::Down)
+            crate::numeric::decimal::to_sig_dir(&end, digits, rug::float::Round::Down)
         ),
     )
 }

@@ -386,6 +386,13 @@ pub fn short_near(x: &Float) -> String {
 }
 
 fn short_dir(x: &Float, round: Round) -> String {
+    // a bound that is not finite is no bound: said so, never "0"
+    if x.is_infinite() {
+        return if x.is_sign_negative() { "-inf" } else { "inf" }.to_string();
+    }
+    if x.is_nan() {
+        return "nan".to_string();
+    }
     match round_sig_dir(x, 2, round) {
         Some((_, d, e)) => format!("{}.{}e{}", &d[..1], &d[1..], e - 1),
         None => "0".to_string(),
@@ -593,5 +600,8 @@ mod tests {
         assert_eq!(short(&Float::with_val(p, 9.91e-3)), "1.0e-2");
         assert_eq!(short(&Float::with_val(p, 0.25)), "2.5e-1");
         assert_eq!(short_down(&Float::with_val(p, 0.25)), "2.5e-1");
+        // no bound is not a zero bound
+        assert_eq!(short(&Float::with_val(p, f64::INFINITY)), "inf");
+        assert_eq!(short(&Float::new(p)), "0");
     }
 }

@@ -301,13 +301,16 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
     }
     if b.value.cmp_abs(&bound) != Some(std::cmp::Ordering::Greater) {
         // indistinguishable from zero: print 0 if the bound is negligible
-        // at the requested digits relative to the quantity's natural scale
-        if *bound <= negligible(b, digits) {
+        // at the requested digits relative to the quantity's natural scale;
+        // the true value is within |value| + bound of 0 (the value, not 0,
+        // is what the bound was about)
+        let whole = Float::with_val(p, b.value.abs_ref()) + &*bound;
+        if whole <= negligible(b, digits) {
             return Ok(Judged {
                 value: None,
                 text: "0".to_string(),
                 digits: 0,
-                err_bound: kept(bound),
+                err_bound: Some(whole),
             });
         }
         return Err(0);
