@@ -897,6 +897,10 @@ fn messages_print_only_digits_the_computation_holds() {
             &["time", "--theta0", "0.1", "--to", "1.1"][..],
             "1.0507720620185106481",
         ),
+        (
+            &["time", "--theta0", "0.1", "--mu", "0.3", "--to", "1.2"][..],
+            "0.91209156568472325388",
+        ),
     ] {
         // the truths to 20 digits (the commands at --digits 20)
         let truth = rug::Float::with_val(128, rug::Float::parse(truth).unwrap());
@@ -905,9 +909,11 @@ fn messages_print_only_digits_the_computation_holds() {
         let err = String::from_utf8_lossy(&out.stderr);
         // an end after which times are refused is quoted rounded down
         // ("at t = X (rounded down"), other values after "≈", to nearest
-        let down = err.contains("(rounded down");
+        let down = err.contains("(rounded down") || err.contains("(rounded toward the start");
         let quoted = if down {
-            err.split("at t = ").nth(1)
+            err.split(" at t = ")
+                .nth(1)
+                .or_else(|| err.split(" at theta = ").nth(1))
         } else {
             err.split('≈').nth(1)
         }

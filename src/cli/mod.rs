@@ -561,7 +561,7 @@ fn on_grid(e: Error, t_end: &str, steps: u32) -> Error {
             let step = Exact::parse("times", &value, false)
                 .ok()
                 .zip(Exact::parse("t-end", t_end, false).ok())
-                .map(|(t, te)| Rational::from(&t.coef * Rational::from(steps)) / &te.coef)
+                .map(|(t, te)| (&t.coef * Rational::from(steps)) / &te.coef)
                 .filter(|k| *k.denom() == 1);
             let at = match step {
                 Some(k) => format!("the grid's time {value} (step {k} of {steps})"),

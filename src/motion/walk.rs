@@ -13,31 +13,42 @@ use crate::exact::Exact;
 use crate::integrate::solve::Sample;
 use rug::Float;
 
-/// A requested time after the end of the model (`what` ended it at `end`).
-/// The end is quoted with the digits its error `err` leaves (3 to 40),
-/// rounded down: it lies before the time refused, and reads so (rounded to
-/// nearest to 17 digits it could read as after it, and its 17th digit be
+/// An end `x` known to within `err`, quoted toward the start: the digits
+/// its error leaves and the precision carries (a margin of 8 bits; 3 to
+/// 40), from the end of its interval nearer the start, rounded toward 0
+/// (times and angles grow away from 0 along the motion, a fall to the left
+/// in negative angles): a value refused as past it reads as past it (to
+/// nearest at 12 or 17 digits it could read as after it, its last digit
 /// wrong).
-fn after_end(t: &Exact, end: &Float, err: &Float, what: &str) -> Error {
-    let p = end.prec();
-    // the digits the precision carries (a margin of 8 bits), fewer where
-    // the end's error leaves fewer; 3 to 40
+fn toward_start(x: &Float, err: &Float) -> String {
+    let p = x.prec();
     let carried = ((f64::from(p) - 8.0) * std::f64::consts::LOG10_2).floor() as i64;
-    let digits = if err.is_zero() || end.is_zero() {
+    let digits = if err.is_zero() || x.is_zero() {
         carried
     } else {
-        let rel = Float::with_val(p, end.abs_ref()) / err;
+        let rel = Float::with_val(p, x.abs_ref()) / err;
         (rel.log10().to_f64().floor() as i64).min(carried)
     }
     .clamp(3, 40) as u32;
-    // the end's lower end, rounded down: the true end is not below it
-    let end = Float::with_val(p, end - err);
+    let mut near = Float::with_val(p, x.abs_ref()) - err;
+    if near.is_sign_negative() {
+        near = Float::new(p);
+    }
+    if x.is_sign_negative() {
+        near = -near;
+    }
+    crate::numeric::decimal::to_sig_dir(&near, digits, rug::float::Round::Zero)
+}
+
+/// A requested time after the end of the model (`what` ended it at `end`,
+/// known to within `err`; quoted by [`toward_start`]).
+fn after_end(t: &Exact, end: &Float, err: &Float, what: &str) -> Error {
     Error::invalid(
         "times",
         t,
         format!(
             "must not be after {what} at t = {} (rounded down; the model ends there)",
-            crate::numeric::decimal::to_sig_dir(&end, digits, rug::float::Round::Down)
+            toward_start(end, err)
         ),
     )
 }
@@ -153,8 +164,9 @@ impl Walk<'_> {
             name,
             th,
             format!(
-                "must be reached while the cylinders touch: {what} at theta = {}",
-                crate::numeric::decimal::to_sig(&ev.at.theta, 12)
+                "must be reached while the cylinders touch: {what} at theta = {} (rounded \
+                 toward the start)",
+                toward_start(&ev.at.theta, &ev.theta_err)
             ),
         ))
     }
