@@ -3,7 +3,9 @@ forces at an angle, and trajectory tables."""
 
 from __future__ import annotations
 
+import math
 from decimal import Decimal
+from fractions import Fraction
 from typing import (TYPE_CHECKING, Any, Dict, Iterator, List, Mapping, NamedTuple, Optional,
                     Sequence, Tuple)
 
@@ -65,8 +67,15 @@ class Value:
 
     @property
     def lower_bound(self) -> Optional[float]:
-        """X of a ``">=X"`` value; ``None`` for a verified value."""
-        return float(self.text[2:]) if self.is_lower_bound else None
+        """X of a ``">=X"`` value, as the float at or below it (still a lower
+        bound); ``None`` for a verified value."""
+        if not self.is_lower_bound:
+            return None
+        x = self.text[2:]
+        f = float(x)
+        if Fraction(f) > Fraction(x):
+            f = math.nextafter(f, -math.inf)
+        return f
 
     def _check_finite(self) -> None:
         if self.is_lower_bound:
@@ -144,7 +153,9 @@ class _Values(Mapping[str, Value]):
             ) from None
 
     def to_dict(self) -> Dict[str, float]:
-        """name -> float."""
+        """name -> float. Raises ``ValueError`` where a value is only a lower
+        bound (the friction a contact needs at θs, ``">=X"``): there use
+        :meth:`texts` or ``Value.lower_bound``."""
         return {k: float(v) for k, v in self._values.items()}
 
     def texts(self) -> Dict[str, str]:

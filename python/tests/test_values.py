@@ -392,3 +392,10 @@ def test_a_lower_bound_has_no_finite_error_bound():
     ths = m.separation(digits=20).theta_s.text
     v = m.forces(ths, digits=20)["mu_contact"]
     assert v.text.startswith(">=") and v.err == float("inf") and v.err_text == "inf"
+    # the float lower bound is still below the decimal X; to_dict says why it
+    # cannot give this value, texts() can
+    assert Fraction(v.lower_bound) <= Fraction(v.text[2:])
+    f = m.forces(ths, digits=20)
+    with pytest.raises(ValueError, match="only the lower bound"):
+        f.to_dict()
+    assert f.texts()["mu_contact"] == v.text
