@@ -370,6 +370,23 @@ fn cli(args: &[&str]) -> (i32, String, String) {
     )
 }
 
+/// [`cli`]'s standard output, the command having succeeded.
+fn cli_ok(args: &[&str]) -> String {
+    let (code, out, err) = cli(args);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    out
+}
+
+/// The value of the text output's line `key = value  [...]`.
+fn printed(text: &str, key: &str) -> String {
+    text.lines()
+        .find(|l| l.split_whitespace().next() == Some(key))
+        .and_then(|l| l.split('=').nth(1))
+        .and_then(|l| l.split_whitespace().next())
+        .unwrap_or_else(|| panic!("no {key} in {text}"))
+        .to_string()
+}
+
 #[test]
 fn infinite_and_zero_coefficients_are_the_ideal_models_exactly() {
     let base = ["--theta0", "0.1", "--digits", "25", "--format", "json"];
@@ -2011,36 +2028,26 @@ fn a_huge_common_rolling_rate_is_not_called_painleve() {
 /// found" (exit 3) at 5–20 digits for μ = 10^50000.
 #[test]
 fn a_coefficient_beyond_the_precision_is_the_rolling_contact() {
-    let theta_s = |mu: &str, digits: &str| -> String {
-        let mut args = vec!["separation", "--theta0", "0.1", "--digits", digits];
-        if mu == "roll" {
-            args.extend(["--contact", "roll"]);
-        } else {
-            args.extend(["--mu-contact", mu]);
-        }
-        let out = Command::cargo_bin("cylroll")
-            .unwrap()
-            .args(&args)
-            .output()
-            .unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{mu} {digits}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        String::from_utf8_lossy(&out.stdout)
-            .lines()
-            .find(|l| l.starts_with("theta_s "))
-            .and_then(|l| l.split('=').nth(1))
-            .and_then(|l| l.split_whitespace().next())
-            .unwrap()
-            .to_string()
+    let theta_s = |law: [&str; 2], digits: &str| -> String {
+        let args = [
+            "separation",
+            "--theta0",
+            "0.1",
+            "--digits",
+            digits,
+            law[0],
+            law[1],
+        ];
+        printed(&cli_ok(&args), "theta_s")
     };
     for digits in ["5", "10", "20", "30"] {
-        let roll = theta_s("roll", digits);
+        let roll = theta_s(["--contact", "roll"], digits);
         for mu in ["1e1300", "1e50000", "1e100000"] {
-            assert_eq!(theta_s(mu, digits), roll, "mu {mu}, {digits} digits");
+            assert_eq!(
+                theta_s(["--mu-contact", mu], digits),
+                roll,
+                "mu {mu}, {digits} digits"
+            );
         }
     }
 }
@@ -2052,28 +2059,6 @@ fn a_coefficient_beyond_the_precision_is_the_rolling_contact() {
 /// event: t(0.1) = 4.156… (the slip onset's time) with 30 digits claimed.
 #[test]
 fn the_start_angle_is_the_start() {
-    let cyl = |args: &[&str]| -> String {
-        let out = Command::cargo_bin("cylroll")
-            .unwrap()
-            .args(args)
-            .output()
-            .unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{args:?}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        String::from_utf8_lossy(&out.stdout).to_string()
-    };
-    let value = |text: &str, key: &str| -> String {
-        text.lines()
-            .find(|l| l.starts_with(&format!("{key} ")))
-            .and_then(|l| l.split('=').nth(1))
-            .and_then(|l| l.split_whitespace().next())
-            .unwrap_or_else(|| panic!("{key}: {text}"))
-            .to_string()
-    };
     for (th0, law) in [
         ("0.1", &["--mu", "0.3"][..]),
         ("0.1", &["--mu-floor", "0.3"][..]),
@@ -2084,10 +2069,10 @@ fn the_start_angle_is_the_start() {
         for digits in ["15", "20", "30"] {
             let mut a = vec!["time", "--theta0", th0, "--to", th0, "--digits", digits];
             a.extend_from_slice(law);
-            assert_eq!(value(&cyl(&a), "t"), "0", "{th0} {law:?} {digits}");
+            assert_eq!(printed(&cli_ok(&a), "t"), "0", "{th0} {law:?} {digits}");
         }
     }
-    let text = cyl(&[
+    let text = cli_ok(&[
         "forces",
         "--theta0",
         "0.3",
@@ -2101,7 +2086,7 @@ fn the_start_angle_is_the_start() {
         "20",
     ]);
     assert_eq!(
-        value(&text, "theta_dot"),
+        printed(&text, "theta_dot"),
         "0.20000000000000000000",
         "{text}"
     );
@@ -2114,29 +2099,22 @@ fn the_start_angle_is_the_start() {
 /// The bound printed holds the 40-digit value.
 #[test]
 fn a_negligible_value_without_a_shared_digit_is_zero_within_its_bound() {
-    let t = "2.374725494927152814937895";
-    let run = |digits: &str, fmt: &str, columns: &str| -> String {
-        let out = Command::cargo_bin("cylroll")
-            .unwrap()
-            .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .args([
-                "trajectory",
-                "--params",
-                "golden/cases/main_floor_slips.toml",
-            ])
-            .args(["--times", t, "--digits", digits, "--columns", columns])
-            .args(["--format", fmt])
-            .output()
-            .unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{digits}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        String::from_utf8_lossy(&out.stdout).to_string()
+    let run = |digits: &str, fmt: &str| -> String {
+        cli_ok(&[
+            "trajectory",
+            "--params",
+            "golden/cases/main_floor_slips.toml",
+            "--times",
+            "2.374725494927152814937895",
+            "--digits",
+            digits,
+            "--columns",
+            "t,s1,work",
+            "--format",
+            fmt,
+        ])
     };
-    let truth: f64 = run("40", "csv", "t,s1,work")
+    let truth: f64 = run("40", "csv")
         .lines()
         .last()
         .and_then(|l| l.split(',').nth(2))
@@ -2145,7 +2123,7 @@ fn a_negligible_value_without_a_shared_digit_is_zero_within_its_bound() {
         .unwrap();
     assert!(truth > 6.4e-80 && truth < 6.5e-80, "{truth}");
     for digits in ["25", "30", "35"] {
-        let text = run(digits, "text", "t,s1,work");
+        let text = run(digits, "text");
         let bound: f64 = text
             .lines()
             .find_map(|l| l.split("|work| <= ").nth(1))

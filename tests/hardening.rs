@@ -2117,32 +2117,29 @@ fn a_heavy_upper_cylinder_on_a_frictionless_floor_is_answered_at_every_digits() 
 fn a_row_just_past_a_parting_is_in_flight() {
     use rug::{Float, Rational};
     let base = ["--theta0", "0.1", "--mu-floor", "0.05", "--branch", "part"];
-    let sep = cyl()
-        .args(["separation", "--digits", "45"])
-        .args(base)
-        .output()
-        .unwrap();
-    let sep = String::from_utf8_lossy(&sep.stdout).to_string();
-    let ts = sep
-        .lines()
-        .find_map(|l| l.strip_prefix("t_s"))
-        .and_then(|l| l.split('=').nth(1))
-        .and_then(|l| l.split_whitespace().next())
-        .unwrap_or_else(|| panic!("{sep}"))
-        .to_string();
-    let q = |s: &str| Rational::from_str_radix(&decimal_fraction(s), 10).unwrap();
+    let mut sep = vec!["--digits", "45"];
+    sep.extend(base);
+    let ts = sep_value(&sep, "t_s").unwrap();
+    let q = |s: &str| cylroll::exact::Exact::parse("t", s, false).unwrap().coef;
     let row = |t: &str, digits: &str| -> Vec<String> {
-        let out = cyl()
-            .args(["trajectory", "--times", t, "--digits", digits])
-            .args(["--columns", "t,theta,theta_dot,theta_ddot,N12,mode"])
-            .args(["--format", "csv"])
-            .args(base)
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(0), "{t} {digits}");
-        let text = String::from_utf8_lossy(&out.stdout).to_string();
-        let last = text.lines().last().unwrap().to_string();
-        last.split(',').map(str::to_string).collect()
+        let mut args = vec![
+            "trajectory",
+            "--times",
+            t,
+            "--digits",
+            digits,
+            "--format",
+            "csv",
+        ];
+        args.extend(["--columns", "t,theta,theta_dot,theta_ddot,N12,mode"]);
+        args.extend(base);
+        let text = stdout_ok(&args);
+        text.lines()
+            .last()
+            .unwrap()
+            .split(',')
+            .map(str::to_string)
+            .collect()
     };
     for (digits, past) in [
         (20u32, "1e-19"),
@@ -2175,24 +2172,6 @@ fn a_row_just_past_a_parting_is_in_flight() {
     }
 }
 
-/// `x.yyyEz` as the fraction text `xyyy/10^k` (or `xyyy*10^k/1`) rug reads.
-fn decimal_fraction(s: &str) -> String {
-    let (m, e) = match s.split_once(['e', 'E']) {
-        Some((m, e)) => (m, e.parse::<i64>().unwrap()),
-        None => (s, 0),
-    };
-    let (neg, m) = m.strip_prefix('-').map_or((false, m), |r| (true, r));
-    let (i, f) = m.split_once('.').unwrap_or((m, ""));
-    let digits = format!("{i}{f}");
-    let k = f.len() as i64 - e;
-    let sign = if neg { "-" } else { "" };
-    if k >= 0 {
-        format!("{sign}{digits}/1{}", "0".repeat(k as usize))
-    } else {
-        format!("{sign}{digits}{}/1", "0".repeat((-k) as usize))
-    }
-}
-
 /// θs as `separation --branch part` prints it, given back to `time` and
 /// `forces` at the same digits, is answered as the state at the parting
 /// with a note — as on the `stay` branch. The branch point that enters the
@@ -2201,37 +2180,14 @@ fn decimal_fraction(s: &str) -> String {
 #[test]
 fn the_parting_angle_as_printed_is_answered_on_the_part_branch() {
     for extra in [&[][..], &["--mu-floor", "0.05"][..]] {
-        let base = |cmd: &str| {
-            let mut c = cyl();
-            c.args([cmd, "--theta0", "0.1", "--branch", "part", "--digits", "20"])
-                .args(extra);
-            c
-        };
-        let sep = base("separation").output().unwrap();
-        let sep = String::from_utf8_lossy(&sep.stdout).to_string();
-        let ths = sep
-            .lines()
-            .find_map(|l| l.strip_prefix("theta_s"))
-            .and_then(|l| l.split('=').nth(1))
-            .and_then(|l| l.split_whitespace().next())
-            .unwrap_or_else(|| panic!("{sep}"))
-            .to_string();
-        let ts = sep
-            .lines()
-            .find_map(|l| l.strip_prefix("t_s"))
-            .and_then(|l| l.split('=').nth(1))
-            .and_then(|l| l.split_whitespace().next())
-            .unwrap()
-            .to_string();
+        let mut args = vec!["--theta0", "0.1", "--branch", "part", "--digits", "20"];
+        args.extend_from_slice(extra);
+        let ths = sep_value(&args, "theta_s").unwrap();
+        let ts = sep_value(&args, "t_s").unwrap();
         for (cmd, flag) in [("time", "--to"), ("forces", "--theta")] {
-            let out = base(cmd).args([flag, &ths]).output().unwrap();
-            let text = String::from_utf8_lossy(&out.stdout);
-            assert_eq!(
-                out.status.code(),
-                Some(0),
-                "{extra:?} {cmd}: {}",
-                String::from_utf8_lossy(&out.stderr)
-            );
+            let mut a = vec![cmd, flag, &ths];
+            a.extend_from_slice(&args);
+            let text = stdout_ok(&a);
             assert!(
                 text.contains("cannot be told apart from the angle of the separation"),
                 "{extra:?} {cmd}: {text}"
