@@ -215,19 +215,15 @@ pub fn first_phase(
     let th0e = route.work.start().theta0.clone();
     let angle_at = |e: &Exact, kind: Ending| -> Option<(Ending, Float)> {
         let th = if sign < 0 { e.neg() } else { e.clone() };
-        let d = if th.times_pi == th0e.times_pi || th0e.coef == 0 || th.coef == 0 {
-            let pi_th = th.times_pi && th.coef != 0;
-            let pi_0 = th0e.times_pi && th0e.coef != 0;
-            if pi_th == pi_0 {
-                let q = rug::Rational::from(&th.coef - &th0e.coef);
-                let mut d = Float::with_val(p + 16, &q);
-                if pi_th {
-                    d *= Float::with_val(p + 16, rug::float::Constant::Pi);
-                }
-                Float::with_val(p, &d)
-            } else {
-                Float::with_val(p, th.to_float(p + 32) - th0e.to_float(p + 32))
+        // both rational, or both multiples of π: exactly; else each at p + 32
+        // bits (the rounding keeps the sign of a difference that far from 0)
+        let pi = |x: &Exact| x.times_pi && x.coef != 0;
+        let d = if pi(&th) == pi(&th0e) {
+            let mut d = Float::with_val(p + 16, rug::Rational::from(&th.coef - &th0e.coef));
+            if pi(&th) {
+                d *= Float::with_val(p + 16, rug::float::Constant::Pi);
             }
+            Float::with_val(p, &d)
         } else {
             Float::with_val(p, th.to_float(p + 32) - th0e.to_float(p + 32))
         };

@@ -300,20 +300,8 @@ fn judged(digits: u32, a: &Estimate, b: &Estimate) -> std::result::Result<Judged
         return Err(0);
     }
     if b.value.cmp_abs(&bound) != Some(std::cmp::Ordering::Greater) {
-        // indistinguishable from zero: print 0 if the bound is negligible
-        // at the requested digits relative to the quantity's natural scale;
-        // the true value is within |value| + bound of 0 (the value, not 0,
-        // is what the bound was about)
-        let whole = Float::with_val(p, b.value.abs_ref()) + &*bound;
-        if whole <= negligible(b, digits) {
-            return Ok(Judged {
-                value: None,
-                text: "0".to_string(),
-                digits: 0,
-                err_bound: Some(whole),
-            });
-        }
-        return Err(0);
+        // indistinguishable from zero
+        return zero_cell(b, &bound, digits).ok_or(0);
     }
     if let Some(text) = fast_text(&b.value, &bound, digits) {
         return Ok(Judged {
@@ -405,23 +393,27 @@ fn absolute_fallback(last: bool, digits: u32, a: &Estimate, b: &Estimate) -> Opt
     if !bound.is_finite() || *bound > negligible(b, digits) {
         return None;
     }
+    // no digit shared, but the value itself negligible with its bound (the
+    // work 6.4e-80 a hair past a slip onset, the runs 5e-81 apart, refused
+    // at 30 digits and 0 at 20): 0, as a value within its bound of 0 is
     (1..digits)
         .rev()
         .find_map(|d| judged(d, a, b).ok())
-        .or_else(|| {
-            // no digit shared, but the value itself is negligible with its
-            // bound: 0 to within |value| + bound, as a value within its bound
-            // of 0 is (the work 6.4e-80 a hair past a slip onset, the runs
-            // 5e-81 apart, refused at 30 digits and 0 at 20)
-            let p = b.value.prec();
-            let whole = Float::with_val(p, b.value.abs_ref()) + &*bound;
-            (whole <= negligible(b, digits)).then(|| Judged {
-                value: None,
-                text: "0".to_string(),
-                digits: 0,
-                err_bound: Some(whole),
-            })
-        })
+        .or_else(|| zero_cell(b, &bound, digits))
+}
+
+/// The value `b` printed 0: where |value| + `bound` (the true value's
+/// distance from 0 at most: the bound is about the value, not about 0) is
+/// negligible at `digits` relative to the quantity's natural scale.
+fn zero_cell(b: &Estimate, bound: &Float, digits: u32) -> Option<Judged> {
+    let p = b.value.prec();
+    let whole = Float::with_val(p, b.value.abs_ref()) + bound;
+    (whole <= negligible(b, digits)).then(|| Judged {
+        value: None,
+        text: "0".to_string(),
+        digits: 0,
+        err_bound: Some(whole),
+    })
 }
 
 /// Runs `f` at two precisions (climbing the ladder if needed) and verifies
