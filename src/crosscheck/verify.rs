@@ -507,13 +507,7 @@ impl VerifyReport {
 /// `cylroll verify --digits N`: both routes on [`cases`], the friction
 /// integrators on their cases, and the golden data recomputed by route 2.
 pub fn report(digits: u32) -> Result<VerifyReport> {
-    if digits == 0 || digits > crate::oracle::MAX_DIGITS {
-        return Err(Error::invalid(
-            "digits",
-            digits,
-            format!("must be between 1 and {}", crate::oracle::MAX_DIGITS),
-        ));
-    }
+    crate::oracle::check_digits(digits)?;
     let mut sections = Vec::new();
     let mut worst: Option<(u32, String)> = None;
     let mut count = 0usize;

@@ -313,26 +313,11 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 return Ok(w.out);
             }
             Ending::LiftOff => {
-                w.out
-                    .events
-                    .push(ev(Kind::LiftOff, Some(Which::Floor), None));
-                if w.target_at_event("cylinder 1 lifts off")? {
-                    return Ok(w.out);
-                }
-                w.end_here(End::LiftOff, "the lift-off of cylinder 1")?;
+                w.lift_off(ev(Kind::LiftOff, Some(Which::Floor), None))?;
                 return Ok(w.out);
             }
             Ending::FloorImpact => {
-                w.out.events.push(ev(Kind::Impact, None, None));
-                if w.target_at_event("cylinder 2 lands on the floor")? {
-                    return Ok(w.out);
-                }
-                w.end_here(
-                    End::Impact(Surface::FloorInContact),
-                    "the first impact (cylinder 2 reaches the floor while still on cylinder 1)",
-                )?;
-                let sys = ctx.system(mode)?;
-                w.out.impact = Some(flight::Impact::in_contact(&sys, &fast.end_sample, &at));
+                w.floor_impact(ev(Kind::Impact, None, None), mode, &fast.end_sample, &at)?;
                 return Ok(w.out);
             }
             Ending::Separation | Ending::BranchPart | Ending::PartAt => {
@@ -343,15 +328,12 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                         Some(Phase::Flight { floor: mode.floor }),
                     ));
                 }
-                w.out.events.push(ev(
+                let e = ev(
                     Kind::Separation,
                     Some(Which::Contact),
                     Some(Phase::Flight { floor: mode.floor }),
-                ));
-                if w.target_at_event("the cylinders part")? {
-                    return Ok(w.out);
-                }
-                w.fly(mode, &fast.end_sample, &at)?;
+                );
+                w.part(e, mode, &fast.end_sample, &at)?;
                 return Ok(w.out);
             }
             Ending::Cone(which) => {
@@ -361,15 +343,12 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                     Some(m) => m,
                     None => {
                         // no closed mode is consistent: the contact opens
-                        w.out.events.push(ev(
+                        let e = ev(
                             Kind::Separation,
                             Some(Which::Contact),
                             Some(Phase::Flight { floor: mode.floor }),
-                        ));
-                        if w.target_at_event("the cylinders part")? {
-                            return Ok(w.out);
-                        }
-                        w.fly(mode, &s, &at)?;
+                        );
+                        w.part(e, mode, &s, &at)?;
                         return Ok(w.out);
                     }
                 };
@@ -610,37 +589,16 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             }
             What::Beyond => return Ok(w.out),
             What::FloorImpact => {
-                w.out.events.push(ev(Kind::Impact, None, None));
-                if w.target_at_event("cylinder 2 lands on the floor")? {
-                    return Ok(w.out);
-                }
-                w.end_here(
-                    End::Impact(Surface::FloorInContact),
-                    "the first impact (cylinder 2 reaches the floor while still on cylinder 1)",
-                )?;
-                w.out.impact = Some(flight::Impact::in_contact(&sys, &hit.at, &at));
+                w.floor_impact(ev(Kind::Impact, None, None), mode, &hit.at, &at)?;
                 return Ok(w.out);
             }
             What::LiftOff => {
-                w.out
-                    .events
-                    .push(ev(Kind::LiftOff, Some(Which::Floor), None));
-                if w.target_at_event("cylinder 1 lifts off")? {
-                    return Ok(w.out);
-                }
-                w.end_here(End::LiftOff, "the lift-off of cylinder 1")?;
+                w.lift_off(ev(Kind::LiftOff, Some(Which::Floor), None))?;
                 return Ok(w.out);
             }
             What::Separation => {
-                w.out.events.push(ev(
-                    Kind::Separation,
-                    Some(Which::Contact),
-                    Some(flight_phase),
-                ));
-                if w.target_at_event("the cylinders part")? {
-                    return Ok(w.out);
-                }
-                w.fly(mode, &hit.at, &at)?;
+                let e = ev(Kind::Separation, Some(Which::Contact), Some(flight_phase));
+                w.part(e, mode, &hit.at, &at)?;
                 return Ok(w.out);
             }
             What::FreeNormal | What::PartAt => {
@@ -677,15 +635,8 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                     _ => false,
                 };
                 if part_now {
-                    w.out.events.push(ev(
-                        Kind::Separation,
-                        Some(Which::Contact),
-                        Some(flight_phase),
-                    ));
-                    if w.target_at_event("the cylinders part")? {
-                        return Ok(w.out);
-                    }
-                    w.fly(mode, &hit.at, &at)?;
+                    let e = ev(Kind::Separation, Some(Which::Contact), Some(flight_phase));
+                    w.part(e, mode, &hit.at, &at)?;
                     return Ok(w.out);
                 }
                 // the same mode goes on from here
@@ -708,15 +659,8 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             w.out.events.push(e);
         }
         let Some(new) = choice.mode else {
-            w.out.events.push(ev(
-                Kind::Separation,
-                Some(Which::Contact),
-                Some(flight_phase),
-            ));
-            if w.target_at_event("the cylinders part")? {
-                return Ok(w.out);
-            }
-            w.fly(mode, &hit.at, &at)?;
+            let e = ev(Kind::Separation, Some(Which::Contact), Some(flight_phase));
+            w.part(e, mode, &hit.at, &at)?;
             return Ok(w.out);
         };
         if new == mode {

@@ -4,7 +4,7 @@
 //! angle at an event, the flight to the impact).
 
 use super::ctx::Ctx;
-use super::mode::{End, Kind, Mode};
+use super::mode::{End, Kind, Mode, Surface};
 use super::request::{EventRec, Motion, Request, Route, Until};
 use super::sides::{self, Side};
 use super::{flight, Point};
@@ -169,6 +169,50 @@ impl Walk<'_> {
                 toward_start(&ev.at.theta, &ev.theta_err)
             ),
         ))
+    }
+
+    /// The cylinders part at `at` (the state `s` of `mode`): the separation
+    /// event `ev`, then the flight to the first impact, unless the angle to
+    /// stop at comes first.
+    pub(super) fn part(&mut self, ev: EventRec, mode: Mode, s: &Sample, at: &Point) -> Result<()> {
+        self.out.events.push(ev);
+        if self.target_at_event("the cylinders part")? {
+            return Ok(());
+        }
+        self.fly(mode, s, at)
+    }
+
+    /// Cylinder 1 lifts off the floor (the event `ev`): the model ends there,
+    /// unless the angle to stop at comes first.
+    pub(super) fn lift_off(&mut self, ev: EventRec) -> Result<()> {
+        self.out.events.push(ev);
+        if self.target_at_event("cylinder 1 lifts off")? {
+            return Ok(());
+        }
+        self.end_here(End::LiftOff, "the lift-off of cylinder 1")
+    }
+
+    /// Cylinder 2 reaches the floor while still on cylinder 1 (the event
+    /// `ev`, the state `s` of `mode` at `at`): the model ends at that
+    /// impact, unless the angle to stop at comes first.
+    pub(super) fn floor_impact(
+        &mut self,
+        ev: EventRec,
+        mode: Mode,
+        s: &Sample,
+        at: &Point,
+    ) -> Result<()> {
+        self.out.events.push(ev);
+        if self.target_at_event("cylinder 2 lands on the floor")? {
+            return Ok(());
+        }
+        self.end_here(
+            End::Impact(Surface::FloorInContact),
+            "the first impact (cylinder 2 reaches the floor while still on cylinder 1)",
+        )?;
+        let sys = self.ctx.system(mode)?;
+        self.out.impact = Some(flight::Impact::in_contact(&sys, s, at));
+        Ok(())
     }
 
     /// The flight from a separation state (of `mode` in its system) to the

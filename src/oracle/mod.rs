@@ -90,7 +90,8 @@ pub const IMPACT_KEYS: [&str; 9] = [
     "psi2_dot_impact",
 ];
 
-fn check_digits(digits: u32) -> Result<()> {
+/// `digits` within 1..=[`MAX_DIGITS`], else the one-line refusal naming it.
+pub(crate) fn check_digits(digits: u32) -> Result<()> {
     if digits == 0 || digits > MAX_DIGITS {
         return Err(Error::invalid(
             "digits",

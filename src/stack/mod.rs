@@ -216,13 +216,7 @@ fn describe(sm: &StackModel, tmax: &Option<Rational>) -> Vec<(String, String)> {
 
 /// The report of `cylroll verify --stack SPEC`.
 pub fn report(spec: &Spec, digits: u32, json: bool) -> Result<String> {
-    if digits == 0 || digits > crate::oracle::MAX_DIGITS {
-        return Err(Error::invalid(
-            "digits",
-            digits,
-            format!("must be between 1 and {}", crate::oracle::MAX_DIGITS),
-        ));
-    }
+    crate::oracle::check_digits(digits)?;
     let sm = &spec.model;
     let n = sm.n();
     let scan = solve_stack(spec, SCAN_PREC, &[])?;
