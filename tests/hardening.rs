@@ -2267,3 +2267,75 @@ fn a_toml_error_names_its_line() {
         ],
     );
 }
+
+/// N1 = m1 g + m2 (g + ÿ2) along the motion, compared with the bits of the
+/// masses' ratio. Under a lower cylinder 10^29 times heavier its change lay
+/// below the 96th bit of m1 g, and the start was taken for its minimum.
+/// Under one 10^40 times lighter, N1 K² near θs is of the lighter scale in
+/// sums of the heavier: a root a hair past θs was taken for a lift-off
+/// before it. The truths are closed forms: with a frictionless contact the
+/// contact force vanishes at θs and pushes down before it (θs < π/2), so
+/// N1_min = m1 g exactly, at θs; with rolling contacts from the top, the
+/// limit m1 → ∞ is the upper cylinder (k2 = 1/2) rolling on a held one,
+/// cos θs = 4/7, where N12 = 0 and the friction F = m2 g sin θs / 3 leaves
+/// N1 = m1 g + F sin θs = m1 g + 11/49 m2 g (the correction, of order
+/// m2/m1, below the 40th digit).
+#[test]
+fn n1_along_the_motion_is_compared_with_the_masses_ratio_in_its_bits() {
+    let heavy = ["--m1", "1e29", "--digits", "40"];
+    assert_eq!(
+        sep_value(&heavy, "N1_min").unwrap(),
+        "1.000000000000000000000000000002244897959e29"
+    );
+    assert_eq!(
+        sep_value(&heavy, "theta_N1_min").unwrap(),
+        sep_value(&heavy, "theta_s").unwrap()
+    );
+    for (m1, n1) in [
+        ("1e30", "1.00000000000000000000000000000e30"),
+        ("1e-40", "1.00000000000000000000000000000e-40"),
+        ("1e-300", "1.00000000000000000000000000000e-300"),
+    ] {
+        let args = [
+            "--m1",
+            m1,
+            "--theta0",
+            "1/10",
+            "--contact",
+            "slip",
+            "--digits",
+            "30",
+        ];
+        assert_eq!(sep_value(&args, "N1_min").unwrap(), n1, "m1 = {m1}");
+        assert_eq!(
+            sep_value(&args, "theta_N1_min").unwrap(),
+            sep_value(&args, "theta_s").unwrap(),
+            "m1 = {m1}"
+        );
+    }
+    // rolling contacts under a light lower cylinder: no lift-off, and N1's
+    // minimum at θs scales with m1 (the next term is of order m1/m2)
+    let mut mantissas = Vec::new();
+    for m1 in ["1e-40", "1e-300"] {
+        let args = [
+            "separation",
+            "--m1",
+            m1,
+            "--theta0",
+            "1/10",
+            "--digits",
+            "30",
+        ];
+        let text = stdout_ok(&args);
+        assert!(
+            text.contains("note: N1 > 0 at every angle"),
+            "m1 = {m1}: {text}"
+        );
+        assert!(!text.contains("N1 vanishes"), "m1 = {m1}: {text}");
+        let n1 = sep_value(&args[1..], "N1_min").unwrap();
+        let (mantissa, exp) = n1.split_once('e').unwrap();
+        assert_eq!(format!("e{exp}"), format!("e-{}", m1.split_at(3).1), "{n1}");
+        mantissas.push(mantissa.to_string());
+    }
+    assert_eq!(mantissas[0], mantissas[1]);
+}

@@ -16,6 +16,7 @@
 pub mod engine;
 mod kept;
 mod roots;
+pub(crate) use roots::mass_spread_bits;
 mod rows;
 
 pub use kept::forget as forget_kept;

@@ -199,6 +199,23 @@ pub(super) fn disparity_bits(p: &crate::model::Params) -> u32 {
     }
 }
 
+/// The bits by which the masses' ratio m1/m2 (either way) exceeds 2^16:
+/// what a comparison of N1 along the motion needs beyond the scan's 96 bits.
+/// N1 = m1 g + m2 (g + ÿ2): under a lower cylinder 10^29 times heavier its
+/// change along the motion lies below the 96th bit of m1 g (the start was
+/// taken for N1's minimum); under one 10^40 times lighter, N1 K² near θs is
+/// of the lighter scale in sums of the heavier (a root of N1 a hair past θs
+/// was taken for one before it). Capped at 8192.
+pub(crate) fn mass_spread_bits(p: &crate::model::Params) -> u32 {
+    let ratio = Float::with_val(64, Rational::from(&p.m1 / &p.m2));
+    let e = ratio.get_exp().unwrap_or(0).unsigned_abs();
+    if e <= 16 {
+        0
+    } else {
+        e.min(8192)
+    }
+}
+
 /// The precision at which the sign changes of a polynomial with these
 /// coefficients are isolated: 64 bits, plus the binary magnitude of the sum
 /// of the coefficients' absolute values over that of `unit`'s (the natural

@@ -13,6 +13,13 @@ use crate::numeric::verify::{ladder, Estimate, Verified};
 use rug::Float;
 
 impl Oracle {
+    /// The precision at which N1 and the friction needed are compared along
+    /// the motion: the scan's 96 bits, and the bits of the masses' ratio
+    /// where it is extreme ([`crate::integrate::energy::mass_spread_bits`]).
+    pub(super) fn findings_prec(&self) -> u32 {
+        SCAN_PREC + crate::integrate::energy::mass_spread_bits(self.route.work.params())
+    }
+
     /// N1 on [θ0, θs] from N1·K², a polynomial in c = cos θ (K > 0): its
     /// real roots on [cos θs, cos θ0] are isolated (by the monotone pieces
     /// between the roots of its derivatives, [`crate::numeric::poly`]), so
@@ -36,12 +43,18 @@ impl Oracle {
         let b = HPoly::linear(&fp.n1);
         let d = b.deriv().mul(&k).add_scaled(&b.mul(&k.deriv()), &q(-2));
 
-        let p = SCAN_PREC;
+        let p = self.findings_prec();
         let (c0, a_h) = {
             let eng = self.route.engine(p)?;
             (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
         };
-        let th_s = Float::with_val(p, self.route.work.start().theta0.to_float(p) + ds_scan);
+        // θs to the bits compared (the scan's value where they are the scan's)
+        let ds = if p == SCAN_PREC {
+            ds_scan.clone()
+        } else {
+            self.route.delta_s(p)?.0
+        };
+        let th_s = Float::with_val(p, self.route.work.start().theta0.to_float(p) + &ds);
         let cs = Float::with_val(p, th_s.cos_ref());
         if cs >= c0 {
             return Ok(());
@@ -121,8 +134,9 @@ impl Oracle {
     /// polynomials in c = cos θ ([`crate::mechanics::dynamics::ForcePolys`],
     /// B > 0 inside the motion), so its maximum is at an end or at a root of
     /// E = cAB − (1 − c²)(A'B − AB') on [c_end, cos θ0]; the candidates are
-    /// compared at 96 bits and the winner verified ([`Oracle::verify_at`]).
-    /// `c_end` is cos of the end angle at 96 bits.
+    /// compared at [`Oracle::findings_prec`] and the winner verified
+    /// ([`Oracle::verify_at`]). `c_end` is cos of the end angle at that
+    /// precision.
     pub(super) fn needed_max(
         &mut self,
         contact_side: bool,
@@ -154,7 +168,7 @@ impl Oracle {
             .mul(&a)
             .mul(&b)
             .add_scaled(&one_m_c2.mul(&apb), &q(-1));
-        let p = SCAN_PREC;
+        let p = self.findings_prec();
         let (c0, a_h) = {
             let eng = self.route.engine(p)?;
             (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
@@ -206,7 +220,12 @@ impl Oracle {
         if let Some(v) = value {
             names.push(v);
         }
-        ladder(self.digits, &names, |p| {
+        // each run with the masses' spread in its bits: near θs under a
+        // lower cylinder 10^60 times lighter, N1 is of the lighter scale in
+        // sums of the heavier, and the extremum ~(m1/m2)^(1/2) from θs
+        let spread = crate::integrate::energy::mass_spread_bits(self.route.work.params());
+        ladder(self.digits, &names, |p_run| {
+            let p = p_run + spread;
             let th0 = self.route.work.start().theta0.to_float(p);
             let (delta, derr) = match at {
                 At::Start => (Float::new(p), Float::new(p)),

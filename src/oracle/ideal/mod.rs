@@ -22,7 +22,7 @@ pub mod rigorous;
 
 use crate::error::{Error, Result};
 use crate::exact::Exact;
-use crate::integrate::energy::{Route, SCAN_PREC};
+use crate::integrate::energy::Route;
 use crate::mechanics::polys::HPoly;
 use crate::model::{Contact, Floor, Ideal};
 use crate::numeric::verify::{ladder, ladder_runs, ladder_table, Estimate, Run, Verified};
@@ -111,13 +111,7 @@ impl Oracle {
     /// Errors: digits outside 1..=[`MAX_DIGITS`]; a start where the cylinders
     /// already part (N12 ≤ 0) or cylinder 1 already lifts (N1 ≤ 0).
     pub fn new(model: &Ideal, digits: u32) -> Result<Self> {
-        if digits == 0 || digits > MAX_DIGITS {
-            return Err(Error::invalid(
-                "digits",
-                digits,
-                format!("must be between 1 and {MAX_DIGITS}"),
-            ));
-        }
+        super::check_digits(digits)?;
         Ok(Oracle {
             model: model.clone(),
             digits,
@@ -131,13 +125,7 @@ impl Oracle {
     ///
     /// Errors: digits outside 1..=[`MAX_DIGITS`].
     pub fn with_route(model: &Ideal, digits: u32, route: Route) -> Result<Self> {
-        if digits == 0 || digits > MAX_DIGITS {
-            return Err(Error::invalid(
-                "digits",
-                digits,
-                format!("must be between 1 and {MAX_DIGITS}"),
-            ));
-        }
+        super::check_digits(digits)?;
         Ok(Oracle {
             model: model.clone(),
             digits,
@@ -430,8 +418,9 @@ impl Oracle {
     /// Errors: θ outside the motion (as [`Oracle::forces_at`]).
     pub fn friction_needed(&mut self, theta: &Exact) -> Result<Vec<Verified>> {
         let forces = self.forces_at(theta)?;
-        let w = self.route.to_work(theta).to_float(SCAN_PREC);
-        let c_end = Float::with_val(SCAN_PREC, w.cos_ref());
+        let fp = self.findings_prec();
+        let w = self.route.to_work(theta).to_float(fp);
+        let c_end = Float::with_val(fp, w.cos_ref());
         let mut out = Vec::new();
         if self.route.work.floor() != Floor::Slip {
             out.extend(self.needed_max(false, At::Angle(theta.clone()), &c_end)?);
