@@ -2339,3 +2339,28 @@ fn n1_along_the_motion_is_compared_with_the_masses_ratio_in_its_bits() {
     }
     assert_eq!(mantissas[0], mantissas[1]);
 }
+
+/// A bad value in a golden case file is named with its file, as `--params`
+/// names its own, by `golden` and by `check --golden`; a case directory
+/// with no case file is refused, not rendered into an empty data set.
+#[test]
+fn golden_case_errors_name_their_file_and_an_empty_set_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path().to_str().unwrap();
+    std::fs::create_dir_all(dir.path().join("cases")).unwrap();
+    let file = dir.path().join("cases/bad.toml");
+    let shown = format!("(in {})", file.display());
+    for (text, key) in [("m1 = true\n", "m1"), ("steps = \"abc\"\n", "steps")] {
+        std::fs::write(&file, text).unwrap();
+        let named = format!("{key} {shown}");
+        one_line_error(&["golden", "--dir", d], 2, &[&named]);
+        one_line_error(
+            &["check", "Cargo.toml", "--case", "bad", "--golden", d],
+            2,
+            &[&named],
+        );
+    }
+    std::fs::remove_file(&file).unwrap();
+    one_line_error(&["golden", "--dir", d], 2, &["--dir", "no case files"]);
+    assert!(!dir.path().join("data").exists(), "nothing written");
+}

@@ -603,16 +603,7 @@ pub fn run(cli: Cli) -> Result<(Output, i32)> {
                     None => cylroll::golden::builtin_case(&name)?,
                 },
                 (None, Some(path)) => {
-                    let table = input::read_toml(&path, "params")?;
-                    let (pairs, description, steps) =
-                        cylroll::golden::case_parts(&table).map_err(|e| in_file(e, &path))?;
-                    let model = input::model_from_pairs(&pairs).map_err(|e| in_file(e, &path))?;
-                    cylroll::golden::Case {
-                        name: path.display().to_string(),
-                        description,
-                        model,
-                        steps,
-                    }
+                    cylroll::golden::read_case(&path, "params", path.display().to_string())?
                 }
                 (None, None) => unreachable!("clap requires --case or --params"),
             };

@@ -69,15 +69,23 @@ pub fn case_parts(table: &toml::Table) -> Result<(crate::model::input::Pairs, St
 /// Reads one case file: `description`, `steps` (optional, default 40) and the
 /// model keys of `--params`.
 pub fn load_case(path: &Path) -> Result<Case> {
-    let table = read_toml(path, "case")?;
-    let (pairs, description, steps) = case_parts(&table)?;
-    let model = crate::model::input::model_from_pairs(&pairs)
-        .map_err(|e| Error::invalid("case", path.display(), format!("has a bad value: {e}")))?;
     let name = path
         .file_stem()
         .and_then(|s| s.to_str())
         .ok_or_else(|| Error::invalid("case", path.display(), "needs a UTF-8 file name"))?
         .to_string();
+    read_case(path, "case", name)
+}
+
+/// A case from the TOML file `path` (read as `what`, `case` or `params`, for
+/// messages) named `name`; a bad value's error names the file, as `--params`
+/// does (`m1 (in cases/x.toml)`).
+pub fn read_case(path: &Path, what: &str, name: String) -> Result<Case> {
+    use crate::model::input::in_file;
+    let table = read_toml(path, what)?;
+    let (pairs, description, steps) = case_parts(&table).map_err(|e| in_file(e, path))?;
+    let model =
+        crate::model::input::model_from_pairs(&pairs).map_err(|e| in_file(e, path))?;
     Ok(Case {
         name,
         description,
@@ -459,6 +467,16 @@ pub use fileset::write_atomic;
 /// are computed before anything is written, so a failure writes nothing.
 pub fn write_all(golden_dir: &Path) -> Result<String> {
     let cases = load_cases(golden_dir)?;
+    if cases.is_empty() {
+        return Err(Error::invalid(
+            "--dir",
+            golden_dir.display(),
+            format!(
+                "has no case files: golden reads DIR/cases/*.toml ({} holds none)",
+                golden_dir.join("cases").display()
+            ),
+        ));
+    }
     // an unwritable destination is refused before the work
     fileset::check_writable(golden_dir, &["data"])?;
     let mut out = Vec::new();
