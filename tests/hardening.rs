@@ -2364,3 +2364,24 @@ fn golden_case_errors_name_their_file_and_an_empty_set_is_refused() {
     one_line_error(&["golden", "--dir", d], 2, &["--dir", "no case files"]);
     assert!(!dir.path().join("data").exists(), "nothing written");
 }
+
+/// From rest exactly at the top, the ideal models answer angles and forces
+/// as the limit θ0 → 0+; with Coulomb friction that limit is not computed,
+/// and the refusal says so (it said forces were defined as the limit, and
+/// refused them).
+#[test]
+fn from_rest_at_the_top_friction_is_refused_without_promising_the_limit() {
+    for args in [
+        &["forces", "--theta", "1/2", "--mu", "0.3"][..],
+        &["separation", "--mu", "0.3"],
+        &["time", "--to", "1/2", "--mu-floor", "0.3"],
+    ] {
+        one_line_error(
+            args,
+            2,
+            &["theta0 = 0", "the limit theta0 -> 0+ is not computed"],
+        );
+    }
+    let text = stdout_ok(&["forces", "--theta", "1/2", "--digits", "15"]);
+    assert!(text.contains("N1 "), "{text}");
+}

@@ -84,8 +84,7 @@ pub fn read_case(path: &Path, what: &str, name: String) -> Result<Case> {
     use crate::model::input::in_file;
     let table = read_toml(path, what)?;
     let (pairs, description, steps) = case_parts(&table).map_err(|e| in_file(e, path))?;
-    let model =
-        crate::model::input::model_from_pairs(&pairs).map_err(|e| in_file(e, path))?;
+    let model = crate::model::input::model_from_pairs(&pairs).map_err(|e| in_file(e, path))?;
     Ok(Case {
         name,
         description,
