@@ -2385,3 +2385,42 @@ fn from_rest_at_the_top_friction_is_refused_without_promising_the_limit() {
     let text = stdout_ok(&["forces", "--theta", "1/2", "--digits", "15"]);
     assert!(text.contains("N1 "), "{text}");
 }
+
+/// An angle refused as past θs quotes θs toward the start, to the digits its
+/// error leaves (it was quoted to 10 digits at 15 asked: 1.050772062, which
+/// did not show why 1.0507720620186 was refused).
+#[test]
+fn an_angle_refused_past_theta_s_quotes_it_to_the_digits_that_show_why() {
+    use cylroll::exact::Exact;
+    let th_s = sep_value(&["--theta0", "1/10", "--digits", "30"], "theta_s").unwrap();
+    let th_s = Exact::parse("theta_s", &th_s, false).unwrap().coef;
+    let given = "1.0507720620186";
+    for digits in ["15", "30"] {
+        let out = cyl()
+            .args([
+                "time", "--theta0", "1/10", "--to", given, "--digits", digits,
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        let quoted = err
+            .split("theta_s = ")
+            .nth(1)
+            .and_then(|r| r.split_whitespace().next())
+            .unwrap_or_else(|| panic!("{err}"));
+        let q = Exact::parse("quoted", quoted, false).unwrap().coef;
+        let g = Exact::parse("given", given, false).unwrap().coef;
+        assert!(q < g && q <= th_s, "{err}");
+        // within 10^-17 of θs (the 30-digit value's error is far below)
+        let gap = rug::Rational::from(&th_s - &q);
+        assert!(
+            gap < rug::Rational::from((1, 100_000_000_000_000_000u64)),
+            "{err}"
+        );
+        assert!(
+            err.contains("rounded toward the start; it is after separation"),
+            "{err}"
+        );
+    }
+}

@@ -11,37 +11,11 @@ use super::{flight, Point};
 use crate::error::{Error, Result};
 use crate::exact::Exact;
 use crate::integrate::solve::Sample;
+use crate::numeric::decimal::toward_start;
 use rug::Float;
 
-/// An end `x` known to within `err`, quoted toward the start: the digits
-/// its error leaves and the precision carries (a margin of 8 bits; 3 to
-/// 40), from the end of its interval nearer the start, rounded toward 0
-/// (times and angles grow away from 0 along the motion, a fall to the left
-/// in negative angles): a value refused as past it reads as past it (to
-/// nearest at 12 or 17 digits it could read as after it, its last digit
-/// wrong).
-fn toward_start(x: &Float, err: &Float) -> String {
-    let p = x.prec();
-    let carried = ((f64::from(p) - 8.0) * std::f64::consts::LOG10_2).floor() as i64;
-    let digits = if err.is_zero() || x.is_zero() {
-        carried
-    } else {
-        let rel = Float::with_val(p, x.abs_ref()) / err;
-        (rel.log10().to_f64().floor() as i64).min(carried)
-    }
-    .clamp(3, 40) as u32;
-    let mut near = Float::with_val(p, x.abs_ref()) - err;
-    if near.is_sign_negative() {
-        near = Float::new(p);
-    }
-    if x.is_sign_negative() {
-        near = -near;
-    }
-    crate::numeric::decimal::to_sig_dir(&near, digits, rug::float::Round::Zero)
-}
-
 /// A requested time after the end of the model (`what` ended it at `end`,
-/// known to within `err`; quoted by [`toward_start`]).
+/// known to within `err`; quoted by [`toward_start`](crate::numeric::decimal::toward_start)).
 fn after_end(t: &Exact, end: &Float, err: &Float, what: &str) -> Error {
     Error::invalid(
         "times",

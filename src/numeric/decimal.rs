@@ -399,6 +399,33 @@ fn short_dir(x: &Float, round: Round) -> String {
     }
 }
 
+/// An end `x` known to within `err`, quoted toward the start: the digits
+/// its error leaves and the precision carries (a margin of 8 bits; 3 to
+/// 40), from the end of its interval nearer the start, rounded toward 0
+/// (times and angles grow away from 0 along the motion, a fall to the left
+/// in negative angles): a value refused as past it reads as past it (to
+/// nearest at 12 or 17 digits it could read as after it, its last digit
+/// wrong).
+pub fn toward_start(x: &Float, err: &Float) -> String {
+    let p = x.prec();
+    let carried = ((f64::from(p) - 8.0) * std::f64::consts::LOG10_2).floor() as i64;
+    let digits = if err.is_zero() || x.is_zero() {
+        carried
+    } else {
+        let rel = Float::with_val(p, x.abs_ref()) / err;
+        (rel.log10().to_f64().floor() as i64).min(carried)
+    }
+    .clamp(3, 40) as u32;
+    let mut near = Float::with_val(p, x.abs_ref()) - err;
+    if near.is_sign_negative() {
+        near = Float::new(p);
+    }
+    if x.is_sign_negative() {
+        near = -near;
+    }
+    to_sig_dir(&near, digits, rug::float::Round::Zero)
+}
+
 /// A value computed at its own working precision, for a message: the
 /// significant digits that precision carries with a margin for the
 /// integration's error (40 bits), between 3 and 17; messages print it after
