@@ -89,6 +89,13 @@ fn input_files_are_bounded_and_named() {
         2,
         &["m1", "not a TOML boolean", "string"],
     );
+    // a datetime is quoted as written (not as the TOML library's table)
+    std::fs::write(&f, "theta0 = 1979-05-27T07:32:00Z\n").unwrap();
+    one_line_error(
+        &["separation", "--params", f.to_str().unwrap()],
+        2,
+        &["theta0", "= \"1979-05-27T07:32:00Z\":", "not a TOML datetime"],
+    );
 }
 
 #[test]

@@ -129,9 +129,15 @@ pub fn pairs_from_toml(table: &toml::Table, source: &str, extra_keys: &[&str]) -
                 ));
             }
             other => {
+                // a datetime as written (its Value's text is the TOML
+                // library's private table)
+                let written = match other {
+                    toml::Value::Datetime(d) => d.to_string(),
+                    _ => other.to_string(),
+                };
                 return Err(Error::invalid(
                     k,
-                    other,
+                    written,
                     format!(
                         "expected an exact number as a string ({k} = \"0.3\") or an integer, \
                          not a TOML {}",
