@@ -94,7 +94,11 @@ fn input_files_are_bounded_and_named() {
     one_line_error(
         &["separation", "--params", f.to_str().unwrap()],
         2,
-        &["theta0", "= \"1979-05-27T07:32:00Z\":", "not a TOML datetime"],
+        &[
+            "theta0",
+            "= \"1979-05-27T07:32:00Z\":",
+            "not a TOML datetime",
+        ],
     );
 }
 

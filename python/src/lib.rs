@@ -296,11 +296,11 @@ where
         .name("cylroll".into())
         .stack_size(64 << 20)
         .spawn(move || {
+            // MPFR's per-thread caches outlive the thread otherwise
+            let _caches = cylroll::numeric::ThreadCaches;
             cylroll::cancel::install(flag);
             let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
             let _ = tx.send(r);
-            // MPFR's per-thread caches outlive the thread otherwise
-            cylroll::numeric::free_thread_caches();
         })
         .map_err(|e| internal(py, format!("cannot start a worker thread: {e}")))?;
     let mut rx = rx;

@@ -143,7 +143,7 @@ pub fn pairs_from_toml(table: &toml::Table, source: &str, extra_keys: &[&str]) -
                          not a TOML {}",
                         other.type_str()
                     ),
-                ))
+                ));
             }
         };
         vals.insert(k.clone(), s);

@@ -35,6 +35,18 @@ pub fn free_thread_caches() {
     rug::float::free_cache(rug::float::FreeCache::Local);
 }
 
+/// Frees the thread's MPFR caches when dropped ([`free_thread_caches`]):
+/// made first in a thread that computes, it frees them however the thread
+/// ends, a panic included.
+#[must_use = "the caches are freed when the guard is dropped"]
+pub struct ThreadCaches;
+
+impl Drop for ThreadCaches {
+    fn drop(&mut self) {
+        free_thread_caches();
+    }
+}
+
 /// Bits needed for `digits` significant decimal digits: ⌈digits·log2 10⌉.
 pub fn bits_for_digits(digits: u32) -> u32 {
     ((digits as f64) * std::f64::consts::LOG2_10).ceil() as u32

@@ -232,12 +232,11 @@ fn blocks_at_once(
                 std::thread::Builder::new()
                     .stack_size(64 << 20)
                     .spawn_scoped(s, move || {
+                        let _caches = crate::numeric::ThreadCaches;
                         if let Some(f) = flag {
                             crate::cancel::install(f);
                         }
-                        let b = trajectory_block(model, chunk, opts, columns);
-                        crate::numeric::free_thread_caches();
-                        b
+                        trajectory_block(model, chunk, opts, columns)
                     })
             })
             .collect();

@@ -212,14 +212,18 @@ fn par_map<J: Sync, R: Send>(
     let workers = threads.clamp(1, jobs.len().max(1));
     std::thread::scope(|s| {
         for _ in 0..workers {
-            s.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::SeqCst);
-                if i >= jobs.len() {
-                    break;
+            s.spawn(|| {
+                // MPFR's per-thread caches outlive the thread otherwise
+                let _caches = crate::numeric::ThreadCaches;
+                loop {
+                    let i = next.fetch_add(1, Ordering::SeqCst);
+                    if i >= jobs.len() {
+                        break;
+                    }
+                    let r = f(&jobs[i]);
+                    let mut slot = slots[i].lock().unwrap_or_else(|e| e.into_inner());
+                    *slot = Some(r);
                 }
-                let r = f(&jobs[i]);
-                let mut slot = slots[i].lock().unwrap_or_else(|e| e.into_inner());
-                *slot = Some(r);
             });
         }
     });
