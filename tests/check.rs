@@ -853,3 +853,66 @@ fn an_event_a_hair_past_the_bracket_is_not_inside_it() {
     );
     assert_eq!(out.status.code(), Some(1), "{report}");
 }
+
+/// A row at the end of the model at its time as the oracle prints it (the
+/// impact's t to 20 digits, rounded to nearest: past the end by less than
+/// half a unit of the 20th digit, beyond the end's error bound) is the state
+/// at the end, as `trajectory` answers it: judged, not refused as after the
+/// end (it was, with a message quoting the same number as the end).
+#[test]
+fn a_row_at_the_end_as_printed_is_judged_not_refused() {
+    let cyl = |args: &[&str]| {
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let case = [
+        "--params",
+        "golden/cases/mujoco_main.toml",
+        "--digits",
+        "20",
+    ];
+    let sep = cyl(&[&["separation", "--format", "csv"][..], &case].concat());
+    let ti = sep
+        .lines()
+        .find_map(|l| l.strip_prefix("t_impact,"))
+        .and_then(|l| l.split(',').next())
+        .unwrap()
+        .to_string();
+    let times = format!("0,1,5,{ti}");
+    let csv = cyl(&[
+        &[
+            "trajectory",
+            "--times",
+            &times,
+            "--columns",
+            "t,theta,mode",
+            "--format",
+            "csv",
+        ][..],
+        &case,
+    ]
+    .concat());
+    assert!(csv.lines().last().unwrap().ends_with(",flight"), "{csv}");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("end.csv");
+    std::fs::write(&path, &csv).unwrap();
+    let out = check_file(&path, &["--case", "mujoco_main", "--past-end", "refuse"]);
+    assert!(
+        out.status.success(),
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("phase 2 flight       rows 4-4"), "{text}");
+}

@@ -925,6 +925,7 @@ fn messages_print_only_digits_the_computation_holds() {
             err.split(" at t = ")
                 .nth(1)
                 .or_else(|| err.split(" at theta = ").nth(1))
+                .or_else(|| err.split(" theta_s = ").nth(1))
         } else {
             err.split('≈').nth(1)
         }

@@ -549,11 +549,21 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
     let end_event = followed.events.iter().find(|e| e.phase.is_none());
     let end = end_event.map(|e| (e.kind.name().to_string(), e.t.text.clone()));
     // a row is after the end when its time exceeds the end's by more than
-    // the end's error bound; nearer ones are the oracle's to place
+    // the end's error bound, and is not the end to the digits asked (the
+    // end's time as printed, given back, is the state there, as the
+    // trajectory answers it: it was refused as after the end); nearer ones
+    // are the oracle's to place
     let t_end = end_event.map(|e| {
         let p = e.t.value.prec();
-        Float::with_val(p, &e.t.value + &e.t.err_bound)
+        (
+            Float::with_val(p, &e.t.value + &e.t.err_bound),
+            e.t.value.clone(),
+        )
     });
+    let after = |t: &Exact, (te, end): &(Float, Float)| {
+        let tf = t.to_float(te.prec());
+        tf > *te && !crate::motion::sides::within_digits(&tf, end, digits, &Float::new(te.prec()))
+    };
 
     let mut rows = Rows::open(src, case, lim)?;
     let h = rows.header.clone();
@@ -608,7 +618,7 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
     };
     while let Some((row, t, cells)) = rows.next_row()? {
         if let (Some(te), Some((kind, te_text))) = (&t_end, &end) {
-            if t.to_float(te.prec()) > *te {
+            if after(&t, te) {
                 if lim.past_end == PastEnd::Refuse {
                     return Err(read::refuse(
                         src.name(),
