@@ -69,8 +69,24 @@ impl Exact {
             Error::invalid(name, text, format!("expected {forms}"))
         };
         let trimmed = text.trim();
-        // whitespace inside is dropped (a copy only where there is some)
+        // whitespace inside is dropped where it stands beside an operator
+        // (`1 / 3`, `2 * pi / 3`); inside a number it is refused: `1 000`
+        // (a thousands separator or two numbers?), `0. 3`, `1e 3`
         let s: std::borrow::Cow<str> = if trimmed.contains(char::is_whitespace) {
+            let c: Vec<char> = trimmed.chars().collect();
+            for (i, _) in c.iter().enumerate().filter(|(_, x)| x.is_whitespace()) {
+                let before = c[..i].iter().rev().find(|x| !x.is_whitespace());
+                let after = c[i..].iter().find(|x| !x.is_whitespace());
+                let operator = |x: Option<&char>| x.is_some_and(|x| *x == '/' || *x == '*');
+                if !operator(before) && !operator(after) {
+                    return Err(Error::invalid(
+                        name,
+                        text,
+                        "a space may stand around the operators / and * and the whole, not \
+                         inside a number",
+                    ));
+                }
+            }
             trimmed.chars().filter(|c| !c.is_whitespace()).collect()
         } else {
             trimmed.into()
@@ -685,6 +701,23 @@ mod tests {
         assert_eq!(q.coef, Rational::from((2, 3)));
         assert_eq!(p("pi").coef, Rational::from(1));
         assert_eq!(p("-pi/6").coef, Rational::from((-1, 6)));
+        // spaces around the operators and the whole
+        assert_eq!(p(" 1 / 3 ").coef, Rational::from((1, 3)));
+        let q = p("2 * pi / 3");
+        assert!(q.times_pi && q.coef == Rational::from((2, 3)));
+    }
+
+    /// A space inside a number is refused, naming the rule: `1 000` is a
+    /// thousands separator or two numbers (it was read as 1000), `0. 3` was
+    /// read as 0.3, `1e 3` as 1000.
+    #[test]
+    fn a_space_inside_a_number_is_refused() {
+        for s in [
+            "1 000", "0. 3", "1e 3", "- 1", "0.3 0.4", "2 pi/3", "1/ 3 0",
+        ] {
+            let e = Exact::parse("m1", s, true).unwrap_err().to_string();
+            assert!(e.contains("not inside a number"), "{s}: {e}");
+        }
     }
 
     #[test]
