@@ -23,7 +23,7 @@ from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Tuple, Union
 import numpy as np
 
 from . import _cylroll
-from ._exact import _invalid, exact_text
+from ._exact import _invalid, exact_text, shortest_text
 from ._model import Model, _count, _digits
 
 __all__ = ["check", "CheckReport", "ColumnStats", "PhaseStats", "FirstFailure", "Phase",
@@ -304,19 +304,14 @@ def _cell(name: str, x: Any) -> str:
         return str(x)
     if isinstance(x, fractions.Fraction):
         return _fraction_text(name, x)
-    if isinstance(x, np.floating) and np.finfo(x.dtype).nmant != 52:
-        # a narrower (float32, float16) or wider (longdouble) float: its
-        # own shortest round-trip decimal, as it prints and as a CSV file
-        # written from it carries it (float32 0.1 is 0.1, not the float64
-        # 0.10000000149011612)
-        return np.format_float_scientific(x, unique=True).replace(".e", "e")
     if x is None or isinstance(x, (complex, np.complexfloating)) or not isinstance(
         x, (float, np.floating, numbers.Real)
     ):
         raise TypeError(f"expected a real number or its text, got {type(x).__name__}")
-    # the shortest decimal that reads back as the same float (inf and nan
-    # are refused by the core, with the row named)
-    return repr(float(x))
+    # the shortest decimal that reads back as the same float in its own
+    # type (a float32 0.1 is 0.1; inf and nan are refused by the core, with
+    # the row named)
+    return shortest_text(x)
 
 
 def _fraction_text(name: str, x: fractions.Fraction) -> str:

@@ -90,11 +90,24 @@ def exact_text(name: str, x: Any, allow_float: bool = False) -> str:
     )
 
 
+def shortest_text(x: Any) -> str:
+    """The shortest decimal that reads back as the float ``x`` in its own
+    type: ``repr`` of a float64 (``0.05``), and a NumPy float32, float16 or
+    longdouble by its own shortest round-trip decimal, as it prints and as a
+    CSV file written from it carries it (float32 0.1 is ``0.1``, not the
+    float64 ``0.10000000149011612``)."""
+    import numpy as np
+
+    if isinstance(x, np.floating) and np.finfo(x.dtype).nmant != 52:
+        return np.format_float_scientific(x, unique=True).replace(".e", "e")
+    return repr(float(x))
+
+
 def time_text(name: str, x: Any) -> str:
     """The exact text of a time or an angle: exact types as in
-    :func:`exact_text`; a float by its shortest round-trip decimal
-    (``repr``: ``0.05`` is 5/100), the way an engine's times are written to a
-    CSV file."""
+    :func:`exact_text`; a float by its shortest round-trip decimal in its
+    own type (:func:`shortest_text`: ``0.05`` is 5/100, a float32 0.1 is
+    1/10), the way an engine's times are written to a CSV file."""
     if isinstance(x, str) or isinstance(x, (Fraction, Decimal)) or (
         isinstance(x, numbers.Integral) and not isinstance(x, bool)
     ):
@@ -105,7 +118,7 @@ def time_text(name: str, x: Any) -> str:
         f = float(x)
         if not math.isfinite(f):
             raise _invalid(name, x, "must be a finite number")
-        return repr(f)
+        return shortest_text(x)
     raise TypeError(f"{name}: expected a number, got {type(x).__name__}")
 
 

@@ -318,7 +318,7 @@ class Model:
         """
         d = _cylroll.time(self._pairs, _digits(digits), time_text("theta", theta),
                           *_branch(branch, part_at))
-        return Value._from(d["values"][0], d["mode"])
+        return Value._from(d["values"][0], d["mode"], d.get("notes"))
 
     def forces(self, theta: Number, digits: int = 30, *, branch: str = "stay",
                part_at: Optional[Number] = None) -> Forces:
@@ -330,7 +330,7 @@ class Model:
         each rolling contact needs over [θ0, θ]."""
         d = _cylroll.forces(self._pairs, _digits(digits), time_text("theta", theta),
                             *_branch(branch, part_at))
-        return Forces._build(self, digits, d["values"], d["mode"])
+        return Forces._build(self, digits, d["values"], d["mode"], d.get("notes"))
 
     def trajectory(
         self,
@@ -380,7 +380,13 @@ class Model:
                 raise TypeError("give times, or t_end and steps, not both")
             if isinstance(times, (str, bytes)):
                 raise TypeError("times: expected a sequence of numbers, got a string")
-            texts = [time_text("times", t) for t in times]
+            try:
+                it = iter(times)
+            except TypeError:
+                raise TypeError(
+                    f"times: expected a sequence of numbers (e.g. [0.5]), got "
+                    f"{type(times).__name__}") from None
+            texts = [time_text("times", t) for t in it]
         cols = None
         if columns is not None:
             if isinstance(columns, (str, bytes)):
@@ -399,7 +405,7 @@ class Model:
             k = texts.index(e.value) if e.value in texts else None
             at = f"the grid's time {e.value}" + (f" (step {k} of {steps})" if k is not None else "")
             raise _invalid("t_end", te, f"{at} {e.allowed}") from None
-        return Trajectory._build(self, digits, d)
+        return Trajectory._build(self, digits, d, None if cols is None else cols.split(","))
 
 
 def _branch(branch: str, part_at: Optional[Number]) -> Tuple[str, Optional[str]]:

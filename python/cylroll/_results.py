@@ -35,9 +35,14 @@ class Value:
     bound (at θs, ``|F21|/N12``) has no finite verified value: its ``text`` is
     ``">=X"``, ``is_lower_bound`` is true, ``lower_bound`` is X, and
     ``float(v)`` / ``v.decimal()`` raise ``ValueError`` saying so.
+
+    ``notes``: for the answer of :meth:`Model.time`, the notes the command
+    line prints with it (an angle past θs within the digits asked answered
+    at θs, an angle on the branch followed past the branch point, …); empty
+    for the values of other answers (their notes are the answer's own).
     """
 
-    __slots__ = ("name", "text", "digits", "err", "err_text", "mode")
+    __slots__ = ("name", "text", "digits", "err", "err_text", "mode", "notes")
 
     name: str
     text: str
@@ -45,9 +50,11 @@ class Value:
     err: float
     err_text: str
     mode: Optional[str]
+    notes: List[str]
 
     def __init__(self, name: str, text: str, digits: int, err: float, err_text: str = "",
-                 mode: Optional[str] = None) -> None:
+                 mode: Optional[str] = None, notes: Optional[List[str]] = None) -> None:
+        self.notes = list(notes or [])
         self.name = name
         self.text = text
         self.digits = digits
@@ -57,8 +64,9 @@ class Value:
         self.mode = mode
 
     @classmethod
-    def _from(cls, raw: _Raw, mode: Optional[str] = None) -> "Value":
-        return cls(raw[0], raw[1], raw[2], raw[3], raw[4], mode)
+    def _from(cls, raw: _Raw, mode: Optional[str] = None,
+              notes: Optional[List[str]] = None) -> "Value":
+        return cls(raw[0], raw[1], raw[2], raw[3], raw[4], mode, notes)
 
     @property
     def is_lower_bound(self) -> bool:
@@ -241,9 +249,11 @@ class Separation(_Values, _Motion):
         return s
 
     @property
-    def theta_s(self) -> Value:
-        """θs: where the cylinders part."""
-        return self._values["theta_s"]
+    def theta_s(self) -> Optional[Value]:
+        """θs: where the cylinders part (``None`` where the model ends before
+        they part: cylinder 2 reaches the floor while still on cylinder 1, or
+        cylinder 1 lifts off; :attr:`end` says which)."""
+        return self._values.get("theta_s")
 
     @property
     def t_s(self) -> Optional[Value]:
@@ -283,18 +293,23 @@ class Forces(_Values):
     ``mu_floor``, ``mu_contact``, ``s1``, ``s12``, ``work``; for the ideal
     models also the most friction each rolling contact needs over [θ0, θ]
     and where: ``mu_floor_max``, ``theta_mu_floor_max``, ``mu_contact_max``,
-    ``theta_mu_contact_max``) and the mode there (``mode``)."""
+    ``theta_mu_contact_max``) and the mode there (``mode``), with the notes
+    the command line prints (``notes``: an angle past θs within the digits
+    asked answered at θs, an angle on the branch followed past the branch
+    point, …)."""
 
     mode: Optional[str]
+    notes: List[str]
 
     @classmethod
     def _build(cls, model: "Model", digits: int, vals: Sequence[_Raw],
-               mode: Optional[str]) -> "Forces":
+               mode: Optional[str], notes: Optional[List[str]] = None) -> "Forces":
         f = cls.__new__(cls)
         f.model = model
         f.digits = digits
         f._values = {raw[0]: Value._from(raw) for raw in vals}
         f.mode = mode
+        f.notes = list(notes or [])
         return f
 
     def __str__(self) -> str:
@@ -302,6 +317,7 @@ class Forces(_Values):
         lines += _table(list(self._values.values()))
         if self.mode is not None:
             lines.append(f"  mode: {self.mode}")
+        lines += [f"  note: {n}" for n in self.notes]
         return "\n".join(lines)
 
     __repr__ = __str__
@@ -330,10 +346,13 @@ class Trajectory(_Motion):
     digits: int
 
     @classmethod
-    def _build(cls, model: "Model", digits: int, d: Dict[str, Any]) -> "Trajectory":
+    def _build(cls, model: "Model", digits: int, d: Dict[str, Any],
+               csv_head: Optional[List[str]] = None) -> "Trajectory":
         t = cls.__new__(cls)
         t.model = model
         t.digits = digits
+        # the CSV's columns where ``columns=`` chose them (``mode`` where asked)
+        t._csv_head = csv_head
         t.columns = list(d["columns"])
         # by column: (texts, digits, error bounds, their short texts); a
         # row's Values are made only when asked (``rows``, ``values``)
@@ -408,10 +427,12 @@ class Trajectory(_Motion):
 
     def to_csv(self, path: Optional[str] = None) -> str:
         """The command line's CSV (header, then the verified digits as text,
-        the ``mode`` column last); written to ``path`` if given."""
-        head = list(self.columns) + ["mode"]
+        the ``mode`` column last; a table made with ``columns=`` has those
+        columns alone, in their order, ``mode`` among them only where asked,
+        as ``--columns`` prints them); written to ``path`` if given."""
+        head = self._csv_head or list(self.columns) + ["mode"]
         lines = [",".join(head)]
-        texts = [c[0] for c in self._cols] + [self.modes]
+        texts = [self.modes if h == "mode" else self._cols[self._index(h)][0] for h in head]
         for cells in zip(*texts):
             lines.append(",".join(cells))
         text = "\n".join(lines) + "\n"

@@ -168,9 +168,17 @@ fn py_error(py: Python<'_>, e: &Error) -> PyErr {
 /// A parameter's name as the Python keyword: the command line's `to` (the
 /// angle of `time`) is `theta`, a flag's hyphens are underscores.
 fn python_name(name: &str) -> String {
-    match name {
+    // the keyword alone: a file it was read from (`m1 (in a-b.toml)`) keeps
+    // its path as it is
+    let (word, rest) = name.split_once(' ').map_or((name, ""), |(w, r)| (w, r));
+    let word = match word {
         "to" => "theta".to_string(),
-        n => n.replace('-', "_"),
+        w => w.replace('-', "_"),
+    };
+    if rest.is_empty() {
+        word
+    } else {
+        format!("{word} {rest}")
     }
 }
 
@@ -436,7 +444,14 @@ fn answer_dict<'py>(py: Python<'py>, a: &Answer) -> PyResult<Bound<'py, PyDict>>
 /// a golden case file's `description` and `steps` are accepted and ignored).
 #[pyfunction]
 fn read_toml(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Pairs> {
-    direct(py, || input::read_params(&path))
+    direct(py, || {
+        let pairs = input::read_params(&path)?;
+        // a value out of its range is named with the file, as the command
+        // line's --params names it (m1 (in q.toml)), not by the model made
+        // from the pairs later
+        input::model_from_pairs(&pairs).map_err(|e| input::in_file(e, &path))?;
+        Ok(pairs)
+    })
 }
 
 /// Names of the embedded golden cases, sorted.

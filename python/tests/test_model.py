@@ -155,3 +155,12 @@ def test_pickle_roundtrip():
     import pickle
     m = cylroll.Model(theta0="1/10", mu_contact="0.3")
     assert pickle.loads(pickle.dumps(m)) == m
+
+
+def test_from_toml_names_the_file_for_a_value_out_of_range(tmp_path):
+    # as the command line's --params names it: m1 (in FILE)
+    f = tmp_path / "q.toml"
+    f.write_text('m1 = "-1"\n')
+    with pytest.raises(cylroll.InvalidParameterError) as e:
+        cylroll.Model.from_toml(f)
+    assert str(e.value) == f'invalid m1 (in {f}) = "-1": must be > 0'

@@ -399,3 +399,51 @@ def test_a_lower_bound_has_no_finite_error_bound():
     with pytest.raises(ValueError, match="only the lower bound"):
         f.to_dict()
     assert f.texts()["mu_contact"] == v.text
+
+
+def test_narrow_floats_are_the_decimals_they_print_as():
+    # a float32 0.3 is 3/10, as check() and a CSV file read it (it was
+    # its float64 value 0.30000001192092896: another angle, another time)
+    np = pytest.importorskip("numpy")
+    m = cylroll.Model(theta0="0.1")
+    assert m.time(np.float32(0.3), digits=12).text == m.time("0.3", digits=12).text
+    assert m.time(np.float16(0.25), digits=12).text == m.time("0.25", digits=12).text
+    tr = m.trajectory(np.array([0.1, 0.7], np.float32), digits=10)
+    assert tr.values("t")[0].text == "0.1" and tr.values("t")[1].text == "0.7"
+    grid = m.trajectory(t_end=np.float32(0.3), steps=3, digits=10)
+    assert [v.text for v in grid.values("t")] == ["0", "0.1", "0.2", "0.3"]
+
+
+def test_time_and_forces_carry_the_notes_of_the_command_line():
+    m = cylroll.Model(theta0="0.1")
+    # past θs within the digits asked: answered at θs, and said so
+    v = m.time("1.0507720620185106481", digits=20)
+    assert any("past theta_s by less than the digits asked" in n for n in v.notes)
+    f = m.forces("0.98", digits=10)
+    assert any("branch point" in n for n in f.notes)
+    assert "note: " in str(f)
+    assert m.time("0.5", digits=10).notes == []
+
+
+def test_theta_s_is_none_where_the_model_ends_before_parting():
+    s = cylroll.Model(theta0="0.0001", r1="1e-5").separation(digits=8)
+    assert s.theta_s is None and s.t_s is None
+    assert s.end is not None and "floor" in s.end
+
+
+def test_to_csv_of_chosen_columns_is_the_command_lines():
+    # `--columns` prints those columns alone, in their order, with `mode`
+    # only where asked (it was always added last)
+    m = cylroll.Model(theta0="1/10")
+    full = m.trajectory(["0", "1"], digits=5)
+    for cols in (["theta", "t"], ["mode", "theta"], ["theta", "t", "mode"]):
+        tr = m.trajectory(["0", "1"], digits=5, columns=cols)
+        rows = [",".join(full.modes[i] if c == "mode" else full.values(c)[i].text
+                         for c in cols) for i in range(2)]
+        assert tr.to_csv() == "\n".join([",".join(cols)] + rows) + "\n", cols
+    assert full.to_csv().splitlines()[0].endswith(",work,mode")
+
+
+def test_a_scalar_for_times_names_times():
+    with pytest.raises(TypeError, match="times: expected a sequence"):
+        cylroll.Model(theta0="1/10").trajectory(0.5)
