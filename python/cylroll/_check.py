@@ -347,7 +347,11 @@ def _from_mapping(cand: Any) -> Tuple[List[str], List[List[str]]]:
         if arr.ndim == 0:
             arr = arr.reshape(1)
         if arr.ndim != 1:
-            raise ValueError(f"column {name}: expected a 1-d array, got shape {arr.shape}")
+            # a DataFrame with two columns of one name gives a 2-d selection
+            why = (f"the name stands for {arr.shape[1]} columns"
+                   if arr.ndim == 2 and hasattr(col, "columns") else
+                   f"expected a 1-d array, got shape {arr.shape}")
+            raise _invalid("candidate", f"column {name}", why)
         if any(c in name for c in ',"\r\n'):
             raise _invalid("candidate", name, "a column name may not hold a comma, a quote or a "
                            "line break")
@@ -369,7 +373,7 @@ def _from_mapping(cand: Any) -> Tuple[List[str], List[List[str]]]:
     n = {len(c) for c in cols}
     if len(n) > 1:
         lens = ", ".join(f"{k}: {len(c)}" for k, c in zip(names, cols))
-        raise ValueError(f"the columns have different lengths ({lens})")
+        raise _invalid("candidate", lens, "the columns must have the same length")
     return names, [list(r) for r in zip(*cols)]
 
 

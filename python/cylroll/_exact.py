@@ -129,6 +129,9 @@ def mu_text(name: str, x: Any, allow_float: bool = False) -> str:
         if len(x) != 2:
             raise _invalid(name, x, "a pair (static, kinetic) has two numbers")
         return ",".join(exact_text(name, v, allow_float) for v in x)
-    if isinstance(x, float) and math.isinf(x) and x > 0:
-        return "inf"
+    if isinstance(x, (float, Decimal)) and not isinstance(x, bool):
+        if isinstance(x, float) and math.isinf(x) or isinstance(x, Decimal) and x.is_infinite():
+            if x > 0:
+                return "inf"  # rolling, as float("inf")
+            raise _invalid(name, x, "must be >= 0, or inf (rolling)")
     return exact_text(name, x, allow_float)

@@ -119,6 +119,8 @@ class Model:
         mu: Mu = None,
         allow_float: bool = False,
     ) -> None:
+        if not isinstance(allow_float, bool):
+            raise TypeError(f"allow_float: expected True or False, got {type(allow_float).__name__}")
         if not isinstance(floor, str):
             raise TypeError("floor: expected 'roll', 'slip' or 'fixed'")
         if not isinstance(contact, str):
@@ -175,6 +177,8 @@ class Model:
         ``Model(mu="0.3").replace(floor="roll")``
         is a rolling floor under a Coulomb contact (the coefficient would
         otherwise remain that contact's law)."""
+        if not isinstance(allow_float, bool):
+            raise TypeError(f"allow_float: expected True or False, got {type(allow_float).__name__}")
         for k, allowed in (("floor", "'roll', 'slip' or 'fixed'"), ("contact", "'roll' or 'slip'")):
             if k in changes and not isinstance(changes[k], str):
                 raise TypeError(f"{k}: expected {allowed}, got {type(changes[k]).__name__}")
@@ -301,6 +305,8 @@ class Model:
         with friction when nothing can be enclosed (a start that slips at
         once).
         """
+        if what in ("time", "forces") and theta is None:
+            raise _invalid("theta", None, f"enclose({what!r}) needs the angle to enclose it at")
         th = None if theta is None else time_text("theta", theta)
         rows = _cylroll.enclose(self._pairs, _digits(digits), what, th)
         return [Enclosure(*r) for r in rows]

@@ -218,3 +218,25 @@ def test_accepted_types_are_one_consistent_set():
         cylroll.Model(m1=float("nan"), allow_float=True)
     with pytest.raises(cylroll.InvalidParameterError, match="finite"):
         cylroll.Model(m1=float("nan"))
+
+
+def test_small_refusals_name_what_is_wrong():
+    from decimal import Decimal
+    # Decimal infinity is rolling, as float("inf"); a negative infinity is
+    # refused as what it is, not as "must be a finite number"
+    assert cylroll.Model(mu_contact=Decimal("Infinity")).laws["mu_contact"] == "inf"
+    for bad in (float("-inf"), Decimal("-Infinity")):
+        with pytest.raises(cylroll.InvalidParameterError, match=r"must be >= 0, or inf"):
+            cylroll.Model(mu_contact=bad)
+    with pytest.raises(TypeError, match="allow_float: expected True or False"):
+        cylroll.Model(allow_float="yes")
+    with pytest.raises(TypeError, match="allow_float: expected True or False"):
+        cylroll.Model().replace(allow_float=1, m1="2")
+    with pytest.raises(cylroll.InvalidParameterError, match=r"theta = 'None': enclose\('time'\) needs"):
+        cylroll.Model(theta0="1/10").enclose("time")
+    with pytest.raises(cylroll.InvalidParameterError, match="the same length"):
+        cylroll.check({"t": [0, 1], "theta": [0.1]}, "main_roll_roll")
+    pd = pytest.importorskip("pandas")
+    df = pd.DataFrame([[0, 0.1, 0.1]], columns=["t", "theta", "theta"])
+    with pytest.raises(cylroll.InvalidParameterError, match="stands for 2 columns"):
+        cylroll.check(df, "main_roll_roll")
