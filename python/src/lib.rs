@@ -51,7 +51,10 @@ fn value(v: &Verified) -> Value {
 fn err_f64(v: &Verified) -> f64 {
     let f = v.err_bound.to_f64();
     if v.err_bound > f {
-        f.next_up()
+        // the next float up (f64::next_up is newer than the crates' Rust
+        // 1.85): a bound is >= 0, so one more unit of its bits, from 0 the
+        // smallest subnormal
+        f64::from_bits(f.to_bits() + 1)
     } else {
         f
     }
