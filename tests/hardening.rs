@@ -2350,6 +2350,28 @@ fn n1_along_the_motion_is_compared_with_the_masses_ratio_in_its_bits() {
         mantissas.push(mantissa.to_string());
     }
     assert_eq!(mantissas[0], mantissas[1]);
+    // beyond the bits the comparison is given (a ratio of 10^3000 either
+    // way): not computed, and said so (a wrong minimum, a false lift-off
+    // were printed there)
+    for (m1, law) in [("1e3000", "slip"), ("1e-2500", "roll")] {
+        let args = [
+            "--m1",
+            m1,
+            "--contact",
+            law,
+            "--theta0",
+            "1/10",
+            "--digits",
+            "20",
+        ];
+        assert!(sep_value(&args, "theta_N1_min").is_err(), "m1 = {m1}");
+        let text = stdout_ok(&[&["separation"][..], &args].concat());
+        assert!(
+            text.contains("are not computed: the masses differ by more than 2^8192"),
+            "{text}"
+        );
+        assert!(!text.contains("N1 vanishes"), "{text}");
+    }
 }
 
 /// A bad value in a golden case file is named with its file, as `--params`

@@ -306,7 +306,8 @@ class Model:
         once).
         """
         if what in ("time", "forces") and theta is None:
-            raise _invalid("theta", None, f"enclose({what!r}) needs the angle to enclose it at")
+            raise _invalid("theta", "(not given)",
+                           f"enclose({what!r}) needs the angle to enclose it at")
         th = None if theta is None else time_text("theta", theta)
         rows = _cylroll.enclose(self._pairs, _digits(digits), what, th)
         return [Enclosure(*r) for r in rows]
@@ -411,7 +412,10 @@ class Model:
             k = texts.index(e.value) if e.value in texts else None
             at = f"the grid's time {e.value}" + (f" (step {k} of {steps})" if k is not None else "")
             raise _invalid("t_end", te, f"{at} {e.allowed}") from None
-        return Trajectory._build(self, digits, d, None if cols is None else cols.split(","))
+        # the CSV's header as --columns prints it (the names trimmed, as the
+        # core reads them)
+        head = None if cols is None else [c.strip() for c in cols.split(",")]
+        return Trajectory._build(self, digits, d, head)
 
 
 def _branch(branch: str, part_at: Optional[Number]) -> Tuple[str, Optional[str]]:

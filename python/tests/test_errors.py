@@ -232,7 +232,7 @@ def test_small_refusals_name_what_is_wrong():
         cylroll.Model(allow_float="yes")
     with pytest.raises(TypeError, match="allow_float: expected True or False"):
         cylroll.Model().replace(allow_float=1, m1="2")
-    with pytest.raises(cylroll.InvalidParameterError, match=r"theta = 'None': enclose\('time'\) needs"):
+    with pytest.raises(cylroll.InvalidParameterError, match=r"theta = '\(not given\)': enclose\('time'\) needs"):
         cylroll.Model(theta0="1/10").enclose("time")
     with pytest.raises(cylroll.InvalidParameterError, match="the same length"):
         cylroll.check({"t": [0, 1], "theta": [0.1]}, "main_roll_roll")

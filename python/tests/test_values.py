@@ -436,10 +436,11 @@ def test_to_csv_of_chosen_columns_is_the_command_lines():
     # only where asked (it was always added last)
     m = cylroll.Model(theta0="1/10")
     full = m.trajectory(["0", "1"], digits=5)
-    for cols in (["theta", "t"], ["mode", "theta"], ["theta", "t", "mode"]):
+    for cols in (["theta", "t"], ["mode", "theta"], ["theta", "t", "mode"], [" theta ", " t"]):
         tr = m.trajectory(["0", "1"], digits=5, columns=cols)
-        rows = [",".join(full.modes[i] if c == "mode" else full.values(c)[i].text
+        rows = [",".join(full.modes[i] if c.strip() == "mode" else full.values(c.strip())[i].text
                          for c in cols) for i in range(2)]
+        cols = [c.strip() for c in cols]
         assert tr.to_csv() == "\n".join([",".join(cols)] + rows) + "\n", cols
     assert full.to_csv().splitlines()[0].endswith(",work,mode")
 

@@ -552,7 +552,9 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
     // the end's error bound, and is not the end to the digits asked (the
     // end's time as printed, given back, is the state there, as the
     // trajectory answers it: it was refused as after the end); nearer ones
-    // are the oracle's to place
+    // are the oracle's to place. The rule is trajectory's (`within_digits`)
+    // without its time-scale term: the window is never wider than the one
+    // trajectory answers in, so no row kept is refused there
     let t_end = end_event.map(|e| {
         let p = e.t.value.prec();
         (

@@ -73,12 +73,18 @@ impl Exact {
         // (`1 / 3`, `2 * pi / 3`); inside a number it is refused: `1 000`
         // (a thousands separator or two numbers?), `0. 3`, `1e 3`
         let s: std::borrow::Cow<str> = if trimmed.contains(char::is_whitespace) {
-            let c: Vec<char> = trimmed.chars().collect();
-            for (i, _) in c.iter().enumerate().filter(|(_, x)| x.is_whitespace()) {
-                let before = c[..i].iter().rev().find(|x| !x.is_whitespace());
-                let after = c[i..].iter().find(|x| !x.is_whitespace());
-                let operator = |x: Option<&char>| x.is_some_and(|x| *x == '/' || *x == '*');
-                if !operator(before) && !operator(after) {
+            // one pass: each run of spaces (never at the ends, trimmed) with
+            // the characters just before and after it
+            let operator = |x: char| x == '/' || x == '*';
+            let mut kept = String::with_capacity(trimmed.len());
+            let mut last = ' ';
+            let mut in_run = false;
+            for x in trimmed.chars() {
+                if x.is_whitespace() {
+                    in_run = true;
+                    continue;
+                }
+                if in_run && !operator(last) && !operator(x) {
                     return Err(Error::invalid(
                         name,
                         text,
@@ -86,8 +92,11 @@ impl Exact {
                          inside a number",
                     ));
                 }
+                in_run = false;
+                last = x;
+                kept.push(x);
             }
-            trimmed.chars().filter(|c| !c.is_whitespace()).collect()
+            kept.into()
         } else {
             trimmed.into()
         };

@@ -84,7 +84,12 @@ pub fn read_case(path: &Path, what: &str, name: String) -> Result<Case> {
     use crate::model::input::in_file;
     let table = read_toml(path, what)?;
     let (pairs, description, steps) = case_parts(&table).map_err(|e| in_file(e, path))?;
-    let model = crate::model::input::model_from_pairs(&pairs).map_err(|e| in_file(e, path))?;
+    // a value's error names the file in its name (m1 (in FILE)); any other
+    // (a start inside a body, …) is led by the file
+    let model = crate::model::input::model_from_pairs(&pairs).map_err(|e| match e {
+        Error::InvalidParameter { .. } => in_file(e, path),
+        other => other.context(&path.display().to_string()),
+    })?;
     Ok(Case {
         name,
         description,

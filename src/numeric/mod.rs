@@ -37,7 +37,8 @@ pub fn free_thread_caches() {
 
 /// Frees the thread's MPFR caches when dropped ([`free_thread_caches`]):
 /// made first in a thread that computes, it frees them however the thread
-/// ends, a panic included.
+/// ends, a panic included. Bind it to a name (`let _caches =
+/// ThreadCaches;`): `let _ = ThreadCaches;` drops it at once.
 #[must_use = "the caches are freed when the guard is dropped"]
 pub struct ThreadCaches;
 

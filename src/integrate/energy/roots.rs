@@ -199,22 +199,32 @@ pub(super) fn disparity_bits(p: &crate::model::Params) -> u32 {
     }
 }
 
-/// The bits by which the masses' ratio m1/m2 (either way) exceeds 2^16:
-/// what a comparison of N1 along the motion needs beyond the scan's 96 bits.
-/// N1 = m1 g + m2 (g + ÿ2): under a lower cylinder 10^29 times heavier its
-/// change along the motion lies below the 96th bit of m1 g (the start was
-/// taken for N1's minimum); under one 10^40 times lighter, N1 K² near θs is
-/// of the lighter scale in sums of the heavier (a root of N1 a hair past θs
-/// was taken for one before it). Capped at 8192.
-pub(crate) fn mass_spread_bits(p: &crate::model::Params) -> u32 {
+/// What a comparison of N1 along the motion needs beyond the scan's 96
+/// bits: |log2(m1/m2)| rounded up, either way, where the ratio lies outside
+/// [2^−16, 2^16] (0 inside). N1 = m1 g + m2 (g + ÿ2): under a lower cylinder
+/// 10^29 times heavier its change along the motion lies below the 96th bit
+/// of m1 g (the start was taken for N1's minimum); under one 10^40 times
+/// lighter, N1 K² near θs is of the lighter scale in sums of the heavier (a
+/// root of N1 a hair past θs was taken for one before it). `None` beyond
+/// [`MAX_SPREAD_BITS`]: the comparison is not made (a ratio of 10^2500 and
+/// more; the findings that need it say so).
+pub(crate) fn mass_spread_bits(p: &crate::model::Params) -> Option<u32> {
     let ratio = Float::with_val(64, Rational::from(&p.m1 / &p.m2));
-    let e = ratio.get_exp().unwrap_or(0).unsigned_abs();
-    if e <= 16 {
-        0
-    } else {
-        e.min(8192)
+    let e = ratio.get_exp().unwrap_or(0);
+    let bound = Rational::from(1u32 << 16);
+    let r = Rational::from(&p.m1 / &p.m2);
+    if r <= bound && r * &bound >= 1u32 {
+        return Some(0);
     }
+    // 2^(e−1) <= ratio < 2^e: |log2 ratio| <= e above 1, <= 1 − e below
+    let bits = if e > 0 { e } else { 1 - e }.unsigned_abs();
+    (bits <= MAX_SPREAD_BITS).then_some(bits)
 }
+
+/// The most bits [`mass_spread_bits`] adds (a masses' ratio of about
+/// 10^2466): beyond it the N1 findings would isolate roots at hundreds of
+/// thousands of bits.
+pub(crate) const MAX_SPREAD_BITS: u32 = 8192;
 
 /// The precision at which the sign changes of a polynomial with these
 /// coefficients are isolated: 64 bits, plus the binary magnitude of the sum

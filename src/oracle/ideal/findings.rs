@@ -12,12 +12,21 @@ use crate::model::{Contact, Floor};
 use crate::numeric::verify::{ladder, Estimate, Verified};
 use rug::Float;
 
+/// The note where the masses' ratio is beyond the bits the comparison of N1
+/// along the motion is given ([`Oracle::findings_prec`]).
+pub(crate) const NOT_COMPARED: &str = "N1 along the motion (its sign, its minimum) and the most \
+     friction a rolling contact needs are not computed: the masses differ by more than 2^8192, \
+     beyond the bits their comparison along the motion is given";
+
 impl Oracle {
     /// The precision at which N1 and the friction needed are compared along
     /// the motion: the scan's 96 bits, and the bits of the masses' ratio
-    /// where it is extreme ([`crate::integrate::energy::mass_spread_bits`]).
-    pub(super) fn findings_prec(&self) -> u32 {
-        SCAN_PREC + crate::integrate::energy::mass_spread_bits(self.route.work.params())
+    /// where it is extreme ([`crate::integrate::energy::mass_spread_bits`]);
+    /// `None` where the ratio is beyond the bits given to it (the findings
+    /// that need the comparison are not made, and a note says so:
+    /// [`NOT_COMPARED`]).
+    pub(crate) fn findings_prec(&self) -> Option<u32> {
+        crate::integrate::energy::mass_spread_bits(self.route.work.params()).map(|b| SCAN_PREC + b)
     }
 
     /// N1 on [θ0, θs] from N1·K², a polynomial in c = cos θ (K > 0): its
@@ -43,7 +52,10 @@ impl Oracle {
         let b = HPoly::linear(&fp.n1);
         let d = b.deriv().mul(&k).add_scaled(&b.mul(&k.deriv()), &q(-2));
 
-        let p = self.findings_prec();
+        let Some(p) = self.findings_prec() else {
+            notes.push(NOT_COMPARED.to_string());
+            return Ok(());
+        };
         let (c0, a_h) = {
             let eng = self.route.engine(p)?;
             (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
@@ -168,7 +180,9 @@ impl Oracle {
             .mul(&a)
             .mul(&b)
             .add_scaled(&one_m_c2.mul(&apb), &q(-1));
-        let p = self.findings_prec();
+        let p = self.findings_prec().ok_or_else(|| {
+            crate::error::Error::not_physical(format!("internal: {NOT_COMPARED}"))
+        })?;
         let (c0, a_h) = {
             let eng = self.route.engine(p)?;
             (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
@@ -223,7 +237,7 @@ impl Oracle {
         // each run with the masses' spread in its bits: near θs under a
         // lower cylinder 10^60 times lighter, N1 is of the lighter scale in
         // sums of the heavier, and the extremum ~(m1/m2)^(1/2) from θs
-        let spread = crate::integrate::energy::mass_spread_bits(self.route.work.params());
+        let spread = self.findings_prec().map_or(0, |p| p - SCAN_PREC);
         ladder(self.digits, &names, |p_run| {
             let p = p_run + spread;
             let th0 = self.route.work.start().theta0.to_float(p);
