@@ -2458,3 +2458,36 @@ fn an_angle_refused_past_theta_s_quotes_it_to_the_digits_that_show_why() {
         );
     }
 }
+
+/// From a small common rolling rate ω0 > 0, φ̇1 = ω0 at the start turns
+/// negative at once and φ1 returns through 0 soon after: both sign changes
+/// lie within a quarter of the scan's first step, where the scan began (the
+/// motion said both kept their signs, or gave φ̇1's zero after φ1's). The
+/// truths are an independent derivation's (mpmath: the reduced Lagrangian,
+/// the energy quadrature t(θ) and the conserved momenta, at 80 digits):
+/// φ1 = 0 at θ = 0.100521429874870249958951471715… for ω0 = 10^-3 and
+/// 0.10000000000000000521824187273590454… for ω0 = 10^-10.
+#[test]
+fn phi1_sign_changes_near_the_start_are_found_from_a_small_rolling_rate() {
+    for (w, phi1_zero) in [
+        ("1e-3", "0.100521429874870249958951471715"),
+        ("1e-10", "0.100000000000000005218241872736"),
+    ] {
+        let args = ["--theta0", "1/10", "--omega0", w, "--digits", "30"];
+        assert_eq!(
+            sep_value(&args, "theta_phi1_zero").unwrap(),
+            phi1_zero,
+            "{w}"
+        );
+        let dot = sep_value(&args, "theta_phi1dot_zero").unwrap();
+        let (dot, zero) = (
+            rug::Float::with_val(128, rug::Float::parse(&dot).unwrap()),
+            rug::Float::with_val(128, rug::Float::parse(phi1_zero).unwrap()),
+        );
+        let theta0 = rug::Rational::from((1, 10));
+        assert!(
+            dot > theta0 && dot < zero,
+            "omega0 = {w}: phi1_dot's zero {dot}"
+        );
+    }
+}

@@ -327,6 +327,10 @@ impl Oracle {
                 || self.route.red.gamma[1] != 0);
         if phi_moves {
             let gamma0 = self.route.red.gamma[1] == 0;
+            // where φ̇1's sign change inside the motion lies (δ at the
+            // scan's bits): φ1, 0 at the start and monotone until then, has
+            // its first sign change after it
+            let mut phidot_zero: Option<Float> = None;
             for (name, label) in [
                 ("theta_phi1dot_zero", "phi1_dot"),
                 ("theta_phi1_zero", "phi1"),
@@ -348,7 +352,18 @@ impl Oracle {
                 let step = Float::with_val(SCAN_PREC, &ds_scan / SCAN_STEPS);
                 let found = {
                     let scan = self.route.engine(SCAN_PREC)?;
-                    let lo0 = Float::with_val(SCAN_PREC, &step / 4u32);
+                    // from the start where the value is not 0 there (φ̇1
+                    // with ω0 ≠ 0), from φ̇1's zero for φ1 (its extremum),
+                    // else a quarter step on (both 0 at a start from rest):
+                    // from a quarter step on, a sign change nearer the start
+                    // (φ̇1 from ω0 = 10^-4 on) was not seen, and the motion
+                    // said they kept their signs
+                    let zero = Float::new(SCAN_PREC);
+                    let lo0 = match &phidot_zero {
+                        Some(d) if name == "theta_phi1_zero" => d.clone(),
+                        _ if name == "theta_phi1dot_zero" && !f(scan, &zero).is_zero() => zero,
+                        _ => Float::with_val(SCAN_PREC, &step / 4u32),
+                    };
                     // include a sliver past θs so a root at separation is seen
                     let hi0 = Float::with_val(SCAN_PREC, &ds_scan + &step);
                     crate::numeric::root::first_sign_change(&lo0, &hi0, SCAN_STEPS + 1, |d| {
@@ -419,6 +434,11 @@ impl Oracle {
                             ));
                             extra.push(v);
                             continue;
+                        }
+                        if name == "theta_phi1dot_zero" {
+                            phidot_zero = Some(
+                                Float::with_val(SCAN_PREC, self.route.odd(v.value.clone())) - &th0,
+                            );
                         }
                         extra.push(v);
                     }
