@@ -2491,3 +2491,51 @@ fn phi1_sign_changes_near_the_start_are_found_from_a_small_rolling_rate() {
         );
     }
 }
+
+/// Under a tiny θs (a lower cylinder 10^29 times lighter, a frictionless
+/// contact, θ0 = 10^-40: θs ≈ 6.7·10^-8) the most friction the floor needs
+/// and where are compared and refined with the bits c = cos θ needs there
+/// (1 − c ≈ θ²/2): the maximum was reported at θs as 0, and in `forces` the
+/// most friction needed "so far" fell as θ grew. The truths: an independent
+/// derivation's maximum, 1.22072121225e-8 at θ ≈ 4.5558e-8; the value
+/// `forces` gives at that angle is at most the maximum; a maximum over a
+/// longer range is not smaller.
+#[test]
+fn the_friction_needed_under_a_tiny_separation_angle_is_its_maximum() {
+    let model = ["--m1", "1e-29", "--contact", "slip", "--theta0", "1e-40"];
+    let args = [&model[..], &["--digits", "20"]].concat();
+    let max = sep_value(&args, "mu_floor_max").unwrap();
+    assert!(max.starts_with("1.22072121225"), "{max}");
+    let num = |s: &str| rug::Float::with_val(128, rug::Float::parse(s).unwrap());
+    let forces = |theta: &str, key: &str| {
+        let out = stdout_ok(
+            &[
+                &["forces"][..],
+                &model,
+                &["--theta", theta, "--digits", "15"],
+            ]
+            .concat(),
+        );
+        let line = out
+            .lines()
+            .find(|l| l.starts_with(&format!("{key} ")))
+            .unwrap_or_else(|| panic!("{out}"))
+            .to_string();
+        num(line
+            .split('=')
+            .nth(1)
+            .unwrap()
+            .split_whitespace()
+            .next()
+            .unwrap())
+    };
+    let at = forces("4.5558e-8", "mu_floor");
+    let so_far = [
+        forces("5e-8", "mu_floor_max"),
+        forces("6e-8", "mu_floor_max"),
+    ];
+    assert!(at <= so_far[0] && so_far[0] <= so_far[1], "{at} {so_far:?}");
+    // (the 15-digit values are rounded: a unit of their last digit is 1e-22)
+    let unit = num("1e-22");
+    assert!(num(&max) + &unit >= so_far[1], "{max} {so_far:?}");
+}

@@ -802,7 +802,7 @@ pub fn forces(model: &Model, theta: &Exact, opts: &Options) -> Result<Answer> {
         // (|F21|/N12 grows without bound): where it cannot reach the digits
         // asked, it is given with the digits it does verify, not dropped
         // with the whole answer
-        if o.findings_prec().is_none() {
+        if crate::integrate::energy::mass_spread_bits(ideal.params()).is_none() {
             ans.notes.push(ideal::NOT_COMPARED.to_string());
         }
         match o.friction_needed(theta) {

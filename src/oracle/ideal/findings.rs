@@ -20,13 +20,22 @@ pub(crate) const NOT_COMPARED: &str = "N1 along the motion (its sign, its minimu
 
 impl Oracle {
     /// The precision at which N1 and the friction needed are compared along
-    /// the motion: the scan's 96 bits, and the bits of the masses' ratio
-    /// where it is extreme ([`crate::integrate::energy::mass_spread_bits`]);
-    /// `None` where the ratio is beyond the bits given to it (the findings
-    /// that need the comparison are not made, and a note says so:
-    /// [`NOT_COMPARED`]).
-    pub(crate) fn findings_prec(&self) -> Option<u32> {
-        crate::integrate::energy::mass_spread_bits(self.route.work.params()).map(|b| SCAN_PREC + b)
+    /// the motion up to the angle `end` (working frame): the scan's 96 bits,
+    /// the bits of the masses' ratio where it is extreme
+    /// ([`crate::integrate::energy::mass_spread_bits`]), and twice the
+    /// binary order of a small `end` (the polynomials are in c = cos θ,
+    /// whose distance from 1 is θ²/2: under θs = 10^-7 the candidates were
+    /// compared, and a root refined, in the last bits of c). `None` where the
+    /// masses' ratio is beyond the bits given to it (the findings that need
+    /// the comparison are not made, and a note says so: [`NOT_COMPARED`]).
+    pub(crate) fn findings_prec(&self, end: &Float) -> Option<u32> {
+        // (below 2^-8 only: an ordinary motion keeps its bits)
+        let angle = match end.get_exp() {
+            Some(e) if e <= -8 => (4 * e.unsigned_abs()).min(8192),
+            _ => 0,
+        };
+        crate::integrate::energy::mass_spread_bits(self.route.work.params())
+            .map(|b| SCAN_PREC + b + angle)
     }
 
     /// N1 on [θ0, θs] from N1·K², a polynomial in c = cos θ (K > 0): its
@@ -52,7 +61,11 @@ impl Oracle {
         let b = HPoly::linear(&fp.n1);
         let d = b.deriv().mul(&k).add_scaled(&b.mul(&k.deriv()), &q(-2));
 
-        let Some(p) = self.findings_prec() else {
+        let th_s_scan = Float::with_val(
+            SCAN_PREC,
+            self.route.work.start().theta0.to_float(SCAN_PREC) + ds_scan,
+        );
+        let Some(p) = self.findings_prec(&th_s_scan) else {
             notes.push(NOT_COMPARED.to_string());
             return Ok(());
         };
@@ -84,7 +97,7 @@ impl Oracle {
         };
         // the first root of N1 in θ: the largest c
         if let Some(cz) = roots_in(&b).into_iter().next_back() {
-            let v = self.verify_at("theta_N1_zero", None, &At::Root(cz, b.clone()))?;
+            let v = self.verify_at("theta_N1_zero", None, &At::Root(cz, b.clone()), p)?;
             notes.push(format!(
                 "N1 vanishes at theta = {} before separation: cylinder 1 would leave the floor there, \
                  and the motion after that angle (including theta_s) is not the model's",
@@ -132,10 +145,10 @@ impl Oracle {
         let mut cands = vec![At::Start, At::Separation];
         cands.extend(roots_in(&d).into_iter().map(|c| At::Root(c, d.clone())));
         let at_min = pick(cands, &n1_of, false);
-        let v = self.verify_at("theta_N1_min", Some("N1_min"), &at_min)?;
+        let v = self.verify_at("theta_N1_min", Some("N1_min"), &at_min, p)?;
         extra.extend(v);
         if self.route.work.floor() != Floor::Slip {
-            extra.extend(self.needed_max(false, At::Separation, &cs)?);
+            extra.extend(self.needed_max(false, At::Separation, &cs, p)?);
         }
         Ok(())
     }
@@ -148,12 +161,13 @@ impl Oracle {
     /// E = cAB − (1 − c²)(A'B − AB') on [c_end, cos θ0]; the candidates are
     /// compared at [`Oracle::findings_prec`] and the winner verified
     /// ([`Oracle::verify_at`]). `c_end` is cos of the end angle at that
-    /// precision.
+    /// precision, `p`.
     pub(super) fn needed_max(
         &mut self,
         contact_side: bool,
         end: At,
         c_end: &Float,
+        p: u32,
     ) -> Result<Vec<Verified>> {
         use crate::mechanics::dynamics::{HPoly, N12Poly};
         use crate::numeric::poly;
@@ -180,9 +194,6 @@ impl Oracle {
             .mul(&a)
             .mul(&b)
             .add_scaled(&one_m_c2.mul(&apb), &q(-1));
-        let p = self.findings_prec().ok_or_else(|| {
-            crate::error::Error::not_physical(format!("internal: {NOT_COMPARED}"))
-        })?;
         let (c0, a_h) = {
             let eng = self.route.engine(p)?;
             (eng.dynm.c0.clone(), N12Poly::a_h(&eng.dynm))
@@ -216,7 +227,7 @@ impl Oracle {
                 }
             }
         }
-        self.verify_at(theta_name, Some(value_name), &best.1)
+        self.verify_at(theta_name, Some(value_name), &best.1, p)
     }
 
     /// The angle `at` (named `theta_name`) and, with `value`, the quantity
@@ -228,16 +239,19 @@ impl Oracle {
         theta_name: &str,
         value: Option<&str>,
         at: &At,
+        p: u32,
     ) -> Result<Vec<Verified>> {
         use crate::mechanics::dynamics::N12Poly;
         let mut names = vec![theta_name];
         if let Some(v) = value {
             names.push(v);
         }
-        // each run with the masses' spread in its bits: near θs under a
-        // lower cylinder 10^60 times lighter, N1 is of the lighter scale in
-        // sums of the heavier, and the extremum ~(m1/m2)^(1/2) from θs
-        let spread = self.findings_prec().map_or(0, |p| p - SCAN_PREC);
+        // each run with the comparison's bits beyond the scan's
+        // ([`Oracle::findings_prec`]`, `p`): near θs under a lower cylinder
+        // 10^60 times lighter, N1 is of the lighter scale in sums of the
+        // heavier, and the extremum ~(m1/m2)^(1/2) from θs; under a tiny θs
+        // the root's c lies in the last bits
+        let spread = p.saturating_sub(SCAN_PREC);
         ladder(self.digits, &names, |p_run| {
             let p = p_run + spread;
             let th0 = self.route.work.start().theta0.to_float(p);

@@ -421,14 +421,15 @@ impl Oracle {
         let forces = self.forces_at(theta)?;
         // beyond the bits the comparison is given: not made (the caller
         // notes it, findings::NOT_COMPARED)
-        let Some(fp) = self.findings_prec() else {
+        let w64 = self.route.to_work(theta).to_float(64);
+        let Some(fp) = self.findings_prec(&w64) else {
             return Ok(Vec::new());
         };
         let w = self.route.to_work(theta).to_float(fp);
         let c_end = Float::with_val(fp, w.cos_ref());
         let mut out = Vec::new();
         if self.route.work.floor() != Floor::Slip {
-            out.extend(self.needed_max(false, At::Angle(theta.clone()), &c_end)?);
+            out.extend(self.needed_max(false, At::Angle(theta.clone()), &c_end, fp)?);
         }
         if self.route.work.contact() == Contact::Roll {
             let mu = forces.iter().find(|v| v.name == "mu_contact");
@@ -448,7 +449,7 @@ impl Oracle {
                     m.name = "mu_contact_max".into();
                     out.push(m);
                 }
-                _ => out.extend(self.needed_max(true, At::Angle(theta.clone()), &c_end)?),
+                _ => out.extend(self.needed_max(true, At::Angle(theta.clone()), &c_end, fp)?),
             }
         }
         Ok(out)
