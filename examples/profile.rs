@@ -11,11 +11,13 @@
 //! on a fresh oracle each time, `T2cold` θs for m2 = 2 from θ0 = 0 on a fresh
 //! oracle, `T3` θ at 1000 equally spaced times (`oracle::theta_at_times` on the
 //! model, as the bench times it), `T3rows` every column of `cylroll trajectory`
-//! at those times (`oracle::trajectory`). Prints the mean
+//! at those times (`oracle::trajectory`), `F3` and `F3rows` the same two calls on
+//! the benchmark's frictional case (μ = 0.3 at both contacts, 1000 times to
+//! t = 4.92, `T3friction` of `benches/tasks.rs`). Prints the mean
 //! wall time per run to stderr (use `benches/tasks.rs` for measurements).
 
 use cylroll::exact::Exact;
-use cylroll::model::{Contact, Floor, Ideal, Model, Params, Start};
+use cylroll::model::{Contact, Floor, Ideal, Law, Model, Params, Start};
 use cylroll::oracle::{self, Options, Oracle};
 use rug::Rational;
 use std::time::Instant;
@@ -33,11 +35,17 @@ fn model(m2: i64, theta0: &str) -> Ideal {
     Ideal::new(p, Floor::Roll, Contact::Roll, Start::rest(q(theta0))).expect("model")
 }
 
+/// The allocator of the command and the benchmark, so a profile sees their costs.
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() {
+    // SAFETY: first thing in main, before any big number or other thread
+    unsafe { cylroll::allocator::use_mimalloc_for_gmp() };
     let args: Vec<String> = std::env::args().skip(1).collect();
-    const TASKS: [&str; 5] = ["T1", "T1cold", "T2cold", "T3", "T3rows"];
+    const TASKS: [&str; 7] = ["T1", "T1cold", "T2cold", "T3", "T3rows", "F3", "F3rows"];
     if args.len() < 2 || !TASKS.contains(&args[0].as_str()) {
-        eprintln!("usage: profile T1|T1cold|T2cold|T3|T3rows DIGITS [REPEATS]");
+        eprintln!("usage: profile T1|T1cold|T2cold|T3|T3rows|F3|F3rows DIGITS [REPEATS]");
         std::process::exit(2);
     }
     let number = |i: usize, default: usize| -> usize {
@@ -66,6 +74,12 @@ fn run(task: &str, digits: u32, repeats: usize) -> cylroll::error::Result<()> {
     let times: Vec<Exact> = (0..1000)
         .map(|i| Exact::rational(&tend * Rational::from((i as i64, 999))))
         .collect();
+    let mu = || Law::parse_mu("mu", "0.3");
+    let friction = user_model.clone().with_laws(mu()?, mu()?)?;
+    let end = Rational::from((4920, 1000));
+    let friction_times: Vec<Exact> = (0..1000)
+        .map(|i| Exact::rational(&end * Rational::from((i as i64, 999))))
+        .collect();
     let start = Instant::now();
     for _ in 0..repeats {
         match task {
@@ -82,6 +96,12 @@ fn run(task: &str, digits: u32, repeats: usize) -> cylroll::error::Result<()> {
             }
             "T3" => {
                 std::hint::black_box(oracle::theta_at_times(&user_model, &times, &opts)?);
+            }
+            "F3" => {
+                std::hint::black_box(oracle::theta_at_times(&friction, &friction_times, &opts)?);
+            }
+            "F3rows" => {
+                std::hint::black_box(oracle::trajectory(&friction, &friction_times, &opts)?);
             }
             _ => {
                 std::hint::black_box(oracle::trajectory(&user_model, &times, &opts)?);
