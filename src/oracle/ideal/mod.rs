@@ -224,22 +224,11 @@ impl Oracle {
         if self.route.sign_at_start(&hp)? > 0 {
             return Ok(None);
         }
-        // θ* and θs told apart with the masses' ratio's bits more: under a
-        // lower cylinder 10^20 times heavier they lie ~m2/m1 apart, and at 64
-        // bits the branch point was taken for θs (the motion called unique)
-        let spread = crate::integrate::energy::mass_spread_bits(self.route.work.params())
-            .unwrap_or(crate::integrate::energy::MAX_SPREAD_BITS);
-        let p = 64 + spread;
-        let (ds, ds_err) = if spread == 0 {
-            (ds.clone(), ds_err.clone())
-        } else {
-            self.route.delta_s(p)?
-        };
-        let Some((d, err)) = self.route.first_root("branch point", &hp, None, &ds, p)? else {
+        let Some((d, err)) = self.route.first_root("branch point", &hp, None, ds, 64)? else {
             return Ok(None);
         };
-        let gap = Float::with_val(p, &d - &ds).abs();
-        if gap <= Float::with_val(p, &err + &ds_err) * 4u32 || d > ds {
+        let gap = Float::with_val(64, &d - ds).abs();
+        if gap <= Float::with_val(64, &err + ds_err) * 4u32 || d > *ds {
             return Ok(None);
         }
         Ok(Some((hp, d, err)))
