@@ -269,7 +269,17 @@ pub fn first_phase(
     if let Some((d, err)) = branch_found {
         let gap = Float::with_val(p, &d - &ds).abs();
         let tol = Float::with_val(p, &err + &refined[0].2) * 4u32;
-        if gap > tol && d < ds {
+        // a branch point that is θs to the digits asked is taken as θs by
+        // every run alike (the same decision at every precision): under a
+        // lower cylinder 10^40 times heavier it lies ~10^-40 before θs, and
+        // each run's own resolution told it apart at one precision only
+        let one = Float::with_val(p, 1u32);
+        let (th_b, th_s) = (
+            Float::with_val(p, &th0w + &d),
+            Float::with_val(p, &th0w + &ds),
+        );
+        let at_s = super::sides::within_digits(&th_b, &th_s, wants.digits, &one);
+        if gap > tol && d < ds && !at_s {
             if *wants.branch == Branch::Part {
                 refined.push((Ending::BranchPart, d.clone(), err.clone()));
             }

@@ -16,7 +16,7 @@
 pub mod engine;
 mod kept;
 mod roots;
-pub(crate) use roots::mass_spread_bits;
+pub(crate) use roots::{mass_spread_bits, MAX_SPREAD_BITS};
 mod rows;
 
 pub use kept::forget as forget_kept;

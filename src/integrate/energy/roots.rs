@@ -136,7 +136,11 @@ impl Route {
             // found a sign change its refinement could not (exit 3).
             return Ok(None);
         };
-        let iso = iso + disparity_bits(self.work.params());
+        // and the masses' ratio's bits (a branch point ~m2/m1 before θs
+        // under a lower cylinder 10^20 times heavier was merged with θs)
+        let iso = iso
+            + disparity_bits(self.work.params())
+            + mass_spread_bits(self.work.params()).unwrap_or(MAX_SPREAD_BITS);
         // the end of the range at the precision it is known to (a root ~1/μ
         // before θs must not fall outside a 64-bit rounding of cos θs)
         let ep = iso.max(delta_end.prec());

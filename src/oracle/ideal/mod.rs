@@ -224,11 +224,32 @@ impl Oracle {
         if self.route.sign_at_start(&hp)? > 0 {
             return Ok(None);
         }
-        let Some((d, err)) = self.route.first_root("branch point", &hp, None, ds, 64)? else {
+        // θ* and θs told apart with the masses' ratio's bits more: under a
+        // lower cylinder 10^20 times heavier they lie ~m2/m1 apart, and at 64
+        // bits the branch point was taken for θs (the motion called unique)
+        let spread = crate::integrate::energy::mass_spread_bits(self.route.work.params())
+            .unwrap_or(crate::integrate::energy::MAX_SPREAD_BITS);
+        let p = 64 + spread;
+        let (ds, ds_err) = if spread == 0 {
+            (ds.clone(), ds_err.clone())
+        } else {
+            self.route.delta_s(p)?
+        };
+        let Some((d, err)) = self.route.first_root("branch point", &hp, None, &ds, p)? else {
             return Ok(None);
         };
-        let gap = Float::with_val(64, &d - ds).abs();
-        if gap <= Float::with_val(64, &err + ds_err) * 4u32 || d > *ds {
+        let gap = Float::with_val(p, &d - &ds).abs();
+        // θs to the digits asked: taken as θs (the motion's rule, the same
+        // at every precision)
+        let th0 = self.route.work.start().theta0.to_float(p);
+        let one = Float::with_val(p, 1u32);
+        let at_s = crate::motion::sides::within_digits(
+            &Float::with_val(p, &th0 + &d),
+            &Float::with_val(p, &th0 + &ds),
+            self.digits,
+            &one,
+        );
+        if gap <= Float::with_val(p, &err + &ds_err) * 4u32 || d > ds || at_s {
             return Ok(None);
         }
         Ok(Some((hp, d, err)))
