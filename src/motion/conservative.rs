@@ -267,19 +267,9 @@ pub fn first_phase(
     // (N12 = −m2 ρ̈_free there), which is then no branch point
     let mut branch_at: Option<(Float, Float)> = None;
     if let Some((d, err)) = branch_found {
-        let gap = Float::with_val(p, &d - &ds).abs();
+        // one that is θs to the digits asked is θs, in every run alike
         let tol = Float::with_val(p, &err + &refined[0].2) * 4u32;
-        // a branch point that is θs to the digits asked is taken as θs by
-        // every run alike (the same decision at every precision): under a
-        // lower cylinder 10^40 times heavier it lies ~10^-40 before θs, and
-        // each run's own resolution told it apart at one precision only
-        let one = Float::with_val(p, 1u32);
-        let (th_b, th_s) = (
-            Float::with_val(p, &th0w + &d),
-            Float::with_val(p, &th0w + &ds),
-        );
-        let at_s = super::sides::within_digits(&th_b, &th_s, wants.digits, &one);
-        if gap > tol && d < ds && !at_s {
+        if super::sides::apart_from_end(&d, &ds, &tol, &th0w, wants.digits) {
             if *wants.branch == Branch::Part {
                 refined.push((Ending::BranchPart, d.clone(), err.clone()));
             }

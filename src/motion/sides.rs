@@ -76,6 +76,20 @@ pub fn within_digits(t: &Float, end: &Float, digits: u32, scale: &Float) -> bool
     Float::with_val(p, t - end).abs() <= tol
 }
 
+/// Whether a root at δ = `d` (error `tol` beyond which it is apart) lies
+/// before the end δ = `end` of a phase and apart from it — not within its
+/// bound, and not the end to the `digits` asked ([`within_digits`] of the
+/// angles θ0 + δ, `th0` the start in the working frame): the same decision at
+/// every working precision. A branch point ~10^-40 before θs under a lower
+/// cylinder 10^40 times heavier was told apart at one precision only, and
+/// the two runs disagreed on the events.
+pub fn apart_from_end(d: &Float, end: &Float, tol: &Float, th0: &Float, digits: u32) -> bool {
+    let p = d.prec().max(end.prec());
+    let gap = Float::with_val(p, d - end).abs();
+    let at = |x: &Float| Float::with_val(p, th0 + x);
+    *d < *end && gap > *tol && !within_digits(&at(d), &at(end), digits, &Float::with_val(p, 1u32))
+}
+
 /// The event whose value in `ats` (with its margin in `margins`) is nearest
 /// `x`, if `x` is within that margin: |x − a| rounded at x's precision (in
 /// the scratch number `d`), the first of equally near ones.

@@ -137,18 +137,7 @@ fn check_times_rounded(times: &[Exact], rounded: Option<&RoundedTimes>) -> Resul
 }
 
 fn infinite(model: &Model, what: &str) -> Error {
-    // the ideal models answer angles and forces as the limit θ0 → 0+; with
-    // friction that limit is not computed, and the message must not say it is
-    let limit = if model.has_coulomb() {
-        "with Coulomb friction the limit theta0 -> 0+ is not computed; the ideal laws (roll, \
-         slip) give forces and the separation angle as that limit"
-    } else {
-        "forces and the separation angle are defined as the limit theta0 -> 0+"
-    };
-    Error::not_physical(format!(
-        "{what} is infinite: the motion starts from rest exactly at the unstable top (theta0 = 0, thetadot0 = 0); \
-         give a small --theta0 or --thetadot0 ({limit})"
-    ))
+    crate::integrate::energy::infinite_time_error(what, model.has_coulomb())
 }
 
 fn runs<'a>(model: &'a Model, opts: &Options, times: Vec<Exact>, until: Until) -> Runs<'a> {

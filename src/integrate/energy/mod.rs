@@ -116,6 +116,23 @@ pub struct Route {
     pub at_separation: bool,
 }
 
+/// `what` (a time) is infinite: the motion starts from rest exactly at the
+/// unstable top. The ideal models answer angles and forces as the limit
+/// θ0 → 0+; with Coulomb friction (`coulomb`) that limit is not computed,
+/// and the message must not say it is.
+pub fn infinite_time_error(what: &str, coulomb: bool) -> Error {
+    let limit = if coulomb {
+        "with Coulomb friction the limit theta0 -> 0+ is not computed; the ideal laws (roll, \
+         slip) give forces and the separation angle as that limit"
+    } else {
+        "forces and the separation angle are defined as the limit theta0 -> 0+"
+    };
+    Error::not_physical(format!(
+        "{what} is infinite: the motion starts from rest exactly at the unstable top (theta0 = 0, \
+         thetadot0 = 0); give a small --theta0 or --thetadot0 ({limit})"
+    ))
+}
+
 impl Route {
     /// The route of `model`.
     ///
@@ -204,10 +221,7 @@ impl Route {
     }
 
     pub fn infinite_time_error(&self, what: &str) -> Error {
-        Error::not_physical(format!(
-            "{what} is infinite: the motion starts from rest exactly at the unstable top (theta0 = 0, thetadot0 = 0); \
-             give a small --theta0 or --thetadot0 (forces and the separation angle are defined as the limit theta0 -> 0+)"
-        ))
+        infinite_time_error(what, false)
     }
 
     /// The coefficients (ascending in c = cos θ) of N12·K²/m2 at `prec` bits

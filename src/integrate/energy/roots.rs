@@ -136,8 +136,9 @@ impl Route {
             // found a sign change its refinement could not (exit 3).
             return Ok(None);
         };
-        // and the masses' ratio's bits (a branch point ~m2/m1 before θs
-        // under a lower cylinder 10^20 times heavier was merged with θs)
+        // and the masses' ratio's bits, for every root (a branch point
+        // ~m2/m1 before θs under a lower cylinder 10^20 times heavier was
+        // merged with θs)
         let iso = iso
             + disparity_bits(self.work.params())
             + mass_spread_bits(self.work.params()).unwrap_or(MAX_SPREAD_BITS);
@@ -187,9 +188,10 @@ impl Route {
 /// to the values' scale ([`isolation_bits`]) does not see it: the unit
 /// polynomial is of the heavy scale too.
 /// Only for a heavier upper cylinder: under a lighter one the polynomials
-/// are of the upper cylinder's scale throughout (and isolating a branch
-/// point ~m2/m1 from θs beyond the digits asked would tell it apart at one
-/// working precision and not at the other).
+/// are of the upper cylinder's scale throughout. (Either way the isolation
+/// also has [`mass_spread_bits`]: a branch point ~m2/m1 before θs is told
+/// apart; one that is θs to the digits asked is taken as θs by every run,
+/// [`crate::motion::sides::apart_from_end`].)
 pub(super) fn disparity_bits(p: &crate::model::Params) -> u32 {
     let ratio = Float::with_val(64, Rational::from(&p.m2 / &p.m1));
     let e = ratio.get_exp().unwrap_or(0).max(0).unsigned_abs();
@@ -213,14 +215,15 @@ pub(super) fn disparity_bits(p: &crate::model::Params) -> u32 {
 /// [`MAX_SPREAD_BITS`]: the comparison is not made (a ratio of 10^2500 and
 /// more; the findings that need it say so).
 pub(crate) fn mass_spread_bits(p: &crate::model::Params) -> Option<u32> {
-    let ratio = Float::with_val(64, Rational::from(&p.m1 / &p.m2));
-    let e = ratio.get_exp().unwrap_or(0);
-    let bound = Rational::from(1u32 << 16);
     let r = Rational::from(&p.m1 / &p.m2);
-    if r <= bound && r * &bound >= 1u32 {
+    let bound = Rational::from(1u32 << 16);
+    if r <= bound && Rational::from(&r * &bound) >= 1u32 {
         return Some(0);
     }
-    // 2^(e−1) <= ratio < 2^e: |log2 ratio| <= e above 1, <= 1 − e below
+    // 2^(e−1) <= r < 2^e (rounded down to 64 bits, r keeps its exponent):
+    // |log2 r| <= e above 1, <= 1 − e below
+    let (r64, _) = Float::with_val_round(64, &r, rug::float::Round::Down);
+    let e = r64.get_exp().unwrap_or(0);
     let bits = if e > 0 { e } else { 1 - e }.unsigned_abs();
     (bits <= MAX_SPREAD_BITS).then_some(bits)
 }

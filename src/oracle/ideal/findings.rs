@@ -22,16 +22,19 @@ impl Oracle {
     /// The precision at which N1 and the friction needed are compared along
     /// the motion up to the angle `end` (working frame): the scan's 96 bits,
     /// the bits of the masses' ratio where it is extreme
-    /// ([`crate::integrate::energy::mass_spread_bits`]), and twice the
-    /// binary order of a small `end` (the polynomials are in c = cos θ,
-    /// whose distance from 1 is θ²/2: under θs = 10^-7 the candidates were
-    /// compared, and a root refined, in the last bits of c). `None` where the
+    /// ([`crate::integrate::energy::mass_spread_bits`]), and four times the
+    /// binary order of an `end` below 2^-8 (the polynomials are in c = cos θ,
+    /// whose distance from 1 is θ²/2, and the extremum's condition E(c)
+    /// squares it again: under θs = 10^-7 the candidates were compared, and
+    /// a root refined, in the last bits of c; twice was not enough there). `None` where the
     /// masses' ratio is beyond the bits given to it (the findings that need
     /// the comparison are not made, and a note says so: [`NOT_COMPARED`]).
     pub(crate) fn findings_prec(&self, end: &Float) -> Option<u32> {
         // (below 2^-8 only: an ordinary motion keeps its bits)
         let angle = match end.get_exp() {
-            Some(e) if e <= -8 => (4 * e.unsigned_abs()).min(8192),
+            Some(e) if e <= -8 => {
+                (4 * e.unsigned_abs()).min(crate::integrate::energy::MAX_SPREAD_BITS)
+            }
             _ => 0,
         };
         crate::integrate::energy::mass_spread_bits(self.route.work.params())
@@ -247,7 +250,7 @@ impl Oracle {
             names.push(v);
         }
         // each run with the comparison's bits beyond the scan's
-        // ([`Oracle::findings_prec`]`, `p`): near θs under a lower cylinder
+        // ([`Oracle::findings_prec`], `p`): near θs under a lower cylinder
         // 10^60 times lighter, N1 is of the lighter scale in sums of the
         // heavier, and the extremum ~(m1/m2)^(1/2) from θs; under a tiny θs
         // the root's c lies in the last bits

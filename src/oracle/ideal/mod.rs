@@ -238,21 +238,11 @@ impl Oracle {
         let Some((d, err)) = self.route.first_root("branch point", &hp, None, &ds, p)? else {
             return Ok(None);
         };
-        let gap = Float::with_val(p, &d - &ds).abs();
-        // θs to the digits asked: taken as θs (the motion's rule, the same
-        // at every precision)
+        // the motion's rule: one that is θs to the digits asked is θs
         let th0 = self.route.work.start().theta0.to_float(p);
-        let one = Float::with_val(p, 1u32);
-        let at_s = crate::motion::sides::within_digits(
-            &Float::with_val(p, &th0 + &d),
-            &Float::with_val(p, &th0 + &ds),
-            self.digits,
-            &one,
-        );
-        if gap <= Float::with_val(p, &err + &ds_err) * 4u32 || d > ds || at_s {
-            return Ok(None);
-        }
-        Ok(Some((hp, d, err)))
+        let tol = Float::with_val(p, &err + &ds_err) * 4u32;
+        let apart = crate::motion::sides::apart_from_end(&d, &ds, &tol, &th0, self.digits);
+        Ok(apart.then_some((hp, d, err)))
     }
 
     /// θ*, the branch point: the first angle past θ0, before θs, where the
