@@ -119,8 +119,7 @@ class Model:
         mu: Mu = None,
         allow_float: bool = False,
     ) -> None:
-        if not isinstance(allow_float, bool):
-            raise TypeError(f"allow_float: expected True or False, got {type(allow_float).__name__}")
+        _flag("allow_float", allow_float)
         if not isinstance(floor, str):
             raise TypeError("floor: expected 'roll', 'slip' or 'fixed'")
         if not isinstance(contact, str):
@@ -177,8 +176,7 @@ class Model:
         ``Model(mu="0.3").replace(floor="roll")``
         is a rolling floor under a Coulomb contact (the coefficient would
         otherwise remain that contact's law)."""
-        if not isinstance(allow_float, bool):
-            raise TypeError(f"allow_float: expected True or False, got {type(allow_float).__name__}")
+        _flag("allow_float", allow_float)
         for k, allowed in (("floor", "'roll', 'slip' or 'fixed'"), ("contact", "'roll' or 'slip'")):
             if k in changes and not isinstance(changes[k], str):
                 raise TypeError(f"{k}: expected {allowed}, got {type(changes[k]).__name__}")
@@ -416,6 +414,12 @@ class Model:
         # core reads them)
         head = None if cols is None else [c.strip() for c in cols.split(",")]
         return Trajectory._build(self, digits, d, head)
+
+
+def _flag(name: str, x: Any) -> None:
+    """A keyword that takes True or False (``allow_float="yes"`` was taken as true)."""
+    if not isinstance(x, bool):
+        raise TypeError(f"{name}: expected True or False, got {type(x).__name__}")
 
 
 def _branch(branch: str, part_at: Optional[Number]) -> Tuple[str, Optional[str]]:
