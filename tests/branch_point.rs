@@ -389,8 +389,7 @@ fn the_branch_point_of_the_ideal_models_is_proved_and_contains_the_independent_v
         }
         seen += 1;
         let mut o = Ideal::new(&ideal, DIGITS).unwrap();
-        let th_s = o.separation_angle().unwrap();
-        let start = o.branch_point(&th_s).unwrap().expect("a branch point");
+        let start = o.branch_point().unwrap().expect("a branch point");
         let p = cylroll::numeric::bits_for_digits(DIGITS) + 32;
         let (ths, _) = o.rigorous_separation(p).unwrap();
         let (th, tt) = o

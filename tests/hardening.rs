@@ -2541,7 +2541,7 @@ fn the_friction_needed_under_a_tiny_separation_angle_is_its_maximum() {
 }
 
 /// Under a lower cylinder 10^19 … 10^30 times heavier, the branch point θ*
-/// lies ~1.23 m2/m1 before θs: isolated at 64 bits it was taken for θs and
+/// lies ~0.123 m2/m1 before θs: isolated at 64 bits it was taken for θs and
 /// the motion called unique where the digits asked tell them apart (with g = 3 and not with g = 7 at m1 = 5·10^18: a rounding,
 /// not the physics, which g only scales). The truth: an independent
 /// derivation's θ* = 0.96602520479222373245433831064… at m1 = 10^20.
@@ -2564,4 +2564,239 @@ fn a_branch_point_a_hair_before_theta_s_is_found_at_extreme_mass_ratios() {
     let args = ["--theta0", "0.1", "--m1", "1e40", "--digits", "30"];
     assert!(sep_value(&args, "theta_indeterminate").is_err());
     assert!(sep_value(&args, "theta_s").is_ok());
+}
+
+/// Under k1 = 10^20 (the lower cylinder as if held) or k2 = 10^-20 (the
+/// contact as if frictionless) ẍ1 → 0 at θs, and the branch point θ* lies a
+/// hair before it: ~0.184/k1, ~0.27 k2. Isolated at 64 bits it was merged
+/// with θs (the motion called unique). The truth: an independent
+/// derivation's θ* = 0.96602520479222373245433521530014528510110… (k1 =
+/// 10^20) and 0.77941432123372979127137405366663863000324… (k2 = 10^-20); at
+/// k1 = 10^40 they lie 1.8·10^-41 apart, θs to 30 digits.
+#[test]
+fn a_branch_point_a_hair_before_theta_s_is_found_at_extreme_moments_of_inertia() {
+    for (k, truth, between) in [
+        (
+            ["--k1", "1e20"],
+            "0.96602520479222373245433521530014528510",
+            "0.9660252047922237324550",
+        ),
+        (
+            ["--k2", "1e-20"],
+            "0.77941432123372979127137405366663863000",
+            "0.7794143212337297912725",
+        ),
+    ] {
+        let args = [&["--theta0", "0.1", "--digits", "40"][..], &k[..]].concat();
+        let v = sep_value(&args, "theta_indeterminate").unwrap();
+        assert!(v.starts_with(truth), "{k:?}: {v}");
+        // and `forces` between θ* and θs says the value is on a branch
+        let out = stdout_ok(&[
+            "forces", "--theta0", "0.1", k[0], k[1], "--theta", between, "--digits", "30",
+        ]);
+        assert!(
+            out.contains("lies at or past the branch point theta_indeterminate"),
+            "{k:?}: {out}"
+        );
+    }
+    let args = ["--theta0", "0.1", "--k1", "1e40", "--digits", "30"];
+    assert!(sep_value(&args, "theta_indeterminate").is_err());
+    assert!(sep_value(&args, "theta_s").is_ok());
+}
+
+/// θ̇0 tuned so that the free normal acceleration at θ0 = 1/10 is −ε
+/// (identical solid cylinders, g = 1; θ̇0 = √((cos 0.1 − ε)/2) to 58
+/// digits): θ* − θ0 ≈ 4.6 ε. At 64 bits its value at the start was within
+/// the rounding, and the branch point was missed (ε = 10^-20, 10^-40: the
+/// motion called unique). The truth: an independent derivation's θ* =
+/// 0.10000000000000000004597748503578466…, t* = 6.518501355193479848325757e-20
+/// (ε = 10^-20) and t* = 6.518501355193479858068563e-40 (ε = 10^-40).
+#[test]
+fn a_branch_point_a_hair_after_the_start_is_found() {
+    let case = |td: &str, key: &str| {
+        sep_value(
+            &["--theta0", "0.1", "--thetadot0", td, "--digits", "30"],
+            key,
+        )
+        .unwrap()
+    };
+    let e20 = "0.7053382753254022036000346073621035040495353699697296593808";
+    let e40 = "0.7053382753254022036035790059683561491127246836576668799934";
+    let th = case(e20, "theta_indeterminate");
+    assert!(th.starts_with("0.10000000000000000004597748503"), "{th}");
+    let t = case(e20, "t_indeterminate");
+    assert!(t.starts_with("6.518501355193479848325757"), "{t}");
+    assert_eq!(
+        case(e40, "theta_indeterminate"),
+        "0.100000000000000000000000000000"
+    );
+    let t = case(e40, "t_indeterminate");
+    assert!(t.starts_with("6.518501355193479858068563"), "{t}");
+    // on the part branch the cylinders part there
+    let kinds = event_kinds(&[
+        "--theta0",
+        "0.1",
+        "--thetadot0",
+        e20,
+        "--branch",
+        "part",
+        "--digits",
+        "25",
+    ]);
+    assert_eq!(kinds[..2], ["indeterminate", "separation"], "{kinds:?}");
+}
+
+/// Parting lawful from the start (θ̇0 = 0.706 from θ0 = 1/10: r θ̇0² > g cos θ0
+/// while N12 > 0): θ* = θ0 and t* = 0 exactly. The ideal oracle called the
+/// motion unique there (`forces` in the window said nothing of the branch),
+/// and `--rigorous` "proved" θ* = 0.0910074920 — a root of the free normal
+/// acceleration before the start, its Newton root above cos θ0 passing a
+/// positivity test over an empty range.
+#[test]
+fn parting_lawful_from_the_start_is_a_branch_point_at_theta0() {
+    let base = ["--theta0", "0.1", "--thetadot0", "0.706", "--digits", "15"];
+    let j = json_ok(
+        &[
+            &["separation", "--rigorous", "--format", "json"][..],
+            &base[..],
+        ]
+        .concat(),
+    );
+    assert_eq!(j["theta_indeterminate"], "0.100000000000000", "{j}");
+    let enc = &j["enclosures"]["theta_indeterminate"];
+    let (mid, rad): (f64, f64) = (
+        enc["mid"].as_str().unwrap().parse().unwrap(),
+        enc["rad"].as_str().unwrap().parse().unwrap(),
+    );
+    assert!((mid - 0.1).abs() <= rad + 1e-17 && rad < 1e-15, "{enc}");
+    assert_eq!(j["enclosures"]["t_indeterminate"]["mid"], "0", "{j}");
+    let out = stdout_ok(&[&["forces", "--theta", "0.101"][..], &base[..]].concat());
+    assert!(
+        out.contains("lies at or past the branch point theta_indeterminate"),
+        "{out}"
+    );
+}
+
+/// From the top with r θ̇0² = g (θ0 = 0, θ̇0 = 1, g = 2, r = 2) N12 = 0 and the
+/// free normal acceleration is 0 at the start: `separation` read the
+/// rounding of 0 and called the start a Painlevé inconsistency, `forces`
+/// said it could not decide. The truth (an independent expansion along the
+/// closed motion): N12 ≈ −(29/17) m2 g θ²/2 < 0 just after the start, while
+/// the free motion separates (centre distance √(4 + t⁴)): only parting is
+/// consistent, and every command says the cylinders part at once.
+#[test]
+fn a_start_at_the_parting_with_n12_falling_parts_at_once() {
+    let base = ["--theta0", "0", "--thetadot0", "1", "--g", "2"];
+    for extra in [
+        &["separation"][..],
+        &["separation", "--mu", "0.3"][..],
+        &["forces", "--theta", "0.1"][..],
+        &["time", "--to", "0.1"][..],
+        &["trajectory", "--times", "0.1"][..],
+    ] {
+        let args = [extra, &base[..]].concat();
+        one_line_error(
+            &args,
+            2,
+            &[
+                "part at once",
+                "N12 = 0 at the start",
+                "negative just after",
+            ],
+        );
+    }
+}
+
+/// A start that presses, but by 2·10^-100 (or 2·10^-470) of m2 g: θ0 = 0 with
+/// r θ̇0² a hair below g. The parting follows ~10^-50 after it, closer than
+/// the search for θs at 96 bits resolves: `separation` called it a
+/// Painlevé inconsistency, the first fix called it "N12 = 0 at the start"
+/// (false: it is not 0), and `forces` answered an angle before θs as the
+/// state at a θs found before it. Every command now says the start is too
+/// close to the parting to compute. Twelve nines are computed, and agree
+/// with an independent derivation: θ* = 1.35566877880876021834530e-6,
+/// θs = 1.53128298697699926368297e-6.
+#[test]
+fn a_start_a_hair_from_the_parting_is_refused_or_right() {
+    for nines in [100, 470] {
+        let td = format!("0.{}", "9".repeat(nines));
+        let base = ["--theta0", "0", "--thetadot0", &td, "--g", "2"];
+        for extra in [
+            &["separation"][..],
+            &["forces", "--theta", "1e-52"][..],
+            &["trajectory", "--times", "0.1"][..],
+        ] {
+            let args = [extra, &base[..]].concat();
+            one_line_error(&args, 3, &["close to the parting"]);
+            let err =
+                String::from_utf8_lossy(&cyl().args(&args).output().unwrap().stderr).to_string();
+            assert!(
+                !err.contains("Painlev") && !err.contains("part at once"),
+                "{err}"
+            );
+        }
+    }
+    let twelve = [
+        "--theta0",
+        "0",
+        "--thetadot0",
+        "0.999999999999",
+        "--g",
+        "2",
+        "--digits",
+        "20",
+    ];
+    let star = sep_value(&twelve, "theta_indeterminate").unwrap();
+    assert_eq!(star, "0.0000013556687788087602183");
+    assert_eq!(
+        sep_value(&twelve, "theta_s").unwrap(),
+        "0.0000015312829869769992637"
+    );
+}
+
+/// `--branch part` where parting is lawful from the start: the branch point
+/// and the separation at t = 0, then flight. It said "the cylinders part at
+/// once: N12 <= 0 at the start in every mode" (N12 = 4.75·10^-4 > 0), and
+/// at θ0 = π/3, θ̇0 = 1/2 — the free normal acceleration exactly 0 there
+/// and rising, N12 = 1/8 (both checked independently) — the answer
+/// depended on the digits asked (the test read a rounding of 0). With
+/// μ = 0.3 no closed mode holds there (the contact needs |F21|/N12 = √3):
+/// the cylinders part at once, for friction, at every digit count.
+#[test]
+fn the_part_branch_parts_at_a_start_where_parting_is_lawful() {
+    for start in [["0.1", "0.706"], ["pi/3", "1/2"]] {
+        for digits in ["5", "15", "25"] {
+            let args = [
+                "--theta0",
+                start[0],
+                "--thetadot0",
+                start[1],
+                "--branch",
+                "part",
+                "--digits",
+                digits,
+            ];
+            let kinds = event_kinds(&args);
+            assert_eq!(kinds[..2], ["indeterminate", "separation"], "{args:?}");
+            let out = stdout_ok(&[&["separation"][..], &args[..]].concat());
+            assert!(
+                out.contains("event 2: separation (contact) at t = 0 "),
+                "{out}"
+            );
+            let stay = event_kinds(&args[..4]);
+            assert_eq!(stay[0], "indeterminate", "{args:?}");
+            let mu = [
+                "separation",
+                "--theta0",
+                "pi/3",
+                "--thetadot0",
+                "1/2",
+                "--mu",
+                "0.3",
+                "--digits",
+                digits,
+            ];
+            one_line_error(&mu, 2, &["part at once", "no closed mode is consistent"]);
+        }
+    }
 }

@@ -682,8 +682,7 @@ fn enclose(
         // the branch point's verified angle, the start of its proof (the
         // command line's separation --rigorous encloses it too)
         let branch_start = if th.is_none() {
-            let ths = o.separation_angle()?;
-            o.branch_point(&ths)?.map(|v| v.value)
+            o.branch_point()?.map(|v| v.value)
         } else {
             None
         };

@@ -669,7 +669,7 @@ fn branch_point_note() -> Result<String> {
         )?;
         let mut o = Oracle::new(&m, 12)?;
         let ths = o.separation_angle()?;
-        let star = o.branch_point(&ths)?;
+        let star = o.branch_point()?;
         rows.push(match star {
             Some(st) => format!("{name}: θ* = {} < θs = {}", st.text, ths.text),
             None => format!("{name}: none (unique up to θs = {})", ths.text),

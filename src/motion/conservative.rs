@@ -163,7 +163,7 @@ pub fn first_phase(
     // the other events that can end the phase, as roots of polynomials in c
     if !ctx.held {
         let hp = route.n1_poly();
-        if let Some((d, e)) = route.first_root("lift-off", &hp, None, &ds, p)? {
+        if let Some((d, e)) = route.first_root("lift-off", &hp, None, &ds, p, wants.digits)? {
             refined.push((Ending::LiftOff, d, e));
         }
     }
@@ -177,7 +177,9 @@ pub fn first_phase(
             if unit.is_zero() {
                 continue;
             }
-            if let Some((d, e)) = route.first_root("slip onset", &hp, Some(&unit), &ds, p)? {
+            if let Some((d, e)) =
+                route.first_root("slip onset", &hp, Some(&unit), &ds, p, wants.digits)?
+            {
                 refined.push((Ending::Cone(w), d, e));
             }
         }
@@ -201,9 +203,11 @@ pub fn first_phase(
     // of θs by the digits asked, and a ghost branch point appeared
     if !ctx.held && !matches!(ctx.law(Which::Contact), Law::Frictionless) {
         let hp = route.free_normal_poly();
-        if route.sign_at_start(&hp)? > 0 {
+        if route.sign_at_start(&hp, wants.digits)? > 0 {
             starts_open = true;
-        } else if let Some(found) = route.first_root("branch point", &hp, None, &ds, p)? {
+        } else if let Some(found) =
+            route.first_root("branch point", &hp, None, &ds, p, wants.digits)?
+        {
             branch_found = Some(found);
         }
     }
@@ -491,7 +495,7 @@ pub fn first_phase(
                 .ok_or_else(|| Error::not_physical("internal: a cone without a coefficient"))?;
             let (hp, unit) = route.cone_poly(w, &mu);
             root_or(
-                route.first_root("slip onset", &hp, Some(&unit), &ds, wp)?,
+                route.first_root("slip onset", &hp, Some(&unit), &ds, wp, wants.digits)?,
                 &d_end,
                 wp,
             )
@@ -499,7 +503,7 @@ pub fn first_phase(
         Ending::LiftOff => {
             let hp = route.n1_poly();
             root_or(
-                route.first_root("lift-off", &hp, None, &ds, wp)?,
+                route.first_root("lift-off", &hp, None, &ds, wp, wants.digits)?,
                 &d_end,
                 wp,
             )
@@ -507,7 +511,7 @@ pub fn first_phase(
         Ending::BranchPart => {
             let hp = route.free_normal_poly();
             root_or(
-                route.first_root("branch point", &hp, None, &ds, wp)?,
+                route.first_root("branch point", &hp, None, &ds, wp, wants.digits)?,
                 &d_end,
                 wp,
             )

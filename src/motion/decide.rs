@@ -231,6 +231,8 @@ pub struct Choice {
     /// branch point of the rigid-body model (the chosen continuation
     /// follows the requested branch).
     pub branch_point: bool,
+    /// The consistent closed mode, whichever continuation is chosen.
+    pub closed: Option<Mode>,
 }
 
 /// The consistent continuation at (q, q̇): every combination of the
@@ -244,6 +246,24 @@ pub struct Choice {
 /// the tested range of the parameters (`disparity`) either is said to be
 /// undecided rather than a property of the rigid-body model.
 pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -> Result<Choice> {
+    decide_with(ctx, q, v, t, branch, None)
+}
+
+/// [`decide`], with whether the contact opening is consistent given
+/// (`opens`: at the start, the closed motion's exact sign of the free
+/// normal acceleration just after it, where the test's own reading is a
+/// rounding of 0: a start exactly where the free motion parts, θ0 = π/3
+/// with θ̇0 = 1/2, was decided one way or the other by the digits asked).
+///
+/// Errors: as [`decide`].
+pub fn decide_with(
+    ctx: &Ctx,
+    q: &[Float],
+    v: &[Float],
+    t: &Float,
+    branch: &Branch,
+    opens: Option<bool>,
+) -> Result<Choice> {
     let mut ok = Vec::new();
     let mut why = Vec::new();
     // the candidates over the test's usual steps, and where none passes,
@@ -276,7 +296,7 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
         contact: State::Stick,
     }))?;
     let rdd = free_normal_accel(ctx, &sys, q, v);
-    let opens = rdd.is_sign_positive() && !rdd.is_zero();
+    let opens = opens.unwrap_or(rdd.is_sign_positive() && !rdd.is_zero());
     let theta = q[sy::th(0)].to_f64();
     let at = format!("t = {}, theta = {theta:.12}", sig(t, 12));
     // Coulomb's law: a contact at rest relative to its partner sticks if the
@@ -294,10 +314,12 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
         (1, false) => Ok(Choice {
             mode: Some(ok[0]),
             branch_point: false,
+            closed: Some(ok[0]),
         }),
         (0, true) => Ok(Choice {
             mode: None,
             branch_point: false,
+            closed: None,
         }),
         (1, true) => Ok(Choice {
             mode: match branch {
@@ -305,6 +327,7 @@ pub fn decide(ctx: &Ctx, q: &[Float], v: &[Float], t: &Float, branch: &Branch) -
                 Branch::Stay | Branch::PartAt(_) => Some(ok[0]),
             },
             branch_point: true,
+            closed: Some(ok[0]),
         }),
         (0, false) => Err(Error::NotConverged {
             quantity: "mode".into(),

@@ -353,7 +353,7 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
         })?;
         let mut o = Oracle::new(&ideal, digits)?;
         let sep = o.separation()?;
-        let star = o.branch_point(&sep.theta_s)?;
+        let star = o.branch_point()?;
         ans.start_mode = Some(conservative_mode(model));
         ans.notes = sep.notes;
         let Some(star) = star else {

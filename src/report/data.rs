@@ -352,7 +352,7 @@ fn theta_curve(v: usize, cfg: &Config, pb: &ProgressBar) -> Result<ThetaCurve> {
     let model = variant_model(VARIANTS[v], "0")?;
     let mut o = Oracle::new(&model, cfg.plot_digits)?;
     let sep = o.separation()?;
-    let star = o.branch_point(&sep.theta_s)?.map(|v| v.value.to_f64());
+    let star = o.branch_point()?.map(|v| v.value.to_f64());
     pb.inc(1);
     let end = below(sep.theta_s.value.to_f64());
     let n = cfg.theta_points.max(1);

@@ -114,6 +114,9 @@ pub struct Route {
     /// never cleared by the route (`oracle::time` and `oracle::forces` read
     /// it from a route of their own): a caller reusing a route clears it.
     pub at_separation: bool,
+    /// N12/(m2 g) at the start (64 bits; > 0 once the route is made): how
+    /// close the start lies to the parting.
+    pub n12_start: Float,
 }
 
 /// `what` (a time) is infinite: the motion starts from rest exactly at the
@@ -131,6 +134,20 @@ pub fn infinite_time_error(what: &str, coulomb: bool) -> Error {
         "{what} is infinite: the motion starts from rest exactly at the unstable top (theta0 = 0, \
          thetadot0 = 0); give a small --theta0 or --thetadot0 ({limit})"
     ))
+}
+
+/// The refusal of a start that presses by `what` (N12 at the start): so
+/// little that the parting lies a hair after it, closer than the search for
+/// θs resolves.
+fn too_close_to_parting(what: String) -> Error {
+    Error::NotConverged {
+        quantity: "N12 at the start".into(),
+        requested: 0,
+        reached: what,
+        detail: "the start lies that close to the parting, closer than the search for theta_s \
+                 resolves: not computed (move theta0 or thetadot0 off the parting)"
+            .into(),
+    }
 }
 
 impl Route {
@@ -153,6 +170,7 @@ impl Route {
             red,
             caches: Caches::default(),
             at_separation: false,
+            n12_start: Float::new(64),
         };
         // N12 and N1 at the start, at a precision that resolves their
         // signs: a force within its terms' rounding is computed again at
@@ -181,6 +199,54 @@ impl Route {
             }
             p *= 2;
         };
+        if Float::with_val(p, n12.abs_ref()) <= floors[0] {
+            // N12 within its rounding at 1536 bits: where cos θ0 is rational
+            // (θ0 = 0, π/3) it is decided exactly, and a start exactly at the
+            // parting (θ0 = 0 with r θ̇0² = g, for one) by N12's sign just
+            // after it (its fall as c leaves c0): falling, the cylinders part
+            // at once. The mode test read the rounding of 0 and called such a
+            // start a Painlevé inconsistency. A start 10^-470 short of the
+            // parting is not at it (its exact N12 > 0): refused as too close
+            let np = crate::mechanics::dynamics::N12Poly::new(&r.red, r.work.params());
+            let hp =
+                crate::mechanics::dynamics::HPoly::linear(&(np.base.clone(), np.per_h.clone()));
+            let exact = r.exact_start_value(&hp);
+            if let Some(v) = exact.as_ref().filter(|v| **v != 0) {
+                // not 0, exactly: past the parting by a hair, or short of it
+                if *v < 0 {
+                    return Err(Error::not_physical(
+                        "the cylinders part at once: N12 < 0 at the start, exactly (within its \
+                         rounding at 1536 bits: the start lies a hair past the parting)",
+                    ));
+                }
+                return Err(too_close_to_parting(
+                    "> 0 exactly, within its rounding at 1536 bits".into(),
+                ));
+            }
+            if exact.is_some() {
+                match r.sign_after_start(&hp, p)? {
+                    Some(s) if s < 0 => {
+                        return Err(Error::not_physical(
+                            "the cylinders part at once: N12 = 0 at the start and negative just \
+                             after it (the start lies at the parting: theta0, thetadot0 or omega0 \
+                             at its limit)",
+                        ));
+                    }
+                    Some(_) => {
+                        return Err(Error::NotConverged {
+                            quantity: "N12 at the start".into(),
+                            requested: 0,
+                            reached: "0 exactly, and rising after it".into(),
+                            detail: "the start lies exactly at the parting (N12 = 0 there and \
+                                     positive just after): such a start is not computed; move \
+                                     theta0 or thetadot0 off it"
+                                .into(),
+                        });
+                    }
+                    None => {}
+                }
+            }
+        }
         for ((name, x), floor) in [("N12", &n12), ("N1", &n1)].into_iter().zip(&floors) {
             if Float::with_val(p, x.abs_ref()) <= *floor {
                 return Err(Error::NotConverged {
@@ -207,6 +273,22 @@ impl Route {
             return Err(Error::not_physical(format!(
                 "cylinder 1 lifts off the floor at once: N1 = {} <= 0 at the start",
                 crate::numeric::decimal::to_sig(&n1, 4)
+            )));
+        }
+        let pr = r.work.params();
+        let m2g = Float::with_val(64, Rational::from(&pr.m2 * &pr.g));
+        r.n12_start = Float::with_val(64, &n12 / &m2g);
+        // a start that presses, but by less than 2^-80 of the lighter
+        // cylinder's weight: the parting lies a hair after it (θs ~ 10^-50
+        // after θ0 = 0 at N12 = 2·10^-100 m2 g), closer than the scan for θs
+        // at 96 bits resolves — `forces` answered an angle before θs as the
+        // state at a θs found before it. Not computed
+        let light = Float::with_val(64, pr.m1.clone().min(pr.m2.clone()) * &pr.g);
+        if Float::with_val(64, &n12 / &light) < Float::with_val(64, 1u32) >> (SCAN_PREC - 16) {
+            return Err(too_close_to_parting(format!(
+                "{} m2 g > 0, below 2^-{} of the lighter cylinder's weight",
+                crate::numeric::decimal::short_near(&r.n12_start),
+                SCAN_PREC - 16
             )));
         }
         Ok(r)

@@ -5,8 +5,9 @@
 //! the positive denominator K²: each event that can end the phase — a
 //! Coulomb contact's cone |F| = μs N, N1 = 0, parting becoming lawful —
 //! is a root of a polynomial with exact rational coefficients (in A_H,
-//! which carries the start). Its real roots are isolated at 64 bits by the
-//! monotone pieces between the roots of its derivatives
+//! which carries the start). Its real roots are isolated (at 64 bits and the
+//! bits the coefficients' spread and the values at the phase's ends ask) by
+//! the monotone pieces between the roots of its derivatives
 //! ([`crate::numeric::poly::sign_change_roots`]: no pair of close roots is
 //! missed, unlike a scan), the first in θ (the largest c) is refined by
 //! Newton's method at doubling precision, and θ = acos c.
@@ -80,19 +81,176 @@ impl Route {
         HPoly::linear(&self.force_polys().n1)
     }
 
-    /// The sign of `hp` at θ0 (working frame): +1, −1 or 0.
-    pub fn sign_at_start(&mut self, hp: &HPoly) -> Result<i32> {
-        let a_h = N12Poly::a_h(&self.engine(ISO)?.dynm);
-        let c0 = self.engine(ISO)?.dynm.c0.clone();
-        let mut v = Float::new(ISO);
-        poly::horner(&hp.at(&a_h, ISO), &c0, &mut v);
-        Ok(if v.is_zero() {
-            0
-        } else if v.is_sign_positive() {
-            1
+    /// cos θ0 exactly where it is rational (working frame, 0 ≤ θ0 < π/2:
+    /// θ0 = 0 or π/3): there a polynomial's value at the start is decided
+    /// exactly, and a start 10^-470 from a root is not taken for one.
+    fn exact_c0(&self) -> Option<Rational> {
+        let th0 = &self.work.start().theta0;
+        if th0.coef == 0 {
+            Some(Rational::from(1))
+        } else if th0.times_pi && Rational::from(th0.coef.abs_ref()) == Rational::from((1, 3)) {
+            Some(Rational::from((1, 2)))
         } else {
-            -1
+            None
+        }
+    }
+
+    /// `hp` at the start as an exact rational, where cos θ0 is rational
+    /// (A_H = K(c0) θ̇0² + 2 (g/r) c0, every term rational).
+    pub(super) fn exact_start_value(&self, hp: &HPoly) -> Option<Rational> {
+        let c0 = self.exact_c0()?;
+        let p = self.work.params();
+        let q = &self.red.q;
+        let k0 = Rational::from(&q[2] * &c0) + &q[1];
+        let k0 = Rational::from(&k0 * &c0) + &q[0];
+        let td0 = &self.work.start().thetadot0;
+        let a_h = Rational::from(&k0 * td0) * td0
+            + Rational::from(&p.g / &p.r()) * &c0 * Rational::from(2);
+        let mut v = Rational::new();
+        let mut pow = Rational::from(1);
+        for part in &hp.parts {
+            let mut s = Rational::new();
+            for c in part.iter().rev() {
+                s *= &c0;
+                s += c;
+            }
+            v += Rational::from(&s * &pow);
+            pow *= &a_h;
+        }
+        Some(v)
+    }
+
+    /// The size of `hp`'s terms at c (64 bits): Σ_j |A_H|^j Σ_k |part_jk| |c|^k,
+    /// the scale of its rounding.
+    fn term_size(hp: &HPoly, a_h: &Float, c: &Float) -> Float {
+        let (ah, c) = (
+            Float::with_val(64, a_h.abs_ref()),
+            Float::with_val(64, c.abs_ref()),
+        );
+        let mut size = Float::new(64);
+        let mut pow = Float::with_val(64, 1u32);
+        for part in &hp.parts {
+            let abs: Vec<Float> = part
+                .iter()
+                .map(|c| Float::with_val(64, Rational::from(c.abs_ref())))
+                .collect();
+            let mut s = Float::new(64);
+            poly::horner(&abs, &c, &mut s);
+            size += s * &pow;
+            pow *= &ah;
+        }
+        size
+    }
+
+    /// `hp`'s value at the start c0 = cos θ0 (working frame; or, with
+    /// `delta`, at cos(θ0 + δ)) and the bits it was taken at: at `from`
+    /// bits, then at twice as many, up to `cap`, until it lies beyond its
+    /// rounding (the coefficients, c and Horner's sum at those bits: 2^−(q−16)
+    /// of [`Route::term_size`]), or `None` for the value where it is within
+    /// its rounding at `cap` (0 to that precision). The same numbers at every
+    /// working precision: the ladder depends on `from` and `cap` only.
+    fn value_resolved(
+        &mut self,
+        hp: &HPoly,
+        delta: Option<&Float>,
+        from: u32,
+        cap: u32,
+    ) -> Result<(Option<Float>, u32)> {
+        let mut q = from;
+        loop {
+            let (c0, a_h) = if q == ISO {
+                let d = &self.engine(ISO)?.dynm;
+                (d.c0.clone(), N12Poly::a_h(d))
+            } else {
+                let d = Dyn::new(&self.work, &self.red, q)?;
+                let a_h = N12Poly::a_h(&d);
+                (d.c0, a_h)
+            };
+            let c = match delta {
+                None => c0,
+                Some(d) => {
+                    let th0 = self.work.start().theta0.to_float(q);
+                    Float::with_val(q, &th0 + d).cos()
+                }
+            };
+            let mut v = Float::new(q);
+            poly::horner(&hp.at(&a_h, q), &c, &mut v);
+            let bound = Self::term_size(hp, &a_h, &c) >> (q as i32 - 16);
+            if Float::with_val(q, v.abs_ref()) > bound {
+                return Ok((Some(v), q));
+            }
+            if q >= cap {
+                return Ok((None, q));
+            }
+            q = (2 * q).min(cap);
+        }
+    }
+
+    /// The most bits `hp`'s value at the start is resolved with: where cos θ0
+    /// is rational and the value not 0, those that resolve its exact value
+    /// (whatever its size: at θ0 = 0 a root's θ carries its own digits);
+    /// else [`resolve_cap`] of the `digits` and 4 |log2 θ0| more under θ0 <
+    /// 1 (a value within its rounding there puts a root within ~2^−(cap/2)
+    /// of θ0 in c, θ0 to the digits asked relative to θ0 itself). The same
+    /// for both runs of a request.
+    fn start_cap(&mut self, hp: &HPoly, digits: u32) -> Result<u32> {
+        let cap = resolve_cap(digits);
+        if let Some(v) = self.exact_start_value(hp) {
+            if v == 0 {
+                return Ok(cap);
+            }
+            let d = &self.engine(ISO)?.dynm;
+            let size = Self::term_size(hp, &N12Poly::a_h(d), &d.c0);
+            let v = Float::with_val(64, &v).abs();
+            let need = size.get_exp().unwrap_or(0) - v.get_exp().unwrap_or(0) + 24 + ISO as i32;
+            return Ok(cap.max(need.max(0).unsigned_abs()));
+        }
+        let th0 = self.work.start().theta0.to_float(64);
+        let small = match th0.get_exp() {
+            Some(e) if e < 0 => 4 * e.unsigned_abs(),
+            _ => 0,
+        };
+        Ok(cap + small)
+    }
+
+    /// The sign of `hp` just after a start where its value is 0 (exactly,
+    /// or to `cap` bits): that of its fall as c leaves c0 (−hp′(c0)), or
+    /// None where that is 0 too.
+    ///
+    /// Errors: the dynamics at `cap` bits.
+    pub fn sign_after_start(&mut self, hp: &HPoly, cap: u32) -> Result<Option<i32>> {
+        let dhp = hp.deriv();
+        if let Some(d) = self.exact_start_value(&dhp) {
+            return Ok((d != 0).then(|| if d > 0 { -1 } else { 1 }));
+        }
+        Ok(match self.value_resolved(&dhp, None, cap, cap)? {
+            (Some(d), _) => Some(if d.is_sign_positive() { -1 } else { 1 }),
+            (None, _) => None,
         })
+    }
+
+    /// The sign of `hp` just after the start (working frame): +1, −1, or 0
+    /// where not decided. Its value at θ0 — exactly where cos θ0 is
+    /// rational, else resolved with up to the bits of `start_cap`; where
+    /// that value is 0 (exactly, or to that precision: a root at the start to
+    /// the digits asked), the sign of its rise as θ leaves θ0 (−hp′(c0): c
+    /// falls). A start 10^-20 before the free motion would part had Π(c0)
+    /// within 64 bits' rounding: its sign was taken at random and the branch
+    /// point was missed.
+    ///
+    /// Errors: the dynamics at the precisions tried.
+    pub fn sign_at_start(&mut self, hp: &HPoly, digits: u32) -> Result<i32> {
+        if let Some(v) = self.exact_start_value(hp) {
+            if v != 0 {
+                return Ok(if v > 0 { 1 } else { -1 });
+            }
+            return Ok(self.sign_after_start(hp, ISO)?.unwrap_or(0));
+        }
+        let cap = self.start_cap(hp, digits)?;
+        if let (Some(v), _) = self.value_resolved(hp, None, ISO, cap)? {
+            return Ok(if v.is_sign_positive() { 1 } else { -1 });
+        }
+        Ok(self.sign_after_start(hp, cap)?.unwrap_or(0))
     }
 
     /// The first sign change of `hp` in θ on (θ0, θ_end) (working frame;
@@ -100,6 +258,13 @@ impl Route {
     /// its error bound at `p` bits, or None. `unit`: a polynomial whose size
     /// is the natural scale of `hp`'s values (the μ-free part of a cone
     /// polynomial), or None where that is `hp`'s own.
+    ///
+    /// A root a hair after the start, or a hair before θs, is isolated at the
+    /// bits that resolve the polynomial's value there (up to `start_cap`,
+    /// and `resolve_cap` of the `digits` asked at θs): at 64 bits a branch
+    /// point 10^-20 after θ0 was merged with the start, one 1.8·10^-21 before
+    /// θs with θs, and missed (the motion called unique). `delta_end` is δs
+    /// at the run's precision.
     ///
     /// Errors: a root the refinement cannot verify.
     pub fn first_root(
@@ -109,6 +274,7 @@ impl Route {
         unit: Option<&HPoly>,
         delta_end: &Float,
         p: u32,
+        digits: u32,
     ) -> Result<Option<(Float, Float)>> {
         let (c0, a_h) = {
             let d = &self.engine(ISO)?.dynm;
@@ -137,22 +303,50 @@ impl Route {
             return Ok(None);
         };
         // and the masses' ratio's bits, for every root (a branch point
-        // ~m2/m1 before θs under a lower cylinder 10^20 times heavier was
+        // ~0.12 m2/m1 before θs under a lower cylinder 10^20 times heavier was
         // merged with θs)
         let iso = iso
             + disparity_bits(self.work.params())
             + mass_spread_bits(self.work.params()).unwrap_or(MAX_SPREAD_BITS);
+        // and the bits that resolve its value at the start (a root a hair
+        // after θ0)
+        let cap = self.start_cap(hp, digits)?.max(iso);
+        let iso = self.value_resolved(hp, None, iso, cap)?.1;
+        // and those that resolve it at the end θs (a branch point ~0.18/k1
+        // before θs under k1 = 10^20, ~0.27 k2 under k2 = 10^-20, was merged
+        // with θs at 64 bits: the motion called unique): beyond the bits
+        // the isolation has, with θs known to the digits' bits, the same in
+        // both runs. A value still within its rounding there is θs's own
+        // root to those bits.
+        let mut end = delta_end.clone();
+        let iso = match self.value_resolved(hp, Some(delta_end), iso, iso)? {
+            (Some(_), q) => q,
+            (None, _) => {
+                let q = resolve_cap(digits).max(iso);
+                let (ds, _) = self.delta_s(q)?;
+                match self.value_resolved(hp, Some(&ds), iso, q)? {
+                    (Some(_), q) => {
+                        end = ds;
+                        q
+                    }
+                    (None, _) => iso,
+                }
+            }
+        };
+        let delta_end = &end;
         // the end of the range at the precision it is known to (a root ~1/μ
         // before θs must not fall outside a 64-bit rounding of cos θs)
         let ep = iso.max(delta_end.prec());
         let th0 = self.work.start().theta0.to_float(ep);
         let c_end = Float::with_val(ep, &th0 + delta_end).cos();
-        let c0 = Float::with_val(iso, &c0);
         let lo = Float::with_val(iso, &c_end).max(&Float::with_val(iso, -1));
-        let a_hi = if iso > ISO {
-            N12Poly::a_h(&Dyn::new(&self.work, &self.red, iso)?)
+        // c0 at the isolation's bits (a 64-bit c0 would put a root a hair
+        // after the start on either side of it)
+        let (c0, a_hi) = if iso > ISO {
+            let d = Dyn::new(&self.work, &self.red, iso)?;
+            (d.c0.clone(), N12Poly::a_h(&d))
         } else {
-            a_h
+            (c0, a_h)
         };
         let roots = poly::sign_change_roots(&hp.at(&a_hi, iso), &lo, &c0);
         let Some(start) = roots.into_iter().rev().find(|c| *c < c0 && *c > lo) else {
@@ -164,16 +358,33 @@ impl Route {
         let a_hp = N12Poly::a_h(&Dyn::new(&self.work, &self.red, p + 16 + extra)?);
         let coef = hp.at(&a_hp, p + 16 + extra);
         let (c, eps) = poly::refine_root(name, &coef, &start, p + extra)?;
-        let c = Float::with_val(p, &c);
-        let (th, th_err) = crate::numeric::root::acos_newton(&c, p);
+        // θ and δ = θ − θ0 at the refinement's bits, δ then rounded to p: a
+        // root 10^-200 after θ0 is lost in θ's rounding at p bits (δ came
+        // out 0 or negative, and its time NaN)
+        let q = p + extra;
+        let (th, th_err) = crate::numeric::root::acos_newton(&c, q);
         // dθ = −dc / sin θ, sin θ = √(1 − c²) (> 0 on (0, π)); ×(1 + 2^-16)
-        let sin = Float::with_val(p, 1u32 - Float::with_val(p, c.square_ref())).sqrt();
-        let mut err = Float::with_val(p, &eps / &sin);
-        err += Float::with_val(p, &err >> 16);
+        let sin = Float::with_val(q, 1u32 - Float::with_val(q, c.square_ref())).sqrt();
+        let mut err = Float::with_val(q, &eps / &sin);
+        err += Float::with_val(q, &err >> 16);
         err += th_err;
-        let th0p = self.work.start().theta0.to_float(p);
-        Ok(Some((Float::with_val(p, th - th0p), err)))
+        let th0q = self.work.start().theta0.to_float(q);
+        let d = Float::with_val(p, th - th0q);
+        // and δ's rounding to p bits (half a unit; θ0's rounding at q bits
+        // is in it: q ≥ p)
+        err += Float::with_val(q, d.abs_ref()) >> (p as i32 - 1);
+        let err = Float::with_val_round(p, &err, rug::float::Round::Up).0;
+        Ok(Some((d, err)))
     }
+}
+
+/// The most bits a sign at the start is resolved with: twice the `digits`
+/// asked and 128 more. A value at the start still within its rounding there
+/// puts any root within ~2^−(cap/2) of θ0 (θ − θ0 ≤ √(2 (c0 − c)) where the
+/// polynomial's slope is of its coefficients' size): the start to the
+/// digits asked. The same for both runs of a request.
+pub(crate) fn resolve_cap(digits: u32) -> u32 {
+    2 * crate::numeric::bits_for_digits(digits.max(1)) + 128
 }
 
 /// Bits the isolation adds for unequal masses: 2 log2(m2/m1). The
@@ -189,7 +400,7 @@ impl Route {
 /// polynomial is of the heavy scale too.
 /// Only for a heavier upper cylinder: under a lighter one the polynomials
 /// are of the upper cylinder's scale throughout. (Either way the isolation
-/// also has [`mass_spread_bits`]: a branch point ~m2/m1 before θs is told
+/// also has [`mass_spread_bits`]: a branch point ~0.12 m2/m1 before θs is told
 /// apart; one that is θs to the digits asked is taken as θs by every run,
 /// [`crate::motion::sides::apart_from_end`].)
 pub(super) fn disparity_bits(p: &crate::model::Params) -> u32 {

@@ -207,35 +207,42 @@ impl Oracle {
         })
     }
 
-    /// The branch point's δ* isolated at 64 bits, with the free normal
-    /// acceleration's polynomial: (polynomial, δ*, its error), or `None`
-    /// where the motion has none (a held lower cylinder, ρ̈_free > 0 from the
-    /// start, no root before θs, or one coinciding with θs within 4× the two
-    /// bounds; `ds` δs and `ds_err` its bound).
-    fn branch_delta(
-        &mut self,
-        ds: &Float,
-        ds_err: &Float,
-    ) -> Result<Option<(HPoly, Float, Float)>> {
-        if self.model.floor() == Floor::Fixed {
+    /// The branch point's δ* (isolated by [`Route::first_root`] at the
+    /// digits' bits), with the free normal
+    /// acceleration's polynomial: (polynomial, δ*, its error) — δ* = 0
+    /// exactly where ρ̈_free > 0 from the start (parting lawful from θ0) —
+    /// or `None` where the motion has none (a held lower cylinder, no root
+    /// before θs, or one coinciding with θs within 4× the two bounds or to
+    /// the digits asked).
+    fn branch_delta(&mut self) -> Result<Option<(HPoly, Float, Float)>> {
+        // none on a held floor, nor under a frictionless contact (there
+        // ρ̈_free > 0 only where N12 < 0: its root is θs itself), as in the
+        // motion
+        if self.model.floor() == Floor::Fixed || self.model.contact() == Contact::Slip {
             return Ok(None);
         }
         let hp = self.route.free_normal_poly();
-        if self.route.sign_at_start(&hp)? > 0 {
-            return Ok(None);
+        if self.route.sign_at_start(&hp, self.digits)? > 0 {
+            // parting lawful from the start (the motion's rule): θ* = θ0,
+            // δ* = 0 exactly (a root of the polynomial is never at δ = 0).
+            // This was None: `forces` in the window said nothing of the
+            // branch, and the proof of θ* (from the start) enclosed a root
+            // before θ0
+            return Ok(Some((hp, Float::new(64), Float::new(64))));
         }
-        // θ* and θs told apart with the masses' ratio's bits more: under a
-        // lower cylinder 10^20 times heavier they lie ~m2/m1 apart, and at 64
-        // bits the branch point was taken for θs (the motion called unique)
+        // θ* and θs told apart with the digits asked and the masses' ratio's
+        // bits more: under a lower cylinder 10^20 times heavier, or k1 =
+        // 10^20, they lie ~10^-21 apart, and at 64 bits the branch point was
+        // taken for θs (the motion called unique, and `forces` in the window
+        // said nothing of it)
         let spread = crate::integrate::energy::mass_spread_bits(self.route.work.params())
             .unwrap_or(crate::integrate::energy::MAX_SPREAD_BITS);
-        let p = 64 + spread;
-        let (ds, ds_err) = if spread == 0 {
-            (ds.clone(), ds_err.clone())
-        } else {
-            self.route.delta_s(p)?
-        };
-        let Some((d, err)) = self.route.first_root("branch point", &hp, None, &ds, p)? else {
+        let p = 64 + spread + crate::numeric::bits_for_digits(self.digits);
+        let (ds, ds_err) = self.route.delta_s(p)?;
+        let Some((d, err)) =
+            self.route
+                .first_root("branch point", &hp, None, &ds, p, self.digits)?
+        else {
             return Ok(None);
         };
         // the motion's rule: one that is θs to the digits asked is θs
@@ -248,7 +255,8 @@ impl Oracle {
     /// θ*, the branch point: the first angle past θ0, before θs, where the
     /// free relative normal acceleration r θ̇² − g cos θ turns positive while
     /// the cylinders press on each other — from there parting is as lawful
-    /// as staying together. None where it coincides with θs (a frictionless
+    /// as staying together; θ0 itself where it is positive from the start
+    /// (exactly, error 0). None where it coincides with θs (a frictionless
     /// contact, a held lower cylinder: the motion is unique) or does not
     /// come before it.
     ///
@@ -257,19 +265,30 @@ impl Oracle {
     /// refined like θs at both precisions of the ladder.
     ///
     /// Errors: a root the refinement cannot verify.
-    pub fn branch_point(&mut self, theta_s: &Verified) -> Result<Option<Verified>> {
-        let th0 = self.route.work.start().theta0.to_float(64);
-        let ds = Float::with_val(64, theta_s.value.clone().abs() - th0.abs());
-        let Some((hp, _, _)) = self.branch_delta(&ds, &theta_s.err_bound)? else {
+    pub fn branch_point(&mut self) -> Result<Option<Verified>> {
+        let Some((hp, d0, _)) = self.branch_delta()? else {
             return Ok(None);
         };
+        let at_start = d0.is_zero();
         let v = ladder(self.digits, &["theta_indeterminate"], |p| {
+            if at_start {
+                let th0 = self.route.work.start().theta0.to_float(p);
+                // θ0's rounding at p bits
+                let err = Float::with_val(p, th0.abs_ref()) >> p as i32;
+                return Ok(vec![Estimate::new(
+                    self.route.odd(th0),
+                    err,
+                    Float::with_val(p, 1u32),
+                )]);
+            }
             let (ds, _) = self.route.delta_s(p)?;
             let (d, err) = self
                 .route
-                .first_root("branch point", &hp, None, &ds, p)?
+                .first_root("branch point", &hp, None, &ds, p, self.digits)?
                 .ok_or_else(|| {
-                    Error::not_physical("internal: the branch point was lost at a higher precision")
+                    Error::not_physical(
+                        "internal: the branch point was lost at one precision of the ladder",
+                    )
                 })?;
             let th0 = self.route.work.start().theta0.to_float(p);
             let th = Float::with_val(p, &th0 + &d);
@@ -285,21 +304,23 @@ impl Oracle {
     /// The note for an angle asked at or past the branch point θ* (where the
     /// cylinders may lawfully stay together or part, up to θs): the value
     /// is on the `stay` branch. `None` before θ* or where the motion has no
-    /// branch point. Decided at 64 bits with the root's bound: an angle
-    /// within it of θ* counts as at θ* (the note says "at or past").
+    /// branch point. Decided at the digits' bits with the root's bound: an
+    /// angle within it of θ* counts as at θ* (the note says "at or past").
     ///
     /// Errors: as [`Oracle::branch_point`]'s isolation.
     pub fn branch_window_note(&mut self, theta: &Exact) -> Result<Option<String>> {
-        const P: u32 = 64;
-        let (ds, ds_err) = self.route.delta_s(P)?;
-        let Some((_, d, err)) = self.branch_delta(&ds, &ds_err)? else {
+        let Some((_, d, err)) = self.branch_delta()? else {
             return Ok(None);
         };
-        let th0 = self.route.work.start().theta0.to_float(P);
-        let dq = Float::with_val(P, self.route.to_work(theta).to_float(P) - &th0);
-        if Float::with_val(P, &dq + &err) < d {
+        // θ − θ0 at the digits' bits: at 64 bits an angle 10^-20 from a
+        // start of 0.1 was placed by θ's rounding
+        let q = crate::numeric::bits_for_digits(self.digits) + 64;
+        let th0 = self.route.work.start().theta0.to_float(q);
+        let dq = Float::with_val(q, self.route.to_work(theta).to_float(q) - &th0);
+        if Float::with_val(q, &dq + &err) < d {
             return Ok(None);
         }
+        const P: u32 = 64;
         let th_star = self.route.odd(Float::with_val(P, &th0 + &d));
         Ok(Some(format!(
             "theta = {theta} lies at or past the branch point theta_indeterminate ≈ {}, where \

@@ -5,7 +5,8 @@
 //! Π(c) = r·H·K − g·c·K² (c = cos θ, H = A_H − 2(g/r)c): a polynomial in c
 //! whose coefficients are exact rationals and powers of A_H (an interval).
 //! The verified answer decides that Π < 0 at θ0 and that it changes sign
-//! before θs; the proof encloses the first sign change exactly as θs is
+//! before θs (or that Π > 0 at θ0: then θ* = θ0 and t* = 0, proved by
+//! Π(cos θ0) > 0 in interval arithmetic); the proof encloses the first sign change exactly as θs is
 //! enclosed: Π(c_lo) > 0 > Π(c_hi) at two points around the root (Newton at
 //! the working precision from the verified root), and Π < 0 on
 //! (c_hi, cos θ0] (the positivity proof of −Π), so by the intermediate value
@@ -54,9 +55,24 @@ impl Oracle {
         // positive above the root: the free normal acceleration is negative
         // (the contact presses) from the start down to θ*
         let neg: Vec<Iv> = coef.iter().map(Iv::neg).collect();
+        let th0 = self.consts(p).th0.clone();
+        let c0 = th0.cos();
+        let digits = self.digits;
+        if Iv::horner(&coef, &c0).is_positive() {
+            // parting lawful from the start, proved (the verified θ* is θ0):
+            // θ* = θ0 and t* = 0, exactly
+            if th0.hi >= theta_s.abs().lo {
+                return Err(not_enclosed(
+                    "theta_indeterminate: the order theta* < theta_s could not be proved",
+                ));
+            }
+            return Ok((
+                Proved::new("theta_indeterminate", self.odd_iv(th0), digits),
+                Ok(Proved::new("t_indeterminate", Iv::int(p, 0), digits)),
+            ));
+        }
         let c_start = Float::with_val(p, start.clone().abs()).cos();
-        let c0 = self.consts(p).th0.cos();
-        let Some(c) = first_root_below(&neg, "theta_indeterminate", &c_start, &c0.hi, p)? else {
+        let Some(c) = first_root_below(&neg, "theta_indeterminate", &c_start, &c0, p)? else {
             return Err(not_enclosed(
                 "theta_indeterminate: the sign change of the free normal acceleration could not be proved",
             ));
@@ -74,7 +90,6 @@ impl Oracle {
             let w = self.odd_iv(user.clone());
             self.rigorous_time_iv(&w, p).map_err(|e| e.to_string())
         };
-        let digits = self.digits;
         Ok((
             Proved::new("theta_indeterminate", user, digits),
             t.map(|t| Proved::new("t_indeterminate", t, digits)),

@@ -38,7 +38,7 @@ impl Oracle {
         // precision the start carries (at p bits it took two steps from a
         // 64-bit root, enough up to ~256 bits; beyond 78 digits the proof
         // fell back to a 1e-12 box around the start: 11 digits proved)
-        match first_root_below(&coef, "theta_s", &start, &c0.hi, p)? {
+        match first_root_below(&coef, "theta_s", &start, &c0, p)? {
             Some(c) => Ok(self.odd_iv(c.acos()?)),
             None => Err(not_enclosed(
                 "theta_s: the sign change of N12 could not be proved",
@@ -185,12 +185,15 @@ pub(super) fn prove_positive(coef: &[Iv], a: &Float, b: &Float) -> Result<bool> 
     Ok(true)
 }
 
-/// The first root below `c0_hi` of the interval polynomial `q` in c = cos θ,
-/// enclosed: an interval [lo, hi] around the Newton root of the midpoints
-/// near `start` (widened fourfold until it works, 24 times at most) with
-/// q(lo) < 0 < q(hi) proved and q > 0 proved on [hi, c0_hi] — the root the
-/// motion meets first as c falls from cos θ0. Orient `q` so that it is
-/// positive above the root (negate it otherwise). `name` for messages.
+/// The first root below cos θ0 (enclosed by `c0`) of the interval
+/// polynomial `q` in c = cos θ, enclosed: an interval [lo, hi] around the
+/// Newton root of the midpoints near `start` (widened fourfold until it
+/// works, 24 times at most) with q(lo) < 0 < q(hi) proved, hi ≤ c0's lower
+/// end, and q > 0 proved on [hi, c0's upper end] — the root the motion meets
+/// first as c falls from cos θ0. Without the order, a Newton root above cos
+/// θ0 (a root before the start) passed: the positivity over the reversed
+/// range held vacuously. Orient `q` so that it is positive above the root
+/// (negate it otherwise). `name` for messages.
 ///
 /// Errors: none of its own (Ok(None): not proved at this precision); those
 /// of the positivity proof.
@@ -198,7 +201,7 @@ pub(super) fn first_root_below(
     q: &[Iv],
     name: &str,
     start: &Float,
-    c0_hi: &Float,
+    c0: &Iv,
     p: u32,
 ) -> Result<Option<Iv>> {
     use crate::numeric::poly;
@@ -215,7 +218,11 @@ pub(super) fn first_root_below(
         let hi = Float::with_val_round(p, &c_star + &eps, Round::Up).0;
         let qlo = Iv::horner(q, &Iv::point(p, &lo));
         let qhi = Iv::horner(q, &Iv::point(p, &hi));
-        if qlo.is_negative() && qhi.is_positive() && positive_above(q, &hi, c0_hi)? {
+        if hi > c0.lo {
+            // the box reaches the start: no root after θ0 is enclosed here
+            return Ok(None);
+        }
+        if qlo.is_negative() && qhi.is_positive() && positive_above(q, &hi, &c0.hi)? {
             return Ok(Some(Iv::new(lo, hi)));
         }
         eps <<= 2u32;
