@@ -2713,7 +2713,7 @@ fn a_start_at_the_parting_with_n12_falling_parts_at_once() {
 /// Painlevé inconsistency, the first fix called it "N12 = 0 at the start"
 /// (false: it is not 0), and `forces` answered an angle before θs as the
 /// state at a θs found before it. Every command now says the start is too
-/// close to the parting to compute. Twelve nines are computed, and agree
+/// close to the parting to compute. Twelve and eighteen nines are computed, and agree
 /// with an independent derivation: θ* = 1.35566877880876021834530e-6,
 /// θs = 1.53128298697699926368297e-6.
 #[test]
@@ -2736,6 +2736,24 @@ fn a_start_a_hair_from_the_parting_is_refused_or_right() {
             );
         }
     }
+    // eighteen nines: θ* = 1.3556687788091299983e-9 (an independent
+    // derivation), where cos θ* = 1 − 9·10^-19 made the angle's Newton
+    // seed 0 and the branch point NaN, dropped (the motion called unique)
+    let eighteen = format!("0.{}", "9".repeat(18));
+    let args = [
+        "--theta0",
+        "0",
+        "--thetadot0",
+        &eighteen,
+        "--g",
+        "2",
+        "--digits",
+        "20",
+    ];
+    assert_eq!(
+        sep_value(&args, "theta_indeterminate").unwrap(),
+        "1.3556687788091299983e-9"
+    );
     let twelve = [
         "--theta0",
         "0",
@@ -2785,18 +2803,93 @@ fn the_part_branch_parts_at_a_start_where_parting_is_lawful() {
             );
             let stay = event_kinds(&args[..4]);
             assert_eq!(stay[0], "indeterminate", "{args:?}");
-            let mu = [
-                "separation",
-                "--theta0",
-                "pi/3",
-                "--thetadot0",
-                "1/2",
-                "--mu",
-                "0.3",
-                "--digits",
-                digits,
-            ];
-            one_line_error(&mu, 2, &["part at once", "no closed mode is consistent"]);
         }
     }
+    for digits in ["5", "15", "25"] {
+        let mu = [
+            "separation",
+            "--theta0",
+            "pi/3",
+            "--thetadot0",
+            "1/2",
+            "--mu",
+            "0.3",
+            "--digits",
+            digits,
+        ];
+        one_line_error(&mu, 2, &["part at once", "no closed mode is consistent"]);
+    }
+}
+
+/// From the top (θ0 = 0, θ̇0 = 1/10) the contact needs no friction at the
+/// start and ~μ/2.4 more per radian: a contact with μ = 10^-8 slips at θ ≈
+/// 2.4·10^-8, where cos θ = 1 − 3·10^-16 and the angle's Newton seed (acos
+/// of the f64 rounding of cos θ) was 0, sin 0 = 0, and the slip onset came
+/// out NaN and was dropped: the whole rolling motion was printed, with
+/// |F21|/N12 ~ 0.04 against μ = 10^-8 (and from 1.5·10^-8 down the
+/// steps lost the bits cos θ − c cancels: 17 digits at 20 asked). The
+/// truth (an independent root of |F21| = μ N12 along the rolling motion):
+/// θ = 2.407514450866981088087e-7, 2.407514450867051313771e-8,
+/// 2.407514450867052023050e-10, 2.407514450867052023121e-12 at μ = 10^-7,
+/// 10^-8, 10^-10, 10^-12.
+#[test]
+fn a_slip_onset_a_hair_after_the_top_is_found() {
+    // the independent values, as the CSV prints them (20 digits)
+    for (mu, truth) in [
+        ("1e-7", "0.00000024075144508669810881"),
+        ("1e-8", "2.4075144508670513138e-8"),
+        ("1e-10", "2.4075144508670520231e-10"),
+        ("1e-12", "2.4075144508670520231e-12"),
+    ] {
+        let args = ["--thetadot0", "0.1", "--mu-contact", mu, "--digits", "20"];
+        assert_eq!(event_kinds(&args)[0], "slip_onset", "{mu}");
+        let v = sep_value(&args, "event1_slip_onset_contact_theta").unwrap();
+        assert_eq!(v, truth, "{mu}");
+    }
+}
+
+/// A floor μ a hair (3.6·10^-11) below the most friction the rolling motion
+/// needs: the floor slips at θ ≈ 0.75 and sticks again ~7·10^-5 later. At 20
+/// and 30 digits the return of the slip speed to 0 fell within one piece
+/// of the integration and was not located: the floor slid on backwards with
+/// a forward slip speed, friction did work on the motion (work_s =
+/// −6.1·10^-4 printed as verified) and t_s was off in the second digit.
+/// Now refused there; at 50 digits the motion is right: the floor sticks
+/// again, the work dissipated is positive and tiny, and θs is the rolling
+/// model's to ~20 digits (the slip's effect is of the order of the work).
+#[test]
+fn a_slip_window_missed_within_a_step_is_refused_not_printed() {
+    let base = ["--theta0", "0.1", "--mu-floor", "0.1236517299"];
+    for digits in ["20", "30"] {
+        let args = [&["separation"][..], &base[..], &["--digits", digits][..]].concat();
+        one_line_error(&args, 3, &["slip phase", "sticks again"]);
+    }
+    let args = [&base[..], &["--digits", "50"][..]].concat();
+    assert_eq!(event_kinds(&args)[..2], ["slip_onset", "stick"]);
+    let work: f64 = sep_value(&args, "work_s").unwrap().parse().unwrap();
+    assert!(work > 0.0 && work < 1e-18, "{work}");
+    let rolling = sep_value(&["--theta0", "0.1", "--digits", "50"], "t_s").unwrap();
+    let t_s = sep_value(&args, "t_s").unwrap();
+    assert_eq!(t_s[..20], rolling[..20], "{t_s} / {rolling}");
+}
+
+/// A branch point θs − θ* = 1.8·10^-41 before θs (k1 = 10^40; an independent
+/// derivation's θ* = 0.96602520479222373245434450132017741855149737…) is θs
+/// to 30 digits: the motion is reported unique to them, and a note says so
+/// (it said nothing); at 45 digits θ* is printed.
+#[test]
+fn a_branch_point_within_the_digits_of_theta_s_is_said_out_loud() {
+    let base = ["separation", "--theta0", "0.1", "--k1", "1e40"];
+    let out = stdout_ok(&[&base[..], &["--digits", "30"][..]].concat());
+    assert!(!out.contains("theta_indeterminate "), "{out}");
+    assert!(
+        out.contains("before theta_s, but within the digits asked of it"),
+        "{out}"
+    );
+    let out = stdout_ok(&[&base[..], &["--digits", "45"][..]].concat());
+    assert!(
+        out.contains("0.966025204792223732454344501320177418551497371"),
+        "{out}"
+    );
+    assert!(!out.contains("within the digits asked of it"), "{out}");
 }

@@ -67,6 +67,10 @@ pub struct Fast {
     /// Where parting is lawful on this branch: (θ where it becomes so, θ
     /// where it stops — None: up to the phase's end).
     pub window: Option<(Float, Option<Float>)>,
+    /// A branch point found before θs but taken as θs, being θs to the
+    /// digits asked (the window where parting is lawful is narrower than
+    /// they resolve).
+    pub merged_branch: bool,
 }
 
 /// What the phase must also stop at or note.
@@ -270,10 +274,14 @@ pub fn first_phase(
     // holds; it coincides with the separation for a held lower cylinder
     // (N12 = −m2 ρ̈_free there), which is then no branch point
     let mut branch_at: Option<(Float, Float)> = None;
+    let mut merged_branch = false;
     if let Some((d, err)) = branch_found {
-        // one that is θs to the digits asked is θs, in every run alike
+        // one that is θs to the digits asked is θs, in every run alike (and
+        // said so: `merged_branch`)
         let tol = Float::with_val(p, &err + &refined[0].2) * 4u32;
-        if super::sides::apart_from_end(&d, &ds, &tol, &th0w, wants.digits) {
+        let apart = super::sides::apart_from_end(&d, &ds, &tol, &th0w, wants.digits);
+        merged_branch = d < ds && super::sides::end_to_digits(&d, &ds, &th0w, wants.digits);
+        if apart {
             if *wants.branch == Branch::Part {
                 refined.push((Ending::BranchPart, d.clone(), err.clone()));
             }
@@ -540,6 +548,7 @@ pub fn first_phase(
         end_point,
         end_err: (t_err, theta_err),
         window,
+        merged_branch,
     })
 }
 

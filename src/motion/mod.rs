@@ -135,6 +135,63 @@ pub fn run(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Resu
     Ok(m)
 }
 
+/// Each sliding contact's slip speed keeps its mode's sign along the phase
+/// (at every sample the integration kept, and where it stopped): a slip
+/// window that closes within one piece (the floor sticking again ~7·10^-5
+/// after a slip onset near a tangency of its friction cone, μ 3·10^-11 below
+/// the most the motion needs) was not located, the contact slid on with its
+/// slip speed of the other sign — friction doing work on the motion — and
+/// wrong numbers were printed as verified. Not computed at this precision.
+///
+/// Errors: a slip speed of the wrong sign beyond the test's resolution.
+fn slip_signs_hold(
+    ctx: &Ctx,
+    sys: &crate::mechanics::system::System,
+    mode: mode::Mode,
+    run: &solve::Run,
+) -> Result<()> {
+    let wp = sys.prec;
+    let tiny = Float::with_val(wp, &ctx.base_r / &ctx.ts) * &ctx.rel_tiny;
+    for (which, st) in [(Which::Floor, mode.floor), (Which::Contact, mode.contact)] {
+        let mode::State::Slip(sg) = st else { continue };
+        if sg == 0 {
+            continue;
+        }
+        let samples = run
+            .checkpoints
+            .iter()
+            .chain(&run.outputs)
+            .chain(run.hits.last().map(|h| &h.at));
+        for smp in samples {
+            let v = sys.slip_speed(ctx::tangent(which), &smp.q, &smp.v);
+            let wrong = if sg > 0 {
+                Float::with_val(wp, -&v)
+            } else {
+                v.clone()
+            };
+            if wrong > tiny {
+                return Err(Error::NotConverged {
+                    quantity: "slip phase".into(),
+                    requested: 0,
+                    reached: format!(
+                        "the {} slides {} while its slip speed is {} at t = {}",
+                        which.name(),
+                        if sg > 0 { "forwards" } else { "backwards" },
+                        crate::numeric::decimal::short_near(&Float::with_val(64, &v)),
+                        crate::numeric::decimal::to_sig(&smp.t, 12)
+                    ),
+                    detail: "the contact sticks again within a step of the integration (a \
+                             short slip window, near a tangency of its friction cone) and the \
+                             return of its slip speed to 0 was not located; not computed at \
+                             this precision (a higher --digits may resolve it)"
+                        .into(),
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The error of a `--part-at` angle where parting is not lawful.
 pub(crate) fn part_at_refused(branch: &Branch) -> Error {
     let th = match branch {
@@ -168,16 +225,13 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
     let (q0, v0) = sys0.initial_state(&ctx.base)?;
     let e0 = sys0.energy(&q0, &v0);
     let zero = Float::new(wp);
-    // where the mode test finds no continuation at the start, the closed
-    // motion's own test of the start speaks first: a start at the parting
-    // (N12 = 0 exactly: θ0 = 0 with r θ̇0² = g) left the test reading the
-    // rounding of 0, and it called the start a Painlevé inconsistency. And
-    // a start that holds, but so close to the parting that the parting
-    // comes within the test's step (N12 = 4·10^-100 m2 g at θ0 = 0: θs ~
-    // 10^-50 after it), is not decided here rather than called one
     // whether the contact may open at the start: the closed motion's exact
     // sign where it has one (the test reads a rounding where the free
-    // normal acceleration is 0 at θ0)
+    // normal acceleration is 0 at θ0). Its refusal of a start at the
+    // parting, or too close to it to compute, is the answer (the mode test
+    // read the rounding of 0 and called such a start a Painlevé
+    // inconsistency); a start the closed motion finds past the parting may
+    // still hold in a sliding mode, which the test decides
     let opens = match caches.sticking(model) {
         Ok(route) => {
             let hp = route.free_normal_poly();
@@ -186,28 +240,38 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 s => Some(s > 0),
             }
         }
+        Err(e @ Error::NotConverged { .. }) => return Err(e),
         Err(_) => None,
+    };
+    // a start that holds (N12 > 0 in the closed motion), but so close to
+    // the parting that the parting comes within the mode test's step (θs ~
+    // 10^-8 after θ0 = 0.1 at N12 = 10^-16 m2 g): not decided, whatever the
+    // test concludes there (it called the start a Painlevé inconsistency,
+    // or parting at once for friction the model does not have)
+    let step = Float::with_val(64, 1u32) >> (wp as i32 / 3 - 16);
+    let too_close = |caches: &Caches| {
+        caches
+            .sticking
+            .as_ref()
+            .map(|r| r.n12_start.clone())
+            .filter(|n| n.is_sign_positive() && *n < step)
+            .map(|n12| Error::NotConverged {
+                quantity: "mode at the start".into(),
+                requested: 0,
+                reached: "no candidate passed the test at t = 0".into(),
+                detail: format!(
+                    "N12 = {} m2 g > 0 at the start holds the cylinders together, but the start \
+                     lies so close to the parting that it comes within the mode test's step at \
+                     this precision; not decided (not a Painlevé-type inconsistency)",
+                    crate::numeric::decimal::short_near(&n12)
+                ),
+            })
     };
     let choice = match decide::decide_with(&ctx, &q0, &v0, &zero, &req.branch, opens) {
         Ok(c) => c,
         Err(e) => {
-            let n12 = caches.sticking(model)?.n12_start.clone();
-            let step = Float::with_val(64, 1u32) >> (wp as i32 / 3 - 16);
-            if n12.is_sign_positive() && n12 < step {
-                return Err(Error::NotConverged {
-                    quantity: "mode at the start".into(),
-                    requested: 0,
-                    reached: "no candidate passed the test at t = 0".into(),
-                    detail: format!(
-                        "N12 = {} m2 g > 0 at the start holds the cylinders together, but the \
-                         start lies so close to the parting that it comes within the mode \
-                         test's step at this precision; not decided (not a Painlevé-type \
-                         inconsistency)",
-                        crate::numeric::decimal::short_near(&n12)
-                    ),
-                });
-            }
-            return Err(e);
+            caches.sticking(model)?;
+            return Err(too_close(caches).unwrap_or(e));
         }
     };
     // parting lawful from the start, on the part branch: the closed mode's
@@ -234,19 +298,31 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         }
         _ => choice,
     };
-    // no closed mode, and the free motion parts: where the closed motion's
-    // own N12 > 0 at the start (its route was made), friction is why
-    let pressing = caches.sticking.is_some();
-    let mut mode = choice.mode.ok_or_else(|| {
-        Error::not_physical(if pressing {
-            "the cylinders part at once: the closed motion would press (N12 > 0 at the start), \
-             but no closed mode is consistent with the contact laws there (sticking would need \
-             more friction than mu_s, and no sliding mode holds), and the free motion parts"
-        } else {
-            "the cylinders part at once: N12 <= 0 at the start in every mode \
-             (the start lies past the parting: theta0, thetadot0 or omega0 too large)"
-        })
-    })?;
+    // no closed mode, and the free motion parts: where the closed motion
+    // presses at the start (its route was made), the start is too close to
+    // the parting for the test, or friction is why
+    let mut mode = match choice.mode {
+        Some(m) => m,
+        None => {
+            if let Some(e) = too_close(caches) {
+                return Err(e);
+            }
+            if !model.has_coulomb() {
+                caches.sticking(model)?;
+            }
+            return Err(Error::not_physical(
+                if caches.sticking.is_some() && model.has_coulomb() {
+                    "the cylinders part at once: the closed motion would press (N12 > 0 at the \
+                     start), but no closed mode is consistent with the contact laws there \
+                     (sticking would need more friction than mu_s, and no sliding mode holds), \
+                     and the free motion parts"
+                } else {
+                    "the cylinders part at once: N12 <= 0 at the start in every mode \
+                     (the start lies past the parting: theta0, thetadot0 or omega0 too large)"
+                },
+            ));
+        }
+    };
     let mut w = Walk {
         ctx: &ctx,
         req,
@@ -268,6 +344,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             work_done: (0, 0),
             routes: Vec::new(),
             windows: Vec::new(),
+            merged_branch: false,
             near: Vec::new(),
             target_near: None,
             ts: ctx.ts.clone(),
@@ -350,6 +427,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
             w.out.events.push(e);
             window_open = true;
         }
+        w.out.merged_branch = fast.merged_branch;
         if let Some(win) = fast.window {
             w.out.windows.push(win);
         }
@@ -549,6 +627,7 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
         };
         w.out.work_done.0 += run.stats.steps;
         w.out.work_done.1 += run.stats.evals;
+        slip_signs_hold(&ctx, &sys, mode, &run)?;
         if !mode.is_conservative() {
             w.conservative = false;
         }

@@ -208,6 +208,8 @@ pub struct Motion {
     /// where it became so, θ where it stopped — None: up to the end of the
     /// closed branch). Empty where the motion is unique.
     pub windows: Vec<(Float, Option<Float>)>,
+    /// A branch point before θs taken as θs, being θs to the digits asked.
+    pub merged_branch: bool,
     /// Per row: the event whose time it cannot be told apart from at this
     /// precision ([`super::sides::mark_near`]).
     pub near: Vec<Option<usize>>,

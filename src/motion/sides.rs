@@ -86,8 +86,16 @@ pub fn within_digits(t: &Float, end: &Float, digits: u32, scale: &Float) -> bool
 pub fn apart_from_end(d: &Float, end: &Float, tol: &Float, th0: &Float, digits: u32) -> bool {
     let p = d.prec().max(end.prec());
     let gap = Float::with_val(p, d - end).abs();
+    *d < *end && gap > *tol && !end_to_digits(d, end, th0, digits)
+}
+
+/// Whether the root at δ = `d` is the end δ = `end` to the `digits` asked
+/// ([`within_digits`] of the angles θ0 + δ, `th0` the start in the working
+/// frame): the same decision at every working precision.
+pub fn end_to_digits(d: &Float, end: &Float, th0: &Float, digits: u32) -> bool {
+    let p = d.prec().max(end.prec());
     let at = |x: &Float| Float::with_val(p, th0 + x);
-    *d < *end && gap > *tol && !within_digits(&at(d), &at(end), digits, &Float::with_val(p, 1u32))
+    within_digits(&at(d), &at(end), digits, &Float::with_val(p, 1u32))
 }
 
 /// The event whose value in `ats` (with its margin in `margins`) is nearest

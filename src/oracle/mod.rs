@@ -324,6 +324,14 @@ fn branch_notes(first: &Motion, opts: &Options) -> Vec<String> {
              free relative normal acceleration r thetadot^2 - g cos(theta) - x1ddot_free sin(theta) \
              turns positive while N12 > 0, so the cylinders may stay together or part; {on}"
         ));
+    } else if first.merged_branch {
+        notes.push(
+            "the free relative normal acceleration turns positive while N12 > 0 (a branch point, \
+             where parting becomes lawful) before theta_s, but within the digits asked of it: the \
+             window where the cylinders may part is narrower than these digits resolve, and the \
+             motion is reported unique to them (more --digits tell the branch point apart)"
+                .into(),
+        );
     }
     notes
 }

@@ -374,6 +374,17 @@ impl Route {
         // is in it: q ≥ p)
         err += Float::with_val(q, d.abs_ref()) >> (p as i32 - 1);
         let err = Float::with_val_round(p, &err, rug::float::Round::Up).0;
+        if !d.is_finite() || !err.is_finite() {
+            // a NaN root was sorted last among the phase's endings and
+            // dropped (the angle's seed at cos θ = 1 − 3·10^-16): never again
+            return Err(crate::error::Error::NotConverged {
+                quantity: name.into(),
+                requested: 0,
+                reached: "no finite angle for its root".into(),
+                detail: "the angle of a root of the phase's polynomial could not be computed"
+                    .into(),
+            });
+        }
         Ok(Some((d, err)))
     }
 }

@@ -6,10 +6,11 @@
 //! whose coefficients are exact rationals and powers of A_H (an interval).
 //! The verified answer decides that Π < 0 at θ0 and that it changes sign
 //! before θs (or that Π > 0 at θ0: then θ* = θ0 and t* = 0, proved by
-//! Π(cos θ0) > 0 in interval arithmetic); the proof encloses the first sign change exactly as θs is
-//! enclosed: Π(c_lo) > 0 > Π(c_hi) at two points around the root (Newton at
-//! the working precision from the verified root), and Π < 0 on
-//! (c_hi, cos θ0] (the positivity proof of −Π), so by the intermediate value
+//! Π(cos θ0) > 0 in interval arithmetic); the proof encloses the first sign
+//! change exactly as θs is enclosed: Π(c_lo) > 0 > Π(c_hi) at two points
+//! around the root (Newton at the working precision from the verified
+//! root), and Π < 0 on (c_hi, cos θ0] (the positivity proof of −Π), with
+//! c_hi at or below cos θ0's lower end, so by the intermediate value
 //! theorem the first zero of Π after θ0 has cos θ* in [c_lo, c_hi]. The
 //! enclosure must lie strictly before the proved θs (otherwise the two
 //! coincide within the proof and nothing is claimed), and t* follows by the
