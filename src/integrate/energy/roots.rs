@@ -336,28 +336,55 @@ impl Route {
         let delta_end = &end;
         // the end of the range at the precision it is known to (a root ~1/μ
         // before θs must not fall outside a 64-bit rounding of cos θs)
-        let ep = iso.max(delta_end.prec());
+        // a cone polynomial's pair of roots near a tangency of the cone (μ a
+        // hair below the most friction the motion needs) lies ~√(depth)
+        // apart around a dip whose depth is the μ gap Δ: searched with half
+        // the digits' bits and 24 more (the slip's effect on the motion is
+        // ~20 Δ²: work_s 2.06e-17 and 2.06e-19, t_s shifted 3.2e-17 and
+        // 3.2e-19, at Δ = 10^-9 and 10^-10 below the main case's tangency),
+        // a floor μ 4·10^-21 below it slipped unseen at 40 to 100 digits. The
+        // root found is refined as before
+        let search = if unit.is_some() {
+            iso.max(crate::numeric::bits_for_digits(digits.max(1)) / 2 + 24)
+        } else {
+            iso
+        };
+        let ep = search.max(delta_end.prec());
         let th0 = self.work.start().theta0.to_float(ep);
         let c_end = Float::with_val(ep, &th0 + delta_end).cos();
-        let lo = Float::with_val(iso, &c_end).max(&Float::with_val(iso, -1));
+        let lo = Float::with_val(search, &c_end).max(&Float::with_val(search, -1));
         // c0 at the isolation's bits (a 64-bit c0 would put a root a hair
         // after the start on either side of it)
-        let (c0, a_hi) = if iso > ISO {
-            let d = Dyn::new(&self.work, &self.red, iso)?;
+        let (c0, a_hi) = if search > ISO {
+            let d = Dyn::new(&self.work, &self.red, search)?;
             (d.c0.clone(), N12Poly::a_h(&d))
         } else {
             (c0, a_h)
         };
-        let roots = poly::sign_change_roots(&hp.at(&a_hi, iso), &lo, &c0);
+        let roots = poly::sign_change_roots(&hp.at(&a_hi, search), &lo, &c0);
         let Some(start) = roots.into_iter().rev().find(|c| *c < c0 && *c > lo) else {
             return Ok(None);
         };
+        let start_full = start;
+        let start = Float::with_val(iso, &start_full);
         // refined with the same extra bits: near the root the polynomial is
         // a difference of terms of the coefficients' size
-        let extra = iso - ISO;
-        let a_hp = N12Poly::a_h(&Dyn::new(&self.work, &self.red, p + 16 + extra)?);
-        let coef = hp.at(&a_hp, p + 16 + extra);
-        let (c, eps) = poly::refine_root(name, &coef, &start, p + extra)?;
+        let mut extra = iso - ISO;
+        let refine = |route: &mut Self, extra: u32, start: &Float| -> Result<(Float, Float)> {
+            let a_hp = N12Poly::a_h(&Dyn::new(&route.work, &route.red, p + 16 + extra)?);
+            let coef = hp.at(&a_hp, p + 16 + extra);
+            poly::refine_root(name, &coef, start, p + extra)
+        };
+        // where the search needed more bits than the isolation (a cone's
+        // close pair), a refinement that finds no sign change is retried
+        // with them: the pair's dip is below the working precision's reach
+        let (c, eps) = match refine(self, extra, &start) {
+            Err(crate::error::Error::NoSignChange { .. }) if search > iso => {
+                extra = search - ISO;
+                refine(self, extra, &Float::with_val(search, &start_full))?
+            }
+            r => r?,
+        };
         // θ and δ = θ − θ0 at the refinement's bits, δ then rounded to p: a
         // root 10^-200 after θ0 is lost in θ's rounding at p bits (δ came
         // out 0 or negative, and its time NaN)
