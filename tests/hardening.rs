@@ -2892,6 +2892,10 @@ fn a_branch_point_within_the_digits_of_theta_s_is_said_out_loud() {
         "{out}"
     );
     assert!(!out.contains("within the digits asked of it"), "{out}");
+    // not where the phase ends before θs (a slip onset: θs is a later,
+    // sliding phase's, with no branch point)
+    let out = stdout_ok(&[&base[..], &["--mu-contact", "0.3,0", "--digits", "30"][..]].concat());
+    assert!(!out.contains("within the digits asked of it"), "{out}");
 }
 
 /// A floor μ 4.3·10^-21 below the most friction the main case's rolling
@@ -2920,4 +2924,13 @@ fn a_slip_a_hair_below_the_cone_tangency_is_not_printed_as_rolling() {
         !out.status.success() || text.contains("slip_onset"),
         "printed as rolling: {text}"
     );
+    one_line_error(&args, 3, &["slip phase", "the floor sticks again"]);
+    // and the program's own most friction needed, fed back (within ~10^-40
+    // of the tangency: a slip, if any, far below the digits): the rolling
+    // motion, not a rounding's pair of roots refused (exit 3)
+    let max = sep_value(&["--theta0", "0.1", "--digits", "40"], "mu_floor_max").unwrap();
+    for digits in ["40", "50"] {
+        let args = ["--theta0", "0.1", "--mu-floor", &max, "--digits", digits];
+        assert!(sep_value(&args, "t_s").is_ok(), "{digits}");
+    }
 }

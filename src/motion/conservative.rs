@@ -281,6 +281,7 @@ pub fn first_phase(
         let tol = Float::with_val(p, &err + &refined[0].2) * 4u32;
         let apart = super::sides::apart_from_end(&d, &ds, &tol, &th0w, wants.digits);
         merged_branch = d < ds && super::sides::end_to_digits(&d, &ds, &th0w, wants.digits);
+        // (said only where the phase ends at θs: below)
         if apart {
             if *wants.branch == Branch::Part {
                 refined.push((Ending::BranchPart, d.clone(), err.clone()));
@@ -315,6 +316,10 @@ pub fn first_phase(
         .into_iter()
         .next()
         .ok_or_else(|| Error::not_physical("internal: no end of the conservative phase"))?;
+    // a branch point merged with θs is said only where the phase ends there
+    // (a slip onset or a target before it left the note on a motion whose
+    // θs was a later phase's)
+    let merged_branch = merged_branch && ending == Ending::Separation;
     if ending == Ending::PartAt {
         let lawful = branch_at
             .as_ref()

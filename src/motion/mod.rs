@@ -180,11 +180,13 @@ fn slip_signs_hold(
                         crate::numeric::decimal::short_near(&Float::with_val(64, &v)),
                         crate::numeric::decimal::to_sig(&smp.t, 12)
                     ),
-                    detail: "the contact sticks again within a step of the integration (a \
-                             short slip window, near a tangency of its friction cone) and the \
-                             return of its slip speed to 0 was not located; not computed at \
-                             this precision (a higher --digits may resolve it)"
-                        .into(),
+                    detail: format!(
+                        "the {} sticks again within a step of the integration (a short slip \
+                         window, near a tangency of its friction cone) and the return of its \
+                         slip speed to 0 was not located; not computed at this precision (a \
+                         higher --digits may resolve it)",
+                        which.name()
+                    ),
                 });
             }
         }
@@ -240,7 +242,10 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
                 s => Some(s > 0),
             }
         }
-        Err(e @ Error::NotConverged { .. }) => return Err(e),
+        // with friction the closed motion is one candidate among others:
+        // its parting at the start does not decide the start (sticking may
+        // fail μ by far, and the cylinders part at once)
+        Err(e @ Error::NotConverged { .. }) if !model.has_coulomb() => return Err(e),
         Err(_) => None,
     };
     // a start that holds (N12 > 0 in the closed motion), but so close to
@@ -249,7 +254,11 @@ fn walk(model: &Model, req: &Request, prec: u32, caches: &mut Caches) -> Result<
     // test concludes there (it called the start a Painlevé inconsistency,
     // or parting at once for friction the model does not have)
     let step = Float::with_val(64, 1u32) >> (wp as i32 / 3 - 16);
+    let coulomb = model.has_coulomb();
     let too_close = |caches: &Caches| {
+        if coulomb {
+            return None;
+        }
         caches
             .sticking
             .as_ref()

@@ -378,10 +378,18 @@ impl Route {
         // where the search needed more bits than the isolation (a cone's
         // close pair), a refinement that finds no sign change is retried
         // with them: the pair's dip is below the working precision's reach
+        // A pair no refinement confirms lies below what the search's bits
+        // resolve: a rounding's sign change near the tangency (μ the
+        // program's own mu_floor_max), or a slip whose effect (~20 Δ²) is
+        // below the digits asked — no slip onset, as for a pair closer than
+        // `isolation_bits` resolves
         let (c, eps) = match refine(self, extra, &start) {
             Err(crate::error::Error::NoSignChange { .. }) if search > iso => {
                 extra = search - ISO;
-                refine(self, extra, &Float::with_val(search, &start_full))?
+                match refine(self, extra, &Float::with_val(search, &start_full)) {
+                    Err(crate::error::Error::NoSignChange { .. }) => return Ok(None),
+                    r => r?,
+                }
             }
             r => r?,
         };
