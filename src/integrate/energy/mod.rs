@@ -16,6 +16,7 @@
 pub mod engine;
 mod kept;
 mod roots;
+mod start;
 pub(crate) use roots::{mass_spread_bits, MAX_SPREAD_BITS};
 mod rows;
 
@@ -30,7 +31,7 @@ use crate::model::Ideal;
 use crate::numeric::taylor::{self, Conservative};
 use crate::numeric::verify::Run;
 pub use engine::Engine;
-use rug::{Assign, Float, Rational};
+use rug::{Assign, Float};
 use std::collections::HashMap;
 
 /// From this working precision on (about 170 digits) the trajectory's θ(t)
@@ -136,20 +137,6 @@ pub fn infinite_time_error(what: &str, coulomb: bool) -> Error {
     ))
 }
 
-/// The refusal of a start that presses by `what` (N12 at the start): so
-/// little that the parting lies a hair after it, closer than the search for
-/// θs resolves.
-fn too_close_to_parting(what: String) -> Error {
-    Error::NotConverged {
-        quantity: "N12 at the start".into(),
-        requested: 0,
-        reached: what,
-        detail: "the start lies that close to the parting, closer than the search for theta_s \
-                 resolves: not computed (move theta0 or thetadot0 off the parting)"
-            .into(),
-    }
-}
-
 impl Route {
     /// The route of `model`.
     ///
@@ -172,125 +159,7 @@ impl Route {
             at_separation: false,
             n12_start: Float::new(64),
         };
-        // N12 and N1 at the start, at a precision that resolves their
-        // signs: a force within its terms' rounding is computed again at
-        // twice the bits (a heavy upper cylinder on a light one on a
-        // frictionless floor: N12 is of the order of m1 g, its terms of
-        // m2 g — at m2 = 10^30 m1 the rounding at 96 bits gave N12 < 0 and
-        // the start was refused as parting at once). The terms: N12 =
-        // m2 (g c + ẍ1 s − r θ̇²), N1 = (m1 + m2) g + m2 r (θ̈ s + θ̇² c)
-        let pr = r.work.params();
-        let (m2, weight) = (pr.m2.clone(), Rational::from(&pr.m1 + &pr.m2) * &pr.g);
-        let mut p = SCAN_PREC;
-        let (n12, n1, floors) = loop {
-            let e = r.engine(p)?;
-            let st = e.dynm.state(&Float::new(p));
-            let f = e.dynm.forces(&st);
-            let g = Float::with_val(p, &e.dynm.r) * &e.dynm.gr;
-            let td2 = Float::with_val(p, st.thetadot.square_ref()) * &e.dynm.r;
-            let m2 = Float::with_val(p, &m2);
-            let floor12 = (Float::with_val(p, st.a[0].abs_ref()) + &g + &td2) * &m2;
-            let floor1 = Float::with_val(p, &weight)
-                + (Float::with_val(p, st.thetaddot.abs_ref()) * &e.dynm.r + &td2) * &m2;
-            let floors = [floor12 >> (p as i32 - 8), floor1 >> (p as i32 - 8)];
-            let decided = |x: &Float, fl: &Float| Float::with_val(p, x.abs_ref()) > *fl;
-            if (decided(&f.n12, &floors[0]) && decided(&f.n1, &floors[1])) || p >= 16 * SCAN_PREC {
-                break (f.n12, f.n1, floors);
-            }
-            p *= 2;
-        };
-        if Float::with_val(p, n12.abs_ref()) <= floors[0] {
-            // N12 within its rounding at 1536 bits: where cos θ0 is rational
-            // (θ0 = 0, π/3) it is decided exactly, and a start exactly at the
-            // parting (θ0 = 0 with r θ̇0² = g, for one) by N12's sign just
-            // after it (its fall as c leaves c0): falling, the cylinders part
-            // at once. The mode test read the rounding of 0 and called such a
-            // start a Painlevé inconsistency. A start 10^-470 short of the
-            // parting is not at it (its exact N12 > 0): refused as too close
-            let np = crate::mechanics::dynamics::N12Poly::new(&r.red, r.work.params());
-            let hp =
-                crate::mechanics::dynamics::HPoly::linear(&(np.base.clone(), np.per_h.clone()));
-            let exact = r.exact_start_value(&hp);
-            if let Some(v) = exact.as_ref().filter(|v| **v != 0) {
-                // not 0, exactly: past the parting by a hair, or short of it
-                if *v < 0 {
-                    return Err(Error::not_physical(
-                        "the cylinders part at once: N12 < 0 at the start, exactly (within its \
-                         rounding at 1536 bits: the start lies a hair past the parting)",
-                    ));
-                }
-                return Err(too_close_to_parting(
-                    "> 0 exactly, within its rounding at 1536 bits".into(),
-                ));
-            }
-            if exact.is_some() {
-                match r.sign_after_start(&hp, p)? {
-                    Some(s) if s < 0 => {
-                        return Err(Error::not_physical(
-                            "the cylinders part at once: N12 = 0 at the start and negative just \
-                             after it (the start lies at the parting: theta0, thetadot0 or omega0 \
-                             at its limit)",
-                        ));
-                    }
-                    Some(_) => {
-                        return Err(Error::NotConverged {
-                            quantity: "N12 at the start".into(),
-                            requested: 0,
-                            reached: "0 exactly, and rising after it".into(),
-                            detail: "the start lies exactly at the parting (N12 = 0 there and \
-                                     positive just after): such a start is not computed; move \
-                                     theta0 or thetadot0 off it"
-                                .into(),
-                        });
-                    }
-                    None => {}
-                }
-            }
-        }
-        for ((name, x), floor) in [("N12", &n12), ("N1", &n1)].into_iter().zip(&floors) {
-            if Float::with_val(p, x.abs_ref()) <= *floor {
-                return Err(Error::NotConverged {
-                    quantity: format!("{name} at the start"),
-                    requested: 0,
-                    reached: format!(
-                        "0 to within its rounding at {p} bits (|{name}| <= {})",
-                        crate::numeric::decimal::short(floor)
-                    ),
-                    detail: "whether the start holds cannot be decided (a start at the \
-                             parting, or masses of very different orders)"
-                        .into(),
-                });
-            }
-        }
-        if n12.is_sign_negative() {
-            return Err(Error::not_physical(format!(
-                "the cylinders part at once: N12 = {} <= 0 at the start (the start lies past \
-                 the parting: theta0, thetadot0 or omega0 too large)",
-                crate::numeric::decimal::to_sig(&n12, 4)
-            )));
-        }
-        if n1.is_sign_negative() {
-            return Err(Error::not_physical(format!(
-                "cylinder 1 lifts off the floor at once: N1 = {} <= 0 at the start",
-                crate::numeric::decimal::to_sig(&n1, 4)
-            )));
-        }
-        let pr = r.work.params();
-        let m2g = Float::with_val(64, Rational::from(&pr.m2 * &pr.g));
-        r.n12_start = Float::with_val(64, &n12 / &m2g);
-        // a start that presses, but by less than 2^-80 of the lighter
-        // cylinder's weight: the parting lies a hair after it (θs ~ 10^-50
-        // after θ0 = 0 at N12 = 2·10^-100 m2 g), closer than the scan for θs
-        // at 96 bits resolves — `forces` answered an angle before θs as the
-        // state at a θs found before it. Not computed
-        let light = Float::with_val(64, pr.m1.clone().min(pr.m2.clone()) * &pr.g);
-        if Float::with_val(64, &n12 / &light) < Float::with_val(64, 1u32) >> (SCAN_PREC - 16) {
-            return Err(too_close_to_parting(format!(
-                "{} m2 g > 0, below 2^-{} of the lighter cylinder's weight",
-                crate::numeric::decimal::short_near(&r.n12_start),
-                SCAN_PREC - 16
-            )));
-        }
+        r.check_start()?;
         Ok(r)
     }
 

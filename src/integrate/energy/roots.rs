@@ -57,13 +57,8 @@ impl Route {
         let (a, b) = match which {
             Which::Floor => (HPoly::linear(&fp.f1), HPoly::linear(&fp.n1)),
             Which::Contact => {
-                let np = self
-                    .caches
-                    .n12_poly
-                    .get_or_insert_with(|| N12Poly::new(&self.red, self.work.params()))
-                    .clone();
                 let m2 = self.work.params().m2.clone();
-                let b = HPoly::default().add_scaled(&HPoly::linear(&(np.base, np.per_h)), &m2);
+                let b = HPoly::default().add_scaled(&self.n12_hpoly(), &m2);
                 (HPoly::linear(&fp.f21), b)
             }
         };
@@ -76,53 +71,23 @@ impl Route {
         (cone, free)
     }
 
+    /// N12·K²/m2 as a polynomial in c ([`N12Poly`], built once).
+    pub fn n12_hpoly(&mut self) -> HPoly {
+        let np = self
+            .caches
+            .n12_poly
+            .get_or_insert_with(|| N12Poly::new(&self.red, self.work.params()));
+        HPoly::linear(&(np.base.clone(), np.per_h.clone()))
+    }
+
     /// N1·K² as a polynomial in c.
     pub fn n1_poly(&mut self) -> HPoly {
         HPoly::linear(&self.force_polys().n1)
     }
 
-    /// cos θ0 exactly where it is rational (working frame, 0 ≤ θ0 < π/2:
-    /// θ0 = 0 or π/3): there a polynomial's value at the start is decided
-    /// exactly, and a start 10^-470 from a root is not taken for one.
-    fn exact_c0(&self) -> Option<Rational> {
-        let th0 = &self.work.start().theta0;
-        if th0.coef == 0 {
-            Some(Rational::from(1))
-        } else if th0.times_pi && Rational::from(th0.coef.abs_ref()) == Rational::from((1, 3)) {
-            Some(Rational::from((1, 2)))
-        } else {
-            None
-        }
-    }
-
-    /// `hp` at the start as an exact rational, where cos θ0 is rational
-    /// (A_H = K(c0) θ̇0² + 2 (g/r) c0, every term rational).
-    pub(super) fn exact_start_value(&self, hp: &HPoly) -> Option<Rational> {
-        let c0 = self.exact_c0()?;
-        let p = self.work.params();
-        let q = &self.red.q;
-        let k0 = Rational::from(&q[2] * &c0) + &q[1];
-        let k0 = Rational::from(&k0 * &c0) + &q[0];
-        let td0 = &self.work.start().thetadot0;
-        let a_h = Rational::from(&k0 * td0) * td0
-            + Rational::from(&p.g / &p.r()) * &c0 * Rational::from(2);
-        let mut v = Rational::new();
-        let mut pow = Rational::from(1);
-        for part in &hp.parts {
-            let mut s = Rational::new();
-            for c in part.iter().rev() {
-                s *= &c0;
-                s += c;
-            }
-            v += Rational::from(&s * &pow);
-            pow *= &a_h;
-        }
-        Some(v)
-    }
-
     /// The size of `hp`'s terms at c (64 bits): Σ_j |A_H|^j Σ_k |part_jk| |c|^k,
     /// the scale of its rounding.
-    fn term_size(hp: &HPoly, a_h: &Float, c: &Float) -> Float {
+    pub(super) fn term_size(hp: &HPoly, a_h: &Float, c: &Float) -> Float {
         let (ah, c) = (
             Float::with_val(64, a_h.abs_ref()),
             Float::with_val(64, c.abs_ref()),
@@ -149,7 +114,7 @@ impl Route {
     /// of [`Route::term_size`]), or `None` for the value where it is within
     /// its rounding at `cap` (0 to that precision). The same numbers at every
     /// working precision: the ladder depends on `from` and `cap` only.
-    fn value_resolved(
+    pub(super) fn value_resolved(
         &mut self,
         hp: &HPoly,
         delta: Option<&Float>,
@@ -184,73 +149,6 @@ impl Route {
             }
             q = (2 * q).min(cap);
         }
-    }
-
-    /// The most bits `hp`'s value at the start is resolved with: where cos θ0
-    /// is rational and the value not 0, those that resolve its exact value
-    /// (whatever its size: at θ0 = 0 a root's θ carries its own digits);
-    /// else [`resolve_cap`] of the `digits` and 4 |log2 θ0| more under θ0 <
-    /// 1 (a value within its rounding there puts a root within ~2^−(cap/2)
-    /// of θ0 in c, θ0 to the digits asked relative to θ0 itself). The same
-    /// for both runs of a request.
-    fn start_cap(&mut self, hp: &HPoly, digits: u32) -> Result<u32> {
-        let cap = resolve_cap(digits);
-        if let Some(v) = self.exact_start_value(hp) {
-            if v == 0 {
-                return Ok(cap);
-            }
-            let d = &self.engine(ISO)?.dynm;
-            let size = Self::term_size(hp, &N12Poly::a_h(d), &d.c0);
-            let v = Float::with_val(64, &v).abs();
-            let need = size.get_exp().unwrap_or(0) - v.get_exp().unwrap_or(0) + 24 + ISO as i32;
-            return Ok(cap.max(need.max(0).unsigned_abs()));
-        }
-        let th0 = self.work.start().theta0.to_float(64);
-        let small = match th0.get_exp() {
-            Some(e) if e < 0 => 4 * e.unsigned_abs(),
-            _ => 0,
-        };
-        Ok(cap + small)
-    }
-
-    /// The sign of `hp` just after a start where its value is 0 (exactly,
-    /// or to `cap` bits): that of its fall as c leaves c0 (−hp′(c0)), or
-    /// None where that is 0 too.
-    ///
-    /// Errors: the dynamics at `cap` bits.
-    pub fn sign_after_start(&mut self, hp: &HPoly, cap: u32) -> Result<Option<i32>> {
-        let dhp = hp.deriv();
-        if let Some(d) = self.exact_start_value(&dhp) {
-            return Ok((d != 0).then(|| if d > 0 { -1 } else { 1 }));
-        }
-        Ok(match self.value_resolved(&dhp, None, cap, cap)? {
-            (Some(d), _) => Some(if d.is_sign_positive() { -1 } else { 1 }),
-            (None, _) => None,
-        })
-    }
-
-    /// The sign of `hp` just after the start (working frame): +1, −1, or 0
-    /// where not decided. Its value at θ0 — exactly where cos θ0 is
-    /// rational, else resolved with up to the bits of `start_cap`; where
-    /// that value is 0 (exactly, or to that precision: a root at the start to
-    /// the digits asked), the sign of its rise as θ leaves θ0 (−hp′(c0): c
-    /// falls). A start 10^-20 before the free motion would part had Π(c0)
-    /// within 64 bits' rounding: its sign was taken at random and the branch
-    /// point was missed.
-    ///
-    /// Errors: the dynamics at the precisions tried.
-    pub fn sign_at_start(&mut self, hp: &HPoly, digits: u32) -> Result<i32> {
-        if let Some(v) = self.exact_start_value(hp) {
-            if v != 0 {
-                return Ok(if v > 0 { 1 } else { -1 });
-            }
-            return Ok(self.sign_after_start(hp, ISO)?.unwrap_or(0));
-        }
-        let cap = self.start_cap(hp, digits)?;
-        if let (Some(v), _) = self.value_resolved(hp, None, ISO, cap)? {
-            return Ok(if v.is_sign_positive() { 1 } else { -1 });
-        }
-        Ok(self.sign_after_start(hp, cap)?.unwrap_or(0))
     }
 
     /// The first sign change of `hp` in θ on (θ0, θ_end) (working frame;
