@@ -4,6 +4,9 @@
 //! is judged against the part branch; refusals name the file and the row.
 
 use assert_cmd::Command;
+
+#[path = "support/run.rs"]
+mod run;
 use std::fmt::Write;
 
 /// θ̈(θ, θ̇) for the main case (identical solid cylinders, both rolling),
@@ -861,20 +864,7 @@ fn an_event_a_hair_past_the_bracket_is_not_inside_it() {
 /// end (it was, with a message quoting the same number as the end).
 #[test]
 fn a_row_at_the_end_as_printed_is_judged_not_refused() {
-    let cyl = |args: &[&str]| {
-        let out = Command::cargo_bin("cylroll")
-            .unwrap()
-            .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .args(args)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        String::from_utf8(out.stdout).unwrap()
-    };
+    let cyl = run::stdout_ok;
     let case = [
         "--params",
         "golden/cases/mujoco_main.toml",

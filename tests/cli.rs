@@ -2,6 +2,9 @@
 
 use assert_cmd::Command;
 
+#[path = "support/run.rs"]
+mod run;
+
 fn cyl() -> Command {
     Command::cargo_bin("cylroll").unwrap()
 }
@@ -12,17 +15,7 @@ fn json(args: &[&str]) -> serde_json::Value {
 
 /// The command's JSON text, after a zero exit.
 fn json_text(args: &[&str]) -> String {
-    let out = cyl()
-        .args(args)
-        .args(["--format", "json"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
+    run::stdout_ok(&[args, &["--format", "json"][..]].concat())
 }
 
 #[test]

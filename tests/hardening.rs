@@ -4,6 +4,9 @@
 
 use assert_cmd::Command;
 
+#[path = "support/run.rs"]
+mod run;
+
 fn cyl() -> Command {
     let mut c = Command::cargo_bin("cylroll").unwrap();
     c.current_dir(env!("CARGO_MANIFEST_DIR"));
@@ -1201,13 +1204,7 @@ fn angles_past_the_landing_of_cylinder_2_are_refused_by_the_ideal_models() {
 /// The standard output of a command that must succeed (else the test fails
 /// with its error).
 fn stdout_ok(args: &[&str]) -> String {
-    let out = cyl().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout).to_string()
+    run::stdout_ok(args)
 }
 
 /// [`stdout_ok`] read as JSON.
