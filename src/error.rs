@@ -19,8 +19,12 @@ pub enum Error {
     /// at the unstable equilibrium, a time after separation).
     #[error("{what}")]
     NotPhysical { what: String },
-    /// A numerical method did not reach the requested accuracy.
-    #[error("{quantity}: could not verify {requested} digits ({reached}); {detail}")]
+    /// A numerical method did not reach the requested accuracy, or (with
+    /// `requested` 0) a decision the computation needs could not be made.
+    #[error(
+        "{quantity}: {} ({reached}); {detail}",
+        if *requested == 0 { "not decided".to_string() } else { format!("could not verify {requested} digits") }
+    )]
     NotConverged {
         quantity: String,
         requested: u32,
@@ -178,5 +182,19 @@ mod tests {
         assert!(s.ends_with("... (100000 characters)"), "{s}");
         assert_eq!(super::shorten(&s), s);
         assert_eq!(super::shorten("1e3"), "1e3");
+    }
+
+    /// A decision that could not be made says so; it never reads as a
+    /// failure to verify "0 digits".
+    #[test]
+    fn an_undecided_decision_is_not_a_count_of_digits() {
+        let e = |requested| super::Error::NotConverged {
+            quantity: "mode".into(),
+            requested,
+            reached: "r".into(),
+            detail: "d".into(),
+        };
+        assert_eq!(e(0).to_string(), "mode: not decided (r); d");
+        assert_eq!(e(8).to_string(), "mode: could not verify 8 digits (r); d");
     }
 }
