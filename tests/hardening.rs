@@ -1201,6 +1201,31 @@ fn angles_past_the_landing_of_cylinder_2_are_refused_by_the_ideal_models() {
     }
 }
 
+/// The same end for an upper cylinder as large as the lower one or smaller:
+/// it lands at θ = π/2 (r2 = r1) or past it, acos((r2 − r1)/(r1 + r2)) =
+/// acos(−1/1999) = 1.5712965769408… for r2 = 0.999. These angle questions
+/// were let through (the check ran only for r2 > r1): from θ0 = 1.5,
+/// `time --to 1.6` answered t = 0.7565 after the impact at t = 0.6373.
+#[test]
+fn angles_past_the_landing_are_refused_for_equal_and_smaller_upper_radii() {
+    for (r2, before, past, landing) in [
+        ("1", "1.5707", "1.6", "1.57079632679"),
+        ("0.999", "1.5712", "1.5714", "1.57129657694"),
+    ] {
+        for (cmd, flag) in [("time", "--to"), ("forces", "--theta")] {
+            let args = [cmd, "--theta0", "1.5", "--r2", r2, flag, past];
+            one_line_error(&args, 2, &[flag.trim_start_matches('-'), past, landing]);
+            let args = [cmd, "--theta0", "1.5", "--r2", r2, flag, before];
+            let out = cyl().args(args).output().unwrap();
+            assert!(
+                out.status.success(),
+                "{args:?}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+        }
+    }
+}
+
 /// The standard output of a command that must succeed (else the test fails
 /// with its error).
 fn stdout_ok(args: &[&str]) -> String {

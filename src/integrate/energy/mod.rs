@@ -322,10 +322,13 @@ impl Route {
     }
 
     /// An angle (`w`, in the work frame) past the one where cylinder 2,
-    /// still on cylinder 1, lands on the floor (cos θ = (r2 − r1)/(r1 + r2),
-    /// only for r2 > r1) — where that comes before the separation — is
-    /// refused as the motion's walk refuses it: the model ends there. An
-    /// angle within 2^−200 of it is that end (answered, as an event's).
+    /// still on cylinder 1, lands on the floor (cos θ = (r2 − r1)/(r1 + r2):
+    /// θ < π/2 for r2 > r1, π/2 for equal radii, beyond π/2 for r2 < r1) —
+    /// where that comes before the separation — is refused as the motion's
+    /// walk refuses it: the model ends there. An angle within 2^−200 of it
+    /// is that end (answered, as an event's). (Equal and smaller upper radii
+    /// were let through: `time --to 1.6` from θ0 = 1.5 answered a time after
+    /// the impact at π/2.)
     fn before_floor_impact(
         &mut self,
         param: &str,
@@ -334,11 +337,7 @@ impl Route {
         th0: &Exact,
     ) -> Result<()> {
         const P: u32 = 256;
-        let pr = self.work.params();
-        if pr.r2 <= pr.r1 {
-            return Ok(());
-        }
-        let th_f = pr.landing_angle(P);
+        let th_f = self.work.params().landing_angle(P);
         let margin = Float::with_val(P, &th_f >> 200);
         if Float::with_val(P, w.to_float(P) - &th_f) <= margin {
             return Ok(());
