@@ -768,6 +768,62 @@ fn a_schema_1_failure_quotes_phi2_in_the_gauge_it_was_judged_in() {
     );
 }
 
+/// A candidate whose header is the first schema's full column list (the 13
+/// columns the golden data's README listed) is judged as schema 2 unless
+/// `--schema 1` is given: the oracle's own table in those columns failed on
+/// φ2 in every row (read as schema 1, shifted by r1 θ0/r2 = 0.1), and
+/// Python's `check` had no way out. The same table in the first schema's
+/// gauge (φ2 − r1 θ0/r2, written independently here) fails without
+/// `--schema 1`, with a note that names it, and passes with it.
+#[test]
+fn a_schema_1_header_is_judged_as_schema_2_unless_asked() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["trajectory", "--params", "golden/cases/mujoco_main.toml"])
+        .args(["--t-end", "5.2", "--steps", "52", "--digits", "25"])
+        .args(["--format", "csv", "--columns"])
+        .arg("t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let table = String::from_utf8(out.stdout).unwrap();
+    std::fs::write(&path, &table).unwrap();
+    let out = check_file(&path, &["--case", "mujoco_main"]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(!text.contains("NOTE"), "{text}");
+    // φ2 in the first schema's gauge: r1 θ0 / r2 = 1 · (1/10) / 1 below
+    let mut lines = table.lines();
+    let header = lines.next().unwrap();
+    let at = header.split(',').position(|c| c == "phi2").unwrap();
+    let mut v1 = format!("{header}\n");
+    for l in lines {
+        let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
+        let phi2: f64 = cells[at].parse().unwrap();
+        cells[at] = format!("{:.17e}", phi2 - 0.1);
+        v1 += &(cells.join(",") + "\n");
+    }
+    std::fs::write(&path, v1).unwrap();
+    let out = check_file(&path, &["--case", "mujoco_main"]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("column phi2"), "{text}");
+    assert!(
+        text.contains("NOTE: the header is a full column list of the first golden schema")
+            && text.contains("--schema 1"),
+        "{text}"
+    );
+    let out = check_file(
+        &path,
+        &["--case", "mujoco_main", "--schema", "1", "--rtol", "1e-14"],
+    );
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert_eq!(out.status.code(), Some(0), "{text}");
+}
+
 /// A line too long to read is refused naming its data row and line (or
 /// the header), as every refusal names them (it said only "has a line
 /// longer than 65536 bytes").

@@ -225,7 +225,8 @@ class CheckReport:
     ``first_undecided`` (:class:`FirstFailure` or ``None``), ``case``,
     ``rows``, ``rows_after_end`` and ``first_after_end`` (rows after the end
     of the model, left out), ``end``, ``rtol``, ``atol``, ``event_tol``,
-    ``oracle_digits``; ``report`` is the whole JSON object as a dict.
+    ``oracle_digits``, ``notes`` (remarks on the judgement, as the command
+    line's ``NOTE:`` lines); ``report`` is the whole JSON object as a dict.
     ``str(report)`` is the command line's table.
     """
 
@@ -238,6 +239,7 @@ class CheckReport:
         self.rows: int = r["rows"]
         self.rows_after_end: int = r["rows_after_end"]
         self.first_after_end: Optional[Dict[str, Any]] = r["first_after_end"]
+        self.notes: List[str] = list(r.get("notes", []))
         self.end: Optional[Dict[str, str]] = r["end"]
         self.rtol: float = r["rtol"]
         self.atol: float = r["atol"]

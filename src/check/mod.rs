@@ -332,6 +332,9 @@ pub struct CheckReport {
     pub phases: Vec<PhaseInfo>,
     /// The events.
     pub events: Events,
+    /// Remarks on the judgement (e.g. a φ2 that fails in a schema-1-like
+    /// candidate: `--schema 1`).
+    pub notes: Vec<String>,
 }
 
 impl CheckReport {
@@ -668,7 +671,23 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
         &judge.phases,
         lim.event_tol,
     );
+    let mut notes = Vec::new();
+    if h.schema1_like
+        && judge
+            .stats
+            .iter()
+            .any(|c| c.name == "phi2" && c.failures + c.undecided > 0)
+    {
+        notes.push(
+            "the header is a full column list of the first golden schema (cylroll-golden/1); \
+             it is judged as schema 2 (phi2 = 0 at the start), and phi2 fails: a candidate with \
+             the first schema's phi2 (the paper's gauge, r1 theta0/r2 below) is judged with \
+             --schema 1"
+                .to_string(),
+        );
+    }
     Ok(CheckReport {
+        notes,
         case: case.name.clone(),
         rtol: lim.rtol,
         atol: lim.atol,

@@ -279,6 +279,9 @@ impl CheckReport {
                 f.row, f.t, f.column, f.candidate, f.oracle, f.limit
             ));
         }
+        for n in &self.notes {
+            s.push_str(&format!("NOTE: {n}\n"));
+        }
         if let Some((row, t)) = &self.first_after_end {
             let (kind, te) = self.end.clone().unwrap_or_default();
             s.push_str(&format!(
@@ -445,6 +448,7 @@ impl CheckReport {
             "rows_after_end": count(self.rows_after_end, strings),
             "first_after_end": self.first_after_end.as_ref().map(|(r, t)| json!({
                 "row": count(*r, strings), "t": t})),
+            "notes": self.notes,
             "end": self.end.as_ref().map(|(k, t)| json!({"event": k, "t": t})),
             "rtol": tol_num(self.rtol, strings),
             "atol": tol_num(self.atol, strings),

@@ -123,7 +123,7 @@ pub enum Command {
         #[arg(long, value_name = "DIR", requires = "case")]
         golden: Option<std::path::PathBuf>,
         /// The candidate's schema: 1 (phi2 in the paper's gauge, the first golden schema) or 2;
-        /// by default 2 unless the header is exactly a schema-1 column list
+        /// by default 2 (a header that is a full schema-1 column list gets a note where phi2 fails)
         #[arg(long, value_parser = schema_arg)]
         schema: Option<u32>,
         /// Output format: text (a table), json or csv (one row per column)
