@@ -824,6 +824,60 @@ fn a_schema_1_header_is_judged_as_schema_2_unless_asked() {
     assert_eq!(out.status.code(), Some(0), "{text}");
 }
 
+/// Without a `mode` or `N12` column (t and θ alone, as an engine's test
+/// often writes) `--branch auto` follows the branch the rows took: it fell
+/// back to the closed branch, and a candidate that parts at θ* (PyBullet's
+/// branch) failed after its parting. And a parting inside the window is
+/// fitted to binary64 resolution: an exact candidate parting at
+/// 1.0123456789012345 failed `--rtol 1e-10` on its velocities against the
+/// fitted angle rounded to 10 digits.
+#[test]
+fn auto_finds_the_branch_from_theta_alone_and_fits_a_parting_to_binary64() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    for (branch, columns, followed, tight) in [
+        (&["--branch", "part"][..], "t,theta", "part", false),
+        (&["--branch", "stay"][..], "t,theta", "stay", false),
+        (
+            &["--part-at", "1.0123456789012345"][..],
+            "t,theta",
+            "part-at 1.01234567890123",
+            false,
+        ),
+        (
+            &["--part-at", "1.0123456789012345"][..],
+            "t,theta,theta_dot,x1_dot,x2,mode",
+            "part-at 1.01234567890123",
+            true,
+        ),
+    ] {
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["trajectory", "--params", "golden/cases/mujoco_main.toml"])
+            .args(branch)
+            .args(["--t-end", "5.9", "--steps", "59", "--digits", "25"])
+            .args(["--format", "csv", "--columns", columns])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        std::fs::write(&path, &out.stdout).unwrap();
+        let mut args = vec!["--case", "mujoco_main", "--format", "json"];
+        if tight {
+            args.extend_from_slice(&["--rtol", "1e-10", "--atol", "1e-12"]);
+        }
+        let out = check_file(&path, &args);
+        let v = json(&out);
+        assert_eq!(out.status.code(), Some(0), "{branch:?} {columns}: {v}");
+        let f = v["branch"]["followed"].as_str().unwrap_or_default();
+        assert!(
+            f.starts_with(followed),
+            "{branch:?} {columns}: {}",
+            v["branch"]
+        );
+    }
+}
+
 /// A line too long to read is refused naming its data row and line (or
 /// the header), as every refusal names them (it said only "has a line
 /// longer than 65536 bytes").

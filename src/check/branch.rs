@@ -214,6 +214,20 @@ fn distance(
     tols: &[Tol],
     shift: f64,
 ) -> Option<f64> {
+    let r = residuals(case, branch, rows, tols, shift)?;
+    Some(r.iter().map(|x| x.abs()).sum())
+}
+
+/// The candidate's numeric cells against the reference on `branch`, each
+/// (candidate − oracle) / the column's scale (None: the reference cannot be
+/// evaluated there, or no cell to compare).
+fn residuals(
+    case: &Case,
+    branch: Branch,
+    rows: &[CandRow],
+    tols: &[Tol],
+    shift: f64,
+) -> Option<Vec<f64>> {
     if rows.is_empty() {
         return None;
     }
@@ -225,8 +239,7 @@ fn distance(
     };
     let ans = crate::oracle::trajectory(&case.model, &times, &opts).ok()?;
     debug_assert_eq!(ans.rows.len(), rows.len());
-    let mut sum = 0.0;
-    let mut n = 0usize;
+    let mut out = Vec::new();
     for ((_, _, cells), orow) in rows.iter().zip(&ans.rows) {
         for (gi, _, v) in cells {
             if *gi == MODE {
@@ -237,11 +250,10 @@ fn distance(
             } else {
                 *v
             };
-            sum += (v - orow.values[*gi].value.to_f64()).abs() / tols[*gi].scale;
-            n += 1;
+            out.push((v - orow.values[*gi].value.to_f64()) / tols[*gi].scale);
         }
     }
-    (n > 0).then_some(sum)
+    (!out.is_empty()).then_some(out)
 }
 
 /// The branch to follow: the requested one, or under `auto` the one the
@@ -296,6 +308,13 @@ pub fn decide(
     };
     let Some(f) = find_parting(src, case, lim, tols[N12].atol)? else {
         let h = Rows::open(src, case, lim)?.header;
+        if !h.has(MODE) && !h.has(N12) {
+            if let Some((b, why)) = nearest_branch(src, case, lim, stay, tols, (star, end))? {
+                rep.followed = b;
+                rep.why = why;
+                return Ok(rep);
+            }
+        }
         rep.why = if !h.has(MODE) && !h.has(N12) {
             "without a mode or N12 column the candidate's parting cannot be found: the closed \
              branch (stay)"
@@ -400,9 +419,9 @@ pub fn decide(
             let near_end = (d_star <= tol && (s * theta - star_s).abs() <= tol)
                 || (d_end <= tol && (s * theta - end_s).abs() <= tol);
             if !near_end {
-                // rounded to 10 significant digits, quoted exactly
+                // the fitted binary64 angle, quoted exactly
                 let at =
-                    Exact::rational(Exact::parse("part-at", &format!("{theta:.9e}"), false)?.coef);
+                    Exact::rational(Exact::parse("part-at", &format!("{theta:e}"), false)?.coef);
                 options.push((Branch::PartAt(at), "part-at"));
             }
         } else if mid_inside && d_star <= tol && d_end <= tol {
@@ -490,10 +509,11 @@ pub fn decide(
         let range = (a.max(star_s), b.min(end_s));
         let fit = fit_part_at(case, range, s, &f.after, tols, shift);
         let (at, how) = match fit {
-            // the fit holds about 1e-9 of the bracket: the reference parts at
-            // the fitted angle rounded to 10 significant digits, quoted exactly
+            // the reference parts at the fitted binary64 angle (golden
+            // section, then Gauss-Newton steps on the residuals), quoted
+            // exactly
             Some((theta, d, n)) => (
-                Exact::rational(Exact::parse("part-at", &format!("{theta:.9e}"), false)?.coef),
+                Exact::rational(Exact::parse("part-at", &format!("{theta:e}"), false)?.coef),
                 format!(
                     "at the angle in its bracket whose flight is nearest its {n} rows from the \
                      parting on (sum of |candidate - reference| / the column's scale {d:.3e})"
@@ -527,6 +547,107 @@ pub fn decide(
     }
     rep.parting = Some(p);
     Ok(rep)
+}
+
+/// Rows of the candidate scored without a mode or N12 column: at most this
+/// many from the branch point on, evenly thinned.
+const ROWS_SCORED: usize = 32;
+
+/// Without a `mode` or `N12` column the candidate's parting cannot be read
+/// from its rows: the branch followed is the one — `stay`, `part`, or
+/// parting inside the window at the angle that fits best — whose motion is
+/// nearest its numeric cells from the branch point θ* on (None: no row
+/// there, or no numeric cell). `window` is (θ*, θs) of the closed branch.
+/// (Such a candidate was judged against the closed branch: a PyBullet run,
+/// which parts at θ*, given as t, θ and x2 failed after its parting.)
+fn nearest_branch(
+    src: &dyn Source,
+    case: &Case,
+    lim: &Limits,
+    stay: &Answer,
+    tols: &[Tol],
+    window: (f64, f64),
+) -> Result<Option<(Branch, String)>> {
+    let Some(t_star) = stay.event(Kind::Indeterminate).map(|e| e.t.value.to_f64()) else {
+        return Ok(None);
+    };
+    // the rows from θ* on, thinned to at most 2·ROWS_SCORED as they come
+    let mut rows = Rows::open(src, case, lim)?;
+    let shift = rows.header.phi2_shift.to_f64();
+    let (mut kept, mut stride, mut seen) = (Vec::<CandRow>::new(), 1usize, 0usize);
+    while let Some((row, t, cells)) = rows.next_row()? {
+        if t.to_f64() < t_star {
+            continue;
+        }
+        if seen % stride == 0 {
+            kept.push((row, t, cells));
+            if kept.len() == 2 * ROWS_SCORED {
+                kept = kept.into_iter().step_by(2).collect();
+                stride *= 2;
+            }
+        }
+        seen += 1;
+    }
+    if kept.iter().all(|r| r.2.iter().all(|c| c.0 == MODE)) {
+        return Ok(None);
+    }
+    let (star, end) = window;
+    let s = if end < 0.0 { -1.0 } else { 1.0 };
+    let mut options = vec![
+        (Branch::Stay, "stay".to_string()),
+        (Branch::Part, "part".into()),
+    ];
+    if let Some((theta, _, _)) = fit_part_at(case, (s * star, s * end), s, &kept, tols, shift) {
+        let at = Exact::rational(Exact::parse("part-at", &format!("{theta:e}"), false)?.coef);
+        options.push((Branch::PartAt(at.clone()), format!("part-at {at}")));
+    }
+    // the rows before the end of every branch's motion (its first impact)
+    let mut after = kept;
+    for (b, _) in &options {
+        let ans = crate::oracle::separation(
+            &case.model,
+            &Options {
+                digits: 17,
+                branch: b.clone(),
+                method: crate::motion::Method::Auto,
+            },
+        )?;
+        if let Some(te) = ans.events.iter().find(|e| e.phase.is_none()) {
+            let te = te.t.value.to_f64() * (1.0 - 1e-12);
+            after.retain(|r| r.1.to_f64() < te);
+        }
+    }
+    let scored: Vec<(Branch, String, Option<f64>)> = options
+        .into_iter()
+        .map(|(b, name)| {
+            let d = distance(case, b.clone(), &after, tols, shift);
+            (b, name, d)
+        })
+        .collect();
+    let Some((b, name, _)) = scored
+        .iter()
+        .filter_map(|(b, name, d)| d.map(|d| (b, name, d)))
+        .min_by(|x, y| x.2.total_cmp(&y.2))
+    else {
+        return Ok(None);
+    };
+    let listed: Vec<String> = scored
+        .iter()
+        .map(|(_, name, d)| match d {
+            Some(d) => format!("{name} {d:.3e}"),
+            None => format!("{name} -"),
+        })
+        .collect();
+    Ok(Some((
+        b.clone(),
+        format!(
+            "without a mode or N12 column the candidate's parting is not read from its rows: \
+             its {} rows from the branch point theta* on are nearest the {name} branch (sum of \
+             |candidate - reference| / the column's scale: {})",
+            after.len(),
+            listed.join(", ")
+        ),
+    )))
 }
 
 /// The parting angle in `range` (in the direction `s` of the motion:
@@ -586,6 +707,43 @@ fn fit_part_at(
             f2 = cost(x2).unwrap_or(f64::INFINITY);
         }
     }
-    let (x, d) = if f1 <= f2 { (x1, f1) } else { (x2, f2) };
-    d.is_finite().then_some((s * x, d, rows.len()))
+    let (mut x, mut d) = if f1 <= f2 { (x1, f1) } else { (x2, f2) };
+    if !d.is_finite() {
+        return None;
+    }
+    // Gauss-Newton steps on the residuals, linear in the angle near the
+    // fit: the golden section alone left about 1e-9 of the bracket, and an
+    // exact candidate parting at 1.0123456789012345 failed rtol 1e-10 on
+    // its velocities against the angle rounded to 10 digits
+    let at = |x: f64| Exact::parse("part-at", &format!("{:e}", s * x), false).ok();
+    for _ in 0..3 {
+        let h = (hi - lo).max(x.abs() * 1e-12);
+        let (Some(a0), Some(a1)) = (at(x), at(x + h)) else {
+            break;
+        };
+        let (Some(r0), Some(r1)) = (
+            residuals(case, Branch::PartAt(a0), &rows, tols, shift),
+            residuals(case, Branch::PartAt(a1), &rows, tols, shift),
+        ) else {
+            break;
+        };
+        let (mut num, mut den) = (0.0, 0.0);
+        for (a, b) in r0.iter().zip(&r1) {
+            let g = (b - a) / h;
+            num += a * g;
+            den += g * g;
+        }
+        if den.is_nan() || den <= 0.0 {
+            break;
+        }
+        let xn = x - num / den;
+        if !(xn > range.0 && xn < range.1) {
+            break;
+        }
+        match cost(xn) {
+            Some(dn) if dn < d => (x, d) = (xn, dn),
+            _ => break,
+        }
+    }
+    Some((s * x, d, rows.len()))
 }
