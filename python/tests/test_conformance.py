@@ -315,6 +315,15 @@ def test_command_usage_errors(tmp_path, capsys):
     assert cli_main(["example", "--dt", "1e-3,x", "--out", str(tmp_path)]) == 2
     assert cli_main(["example", "--set", "novalue", "--out", str(tmp_path)]) == 2
     assert cli_main(["--bogus-flag"]) == 2
+    # too few rows would leave theta's error unmeasured: one row (t = 0) read
+    # error 0 and passed an engine with gravity 20% off
+    for n in ["0", "1", "19", "-5", "x", "2.5", "1000001"]:
+        assert cli_main(["example", "--max-rows", n, "--out", str(tmp_path)]) == 2
+        assert "--max-rows" in capsys.readouterr().err
+    from cylroll.conformance.scorecard import score_case
+    from cylroll.conformance.examples import PenaltyDiscs
+    with pytest.raises(ValueError, match="max_rows"):
+        score_case(PenaltyDiscs(), "slip_slip", [1e-3], max_rows=1)
 
 
 def test_command_writes_the_scorecard(tmp_path):

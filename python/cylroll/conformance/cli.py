@@ -53,7 +53,7 @@ def _value(text: str) -> Any:
 
 
 def parser() -> argparse.ArgumentParser:
-    from .scorecard import BATTERY
+    from .scorecard import BATTERY, MIN_ROWS
     ap = argparse.ArgumentParser(
         prog="cylroll-conformance",
         description="Score a physics engine on the cylinder-on-cylinder problem against "
@@ -67,8 +67,9 @@ def parser() -> argparse.ArgumentParser:
     ap.add_argument("--out", default="conformance-out", help="output directory (default: %(default)s)")
     ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                     help="an adapter setting (VALUE read as JSON, else as text); repeatable")
-    ap.add_argument("--max-rows", type=int, default=300,
-                    help="rows per run compared with the reference (default: %(default)s)")
+    ap.add_argument("--max-rows", default="300",
+                    help=f"rows per run compared with the reference, {MIN_ROWS} to 10^6 "
+                         "(default: %(default)s)")
     ap.add_argument("-q", "--quiet", action="store_true")
     return ap
 
@@ -94,6 +95,15 @@ def main(argv: Optional[List[str]] = None) -> int:
             raise UsageError(f"--dt {a.dt!r}: expected numbers separated by commas") from None
         if not dts or any(not (0 < d < 0.1) for d in dts) or len(set(dts)) != len(dts):
             raise UsageError(f"--dt {a.dt!r}: expected distinct steps between 0 and 0.1")
+        from .scorecard import MIN_ROWS
+        try:
+            max_rows = int(a.max_rows)
+        except ValueError:
+            max_rows = -1
+        if not MIN_ROWS <= max_rows <= 10**6:
+            raise UsageError(f"--max-rows {a.max_rows!r}: expected a whole number from "
+                             f"{MIN_ROWS} to 10^6 (fewer rows would leave theta's error and the "
+                             "observed order unmeasured)")
         settings = {}
         for kv in a.set:
             k, eq, v = kv.partition("=")
@@ -106,7 +116,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         return 2
     from .scorecard import scorecard, write
     t0 = time.perf_counter()
-    card = scorecard(adapter, cases, dts, settings, a.max_rows, log)
+    card = scorecard(adapter, cases, dts, settings, max_rows, log)
     write(card, a.out)
     n_fail = sum(not ch["pass"] for c in card["cases"] for ch in c["checks"])
     n_all = sum(len(c["checks"]) for c in card["cases"])

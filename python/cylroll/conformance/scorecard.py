@@ -63,6 +63,11 @@ def _f(x: Any) -> Any:
     return x
 
 
+#: The fewest rows per run compared with the reference: with one row (t = 0)
+#: θ's error read 0 and the scorecard passed an engine with gravity 20% off.
+MIN_ROWS = 20
+
+
 def _subsample(t: np.ndarray, t_hi: float, max_rows: int) -> np.ndarray:
     idx = np.flatnonzero(t < t_hi)
     if idx.size > max_rows:
@@ -160,7 +165,11 @@ def score_case(adapter: Any, case: str, dts: Sequence[float],
                settings: Optional[Dict[str, Any]] = None, max_rows: int = 300,
                log: Callable[[str], None] = lambda s: None) -> Dict[str, Any]:
     """One case of the scorecard: runs at every dt, errors per quantity and
-    phase, events, observed order, branch taken and checks."""
+    phase, events, observed order, branch taken and checks.
+
+    Raises ValueError for ``max_rows`` below :data:`MIN_ROWS`."""
+    if isinstance(max_rows, bool) or not isinstance(max_rows, int) or max_rows < MIN_ROWS:
+        raise ValueError(f"max_rows = {max_rows!r}: expected a whole number >= {MIN_ROWS}")
     p = reference.params(case)
     bp = reference.branch_point(case)
     end = reference.closed_end(case)
