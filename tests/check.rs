@@ -878,6 +878,54 @@ fn auto_finds_the_branch_from_theta_alone_and_fits_a_parting_to_binary64() {
     }
 }
 
+/// A row's `mode` within `--event-tol` of the reference's change of mode
+/// may read the mode on either side: a fine table whose first flight row
+/// still reads stick/stick (the separation 2.4e-5 rad of θ before it)
+/// failed on that row while its separation event passed. Far from the
+/// event the wrong mode still fails.
+#[test]
+fn a_mode_one_row_late_at_an_event_is_judged_by_the_event() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["trajectory", "--params", "golden/cases/mujoco_main.toml"])
+        .args(["--t-end", "5.5", "--steps", "5500", "--digits", "20"])
+        .args(["--format", "csv", "--columns", "t,theta,mode"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let table = String::from_utf8(out.stdout).unwrap();
+    let relabel = |n: usize| {
+        let mut k = 0;
+        let mut s = String::new();
+        for l in table.lines() {
+            if l.ends_with(",flight") && k < n {
+                k += 1;
+                s += &l.replace(",flight", ",stick/stick");
+            } else {
+                s += l;
+            }
+            s.push('\n');
+        }
+        assert_eq!(k, n);
+        s
+    };
+    let path = dir.path().join("late.csv");
+    std::fs::write(&path, relabel(1)).unwrap();
+    let out = check_file(&path, &["--case", "mujoco_main"]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    std::fs::write(&path, relabel(200)).unwrap();
+    let out = check_file(&path, &["--case", "mujoco_main"]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("column mode: candidate stick/stick vs oracle flight"),
+        "{text}"
+    );
+}
+
 /// A line too long to read is refused naming its data row and line (or
 /// the header), as every refusal names them (it said only "has a line
 /// longer than 65536 bytes").
