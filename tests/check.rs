@@ -926,6 +926,77 @@ fn a_mode_one_row_late_at_an_event_is_judged_by_the_event() {
     );
 }
 
+/// In the flight F1 is 0 by structure where the floor does not slide
+/// (rolling alone, held, frictionless): an exact zero, as F21 and N12 are;
+/// so are a held cylinder 1's position and rates, and φ1, φ̇1 where both
+/// contacts are frictionless and ω0 = 0.
+/// It was "0 within 2.8e-48", so a purely relative check (`--atol 0`) of
+/// the oracle's own table was undecided at every --digits.
+#[test]
+fn the_flight_floor_force_is_an_exact_zero_and_atol_0_decides() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("own.csv");
+    for case in ["mujoco_main", "fixed_roll", "slip_slip"] {
+        let params = format!("golden/cases/{case}.toml");
+        let sep = Command::cargo_bin("cylroll")
+            .unwrap()
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["separation", "--params", &params, "--format", "csv"])
+            .args(["--digits", "12"])
+            .output()
+            .unwrap();
+        let sep = String::from_utf8(sep.stdout).unwrap();
+        let value = |k: &str| -> f64 {
+            let l = sep
+                .lines()
+                .find(|l| l.starts_with(&format!("{k},")))
+                .unwrap();
+            l.split(',').nth(1).unwrap().parse().unwrap()
+        };
+        // midway through the flight
+        let t = format!("{:.6}", (value("t_s") + value("t_impact")) / 2.0);
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["trajectory", "--params", &params])
+            .args([
+                "--times",
+                &format!("0.5,{t}"),
+                "--digits",
+                "25",
+                "--format",
+                "json",
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let last = &v["rows"][1];
+        assert_eq!(last["mode"], "flight", "{case}: {last}");
+        assert_eq!(last["F1"], "0", "{case}: {last}");
+        // and where cylinder 1 is held (fixed_roll: x1, phi1 and their rates
+        // read "0 within 1.7e-55") or nothing ever spins it (slip_slip from
+        // rest: phi1, phi1_dot), those are exact zeros too
+        assert!(last.get("zero_within").is_none(), "{case}: {last}");
+    }
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["trajectory", "--params", "golden/cases/mujoco_main.toml"])
+        .args([
+            "--t-end", "5.9", "--steps", "59", "--digits", "25", "--format", "csv",
+        ])
+        .output()
+        .unwrap();
+    std::fs::write(&path, &out.stdout).unwrap();
+    let out = check_file(
+        &path,
+        &["--case", "mujoco_main", "--atol", "0", "--digits", "40"],
+    );
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert_eq!(out.status.code(), Some(0), "{text}");
+}
+
 /// A line too long to read is refused naming its data row and line (or
 /// the header), as every refusal names them (it said only "has a line
 /// longer than 65536 bytes").
