@@ -650,8 +650,10 @@ fn unjudgeable_tolerances_and_unknown_modes_are_refused() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
     // zero written as zero is a tolerance (atol alone, rtol alone): judged,
-    // not refused (atol 0 leaves the oracle's zeros undecided: exit 3)
-    for (args, code) in [(&["--rtol", "0"][..], 0), (&["--atol", "0e5"][..], 3)] {
+    // not refused (atol 0 left the flight's F1, "0 within 2.8e-48",
+    // undecided: exit 3; a structural zero is exact now, and the oracle's
+    // own table passes)
+    for (args, code) in [(&["--rtol", "0"][..], 0), (&["--atol", "0e5"][..], 0)] {
         let mut all = vec!["--case", "main_mu_0_3"];
         all.extend_from_slice(args);
         let out = check_file(&good, &all);
@@ -995,6 +997,44 @@ fn the_flight_floor_force_is_an_exact_zero_and_atol_0_decides() {
     );
     let text = String::from_utf8_lossy(&out.stdout).to_string();
     assert_eq!(out.status.code(), Some(0), "{text}");
+}
+
+/// Small refusals say what is wrong: a file whose lines end in CR alone
+/// (it read as one header: `unknown column "theta\r0"`), an unknown key in
+/// `--params` named as params (it said `invalid case`), and an rtol too
+/// tight for `--digits 1` offers more digits only (it offered "an rtol of
+/// at least 1e1").
+#[test]
+fn small_refusals_of_check_name_what_is_wrong() {
+    let dir = tempfile::tempdir().unwrap();
+    let refusal = |path: &std::path::Path, args: &[&str]| {
+        let out = check_file(path, args);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(out.stdout.is_empty());
+        String::from_utf8_lossy(&out.stderr).to_string()
+    };
+    let cr = dir.path().join("cr.csv");
+    std::fs::write(&cr, "t,theta\r0,0.1\r1,0.2\r").unwrap();
+    let err = refusal(&cr, &["--case", "mujoco_main"]);
+    assert!(err.contains("lines end in CR alone"), "{err}");
+    let crlf = dir.path().join("crlf.csv");
+    std::fs::write(&crlf, "t,theta\r\n0,0.1\r\n").unwrap();
+    assert_eq!(
+        check_file(&crlf, &["--case", "mujoco_main"]).status.code(),
+        Some(0)
+    );
+    let params = dir.path().join("p.toml");
+    std::fs::write(&params, "theta0 = \"1/10\"\nfoo = 1\n").unwrap();
+    let err = refusal(&crlf, &["--params", params.to_str().unwrap()]);
+    assert!(err.starts_with("error: invalid params (in "), "{err}");
+    assert!(err.contains("\"foo\": unknown key"), "{err}");
+    let err = refusal(&crlf, &["--case", "mujoco_main", "--digits", "1"]);
+    assert!(
+        err.contains("give --digits 10 or more") && !err.contains("or an rtol"),
+        "{err}"
+    );
+    let err = refusal(&crlf, &["--case", "mujoco_main", "--digits", "5"]);
+    assert!(err.contains("or an rtol of at least 1e-3"), "{err}");
 }
 
 /// A line too long to read is refused naming its data row and line (or

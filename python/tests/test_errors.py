@@ -236,6 +236,15 @@ def test_small_refusals_name_what_is_wrong():
         cylroll.Model(theta0="1/10").enclose("time")
     with pytest.raises(cylroll.InvalidParameterError, match="the same length"):
         cylroll.check({"t": [0, 1], "theta": [0.1]}, "main_roll_roll")
+    # a time out of order or negative is named by its entry, as the command
+    # line names it (it read 'times = "1": must be ascending')
+    m = cylroll.Model(theta0="1/10")
+    with pytest.raises(cylroll.InvalidParameterError,
+                       match=r"times: entry 2 = .1.: must be ascending: it is before the "
+                             r"entry before it, 2"):
+        m.trajectory([2, 1], digits=10)
+    with pytest.raises(cylroll.InvalidParameterError, match=r"times: entry 3 = .-1."):
+        m.trajectory([0, 1, -1], digits=10)
     pd = pytest.importorskip("pandas")
     df = pd.DataFrame([[0, 0.1, 0.1]], columns=["t", "theta", "theta"])
     with pytest.raises(cylroll.InvalidParameterError, match="stands for 2 columns"):

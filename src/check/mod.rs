@@ -536,9 +536,14 @@ pub fn check_source(src: &dyn Source, case: &Case, lim: &Limits) -> Result<Check
                 format!(
                     "is tighter than the oracle's {digits} significant digits can judge (a \
                      {digits}-digit value is good to 1e{} relative): give --digits {need} or \
-                     more, or an rtol of at least 1e{}",
+                     more{}",
                     1 - digits as i32,
-                    2 - digits as i32
+                    // (an rtol of 1 or more judges nothing: not offered)
+                    if digits > 2 {
+                        format!(", or an rtol of at least 1e{}", 2 - digits as i32)
+                    } else {
+                        String::new()
+                    }
                 ),
             ));
         }

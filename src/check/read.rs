@@ -274,6 +274,15 @@ impl<'a> Rows<'a> {
 }
 
 fn parse_header(line: &str, source: &str, case: &Case, lim: &Limits) -> Result<Header> {
+    // a CR inside the line: the file's lines end in CR alone (old Mac), and
+    // the whole file reads as one header ("unknown column \"theta\r0\"")
+    if line.trim_end_matches('\r').contains('\r') {
+        return Err(refuse(
+            source,
+            "has carriage returns (CR) inside its header line: its lines end in CR alone; \
+             lines must end in LF or CR LF",
+        ));
+    }
     let cols: Vec<String> = line
         .split(',')
         .map(|c| c.trim().trim_matches('"').to_string())

@@ -43,11 +43,15 @@ pub struct Case {
 }
 
 /// The parts of a case file's table: its model keys, `description` and
-/// `steps` (optional, default 40).
+/// `steps` (optional, default 40); `what` names the file's role in
+/// messages (`case`, or `params` for `check --params`).
 ///
 /// Errors: an unknown key or a value out of range.
-pub fn case_parts(table: &toml::Table) -> Result<(crate::model::input::Pairs, String, u32)> {
-    let pairs = pairs_from_toml(table, "case", &crate::model::input::CASE_KEYS)?;
+pub fn case_parts(
+    table: &toml::Table,
+    what: &str,
+) -> Result<(crate::model::input::Pairs, String, u32)> {
+    let pairs = pairs_from_toml(table, what, &crate::model::input::CASE_KEYS)?;
     let description = match table.get("description") {
         Some(toml::Value::String(s)) => s.clone(),
         _ => String::new(),
@@ -83,7 +87,7 @@ pub fn load_case(path: &Path) -> Result<Case> {
 pub fn read_case(path: &Path, what: &str, name: String) -> Result<Case> {
     use crate::model::input::in_file;
     let table = read_toml(path, what)?;
-    let (pairs, description, steps) = case_parts(&table).map_err(|e| in_file(e, path))?;
+    let (pairs, description, steps) = case_parts(&table, what).map_err(|e| in_file(e, path))?;
     // a value's error names the file in its name (m1 (in FILE)); any other
     // (a start inside a body, …) is led by the file
     let model = crate::model::input::model_from_pairs(&pairs).map_err(|e| match e {
@@ -214,7 +218,7 @@ pub fn case_text_parts(
     let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
         Error::invalid("case", name, crate::model::input::toml_refusal(text, &e))
     })?;
-    case_parts(&table)
+    case_parts(&table, "case")
 }
 
 /// A built-in case by name ([`BUILTIN`]).

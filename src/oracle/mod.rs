@@ -123,12 +123,20 @@ fn check_times_rounded(times: &[Exact], rounded: Option<&RoundedTimes>) -> Resul
             w[1].to_float(256) < w[0].to_float(256)
         };
         if descending {
-            return Err(Error::invalid("times", &w[1], "must be ascending"));
+            // named as the command line names an entry (1-based)
+            return Err(Error::invalid(
+                &format!("times: entry {}", i + 2),
+                &w[1],
+                format!(
+                    "must be ascending: it is before the entry before it, {}",
+                    w[0]
+                ),
+            ));
         }
     }
-    if let Some(t) = times.iter().find(|t| t.signum() < 0) {
+    if let Some((i, t)) = times.iter().enumerate().find(|(_, t)| t.signum() < 0) {
         return Err(Error::invalid(
-            "times",
+            &format!("times: entry {}", i + 1),
             t,
             "must be >= 0 (the start is at t = 0)",
         ));
