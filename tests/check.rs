@@ -1037,6 +1037,31 @@ fn small_refusals_of_check_name_what_is_wrong() {
     assert!(err.contains("or an rtol of at least 1e-3"), "{err}");
 }
 
+/// An unsigned `slip` in a candidate's mode cell matches the reference's
+/// slide either way (the golden table with its `slip+` and `slip-` written
+/// `slip` failed every sliding row and its slip onsets).
+#[test]
+fn an_unsigned_slip_matches_a_slide_either_way() {
+    let table = std::fs::read_to_string(golden_csv("heavy_upper_restick")).unwrap();
+    assert!(table.contains("slip+") && table.contains("slip-"));
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("unsigned.csv");
+    std::fs::write(
+        &path,
+        table.replace("slip+", "slip").replace("slip-", "slip"),
+    )
+    .unwrap();
+    let out = check_file(&path, &["--case", "heavy_upper_restick"]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    // a wrong state is still wrong
+    std::fs::write(&path, table.replace("slip-/slip+", "slip-/stick")).unwrap();
+    let code = check_file(&path, &["--case", "heavy_upper_restick"])
+        .status
+        .code();
+    assert_eq!(code, Some(1));
+}
+
 /// A line too long to read is refused naming its data row and line (or
 /// the header), as every refusal names them (it said only "has a line
 /// longer than 65536 bytes").

@@ -165,7 +165,7 @@ pub fn judge(
             .iter()
             .enumerate()
             .skip(next)
-            .filter(|(i, tr)| !used[*i] && tr.to == tag)
+            .filter(|(i, tr)| !used[*i] && super::mode_matches(&tr.to, &tag))
             .min_by(|a, b| distance(a.1, t).total_cmp(&distance(b.1, t)))
             .map(|(i, _)| i);
         match best {

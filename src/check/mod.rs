@@ -55,6 +55,28 @@ pub fn known_columns() -> Vec<&'static str> {
 /// The index of the `mode` column in [`known_columns`].
 pub const MODE: usize = crate::motion::COLUMNS.len();
 
+/// Whether a candidate's mode cell names the reference's mode `reference`:
+/// the same text, or per contact an unsigned `slip` where the reference
+/// slides either way, or a signed one where the reference's frictionless
+/// slide is unsigned (an engine that does not sign its slip wrote `slip`,
+/// and every sliding row failed against `slip+`).
+pub fn mode_matches(cand: &str, reference: &str) -> bool {
+    if cand == reference {
+        return true;
+    }
+    match (cand.split_once('/'), reference.split_once('/')) {
+        (Some((cf, cc)), Some((rf, rc))) => {
+            let one = |c: &str, r: &str| {
+                c == r
+                    || (c == "slip" && r.starts_with("slip"))
+                    || (r == "slip" && c.starts_with("slip"))
+            };
+            one(cf, rf) && one(cc, rc)
+        }
+        _ => false,
+    }
+}
+
 /// The index of `theta` in [`crate::motion::COLUMNS`].
 const THETA: usize = 1;
 
@@ -806,11 +828,11 @@ impl Judge<'_> {
                 // of a change of mode, the mode on either side of it (a row
                 // one step late at an event failed while the event passed)
                 let m = text.trim();
-                let near_change = self
-                    .changes
-                    .iter()
-                    .any(|(th, b, a)| (theta - th).abs() <= self.event_tol && (m == b || m == a));
-                if m != tag && !near_change {
+                let near_change = self.changes.iter().any(|(th, b, a)| {
+                    (theta - th).abs() <= self.event_tol
+                        && (mode_matches(m, b) || mode_matches(m, a))
+                });
+                if !mode_matches(m, &tag) && !near_change {
                     st.failures += 1;
                     st.phases[k].failures += 1;
                     st.worst_ratio = f64::INFINITY;
