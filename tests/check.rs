@@ -1062,6 +1062,77 @@ fn an_unsigned_slip_matches_a_slide_either_way() {
     assert_eq!(code, Some(1));
 }
 
+/// The fitted parting of low-precision tables (a review's cases): a fit a
+/// hair inside θs, rounded to the candidate's resolution, fell past it and
+/// the check was refused ("invalid part-at", exit 2, for a flag never
+/// given); a parting 1.0003e-3 before θs was dropped once the refined fit
+/// came within event-tol of θs, and the table failed against stay. And a
+/// signed slide against the reference's unsigned frictionless one is not
+/// taken as matching (s12 > 0 written slip- passed).
+#[test]
+fn low_precision_partings_fit_inside_the_window_and_signs_still_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cand.csv");
+    let table = |args: &[&str]| {
+        let out = Command::cargo_bin("cylroll")
+            .unwrap()
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["trajectory", "--params", "golden/cases/main_roll_roll.toml"])
+            .args(["--format", "csv", "--t-end", "7.06"])
+            .args(args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        std::fs::write(&path, &out.stdout).unwrap();
+    };
+    table(&["--steps", "35", "--digits", "7", "--columns", "t,theta"]);
+    let args = [
+        "--case",
+        "main_roll_roll",
+        "--rtol",
+        "1e-5",
+        "--atol",
+        "1e-6",
+    ];
+    let out = check_file(&path, &args);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    table(&[
+        "--part-at",
+        "1.047",
+        "--steps",
+        "700",
+        "--digits",
+        "6",
+        "--columns",
+        "t,theta,x2,mode",
+    ]);
+    let args = [
+        "--case",
+        "main_roll_roll",
+        "--rtol",
+        "1e-5",
+        "--atol",
+        "1e-5",
+    ];
+    let out = check_file(&path, &[&args[..], &["--format", "json"]].concat());
+    let v = json(&out);
+    assert_eq!(out.status.code(), Some(0), "{}", v["branch"]);
+    let f = v["branch"]["followed"].as_str().unwrap_or_default();
+    assert!(f.starts_with("part-at 1.0470"), "{}", v["branch"]);
+    let golden = std::fs::read_to_string(golden_csv("roll_slip")).unwrap();
+    assert!(golden.contains("stick/slip\n"));
+    std::fs::write(&path, golden.replace("stick/slip\n", "stick/slip-\n")).unwrap();
+    assert_eq!(
+        check_file(&path, &["--case", "roll_slip"]).status.code(),
+        Some(1)
+    );
+}
+
 /// A line too long to read is refused naming its data row and line (or
 /// the header), as every refusal names them (it said only "has a line
 /// longer than 65536 bytes").

@@ -440,6 +440,7 @@ def check(
     digits: int = 20,
     past_end: str = "report",
     max_rows: Optional[int] = None,
+    schema: Optional[int] = None,
 ) -> CheckReport:
     """Judges another program's table against the oracle: the command line's
     ``cylroll check``, by the same scoring core.
@@ -477,6 +478,9 @@ def check(
     first impact) are left out and reported (``"report"``) or refused
     (``"refuse"``). ``max_rows``: the largest number of data rows accepted
     (default 1 000 000, at most 10^8; the candidate is read in chunks).
+    ``schema``: ``1`` judges a candidate written in the first golden schema
+    (φ2 of a rolling contact in the paper's gauge, r1 θ0/r2 below today's),
+    as ``cylroll check --schema 1``; by default ``2``.
 
     Tolerances (``rtol``, ``atol``, ``tol``'s values, ``event_tol``) are
     numbers or their text: 0, or finite from 1e-300 on (a smaller one would
@@ -513,5 +517,6 @@ def check(
     d = _cylroll.check(text, path, source, case_name, pairs, _tol_text("rtol", rtol),
                        _tol_text("atol", atol), _tols(tol), branch, part_at,
                        None if event_tol is None else _tol_text("event_tol", event_tol),
-                       _digits(digits), str(past_end), rows)
+                       _digits(digits), str(past_end), rows,
+                       None if schema is None else _count("schema", schema, 2))
     return CheckReport(d)

@@ -57,6 +57,7 @@ def check(
     digits: int,
     past_end: str,
     max_rows: Optional[int],
+    schema: Optional[int] = ...,
 ) -> Dict[str, object]: ...
 def enclose(
     pairs: Dict[str, str], digits: int, what: str, theta: Optional[str] = ...

@@ -753,7 +753,7 @@ type TolOverride = (String, String, Option<String>);
 /// "text": the table, "passed": bool, "verdict": "pass" | "fail" |
 /// "undecided"}`.
 #[pyfunction]
-#[pyo3(signature = (csv, path, source, case_name, pairs, rtol, atol, tols, branch, part_at, event_tol, digits, past_end, max_rows))]
+#[pyo3(signature = (csv, path, source, case_name, pairs, rtol, atol, tols, branch, part_at, event_tol, digits, past_end, max_rows, schema=None))]
 #[allow(clippy::too_many_arguments)]
 fn check<'py>(
     py: Python<'py>,
@@ -771,6 +771,7 @@ fn check<'py>(
     digits: u32,
     past_end: String,
     max_rows: Option<usize>,
+    schema: Option<u32>,
 ) -> PyResult<Bound<'py, PyDict>> {
     use cylroll::check::{BranchRequest, Limits, PastEnd};
     let rep = detached(py, move || {
@@ -833,6 +834,12 @@ fn check<'py>(
             lim.event_tol = cylroll::check::tolerance("event_tol", &e)?;
         }
         lim.past_end = PastEnd::parse("past_end", &past_end)?;
+        if let Some(v) = schema {
+            if !(1..=2).contains(&v) {
+                return Err(Error::invalid("schema", v, "expected 1 or 2"));
+            }
+            lim.schema = Some(v);
+        }
         run_check(csv, path, &source, &case, &lim)
     })?;
     let d = PyDict::new(py);

@@ -304,3 +304,20 @@ def test_cells_are_read_as_they_print_and_refused_by_row():
     assert "--" not in cylroll.check({"t": [0.0], "theta": [0.1]}, m).text
     with pytest.raises(TypeError, match="name: expected a golden case name"):
         cylroll.golden.case(3)
+
+
+def test_a_schema_1_candidate_is_judged_with_schema_1(golden_dir):
+    # the first golden schema's phi2 (the paper's gauge: r1 theta0 / r2 = 0.1
+    # below) in its 13 columns: judged as schema 2 it fails on phi2 with a
+    # note; schema=1 judges it (the command line's --schema 1)
+    cols = _golden_columns(golden_dir / "data" / "mujoco_main.csv")
+    v1 = "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12".split(",")
+    cand = {c: np.array([float(x) for x in cols[c]]) for c in v1}
+    cand["phi2"] = cand["phi2"] - 0.1
+    rep = cylroll.check(cand, "mujoco_main", rtol=1e-12, atol=1e-14)
+    assert not rep.passed and rep.first_failure.column == "phi2"
+    assert any("--schema 1" in n for n in rep.notes)
+    rep = cylroll.check(cand, "mujoco_main", rtol=1e-12, atol=1e-14, schema=1)
+    assert rep.passed, str(rep)
+    with pytest.raises(cylroll.InvalidParameterError, match="schema"):
+        cylroll.check(cand, "mujoco_main", schema=3)

@@ -322,8 +322,9 @@ def test_command_usage_errors(tmp_path, capsys):
         assert "--max-rows" in capsys.readouterr().err
     from cylroll.conformance.scorecard import score_case
     from cylroll.conformance.examples import PenaltyDiscs
-    with pytest.raises(ValueError, match="max_rows"):
-        score_case(PenaltyDiscs(), "slip_slip", [1e-3], max_rows=1)
+    for bad in (1, 10**7, 20.0, True):
+        with pytest.raises(ValueError, match="max_rows"):
+            score_case(PenaltyDiscs(), "slip_slip", [1e-3], max_rows=bad)
 
 
 def test_command_writes_the_scorecard(tmp_path):

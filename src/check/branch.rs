@@ -414,11 +414,13 @@ pub fn decide(
         let range = (a.max(star_s), b.min(end_s));
         let fit = fit_part_at(case, range, s, &f.after, tols, shift);
         if let Some((theta, _, _)) = fit {
-            // (within event-tol of an end in the bracket it is that end's
-            // branch, scored with the others)
-            let near_end = (d_star <= tol && (s * theta - star_s).abs() <= tol)
-                || (d_end <= tol && (s * theta - end_s).abs() <= tol);
-            if !near_end {
+            // scored with the ends' branches even within event-tol of one
+            // (it was dropped there: a parting at 1.047, 1.0003e-3 before θs,
+            // followed stay once the refined fit came within 1e-3 of θs,
+            // and failed); the same angle as an end is that end
+            let at_end =
+                (d_star <= tol && s * theta == star_s) || (d_end <= tol && s * theta == end_s);
+            if !at_end {
                 // the fitted binary64 angle, quoted exactly
                 let at =
                     Exact::rational(Exact::parse("part-at", &format!("{theta:e}"), false)?.coef);
@@ -455,6 +457,18 @@ pub fn decide(
             .iter()
             .filter_map(|(b, name, d)| d.map(|d| (b, *name, d)))
             .min_by(|x, y| x.2.total_cmp(&y.2));
+        // an end's branch that fits within 1% of a parting fitted near it is
+        // that end's (the noise of the candidate's rows, not its parting)
+        let best = match best {
+            Some((Branch::PartAt(_), _, d)) => scored
+                .iter()
+                .filter(|(b, _, _)| !matches!(b, Branch::PartAt(_)))
+                .filter_map(|(b, name, e)| e.map(|e| (b, *name, e)))
+                .filter(|x| x.2 <= d * 1.01)
+                .min_by(|x, y| x.2.total_cmp(&y.2))
+                .or(best),
+            other => other,
+        };
         let listed: Vec<String> = scored
             .iter()
             .map(|(b, name, d)| {
@@ -624,11 +638,23 @@ fn nearest_branch(
             (b, name, d)
         })
         .collect();
-    let Some((b, name, _)) = scored
+    let best = scored
         .iter()
         .filter_map(|(b, name, d)| d.map(|d| (b, name, d)))
-        .min_by(|x, y| x.2.total_cmp(&y.2))
-    else {
+        .min_by(|x, y| x.2.total_cmp(&y.2));
+    // stay or part where it fits within 1% of the fitted parting (a noisy
+    // table that stays read as parting a hair before θs)
+    let best = match best {
+        Some((Branch::PartAt(_), _, d)) => scored
+            .iter()
+            .filter(|(b, _, _)| !matches!(b, Branch::PartAt(_)))
+            .filter_map(|(b, name, e)| e.map(|e| (b, name, e)))
+            .filter(|x| x.2 <= d * 1.01)
+            .min_by(|x, y| x.2.total_cmp(&y.2))
+            .or(best),
+        other => other,
+    };
+    let Some((b, name, _)) = best else {
         return Ok(None);
     };
     let listed: Vec<String> = scored
@@ -762,10 +788,18 @@ fn fit_part_at(
             if sigma.is_finite() && sigma > 0.0 {
                 for k in 1..17 {
                     let xr: f64 = format!("{:.*e}", k - 1, x).parse().unwrap_or(x);
-                    if (xr - x).abs() <= 0.5 * sigma {
-                        x = xr;
-                        break;
+                    if (xr - x).abs() > 0.5 * sigma {
+                        continue;
                     }
+                    // inside the range fitted (so inside the window and the
+                    // candidate's bracket), and fitting as well to 0.1%: a
+                    // fit a hair inside θs rounded past it and the check was
+                    // refused ("invalid part-at"), another rounded out of
+                    // its bracket and failed
+                    if xr > range.0 && xr < range.1 && cost(xr).is_some_and(|c| c <= d * 1.001) {
+                        x = xr;
+                    }
+                    break;
                 }
             }
         }

@@ -57,20 +57,17 @@ pub const MODE: usize = crate::motion::COLUMNS.len();
 
 /// Whether a candidate's mode cell names the reference's mode `reference`:
 /// the same text, or per contact an unsigned `slip` where the reference
-/// slides either way, or a signed one where the reference's frictionless
-/// slide is unsigned (an engine that does not sign its slip wrote `slip`,
-/// and every sliding row failed against `slip+`).
+/// slides either way (an engine that does not sign its slip wrote `slip`,
+/// and every sliding row failed against `slip+`). A signed slide against
+/// the reference's unsigned frictionless one does not match: its sign is
+/// not checked there, and a wrong sign would pass.
 pub fn mode_matches(cand: &str, reference: &str) -> bool {
     if cand == reference {
         return true;
     }
     match (cand.split_once('/'), reference.split_once('/')) {
         (Some((cf, cc)), Some((rf, rc))) => {
-            let one = |c: &str, r: &str| {
-                c == r
-                    || (c == "slip" && r.starts_with("slip"))
-                    || (r == "slip" && c.starts_with("slip"))
-            };
+            let one = |c: &str, r: &str| c == r || (c == "slip" && r.starts_with("slip"));
             one(cf, rf) && one(cc, rc)
         }
         _ => false,

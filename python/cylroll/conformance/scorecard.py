@@ -7,6 +7,7 @@ from __future__ import annotations
 import html
 import json
 import math
+import numbers
 import os
 import time
 from typing import Any, Callable, Dict, List, Optional, Sequence
@@ -167,9 +168,12 @@ def score_case(adapter: Any, case: str, dts: Sequence[float],
     """One case of the scorecard: runs at every dt, errors per quantity and
     phase, events, observed order, branch taken and checks.
 
-    Raises ValueError for ``max_rows`` below :data:`MIN_ROWS`."""
-    if isinstance(max_rows, bool) or not isinstance(max_rows, int) or max_rows < MIN_ROWS:
-        raise ValueError(f"max_rows = {max_rows!r}: expected a whole number >= {MIN_ROWS}")
+    Raises ValueError for ``max_rows`` outside :data:`MIN_ROWS` to 10^6."""
+    if (isinstance(max_rows, bool) or not isinstance(max_rows, numbers.Integral)
+            or not MIN_ROWS <= int(max_rows) <= 10**6):
+        raise ValueError(f"max_rows = {max_rows!r}: expected a whole number from {MIN_ROWS} "
+                         "to 10^6")
+    max_rows = int(max_rows)
     p = reference.params(case)
     bp = reference.branch_point(case)
     end = reference.closed_end(case)
