@@ -138,6 +138,24 @@ impl Params {
     }
 }
 
+/// Refuses k1 = k2 = 0 on a frictionless floor under a contact that can
+/// roll: nothing then determines the spins (a common rolling of the two
+/// massless cylinders costs no energy and needs no force, so φ̇1 and ψ̇2
+/// are 0/0; the program printed the limit k2 → 0 first, k1 → 0 first gives
+/// another). The motion of the centres is determined; the spins are not.
+fn spins_determined(params: &Params, floor_frictionless: bool, contact_rolls: bool) -> Result<()> {
+    if floor_frictionless && contact_rolls && params.k1 == 0 && params.k2 == 0 {
+        return Err(Error::invalid(
+            "k2",
+            "0",
+            "k1 and k2 cannot both be 0 on a frictionless floor under a rolling contact: \
+             nothing then determines the cylinders' spins (a common rolling of two spins \
+             without inertia needs no force); give k1 > 0 or k2 > 0",
+        ));
+    }
+    Ok(())
+}
+
 /// Initial conditions. Positions start at x1 = φ1 = 0.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Start {
@@ -266,6 +284,7 @@ impl Ideal {
     /// the floor is `fixed`).
     pub fn new(params: Params, floor: Floor, contact: Contact, start: Start) -> Result<Self> {
         validate(&params, &start, floor == Floor::Fixed)?;
+        spins_determined(&params, floor == Floor::Slip, contact == Contact::Roll)?;
         Ok(Ideal {
             params,
             floor,
@@ -431,6 +450,11 @@ impl Model {
                 "must be > 0 with finite friction (a spin without inertia cannot slide under friction)",
             ));
         }
+        spins_determined(
+            &params,
+            floor == Law::Frictionless,
+            matches!(contact, Law::Rolling | Law::Coulomb { .. }),
+        )?;
         Ok(Model {
             params,
             floor,
