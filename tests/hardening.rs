@@ -3025,3 +3025,51 @@ fn the_impacts_structural_zeros_are_exact() {
         assert_ne!(v["error_bounds"]["x2_impact"], "0", "{law:?}");
     }
 }
+
+/// A common rolling rate ω0 moves every body alike: with friction the
+/// relative motion, its events and the work of friction do not depend on
+/// it. The slip speeds, differences of speeds of the order ω0 r1, cost
+/// log2(ω0 r1 / sqrt(g r)) bits, now carried by the working precision:
+/// ω0 = 10^20 at 30 digits (was "not decided") and 10^30 at 60 digits give
+/// the ω0 = 0 values; where more bits are lost than the working precision
+/// has (or 2/3 of them, beyond 88) the request is refused at once (ω0 =
+/// 10^30 at 30 digits ran a million steps for minutes before failing).
+#[test]
+fn a_fast_common_rolling_leaves_the_frictional_motion_alone() {
+    let scalars = |w0: &str, digits: &str| {
+        let v = json_ok(&[
+            "separation",
+            "--theta0",
+            "0.1",
+            "--mu",
+            "0.3",
+            "--omega0",
+            w0,
+            "--digits",
+            digits,
+            "--format",
+            "json",
+        ]);
+        (v["t_s"].clone(), v["work_s"].clone(), v["theta_s"].clone())
+    };
+    assert_eq!(scalars("1e20", "30"), scalars("0", "30"));
+    assert_eq!(scalars("1e30", "60"), scalars("0", "60"));
+    let out = cyl()
+        .args([
+            "separation",
+            "--theta0",
+            "0.1",
+            "--mu",
+            "0.3",
+            "--omega0",
+            "1e30",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(
+        err.contains("omega0: not decided") && err.contains("a higher --digits answers"),
+        "{err}"
+    );
+}
