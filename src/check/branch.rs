@@ -430,72 +430,32 @@ pub fn decide(
             let at = Exact::parse("part-at", &p.theta_mid.0, false)?;
             options.push((Branch::PartAt(at), "part-at"));
         }
-        // the rows before the end of every branch's motion (its first impact)
-        let mut after = f.after.clone();
-        for (b, _) in &options {
-            let ans = crate::oracle::separation(
-                &case.model,
-                &Options {
-                    digits: 17,
-                    branch: b.clone(),
-                    method: crate::motion::Method::Auto,
-                },
-            )?;
-            if let Some(te) = ans.events.iter().find(|e| e.phase.is_none()) {
-                let te = te.t.value.to_f64() * (1.0 - 1e-12);
-                after.retain(|r| r.1.to_f64() < te);
-            }
-        }
-        let scored: Vec<(Branch, &str, Option<f64>)> = options
+        let options = options
             .into_iter()
             .map(|(b, name)| {
-                let d = distance(case, b.clone(), &after, tols, shift);
-                (b, name, d)
-            })
-            .collect();
-        let best = scored
-            .iter()
-            .filter_map(|(b, name, d)| d.map(|d| (b, *name, d)))
-            .min_by(|x, y| x.2.total_cmp(&y.2));
-        // an end's branch that fits within 1% of a parting fitted near it is
-        // that end's (the noise of the candidate's rows, not its parting)
-        let best = match best {
-            Some((Branch::PartAt(_), _, d)) => scored
-                .iter()
-                .filter(|(b, _, _)| !matches!(b, Branch::PartAt(_)))
-                .filter_map(|(b, name, e)| e.map(|e| (b, *name, e)))
-                .filter(|x| x.2 <= d * 1.01)
-                .min_by(|x, y| x.2.total_cmp(&y.2))
-                .or(best),
-            other => other,
-        };
-        let listed: Vec<String> = scored
-            .iter()
-            .map(|(b, name, d)| {
-                let name = match b {
+                let name = match &b {
                     Branch::PartAt(at) => format!("{name} {at}"),
                     _ => name.to_string(),
                 };
-                match d {
-                    Some(d) => format!("{name} {d:.3e}"),
-                    None => format!("{name} -"),
-                }
+                (b, name)
             })
             .collect();
+        let sc = score_options(case, options, f.after.clone(), tols, shift)?;
+        let best = sc.best.map(|i| (&sc.list[i].0, sc.list[i].1.as_str()));
+        let listed = sc.listed();
         let holds = match (d_star <= tol, d_end <= tol) {
             (true, true) => format!("both theta* = {star_text} and theta_s = {end_text}"),
             (true, false) => format!("the branch point theta* = {star_text}"),
             _ => format!("the end of the closed branch theta_s = {end_text}"),
         };
         match best {
-            Some((b, name, _)) => {
+            Some((b, name)) => {
                 rep.followed = b.clone();
                 rep.why = format!(
                     "{found}: the bracket holds {holds} (within event-tol {tol:e}); the \
                      candidate's {} rows from its parting on are nearest the {name} branch \
-                     (sum of |candidate - reference| / the column's scale: {})",
-                    after.len(),
-                    listed.join(", ")
+                     (sum of |candidate - reference| / the column's scale: {listed})",
+                    sc.rows,
                 );
             }
             None => {
@@ -563,6 +523,83 @@ pub fn decide(
     Ok(rep)
 }
 
+/// Branches scored on a candidate's rows: each with its distance
+/// ([`distance`]; None where it cannot be evaluated), the best, and the
+/// rows used.
+struct Scored {
+    list: Vec<(Branch, String, Option<f64>)>,
+    best: Option<usize>,
+    rows: usize,
+}
+
+impl Scored {
+    /// `name distance, …` for the messages.
+    fn listed(&self) -> String {
+        self.list
+            .iter()
+            .map(|(_, name, d)| match d {
+                Some(d) => format!("{name} {d:.3e}"),
+                None => format!("{name} -"),
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+/// `options` scored on `rows`, each branch on the rows before the end of
+/// its motion (its first impact) and all on the rows before every end. The
+/// best is the nearest, but an end's branch (stay, part) that fits within
+/// 1% of a fitted parting is that end's: the noise of the candidate's rows,
+/// not its parting.
+fn score_options(
+    case: &Case,
+    options: Vec<(Branch, String)>,
+    mut rows: Vec<CandRow>,
+    tols: &[Tol],
+    shift: f64,
+) -> Result<Scored> {
+    for (b, _) in &options {
+        let ans = crate::oracle::separation(
+            &case.model,
+            &Options {
+                digits: 17,
+                branch: b.clone(),
+                method: crate::motion::Method::Auto,
+            },
+        )?;
+        if let Some(te) = ans.events.iter().find(|e| e.phase.is_none()) {
+            let te = te.t.value.to_f64() * (1.0 - 1e-12);
+            rows.retain(|r| r.1.to_f64() < te);
+        }
+    }
+    let list: Vec<(Branch, String, Option<f64>)> = options
+        .into_iter()
+        .map(|(b, name)| {
+            let d = distance(case, b.clone(), &rows, tols, shift);
+            (b, name, d)
+        })
+        .collect();
+    let nearest = |fitted: bool, limit: f64| {
+        list.iter()
+            .enumerate()
+            .filter(|(_, (b, _, _))| fitted || !matches!(b, Branch::PartAt(_)))
+            .filter_map(|(i, (_, _, d))| d.map(|d| (i, d)))
+            .filter(|x| x.1 <= limit)
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+    };
+    let best = match nearest(true, f64::INFINITY) {
+        Some((i, d)) if matches!(list[i].0, Branch::PartAt(_)) => {
+            nearest(false, d * 1.01).or(Some((i, d)))
+        }
+        other => other,
+    };
+    Ok(Scored {
+        best: best.map(|x| x.0),
+        rows: rows.len(),
+        list,
+    })
+}
+
 /// Rows of the candidate scored without a mode or N12 column: at most this
 /// many from the branch point on, evenly thinned.
 const ROWS_SCORED: usize = 32;
@@ -615,63 +652,19 @@ fn nearest_branch(
         let at = Exact::rational(Exact::parse("part-at", &format!("{theta:e}"), false)?.coef);
         options.push((Branch::PartAt(at.clone()), format!("part-at {at}")));
     }
-    // the rows before the end of every branch's motion (its first impact)
-    let mut after = kept;
-    for (b, _) in &options {
-        let ans = crate::oracle::separation(
-            &case.model,
-            &Options {
-                digits: 17,
-                branch: b.clone(),
-                method: crate::motion::Method::Auto,
-            },
-        )?;
-        if let Some(te) = ans.events.iter().find(|e| e.phase.is_none()) {
-            let te = te.t.value.to_f64() * (1.0 - 1e-12);
-            after.retain(|r| r.1.to_f64() < te);
-        }
-    }
-    let scored: Vec<(Branch, String, Option<f64>)> = options
-        .into_iter()
-        .map(|(b, name)| {
-            let d = distance(case, b.clone(), &after, tols, shift);
-            (b, name, d)
-        })
-        .collect();
-    let best = scored
-        .iter()
-        .filter_map(|(b, name, d)| d.map(|d| (b, name, d)))
-        .min_by(|x, y| x.2.total_cmp(&y.2));
-    // stay or part where it fits within 1% of the fitted parting (a noisy
-    // table that stays read as parting a hair before θs)
-    let best = match best {
-        Some((Branch::PartAt(_), _, d)) => scored
-            .iter()
-            .filter(|(b, _, _)| !matches!(b, Branch::PartAt(_)))
-            .filter_map(|(b, name, e)| e.map(|e| (b, name, e)))
-            .filter(|x| x.2 <= d * 1.01)
-            .min_by(|x, y| x.2.total_cmp(&y.2))
-            .or(best),
-        other => other,
-    };
-    let Some((b, name, _)) = best else {
+    let sc = score_options(case, options, kept, tols, shift)?;
+    let Some(i) = sc.best else {
         return Ok(None);
     };
-    let listed: Vec<String> = scored
-        .iter()
-        .map(|(_, name, d)| match d {
-            Some(d) => format!("{name} {d:.3e}"),
-            None => format!("{name} -"),
-        })
-        .collect();
+    let (b, name) = (&sc.list[i].0, &sc.list[i].1);
+    let listed = sc.listed();
     Ok(Some((
         b.clone(),
         format!(
             "without a mode or N12 column the candidate's parting is not read from its rows: \
              its {} rows from the branch point theta* on are nearest the {name} branch (sum of \
-             |candidate - reference| / the column's scale: {})",
-            after.len(),
-            listed.join(", ")
+             |candidate - reference| / the column's scale: {listed})",
+            sc.rows,
         ),
     )))
 }
