@@ -138,22 +138,37 @@ impl Params {
     }
 }
 
-/// Refuses k1 = k2 = 0 on a frictionless floor under a contact that can
-/// roll: nothing then determines the spins (a common rolling of the two
-/// massless cylinders costs no energy and needs no force, so φ̇1 and ψ̇2
-/// are 0/0; the program printed the limit k2 → 0 first, k1 → 0 first gives
-/// another). The motion of the centres is determined; the spins are not.
-fn spins_determined(params: &Params, floor_frictionless: bool, contact_rolls: bool) -> Result<()> {
-    if floor_frictionless && contact_rolls && params.k1 == 0 && params.k2 == 0 {
-        return Err(Error::invalid(
-            "k2",
-            "0",
-            "k1 and k2 cannot both be 0 on a frictionless floor under a rolling contact: \
-             nothing then determines the cylinders' spins (a common rolling of two spins \
-             without inertia needs no force); give k1 > 0 or k2 > 0",
-        ));
-    }
-    Ok(())
+/// The note on spins that nothing determines, where the model has one: a
+/// spin without inertia on which no force acts (k2 = 0 under a
+/// frictionless contact; k1 = 0 on a frictionless floor under one; k1 = k2
+/// = 0 on a frictionless floor under a rolling contact, their common
+/// rolling) turns at any rate; the program keeps its reference rate (ω0's
+/// common rolling), a convention, not a consequence of the mechanics (the
+/// limits k → 0 taken in different orders give other rates).
+pub fn free_spin_note(model: &Model) -> Option<String> {
+    let pr = model.params();
+    let (ff, cf) = (
+        *model.floor() == Law::Frictionless,
+        *model.contact() == Law::Frictionless,
+    );
+    let which = if pr.k1 == 0 && pr.k2 == 0 && ff && *model.contact() == Law::Rolling {
+        "the common rolling of both cylinders (k1 = k2 = 0 on a frictionless floor under a \
+         rolling contact)"
+    } else if pr.k1 == 0 && pr.k2 == 0 && ff && cf {
+        "each cylinder's spin (k1 = k2 = 0, both contacts frictionless)"
+    } else if pr.k2 == 0 && cf {
+        "cylinder 2's spin (k2 = 0 under a frictionless contact)"
+    } else if pr.k1 == 0 && ff && cf {
+        "cylinder 1's spin (k1 = 0 on a frictionless floor under a frictionless contact)"
+    } else {
+        return None;
+    };
+    Some(format!(
+        "{which} has no inertia and nothing acts on it: the mechanics leaves its rate free; \
+         phi1_dot, phi2_dot and their angles take the convention that it keeps its reference \
+         rate (omega0's common rolling) - the limits k -> 0 taken in other orders give other \
+         rates; every other column is determined"
+    ))
 }
 
 /// Initial conditions. Positions start at x1 = φ1 = 0.
@@ -284,7 +299,6 @@ impl Ideal {
     /// the floor is `fixed`).
     pub fn new(params: Params, floor: Floor, contact: Contact, start: Start) -> Result<Self> {
         validate(&params, &start, floor == Floor::Fixed)?;
-        spins_determined(&params, floor == Floor::Slip, contact == Contact::Roll)?;
         Ok(Ideal {
             params,
             floor,
@@ -450,11 +464,6 @@ impl Model {
                 "must be > 0 with finite friction (a spin without inertia cannot slide under friction)",
             ));
         }
-        spins_determined(
-            &params,
-            floor == Law::Frictionless,
-            matches!(contact, Law::Rolling | Law::Coulomb { .. }),
-        )?;
         Ok(Model {
             params,
             floor,

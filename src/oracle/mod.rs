@@ -577,6 +577,7 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
     ans.end = first.end;
     ans.routes = first.routes.clone();
     ans.notes = motion_notes(&first, opts);
+    ans.notes.extend(crate::model::free_spin_note(model));
     if let (Some(i), Some(imp)) = (sep_ev, &first.impact) {
         // N12 at the parting, against 10^-12 of its unit m2 g (not of one
         // newton: in other units a rounding residual passed, a genuine force
