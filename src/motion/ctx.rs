@@ -121,31 +121,6 @@ impl Ctx {
     ///
     /// Errors: a model the constrained system cannot represent.
     pub fn new(model: &Model, prec: u32) -> Result<Ctx> {
-        let spin = spin_bits(model);
-        // more bits lost than the working precision has, or beyond 2/3 of
-        // them and 2^80 times the motion's speed: the sliding phases and
-        // the mode tests failed there, or slowed down by orders (measured:
-        // ω0 = 10^26 at 30 digits took 12 s, 10^30 ran a million steps for
-        // minutes before failing; 10^24 at 30 digits, 10^20 at 10 and 10^30
-        // at 60 take 0.1-0.6 s): refused at once, a higher --digits answers
-        if spin > prec || (spin > prec * 2 / 3 && spin > 88) {
-            return Err(Error::NotConverged {
-                quantity: "omega0".into(),
-                requested: 0,
-                reached: format!("{spin} bits of the working precision's {prec} lost"),
-                detail: format!(
-                    "the common rolling rate omega0 = {} makes the bodies' speeds that many \
-                     bits larger than the motion's own (sqrt(g (r1 + r2))), and the slip \
-                     speeds, their differences, lose them: not computed at this precision (a \
-                     higher --digits answers)",
-                    crate::numeric::decimal::short_near(&Float::with_val(
-                        64,
-                        &model.start().omega0
-                    ))
-                ),
-            });
-        }
-        let prec = prec + spin;
         let base = StackModel::from_model(&model.sticking());
         let ts = time_scale(&base, prec);
         let mut opts = Opts::for_prec(prec, TOL_GUARD, &ts);
@@ -320,29 +295,5 @@ impl Ctx {
             }
             _ => Float::new(p),
         }
-    }
-}
-
-/// The bits a common rolling rate ω0 costs the slip speeds of a model with
-/// Coulomb friction: they are differences of speeds of the order ω0 r1,
-/// the motion's own being sqrt(g (r1 + r2)); log2 of their ratio (and 8
-/// more) where it exceeds 16, else 0. Carried by the working precision, a
-/// fast common rolling (ω0 = 10^25, 10^30) is decided as a slow one (it
-/// was "not decided", or ran a million steps before failing).
-pub fn spin_bits(model: &Model) -> u32 {
-    let w0 = &model.start().omega0;
-    if *w0 == 0 || !model.has_coulomb() {
-        return 0;
-    }
-    let pr = model.params();
-    let p = 64;
-    let speed = Float::with_val(p, w0).abs() * Float::with_val(p, &pr.r1);
-    let own = (Float::with_val(p, &pr.g) * Float::with_val(p, &pr.r())).sqrt();
-    let ratio = speed / own;
-    // (up to 16 times the motion's own speed the working precision's guard
-    // bits hold them, as before)
-    match ratio.get_exp() {
-        Some(e) if e > 4 => e as u32 + 8,
-        _ => 0,
     }
 }
