@@ -549,8 +549,8 @@ impl Scored {
 /// `options` scored on `rows`, each branch on the rows before the end of
 /// its motion (its first impact) and all on the rows before every end. The
 /// best is the nearest, but an end's branch (stay, part) that fits within
-/// 1% of a fitted parting is that end's: the noise of the candidate's rows,
-/// not its parting.
+/// 25% of a fitted parting is that end's: the noise of the candidate's
+/// rows, not its parting.
 fn score_options(
     case: &Case,
     options: Vec<(Branch, String)>,
@@ -587,9 +587,14 @@ fn score_options(
             .filter(|x| x.1 <= limit)
             .min_by(|x, y| x.1.total_cmp(&y.1))
     };
+    // (25%: the fitted angle, a free parameter, absorbs part of the rows'
+    // noise — a stay table with 1e-6 noise fitted a parting 8.7e-7 before θs
+    // 2.3% nearer, one parting at θ* 9% nearer — while the genuine partings
+    // measured inside the window, 5e-4 after θ* or 1e-3 before θs, fit 3.8
+    // to 145 times nearer than the end's branch)
     let best = match nearest(true, f64::INFINITY) {
         Some((i, d)) if matches!(list[i].0, Branch::PartAt(_)) => {
-            nearest(false, d * 1.01).or(Some((i, d)))
+            nearest(false, d * 1.25).or(Some((i, d)))
         }
         other => other,
     };
