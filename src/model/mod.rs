@@ -138,6 +138,20 @@ impl Params {
     }
 }
 
+impl Model {
+    /// Spins that nothing ever turns, from ω0 = 0, so 0 throughout by
+    /// structure: (cylinder 1's φ̇1 — held, or both contacts frictionless;
+    /// cylinder 2's ψ̇2 — a frictionless contact, whose force passes through
+    /// its centre). The flight's rows and the impact mark them exact zeros.
+    pub fn spins_never_turned(&self) -> (bool, bool) {
+        let w0 = self.start.omega0 == 0;
+        let free_c = self.contact == Law::Frictionless;
+        let held = self.floor == Law::Held;
+        let phi1 = held || (w0 && free_c && self.floor == Law::Frictionless);
+        (phi1, w0 && free_c)
+    }
+}
+
 /// The note on spins that nothing determines, where the model has one: a
 /// spin without inertia on which no force acts (k2 = 0 under a
 /// frictionless contact; k1 = 0 on a frictionless floor under one; k1 = k2

@@ -115,8 +115,8 @@ pub struct Flight {
     w2: Float,
     work: Float,
     mode_floor: State,
-    /// φ1 and φ̇1 are 0 by structure: both contacts frictionless and ω0 =
-    /// 0, so nothing ever spins cylinder 1.
+    /// φ1 and φ̇1 are 0 by structure ([`crate::model::Model::spins_never_turned`],
+    /// the held floor aside: its own mask below).
     no_spin: bool,
     /// The first impact.
     pub impact: Impact,
@@ -178,12 +178,8 @@ impl Flight {
         }
         let disc = Float::with_val(p, vy2.square_ref()) + Float::with_val(p, &g * &h) * 2u32;
         let tau_floor = (Float::with_val(p, disc.sqrt()) + &vy2) / &g;
-        let no_spin = {
-            let m = &ctx.model;
-            matches!(m.floor(), crate::model::Law::Frictionless)
-                && matches!(m.contact(), crate::model::Law::Frictionless)
-                && m.start().omega0 == 0
-        };
+        // (held: the flight's mask below has it already)
+        let no_spin = ctx.model.spins_never_turned().0 && !ctx.held;
         let mut fl = Flight {
             no_spin,
             p,

@@ -518,20 +518,16 @@ pub fn separation(model: &Model, opts: &Options) -> Result<Answer> {
             // from the start). They read "indistinguishable from 0: |x| <=
             // 1.5e-48"
             let still = {
-                use crate::model::Law;
-                let held = matches!(model.floor(), Law::Held);
-                let w0 = model.start().omega0 == 0;
-                let free_c = matches!(model.contact(), Law::Frictionless);
-                let free_f = matches!(model.floor(), Law::Frictionless);
+                let (phi1, psi2) = model.spins_never_turned();
                 let mut z = 0u32;
-                if held {
-                    z |= (1 << col!("x1")) | (1 << col!("x1_dot")) | (1 << col!("phi1_dot"));
+                if matches!(model.floor(), crate::model::Law::Held) {
+                    z |= (1 << col!("x1")) | (1 << col!("x1_dot"));
                 }
-                if w0 && free_c {
+                if phi1 {
+                    z |= 1 << col!("phi1_dot");
+                }
+                if psi2 {
                     z |= 1 << col!("phi2_dot");
-                    if free_f {
-                        z |= 1 << col!("phi1_dot");
-                    }
                 }
                 z
             };
