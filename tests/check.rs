@@ -138,6 +138,25 @@ fn check_file(path: &std::path::Path, args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
+/// The oracle's own table of golden case `case` (`trajectory --params
+/// golden/cases/CASE.toml --format csv` and `args`), which must succeed.
+fn oracle_csv(case: &str, args: &[&str]) -> String {
+    let out = Command::cargo_bin("cylroll")
+        .unwrap()
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args([
+            "trajectory",
+            "--params",
+            &format!("golden/cases/{case}.toml"),
+        ])
+        .args(["--format", "csv"])
+        .args(args)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{case} {args:?}");
+    String::from_utf8(out.stdout).unwrap()
+}
+
 fn json(out: &std::process::Output) -> serde_json::Value {
     serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
         panic!(
@@ -781,17 +800,19 @@ fn a_schema_1_failure_quotes_phi2_in_the_gauge_it_was_judged_in() {
 fn a_schema_1_header_is_judged_as_schema_2_unless_asked() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("cand.csv");
-    let out = Command::cargo_bin("cylroll")
-        .unwrap()
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(["trajectory", "--params", "golden/cases/mujoco_main.toml"])
-        .args(["--t-end", "5.2", "--steps", "52", "--digits", "25"])
-        .args(["--format", "csv", "--columns"])
-        .arg("t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12")
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0));
-    let table = String::from_utf8(out.stdout).unwrap();
+    let table = oracle_csv(
+        "mujoco_main",
+        &[
+            "--t-end",
+            "5.2",
+            "--steps",
+            "52",
+            "--digits",
+            "25",
+            "--columns",
+            "t,theta,theta_dot,theta_ddot,phi1,phi2,x1,x2,y2,F1,N1,F21,N12",
+        ],
+    );
     std::fs::write(&path, &table).unwrap();
     let out = check_file(&path, &["--case", "mujoco_main"]);
     let text = String::from_utf8_lossy(&out.stdout).to_string();
@@ -853,17 +874,21 @@ fn auto_finds_the_branch_from_theta_alone_and_fits_a_parting_to_binary64() {
             true,
         ),
     ] {
-        let out = Command::cargo_bin("cylroll")
-            .unwrap()
-            .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .args(["trajectory", "--params", "golden/cases/mujoco_main.toml"])
-            .args(branch)
-            .args(["--t-end", "5.9", "--steps", "59", "--digits", "25"])
-            .args(["--format", "csv", "--columns", columns])
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(0));
-        std::fs::write(&path, &out.stdout).unwrap();
+        let grid = [
+            "--t-end",
+            "5.9",
+            "--steps",
+            "59",
+            "--digits",
+            "25",
+            "--columns",
+            columns,
+        ];
+        std::fs::write(
+            &path,
+            oracle_csv("mujoco_main", &[branch, &grid[..]].concat()),
+        )
+        .unwrap();
         let mut args = vec!["--case", "mujoco_main", "--format", "json"];
         if tight {
             args.extend_from_slice(&["--rtol", "1e-10", "--atol", "1e-12"]);
@@ -888,16 +913,19 @@ fn auto_finds_the_branch_from_theta_alone_and_fits_a_parting_to_binary64() {
 #[test]
 fn a_mode_one_row_late_at_an_event_is_judged_by_the_event() {
     let dir = tempfile::tempdir().unwrap();
-    let out = Command::cargo_bin("cylroll")
-        .unwrap()
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(["trajectory", "--params", "golden/cases/mujoco_main.toml"])
-        .args(["--t-end", "5.5", "--steps", "5500", "--digits", "20"])
-        .args(["--format", "csv", "--columns", "t,theta,mode"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0));
-    let table = String::from_utf8(out.stdout).unwrap();
+    let table = oracle_csv(
+        "mujoco_main",
+        &[
+            "--t-end",
+            "5.5",
+            "--steps",
+            "5500",
+            "--digits",
+            "20",
+            "--columns",
+            "t,theta,mode",
+        ],
+    );
     let relabel = |n: usize| {
         let mut k = 0;
         let mut s = String::new();
@@ -981,16 +1009,11 @@ fn the_flight_floor_force_is_an_exact_zero_and_atol_0_decides() {
         // rest: phi1, phi1_dot), those are exact zeros too
         assert!(last.get("zero_within").is_none(), "{case}: {last}");
     }
-    let out = Command::cargo_bin("cylroll")
-        .unwrap()
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(["trajectory", "--params", "golden/cases/mujoco_main.toml"])
-        .args([
-            "--t-end", "5.9", "--steps", "59", "--digits", "25", "--format", "csv",
-        ])
-        .output()
-        .unwrap();
-    std::fs::write(&path, &out.stdout).unwrap();
+    let table = oracle_csv(
+        "mujoco_main",
+        &["--t-end", "5.9", "--steps", "59", "--digits", "25"],
+    );
+    std::fs::write(&path, table).unwrap();
     let out = check_file(
         &path,
         &["--case", "mujoco_main", "--atol", "0", "--digits", "40"],
@@ -1074,16 +1097,8 @@ fn low_precision_partings_fit_inside_the_window_and_signs_still_count() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("cand.csv");
     let table = |args: &[&str]| {
-        let out = Command::cargo_bin("cylroll")
-            .unwrap()
-            .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .args(["trajectory", "--params", "golden/cases/main_roll_roll.toml"])
-            .args(["--format", "csv", "--t-end", "7.06"])
-            .args(args)
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(0));
-        std::fs::write(&path, &out.stdout).unwrap();
+        let csv = oracle_csv("main_roll_roll", &[&["--t-end", "7.06"][..], args].concat());
+        std::fs::write(&path, csv).unwrap();
     };
     table(&["--steps", "35", "--digits", "7", "--columns", "t,theta"]);
     let args = [
